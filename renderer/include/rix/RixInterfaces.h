@@ -1,0 +1,73 @@
+// RixInterfaces.h — services the renderer offers to plugins.
+//
+// A plugin asks a RixContext (handed to Init/Synchronize/CreateInstanceData) or
+// a RixShadingContext for an interface by id. The one every plugin needs is
+// RixMessages: printf-style messages that the renderer prints with the plugin's
+// name, counts, and shows in the render statistics.
+#pragma once
+
+#include <cstdarg>
+#include <cstdio>
+
+#include "RiTypesHelper.h"
+
+enum RixInterfaceId {
+    k_RixMessages = 0,
+    k_RixRenderState,   ///< not provided by this renderer (GetRixInterface returns null)
+    k_RixThreadUtils,   ///< not provided by this renderer (GetRixInterface returns null)
+};
+
+/// Base of every interface. Versions let a plugin check what it was built for.
+class RixInterface {
+public:
+    virtual ~RixInterface() = default;
+    virtual int GetVersion() const { return 1; }
+};
+
+/// Messages from plugins. Use Warning for "your parameters make no physical
+/// sense" and Error for "I cannot do what was asked"; neither stops the render.
+/// Repeated identical messages are printed once and counted.
+class RixMessages : public RixInterface {
+public:
+    enum Severity { k_Info = 0, k_Warning, k_Error };
+
+    void Error(const char* fmt, ...) __attribute__((format(printf, 2, 3))) {
+        va_list args; va_start(args, fmt); Emit(k_Error, fmt, args); va_end(args);
+    }
+    void Warning(const char* fmt, ...) __attribute__((format(printf, 2, 3))) {
+        va_list args; va_start(args, fmt); Emit(k_Warning, fmt, args); va_end(args);
+    }
+    void Info(const char* fmt, ...) __attribute__((format(printf, 2, 3))) {
+        va_list args; va_start(args, fmt); Emit(k_Info, fmt, args); va_end(args);
+    }
+    /// RenderMan's "always" variants bypass de-duplication; here every message
+    /// is reported, so they behave like the plain forms.
+    void ErrorAlways(const char* fmt, ...) __attribute__((format(printf, 2, 3))) {
+        va_list args; va_start(args, fmt); Emit(k_Error, fmt, args); va_end(args);
+    }
+    void WarningAlways(const char* fmt, ...) __attribute__((format(printf, 2, 3))) {
+        va_list args; va_start(args, fmt); Emit(k_Warning, fmt, args); va_end(args);
+    }
+    void InfoAlways(const char* fmt, ...) __attribute__((format(printf, 2, 3))) {
+        va_list args; va_start(args, fmt); Emit(k_Info, fmt, args); va_end(args);
+    }
+
+protected:
+    /// Receives one already-formatted message.
+    virtual void Report(Severity severity, const char* message) = 0;
+
+private:
+    void Emit(Severity severity, const char* fmt, va_list args) {
+        char buffer[1024];
+        std::vsnprintf(buffer, sizeof buffer, fmt, args);
+        Report(severity, buffer);
+    }
+};
+
+/// The renderer, as seen from a plugin outside of shading (load, sync, instance creation).
+class RixContext {
+public:
+    virtual ~RixContext() = default;
+    /// The interface with this id, or nullptr when the renderer does not offer it.
+    virtual RixInterface* GetRixInterface(RixInterfaceId id) const = 0;
+};

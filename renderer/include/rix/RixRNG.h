@@ -1,0 +1,100 @@
+// RixRNG.h — random numbers for a batch of shade points.
+//
+// Monte Carlo estimates converge faster when the random numbers are spread
+// evenly (stratified) rather than clumped. RixRNG therefore hands out
+// low-discrepancy numbers: for each pixel, the samples 0..N-1 of one "draw"
+// cover [0,1)^2 evenly (a scrambled Sobol' sequence, Owen-scrambled per pixel
+// and per draw after Burley, "Practical Hash-based Owen Scrambling", 2020).
+//
+// Every shade point carries its own sample context (pixel, sample index, and
+// how many draws it has made), so the numbers a point receives do not depend
+// on which batch it is in or on the thread count: renders are deterministic.
+//
+// Each call to DrawSamples1D/2D consumes one "draw" for every point of the
+// batch; DrawSample1D(i)/DrawSample2D(i) do the same for point i only, and
+// give exactly the value the batch call would have given that point.
+#pragma once
+
+#include <cstdint>
+
+#include "RiTypesHelper.h"
+
+class RixRNG {
+public:
+    /// Where in its sequence one shade point is.
+    struct SampleCtx {
+        uint32_t pixelSeed = 0;    ///< hash of pixel and render seed (decorrelates pixels)
+        uint32_t sampleIndex = 0;  ///< which of the pixel's samples this is
+        uint32_t draw = 0;         ///< how many draws this point has made so far
+    };
+
+    RixRNG(SampleCtx* contexts, int numPoints) : numPts(numPoints), sampleCtxArray(contexts) {}
+
+    int numPts;
+    SampleCtx* sampleCtxArray;
+
+    /// One number in [0,1) per shade point: xi[0..numPts-1].
+    void DrawSamples1D(float* xi) {
+        for (int i = 0; i < numPts; ++i) xi[i] = DrawSample1D(i);
+    }
+    /// One 2-D sample in [0,1)^2 per shade point: xi[0..numPts-1].
+    void DrawSamples2D(RtFloat2* xi) {
+        for (int i = 0; i < numPts; ++i) xi[i] = DrawSample2D(i);
+    }
+    float DrawSample1D(int i) { return Sample1D(sampleCtxArray[i]); }
+    RtFloat2 DrawSample2D(int i) { return Sample2D(sampleCtxArray[i]); }
+
+    /// The next 2-D sample of a context (advances its draw counter).
+    static RtFloat2 Sample2D(SampleCtx& ctx) {
+        uint32_t seed = Hash(ctx.pixelSeed ^ Hash(ctx.draw++ * 0x9e3779b9u + 0x632be5abu));
+        uint32_t index = NestedUniformScramble(ctx.sampleIndex, seed);
+        uint32_t x = NestedUniformScramble(ReverseBits(index), Hash(seed ^ 0xa511e9b3u));
+        uint32_t y = NestedUniformScramble(SobolSecondDimension(index), Hash(seed ^ 0x63d83595u));
+        return RtFloat2(ToUnitFloat(x), ToUnitFloat(y));
+    }
+    /// The next 1-D sample of a context (advances its draw counter).
+    static float Sample1D(SampleCtx& ctx) {
+        uint32_t seed = Hash(ctx.pixelSeed ^ Hash(ctx.draw++ * 0x9e3779b9u + 0x1b873593u));
+        uint32_t index = NestedUniformScramble(ctx.sampleIndex, seed);
+        return ToUnitFloat(NestedUniformScramble(ReverseBits(index), Hash(seed ^ 0x85ebca6bu)));
+    }
+
+    /// A well-mixed 32-bit hash (lowbias32 by C. Wellons).
+    static uint32_t Hash(uint32_t x) {
+        x ^= x >> 16; x *= 0x7feb352du;
+        x ^= x >> 15; x *= 0x846ca68bu;
+        x ^= x >> 16;
+        return x;
+    }
+
+private:
+    static uint32_t ReverseBits(uint32_t v) {
+        v = ((v >> 1) & 0x55555555u) | ((v & 0x55555555u) << 1);
+        v = ((v >> 2) & 0x33333333u) | ((v & 0x33333333u) << 2);
+        v = ((v >> 4) & 0x0f0f0f0fu) | ((v & 0x0f0f0f0fu) << 4);
+        v = ((v >> 8) & 0x00ff00ffu) | ((v & 0x00ff00ffu) << 8);
+        return (v >> 16) | (v << 16);
+    }
+    // Sobol' dimension 2 in bit-reversed order of generation: the direction
+    // numbers are 1, 11, 101, 1111, ... (Pascal's triangle mod 2).
+    static uint32_t SobolSecondDimension(uint32_t index) {
+        uint32_t result = 0;
+        for (uint32_t v = 1u << 31; index != 0; index >>= 1, v ^= v >> 1)
+            if (index & 1u) result ^= v;
+        return result;
+    }
+    // Laine-Karras style permutation: an Owen scramble of a bit-reversed value.
+    static uint32_t LaineKarrasPermutation(uint32_t x, uint32_t seed) {
+        x += seed;
+        x ^= x * 0x6c50b47cu;
+        x ^= x * 0xb82f1e52u;
+        x ^= x * 0xc7afe638u;
+        x ^= x * 0x8d22f6e6u;
+        return x;
+    }
+    static uint32_t NestedUniformScramble(uint32_t x, uint32_t seed) {
+        return ReverseBits(LaineKarrasPermutation(ReverseBits(x), seed));
+    }
+    // Keeps the top 24 bits so the result is exactly representable and < 1.
+    static float ToUnitFloat(uint32_t bits) { return static_cast<float>(bits >> 8) * 0x1p-24f; }
+};

@@ -1,0 +1,250 @@
+// RixShading.h — parameters, parameter lists and the shading context.
+//
+// A shading context (RixShadingContext) is a BATCH of shade points that all use
+// the same Bxdf instance: numPts points hit by rays in the same bucket. Every
+// per-point quantity you read from it (position, normals, parameters) is an
+// array of numPts entries, and every per-point answer you give back is too.
+// Working on batches is what makes the renderer fast: one virtual call per
+// batch instead of one per point.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+
+#include "RiTypesHelper.h"
+#include "RixInterfaces.h"
+
+/// The type of a plugin parameter, as declared in the parameter table.
+enum RixSCType {
+    k_RixSCInvalidType = 0,
+    k_RixSCFloat,
+    k_RixSCInteger,
+    k_RixSCColor,
+    k_RixSCNormal,
+    k_RixSCVector,
+    k_RixSCPoint,
+    k_RixSCString,
+    k_RixSCFloat2,
+};
+
+/// What a parameter is for. Bxdf inputs read during scattering are
+/// k_RixSCScatterInput; k_RixSCInput is the generic input.
+enum RixSCAccess {
+    k_RixSCInput = 0,
+    k_RixSCOutput,
+    k_RixSCScatterInput,
+    k_RixSCOpacityInput,
+    k_RixSCInteriorInput,
+    k_RixSCAnyInput,
+    k_RixSCInvalidAccess,
+};
+
+/// How much a value varies over a shading context.
+enum RixSCDetail {
+    k_RixSCInvalidDetail = 0,  ///< no such parameter / wrong type
+    k_RixSCUniform,            ///< one value for every point (result points at 1 value)
+    k_RixSCVarying,            ///< one value per point (result points at numPts values)
+};
+
+/// Why the renderer calls a plugin's Synchronize.
+enum RixSCSyncMsg {
+    k_RixSCRenderBegin = 0,  ///< once, before the first pixel: look lobes up here
+    k_RixSCRenderEnd,
+    k_RixSCInstanceEdit,
+    k_RixSCCancel,
+    k_RixSCCheckpointRecover,
+    k_RixSCCheckpointWrite,
+    k_RixSCIncrementBarrier,
+};
+
+/// What the renderer wants from a shading context.
+enum RixSCShadingMode {
+    k_RixSCScatterQuery = 0,
+    k_RixSCOpacityQuery,
+    k_RixSCPresenceQuery,
+    k_RixSCInteriorQuery,
+    k_RixSCVolumeScatterQuery,
+};
+
+/// One row of a plugin's parameter table. The table is a static array that
+/// ends with a default-constructed entry, e.g.
+///
+///   static RixSCParamInfo s_ptable[] = {
+///       RixSCParamInfo(RtUString("diffuseColor"), k_RixSCColor, k_RixSCScatterInput),
+///       RixSCParamInfo()   // end of table
+///   };
+///
+/// A parameter's id is its row number; the renderer passes it to EvalParam.
+struct RixSCParamInfo {
+    RtUString name;
+    RixSCType type = k_RixSCInvalidType;
+    RixSCAccess access = k_RixSCInvalidAccess;
+    int arraySize = -1;  ///< -1: not an array
+
+    RixSCParamInfo() = default;  ///< the end-of-table marker
+    RixSCParamInfo(RtUString paramName, RixSCType paramType,
+                   RixSCAccess paramAccess = k_RixSCInput, int length = -1)
+        : name(paramName), type(paramType), access(paramAccess), arraySize(length) {}
+    bool IsEndOfTable() const { return type == k_RixSCInvalidType; }
+};
+
+/// The parameters written on a RIB statement (e.g. a Bxdf line), as handed to
+/// CreateInstanceData. Values not written in the RIB are simply absent.
+class RixParameterList {
+public:
+    virtual ~RixParameterList() = default;
+    virtual int GetNumParams() const = 0;
+    /// Finds a parameter by name: returns 0 and sets *id, or returns 1 when the
+    /// RIB did not set it.
+    virtual int GetParamId(RtUString name, int* id) const = 0;
+    /// Name and type of parameter id; returns 0 on success.
+    virtual int GetParamInfo(int id, RtUString* name, RixSCType* type) const = 0;
+
+    // Each EvalParam copies the value of parameter `id` (element `arrayIndex`
+    // of an array parameter; pass -1 or 0 for a single value) into *result and
+    // returns k_RixSCUniform, or k_RixSCInvalidDetail when the id or type is wrong.
+    RixSCDetail EvalParam(int id, int arrayIndex, RtFloat* result) const { return Eval(id, arrayIndex, k_RixSCFloat, result); }
+    RixSCDetail EvalParam(int id, int arrayIndex, RtInt* result) const { return Eval(id, arrayIndex, k_RixSCInteger, result); }
+    RixSCDetail EvalParam(int id, int arrayIndex, RtColorRGB* result) const { return Eval(id, arrayIndex, k_RixSCColor, result); }
+    RixSCDetail EvalParam(int id, int arrayIndex, RtFloat3* result) const { return Eval(id, arrayIndex, k_RixSCVector, result); }
+    RixSCDetail EvalParam(int id, int arrayIndex, RtUString* result) const { return Eval(id, arrayIndex, k_RixSCString, result); }
+
+protected:
+    virtual RixSCDetail Eval(int id, int arrayIndex, RixSCType wanted, void* result) const = 0;
+};
+
+/// Per-context flags: what kind of rays led here.
+struct RixSCTraits {
+    bool eyePath = true;      ///< the path started at the camera
+    bool lightPath = false;   ///< the path started at a light (not used by this renderer)
+    bool primaryHit = true;   ///< these points were hit directly by camera rays
+    bool missContext = false; ///< the rays hit nothing
+};
+
+/// A batch of shade points for one material. The renderer builds it; plugins
+/// only read from it (and allocate from its memory pool).
+class RixShadingContext {
+public:
+    /// The per-point geometric quantities ("builtins"). Each is computed the
+    /// first time somebody asks for it and cached for the batch; a builtin no
+    /// one asks for is never computed.
+    enum BuiltinId {
+        k_P = 0,     ///< RtPoint3: the shade point, world space
+        k_Nn,        ///< RtNormal3: unit shading normal (interpolated; not flipped toward V)
+        k_Ngn,       ///< RtNormal3: unit geometric normal (the surface's "outside")
+        k_Tn,        ///< RtVector3: unit tangent along dPdu, orthogonal to Nn (zero if undefined)
+        k_Vn,        ///< RtVector3: unit direction from P toward the viewer (ray origin)
+        k_VLen,      ///< RtFloat: distance from the ray origin to P
+        k_u,         ///< RtFloat: surface parameter u in [0,1]
+        k_v,         ///< RtFloat: surface parameter v in [0,1]
+        k_du,        ///< RtFloat: change in u across the ray's footprint
+        k_dv,        ///< RtFloat: change in v across the ray's footprint
+        k_dPdu,      ///< RtVector3: derivative of P with respect to u (not normalized)
+        k_dPdv,      ///< RtVector3: derivative of P with respect to v (not normalized)
+        k_s,         ///< RtFloat: texture coordinate s ("st" primvar, else u)
+        k_t,         ///< RtFloat: texture coordinate t ("st" primvar, else v)
+        k_numBuiltins
+    };
+
+    int numPts = 0;          ///< number of shade points in this batch
+    RixSCTraits scTraits;    ///< what kind of rays led here
+
+    virtual ~RixShadingContext() = default;
+
+    // GetBuiltinVar sets *result to an array of numPts values and returns 0,
+    // or returns a non-zero value (and sets *result to nullptr) when the
+    // builtin does not have the type asked for (e.g. k_P as RtFloat).
+    int GetBuiltinVar(BuiltinId id, RtFloat const** result) const { return Builtin(id, k_RixSCFloat, (void const**)result); }
+    int GetBuiltinVar(BuiltinId id, RtPoint3 const** result) const { return Builtin(id, k_RixSCPoint, (void const**)result); }
+    int GetBuiltinVar(BuiltinId id, RtVector3 const** result) const { return Builtin(id, k_RixSCVector, (void const**)result); }
+    int GetBuiltinVar(BuiltinId id, RtNormal3 const** result) const { return Builtin(id, k_RixSCNormal, (void const**)result); }
+    int GetBuiltinVar(BuiltinId id, RtFloat3 const** result) const { return Builtin(id, k_RixSCVector, (void const**)result); }
+
+    /// Evaluates parameter `id` of the current Bxdf instance.
+    ///  * When the RIB (or a connected pattern) gives the parameter, *result
+    ///    points at its value(s); otherwise *result = dflt (your default).
+    ///  * Returns k_RixSCUniform (one value) or k_RixSCVarying (numPts values).
+    ///  * With promoteToVarying = true, *result is ALWAYS an array of numPts
+    ///    values (uniform values are copied out), so you can index it by point.
+    ///  * arrayIndex selects an element of an array parameter; use -1 otherwise.
+    template <typename T>
+    RixSCDetail EvalParam(int id, int arrayIndex, T const** result, T const* dflt = nullptr,
+                          bool promoteToVarying = false) const {
+        return Param(id, arrayIndex, TypeOf(static_cast<T const*>(nullptr)), sizeof(T),
+                     reinterpret_cast<void const**>(result), dflt, promoteToVarying);
+    }
+    template <typename T>
+    RixSCDetail EvalParam(int id, int arrayIndex, T** result, T const* dflt = nullptr,
+                          bool promoteToVarying = false) const {
+        return EvalParam(id, arrayIndex, const_cast<T const**>(result), dflt, promoteToVarying);
+    }
+
+    /// Renderer services (RixMessages) while shading.
+    virtual RixInterface* GetRixInterface(RixInterfaceId id) const = 0;
+
+    /// Memory that lives exactly as long as this shading context: use it for
+    /// your RixBxdf object and its per-point arrays. Never free it yourself.
+    ///
+    ///   RixShadingContext::Allocator pool(sCtx);
+    ///   void* mem = pool.AllocForBxdf<MyBxdf>(1);
+    ///   MyBxdf* bxdf = new (mem) MyBxdf(sCtx, this, ...);
+    class Allocator {
+    public:
+        explicit Allocator(RixShadingContext const* ctx) : m_ctx(ctx) {}
+        template <typename T> T* AllocForBxdf(int count) { return AllocFor<T>(count); }
+        template <typename T> T* AllocForPattern(int count) { return AllocFor<T>(count); }
+        template <typename T> T* AllocFor(int count) {
+            return static_cast<T*>(m_ctx->Allocate(sizeof(T) * static_cast<size_t>(count), alignof(T)));
+        }
+
+    private:
+        RixShadingContext const* m_ctx;
+    };
+
+protected:
+    /// Renderer side: returns 0 and the array, or non-zero on a type mismatch.
+    virtual int Builtin(BuiltinId id, RixSCType wanted, void const** result) const = 0;
+    virtual RixSCDetail Param(int id, int arrayIndex, RixSCType wanted, size_t elementSize,
+                              void const** result, void const* dflt, bool promote) const = 0;
+    virtual void* Allocate(size_t bytes, size_t alignment) const = 0;
+
+private:
+    static RixSCType TypeOf(RtFloat const*) { return k_RixSCFloat; }
+    static RixSCType TypeOf(RtInt const*) { return k_RixSCInteger; }
+    static RixSCType TypeOf(RtColorRGB const*) { return k_RixSCColor; }
+    static RixSCType TypeOf(RtNormal3 const*) { return k_RixSCNormal; }
+    static RixSCType TypeOf(RtVector3 const*) { return k_RixSCVector; }
+    static RixSCType TypeOf(RtPoint3 const*) { return k_RixSCPoint; }
+    static RixSCType TypeOf(RtFloat3 const*) { return k_RixSCVector; }
+    static RixSCType TypeOf(RtUString const*) { return k_RixSCString; }
+    static RixSCType TypeOf(RtFloat2 const*) { return k_RixSCFloat2; }
+};
+
+/// Base class of every shading plugin factory (Bxdfs derive RixBxdfFactory).
+class RixShadingPlugin {
+public:
+    /// Per-instance data made in CreateInstanceData and handed back to
+    /// BeginScatter as `instanceData`. If you allocate it, set freefunc so the
+    /// renderer can release it when the render ends.
+    struct InstanceData {
+        void* data = nullptr;
+        size_t datalen = 0;
+        void (*freefunc)(void*) = nullptr;
+    };
+
+    virtual ~RixShadingPlugin() = default;
+    /// Called once after the shared object is loaded. Return 0 on success.
+    virtual int Init(RixContext& ctx, RtUString const pluginPath) = 0;
+    /// Called once before the shared object is unloaded.
+    virtual void Finalize(RixContext& ctx) = 0;
+    /// The parameter table (see RixSCParamInfo). Must stay valid until Finalize.
+    virtual RixSCParamInfo const* GetParamTable() = 0;
+    /// Render-wide events; k_RixSCRenderBegin comes once before shading starts.
+    virtual void Synchronize(RixContext& ctx, RixSCSyncMsg syncMsg,
+                             RixParameterList const* parameterList) = 0;
+    /// Called once per RIB statement that uses this plugin (`handle` is its name).
+    virtual void CreateInstanceData(RixContext& ctx, RtUString const handle,
+                                    RixParameterList const* parameterList, InstanceData* instance) {
+        PIXAR_ARGUSED(ctx); PIXAR_ARGUSED(handle); PIXAR_ARGUSED(parameterList); PIXAR_ARGUSED(instance);
+    }
+};

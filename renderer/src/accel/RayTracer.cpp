@@ -1,0 +1,149 @@
+#include "accel/RayTracer.h"
+
+#include <cmath>
+#include <string>
+
+#include "core/Error.h"
+
+namespace bxdflab {
+namespace {
+
+void reportEmbreeError(void* userPtr, RTCError code, const char* message) {
+    // Errors are collected and raised after the call that caused them; Embree
+    // calls this from inside its own code, where throwing is not allowed.
+    auto* last = static_cast<std::string*>(userPtr);
+    *last = "Embree error " + std::to_string(static_cast<int>(code)) + ": " + (message ? message : "");
+}
+
+std::string g_lastEmbreeError;
+
+void check(RTCDevice device, const char* what) {
+    RTCError code = rtcGetDeviceError(device);
+    if (code != RTC_ERROR_NONE)
+        throw RenderError(std::string("Embree failed to ") + what + ": " +
+                          (g_lastEmbreeError.empty() ? "error " + std::to_string(static_cast<int>(code)) : g_lastEmbreeError));
+}
+
+RTCRay makeRay(Vec3 const& org, Vec3 const& dir, float tnear, float tfar) {
+    RTCRay ray;
+    ray.org_x = org.x;
+    ray.org_y = org.y;
+    ray.org_z = org.z;
+    ray.tnear = tnear;
+    ray.dir_x = dir.x;
+    ray.dir_y = dir.y;
+    ray.dir_z = dir.z;
+    ray.time = 0.0f;
+    ray.tfar = tfar;
+    ray.mask = 0xffffffffu;
+    ray.id = 0;
+    ray.flags = 0;
+    return ray;
+}
+
+}  // namespace
+
+RayTracer::RayTracer(Scene const& scene) {
+    m_device = rtcNewDevice(nullptr);
+    if (!m_device) throw RenderError("cannot create the Embree device (error " + std::to_string(rtcGetDeviceError(nullptr)) + ")");
+    rtcSetDeviceErrorFunction(m_device, reportEmbreeError, &g_lastEmbreeError);
+
+    bool allVisible = true;
+    for (auto const& shape : scene.shapes)
+        allVisible = allVisible && shape->visibility.camera && shape->visibility.indirect && shape->visibility.transmission;
+
+    m_camera = rtcNewScene(m_device);
+    m_indirect = allVisible ? m_camera : rtcNewScene(m_device);
+    m_shadow = allVisible ? m_camera : rtcNewScene(m_device);
+    for (RTCScene s : {m_camera, m_indirect, m_shadow}) rtcSetSceneFlags(s, RTC_SCENE_FLAG_ROBUST);
+
+    for (size_t id = 0; id < scene.shapes.size(); ++id) {
+        Shape const& shape = *scene.shapes[id];
+        RTCGeometry geometry = shape.build(m_device);
+        check(m_device, "build a geometry");
+        unsigned geomID = static_cast<unsigned>(id);
+        if (allVisible) {
+            rtcAttachGeometryByID(m_camera, geometry, geomID);
+        } else {
+            if (shape.visibility.camera) rtcAttachGeometryByID(m_camera, geometry, geomID);
+            if (shape.visibility.indirect) rtcAttachGeometryByID(m_indirect, geometry, geomID);
+            if (shape.visibility.transmission) rtcAttachGeometryByID(m_shadow, geometry, geomID);
+        }
+        rtcReleaseGeometry(geometry);
+    }
+    rtcCommitScene(m_camera);
+    if (!allVisible) {
+        rtcCommitScene(m_indirect);
+        rtcCommitScene(m_shadow);
+    }
+    check(m_device, "build the acceleration structure");
+}
+
+RayTracer::~RayTracer() {
+    if (m_shadow && m_shadow != m_camera) rtcReleaseScene(m_shadow);
+    if (m_indirect && m_indirect != m_camera) rtcReleaseScene(m_indirect);
+    if (m_camera) rtcReleaseScene(m_camera);
+    if (m_device) rtcReleaseDevice(m_device);
+}
+
+RTCScene RayTracer::sceneFor(RayKind kind) const {
+    switch (kind) {
+        case RayKind::Camera: return m_camera;
+        case RayKind::Indirect: return m_indirect;
+        case RayKind::Shadow: return m_shadow;
+    }
+    return m_camera;
+}
+
+HitRecord RayTracer::intersect(Vec3 const& org, Vec3 const& dir, float tnear, float tfar, RayKind kind,
+                               RayCounts& counts) const {
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    RTCRayHit rayhit;
+    rayhit.ray = makeRay(org, dir, tnear, tfar);
+    rayhit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+    rayhit.hit.primID = RTC_INVALID_GEOMETRY_ID;
+    rayhit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+    rayhit.hit.u = rayhit.hit.v = 0.0f;
+    rayhit.hit.Ng_x = rayhit.hit.Ng_y = rayhit.hit.Ng_z = 0.0f;
+    rtcIntersect1(sceneFor(kind), &context, &rayhit);
+    ++(kind == RayKind::Camera ? counts.camera : kind == RayKind::Indirect ? counts.indirect : counts.shadow);
+
+    HitRecord hit;
+    hit.org = org;
+    hit.dir = dir;
+    if (rayhit.hit.geomID != RTC_INVALID_GEOMETRY_ID) {
+        hit.geomID = rayhit.hit.geomID;
+        hit.primID = rayhit.hit.primID;
+        hit.u = rayhit.hit.u;
+        hit.v = rayhit.hit.v;
+        hit.t = rayhit.ray.tfar;
+    }
+    return hit;
+}
+
+bool RayTracer::occluded(Vec3 const& org, Vec3 const& dir, float tnear, float tfar, RayCounts& counts) const {
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    RTCRay ray = makeRay(org, dir, tnear, tfar);
+    rtcOccluded1(m_shadow, &context, &ray);
+    ++counts.shadow;
+    return ray.tfar < 0.0f;
+}
+
+Vec3 offsetRayOrigin(Vec3 const& P, Vec3 const& pError, Vec3 const& Ng, Vec3 const& w) {
+    float distance = glm::dot(glm::abs(Ng), pError);
+    Vec3 offset = distance * Ng;
+    if (glm::dot(w, Ng) < 0.0f) offset = -offset;
+    Vec3 origin = P + offset;
+    // Round away from P so the offset is not lost to rounding.
+    for (int i = 0; i < 3; ++i) {
+        if (offset[i] > 0.0f)
+            origin[i] = std::nextafter(origin[i], kInfinity);
+        else if (offset[i] < 0.0f)
+            origin[i] = std::nextafter(origin[i], -kInfinity);
+    }
+    return origin;
+}
+
+}  // namespace bxdflab

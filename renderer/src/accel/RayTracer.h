@@ -1,0 +1,67 @@
+// Ray queries on Embree 3: the only place the renderer talks to Embree.
+//
+// Objects can be hidden from some kinds of rays (Attribute "visibility"), so
+// up to three Embree scenes are built over the same geometries: one for
+// camera rays, one for indirect rays and one for shadow (transmission) rays.
+// When every object is visible to every ray type they are one scene.
+#pragma once
+
+#include <embree3/rtcore.h>
+
+#include <atomic>
+#include <memory>
+
+#include "core/Math.h"
+#include "scene/Scene.h"
+
+namespace bxdflab {
+
+enum class RayKind { Camera, Indirect, Shadow };
+
+/// Rays traced by one worker, by kind. Workers count locally and merge into
+/// the tracer's totals once per batch, so counting costs no shared writes per ray.
+struct RayCounts {
+    uint64_t camera = 0, indirect = 0, shadow = 0;
+};
+
+struct RayCounters {
+    std::atomic<uint64_t> camera{0};
+    std::atomic<uint64_t> indirect{0};
+    std::atomic<uint64_t> shadow{0};
+    void add(RayCounts const& c) {
+        camera.fetch_add(c.camera, std::memory_order_relaxed);
+        indirect.fetch_add(c.indirect, std::memory_order_relaxed);
+        shadow.fetch_add(c.shadow, std::memory_order_relaxed);
+    }
+};
+
+class RayTracer {
+public:
+    /// Builds the acceleration structures; throws RenderError on Embree failure.
+    explicit RayTracer(Scene const& scene);
+    ~RayTracer();
+    RayTracer(RayTracer const&) = delete;
+    RayTracer& operator=(RayTracer const&) = delete;
+
+    /// Nearest hit along the ray within (tnear, tfar); hit.geomID is
+    /// RTC_INVALID_GEOMETRY_ID on a miss.
+    HitRecord intersect(Vec3 const& org, Vec3 const& dir, float tnear, float tfar, RayKind kind, RayCounts& counts) const;
+    /// True if anything blocks the segment (tnear, tfar).
+    bool occluded(Vec3 const& org, Vec3 const& dir, float tnear, float tfar, RayCounts& counts) const;
+
+    RayCounters& counters() const { return m_counters; }
+
+private:
+    RTCScene sceneFor(RayKind kind) const;
+    RTCDevice m_device = nullptr;
+    RTCScene m_camera = nullptr, m_indirect = nullptr, m_shadow = nullptr;
+    mutable RayCounters m_counters;
+};
+
+/// The origin for a ray leaving surface point P (with error bound pError and
+/// unit geometric normal Ng) in direction w: pushed just far enough off the
+/// surface, to the side w goes to, that the ray cannot re-hit the surface it
+/// starts on (pbrt-v4, section 6.8.6).
+Vec3 offsetRayOrigin(Vec3 const& P, Vec3 const& pError, Vec3 const& Ng, Vec3 const& w);
+
+}  // namespace bxdflab

@@ -1,0 +1,97 @@
+// rixrender: render a RIB scene with Rix Bxdf plugins.
+//
+//   rixrender [options] scene.rib
+// Exit status: 0 on success, 1 when the scene cannot be rendered (the message
+// says where and why), 2 for command-line mistakes.
+#include <unistd.h>
+
+#include <CLI/CLI.hpp>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+
+#include "core/Diagnostics.h"
+#include "render/Renderer.h"
+#include "scene/SceneBuilder.h"
+
+namespace fs = std::filesystem;
+using namespace bxdflab;
+
+namespace {
+
+/// The image file a Display statement names. Framebuffer displays ("it")
+/// have nowhere to show the image here, so it goes to a file of that name.
+std::string outputFor(DisplayDesc const& display) {
+    fs::path name(display.name.empty() ? "rixrender" : display.name);
+    if (name.has_extension()) return name.string();
+    std::string type = display.type;
+    std::string extension = type == "tiff" ? ".tif" : type == "png" ? ".png" : ".exr";
+    return name.string() + extension;
+}
+
+void checkWritable(std::string const& path) {
+    fs::path parent = fs::path(path).parent_path();
+    if (parent.empty()) parent = ".";
+    if (!fs::is_directory(parent))
+        throw RenderError("cannot write image \"" + path + "\": folder \"" + parent.string() + "\" does not exist");
+    if (access(parent.c_str(), W_OK) != 0)
+        throw RenderError("cannot write image \"" + path + "\": folder \"" + parent.string() + "\" is not writable");
+    if (fs::exists(path) && access(path.c_str(), W_OK) != 0)
+        throw RenderError("cannot write image \"" + path + "\": the file is not writable");
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    CLI::App app{"rixrender: render a RIB scene with Rix Bxdf plugins"};
+    std::string sceneFile, output, statsJson, variance;
+    RenderSettings settings;
+    bool quiet = false;
+    app.add_option("scene", sceneFile, "the RIB file to render")->required();
+    app.add_option("-o", output, "write the image here (overrides Display; format from the extension: .exr .png .tif)");
+    app.add_option("--spp", settings.spp, "samples per pixel (overrides PixelSamples / Hider maxsamples)")
+        ->check(CLI::Range(1, 1 << 20));
+    app.add_option("--threads", settings.threads, "worker threads (default: all cores)")->check(CLI::Range(1, 1024));
+    app.add_option("--seed", settings.seed, "sample-sequence seed; the same seed gives the same image");
+    app.add_option("--plugin-path", settings.pluginPath, "colon-separated plugin folders, searched first");
+    app.add_option("--stats-json", statsJson, "write timing, ray counts and simulated/skipped effects here");
+    app.add_option("--variance", variance, "also write each pixel's variance of the mean (an EXR image)");
+    app.add_flag("--quiet", quiet, "no progress bar");
+    CLI11_PARSE(app, argc, argv);
+
+    Diagnostics diagnostics;
+    try {
+        Scene scene = loadScene(sceneFile, diagnostics);
+        std::string imagePath = output.empty() ? outputFor(scene.display) : output;
+        checkWritable(imagePath);
+        if (!variance.empty()) checkWritable(variance);
+
+        settings.progress = !quiet && isatty(STDERR_FILENO);
+        Renderer renderer(scene, settings, diagnostics);
+        Film film = renderer.render();
+        writeImage(imagePath, film.rgba(), film.width(), film.height(), 4);
+        if (!variance.empty()) writeImage(variance, film.varianceOfMean(), film.width(), film.height(), 3);
+
+        RenderStats const& stats = renderer.stats();
+        if (!statsJson.empty()) {
+            std::ofstream out(statsJson);
+            out << stats.toJson(diagnostics).dump(2) << '\n';
+            if (!out) throw RenderError("cannot write stats to \"" + statsJson + "\"");
+        }
+        std::fprintf(stderr,
+                     "rixrender: %dx%d, %d spp, %d threads: %.2f s (setup %.2f s, render %.2f s); rays: %llu camera, "
+                     "%llu shadow, %llu indirect\n",
+                     stats.width, stats.height, stats.spp, stats.threads, stats.setupSeconds + stats.renderSeconds,
+                     stats.setupSeconds, stats.renderSeconds, static_cast<unsigned long long>(stats.cameraRays),
+                     static_cast<unsigned long long>(stats.shadowRays), static_cast<unsigned long long>(stats.indirectRays));
+        if (scene.display.type == "it" || scene.display.type == "framebuffer")
+            std::fprintf(stderr, "rixrender: Display \"%s\" is a framebuffer; the image was written to %s\n",
+                         scene.display.name.c_str(), imagePath.c_str());
+        else
+            std::fprintf(stderr, "rixrender: wrote %s\n", imagePath.c_str());
+    } catch (std::exception const& error) {
+        std::cerr << "rixrender: error: " << error.what() << '\n';
+        return 1;
+    }
+    return 0;
+}

@@ -1,0 +1,33 @@
+#include "integrate/DirectLighting.h"
+#include "integrate/Integrator.h"
+#include "scene/lights/HeadLight.h"
+
+namespace bxdflab {
+namespace {
+
+int sampleCount(ParamList const& params, const char* name, int dflt) {
+    int value = params.getInt(name, dflt);
+    if (value < 0 || value > 4096)
+        throw RibError(params.find(name)->location,
+                       std::string(name) + " must be between 0 and 4096, got " + std::to_string(value));
+    return value;
+}
+
+}  // namespace
+
+std::unique_ptr<Integrator> makeIntegrator(IntegratorDesc const& desc, Scene const&, Vec3 const& cameraPosition,
+                                           Diagnostics& diagnostics) {
+    std::unique_ptr<Integrator> integrator;
+    if (desc.name == "PxrDirectLighting") {
+        integrator = std::make_unique<DirectLighting>(sampleCount(desc.params, "numLightSamples", 1),
+                                                      sampleCount(desc.params, "numBxdfSamples", 1));
+    } else if (desc.name == "PxrDefault") {
+        integrator = std::make_unique<DirectLighting>(1, 0, std::make_unique<HeadLight>(cameraPosition));
+    } else {
+        throw RibError(desc.where, "unknown integrator \"" + desc.name + "\" (available: PxrDirectLighting, PxrDefault)");
+    }
+    desc.params.warnUnused(diagnostics, "Integrator \"" + desc.name + "\"");
+    return integrator;
+}
+
+}  // namespace bxdflab

@@ -1,0 +1,30 @@
+#include "integrate/Integrator.h"
+
+namespace bxdflab {
+
+bool IntegratorServices::unoccluded(Vec3 const& P, Vec3 const& pError, Vec3 const& Ng, Vec3 const& wi, float distance) {
+    Vec3 origin = offsetRayOrigin(P, pError, Ng, wi);
+    // Stop just short of the light so a surface touching it does not count.
+    float tfar = std::isinf(distance) ? kInfinity : distance * (1.0f - 1e-4f);
+    return !m_tracer.occluded(origin, wi, 0.0f, tfar, m_counts);
+}
+
+LightHit IntegratorServices::visibleLight(Vec3 const& P, Vec3 const& pError, Vec3 const& Ng, Vec3 const& dir) {
+    LightHit nearest;
+    Vec3 origin = offsetRayOrigin(P, pError, Ng, dir);
+    for (Light const* light : m_lights) {
+        if (light->isDelta()) continue;
+        LightHit candidate;
+        if (light->intersect(origin, dir, candidate.distance, candidate.radiance, candidate.pdf) &&
+            candidate.distance < nearest.distance) {
+            candidate.light = light;
+            nearest = candidate;
+        }
+    }
+    if (!nearest.light || nearest.radiance.IsBlack()) return LightHit{};
+    float tfar = std::isinf(nearest.distance) ? kInfinity : nearest.distance * (1.0f - 1e-4f);
+    if (m_tracer.occluded(origin, dir, 0.0f, tfar, m_counts)) return LightHit{};
+    return nearest;
+}
+
+}  // namespace bxdflab

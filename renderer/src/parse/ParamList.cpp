@@ -1,0 +1,236 @@
+#include "parse/ParamList.h"
+
+#include <sstream>
+
+namespace bxdflab {
+
+int componentsOf(ParamType type) {
+    switch (type) {
+        case ParamType::Color:
+        case ParamType::Point:
+        case ParamType::Vector:
+        case ParamType::Normal: return 3;
+        case ParamType::HPoint: return 4;
+        default: return 1;
+    }
+}
+
+const char* paramTypeName(ParamType type) {
+    switch (type) {
+        case ParamType::Float: return "float";
+        case ParamType::Int: return "int";
+        case ParamType::Color: return "color";
+        case ParamType::Point: return "point";
+        case ParamType::Vector: return "vector";
+        case ParamType::Normal: return "normal";
+        case ParamType::HPoint: return "hpoint";
+        case ParamType::String: return "string";
+    }
+    return "?";
+}
+
+Declarations::Declarations() {
+    // The predefined declarations of the RenderMan Interface that scenes use
+    // without declaring them.
+    const char* standard[][2] = {
+        {"fov", "float"},          {"P", "vertex point"},       {"N", "varying normal"},
+        {"Pw", "vertex hpoint"},   {"Cs", "varying color"},     {"Os", "varying color"},
+        {"st", "varying float[2]"}, {"s", "varying float"},     {"t", "varying float"},
+        {"width", "varying float"}, {"constantwidth", "constant float"},
+        {"intensity", "float"},    {"lightcolor", "color"},     {"from", "point"},
+        {"to", "point"},           {"name", "string"},          {"maxsamples", "int"},
+    };
+    for (auto const& entry : standard) {
+        ParamDecl decl;
+        std::string error;
+        parseDeclaration(std::string(entry[1]) + " " + entry[0], decl, error);
+        m_known[entry[0]] = decl;
+    }
+}
+
+bool Declarations::parseDeclaration(std::string const& text, ParamDecl& out, std::string& error) {
+    std::istringstream words(text);
+    std::vector<std::string> parts;
+    for (std::string w; words >> w;) parts.push_back(w);
+    if (parts.empty()) {
+        error = "empty parameter name";
+        return false;
+    }
+    out = ParamDecl();
+    out.name = parts.back();
+    parts.pop_back();
+    size_t i = 0;
+    static const char* classes[] = {"constant", "uniform", "varying", "vertex", "facevarying", "facevertex"};
+    if (i < parts.size())
+        for (const char* cls : classes)
+            if (parts[i] == cls) {
+                out.storageClass = parts[i++];
+                break;
+            }
+    if (i >= parts.size()) {
+        if (!parts.empty() || !out.storageClass.empty()) {
+            error = "declaration '" + text + "' has a storage class but no type";
+            return false;
+        }
+        error = "";  // a bare name: caller looks it up
+        return false;
+    }
+    std::string type = parts[i++];
+    size_t bracket = type.find('[');
+    if (bracket != std::string::npos) {
+        size_t close = type.find(']', bracket);
+        if (close == std::string::npos) {
+            error = "unbalanced '[' in type '" + type + "'";
+            return false;
+        }
+        try {
+            out.arraySize = std::stoi(type.substr(bracket + 1, close - bracket - 1));
+        } catch (...) {
+            error = "bad array length in type '" + type + "'";
+            return false;
+        }
+        if (out.arraySize < 1) {
+            error = "array length must be at least 1 in '" + type + "'";
+            return false;
+        }
+        type = type.substr(0, bracket);
+    }
+    static const std::map<std::string, ParamType> types = {
+        {"float", ParamType::Float},   {"int", ParamType::Int},       {"integer", ParamType::Int},
+        {"color", ParamType::Color},   {"point", ParamType::Point},   {"vector", ParamType::Vector},
+        {"normal", ParamType::Normal}, {"hpoint", ParamType::HPoint}, {"string", ParamType::String},
+    };
+    auto found = types.find(type);
+    if (found == types.end()) {
+        error = "unknown parameter type '" + type + "' (expected float, int, color, point, vector, normal, string)";
+        return false;
+    }
+    out.type = found->second;
+    if (i != parts.size()) {
+        error = "cannot parse declaration '" + text + "'";
+        return false;
+    }
+    return true;
+}
+
+void Declarations::declare(std::string const& name, std::string const& declaration, SourceLocation const& where) {
+    ParamDecl decl;
+    std::string error;
+    if (!parseDeclaration(declaration + " " + name, decl, error))
+        throw RibError(where, "Declare \"" + name + "\": " + (error.empty() ? "missing type" : error));
+    m_known[name] = decl;
+}
+
+ParamDecl Declarations::resolve(std::string const& token, SourceLocation const& where) const {
+    ParamDecl decl;
+    std::string error;
+    if (parseDeclaration(token, decl, error)) return decl;
+    if (!error.empty()) throw RibError(where, error);
+    auto found = m_known.find(token);
+    if (found == m_known.end())
+        throw RibError(where, "parameter \"" + token +
+                                  "\" has no type: write it as \"<type> " + token + "\", e.g. \"float " + token + "\"");
+    return found->second;
+}
+
+size_t Param::count() const {
+    if (decl.type == ParamType::String) return strings.size();
+    if (decl.type == ParamType::Int) return ints.size();
+    return floats.size() / static_cast<size_t>(componentsOf(decl.type));
+}
+
+void ParamList::add(Param param) {
+    for (auto& existing : m_params)
+        if (existing.name() == param.name()) {
+            existing = std::move(param);
+            return;
+        }
+    m_params.push_back(std::move(param));
+}
+
+Param const* ParamList::find(std::string const& name) const {
+    for (auto const& p : m_params)
+        if (p.name() == name) {
+            p.used = true;
+            return &p;
+        }
+    return nullptr;
+}
+
+Param const& ParamList::expect(Param const& p, std::initializer_list<ParamType> types, size_t count) const {
+    bool typeOk = false;
+    std::string wanted;
+    for (ParamType t : types) {
+        typeOk = typeOk || p.decl.type == t;
+        wanted += (wanted.empty() ? "" : " or ") + std::string(paramTypeName(t));
+    }
+    if (!typeOk)
+        throw RibError(p.location, "parameter \"" + p.name() + "\" should be " + wanted + ", not " +
+                                       paramTypeName(p.decl.type));
+    if (count && p.count() != count)
+        throw RibError(p.location, "parameter \"" + p.name() + "\" needs " + std::to_string(count) + " value" +
+                                       (count > 1 ? "s" : "") + ", got " + std::to_string(p.count()));
+    return p;
+}
+
+float ParamList::getFloat(std::string const& name, float dflt) const {
+    Param const* p = find(name);
+    if (!p) return dflt;
+    expect(*p, {ParamType::Float, ParamType::Int}, 1);
+    return p->floats[0];
+}
+
+int ParamList::getInt(std::string const& name, int dflt) const {
+    Param const* p = find(name);
+    if (!p) return dflt;
+    expect(*p, {ParamType::Int, ParamType::Float}, 1);
+    float v = p->floats[0];
+    if (v != static_cast<float>(static_cast<int>(v)))
+        throw RibError(p->location, "parameter \"" + name + "\" must be a whole number, got " + std::to_string(v));
+    return static_cast<int>(v);
+}
+
+Vec3 ParamList::getColor(std::string const& name, Vec3 const& dflt) const {
+    Param const* p = find(name);
+    if (!p) return dflt;
+    expect(*p, {ParamType::Color}, 1);
+    return Vec3(p->floats[0], p->floats[1], p->floats[2]);
+}
+
+Vec3 ParamList::getVector(std::string const& name, Vec3 const& dflt) const {
+    Param const* p = find(name);
+    if (!p) return dflt;
+    expect(*p, {ParamType::Vector, ParamType::Point, ParamType::Normal}, 1);
+    return Vec3(p->floats[0], p->floats[1], p->floats[2]);
+}
+
+std::string ParamList::getString(std::string const& name, std::string const& dflt) const {
+    Param const* p = find(name);
+    if (!p) return dflt;
+    expect(*p, {ParamType::String}, 1);
+    return p->strings[0];
+}
+
+std::vector<float> const* ParamList::getFloats(std::string const& name, ParamType type) const {
+    Param const* p = find(name);
+    if (!p) return nullptr;
+    if (type == ParamType::Float)
+        expect(*p, {ParamType::Float, ParamType::Int}, 0);
+    else
+        expect(*p, {type}, 0);
+    return &p->floats;
+}
+
+std::vector<int> const* ParamList::getInts(std::string const& name) const {
+    Param const* p = find(name);
+    if (!p) return nullptr;
+    expect(*p, {ParamType::Int, ParamType::Float}, 0);
+    return &p->ints;
+}
+
+void ParamList::warnUnused(Diagnostics& diagnostics, std::string const& owner) const {
+    for (auto const& p : m_params)
+        if (!p.used) diagnostics.warn(p.location, owner + ": parameter \"" + p.name() + "\" is not used; ignored");
+}
+
+}  // namespace bxdflab

@@ -1,0 +1,85 @@
+// Typed parameter lists, as written after a RIB request:
+//   "float intensity" [150]  "color lightColor" [1 0.9 0.8]  "string name" "x"
+// Each parameter keeps its declaration (type, storage class, array length),
+// its values and where it was written, so that errors and warnings point at it.
+#pragma once
+
+#include <map>
+#include <string>
+#include <vector>
+
+#include "core/Diagnostics.h"
+#include "core/Error.h"
+#include "core/Math.h"
+
+namespace bxdflab {
+
+enum class ParamType { Float, Int, Color, Point, Vector, Normal, HPoint, String };
+
+/// How many floats one element of a type takes (1 for float/int/string).
+int componentsOf(ParamType type);
+const char* paramTypeName(ParamType type);
+
+/// A parsed declaration such as "uniform float[2] st".
+struct ParamDecl {
+    std::string name;
+    ParamType type = ParamType::Float;
+    std::string storageClass;  ///< constant, uniform, varying, vertex, facevarying (or empty)
+    int arraySize = 1;         ///< elements per item, e.g. 2 for float[2]
+};
+
+/// Declarations known without a Declare request (the RI standard ones), plus
+/// whatever the RIB declared. Parses "type name" strings.
+class Declarations {
+public:
+    Declarations();
+    void declare(std::string const& name, std::string const& declaration, SourceLocation const& where);
+    /// Parses a parameter token like "float fov" or "fov". Throws on a bad type.
+    ParamDecl resolve(std::string const& token, SourceLocation const& where) const;
+
+private:
+    static bool parseDeclaration(std::string const& text, ParamDecl& out, std::string& error);
+    std::map<std::string, ParamDecl> m_known;
+};
+
+struct Param {
+    ParamDecl decl;
+    std::vector<float> floats;  ///< Float, Int (as floats too), Color, Point, Vector, Normal
+    std::vector<int> ints;      ///< Int
+    std::vector<std::string> strings;
+    SourceLocation location;
+    mutable bool used = false;
+
+    std::string const& name() const { return decl.name; }
+    /// Number of items (values / components).
+    size_t count() const;
+};
+
+class ParamList {
+public:
+    void add(Param param);
+    bool has(std::string const& name) const { return find(name) != nullptr; }
+    Param const* find(std::string const& name) const;
+    std::vector<Param> const& all() const { return m_params; }
+    bool empty() const { return m_params.empty(); }
+
+    // Typed single-value getters: return the default when absent, throw a
+    // located RibError when present with the wrong type or count.
+    float getFloat(std::string const& name, float dflt) const;
+    int getInt(std::string const& name, int dflt) const;
+    Vec3 getColor(std::string const& name, Vec3 const& dflt) const;
+    Vec3 getVector(std::string const& name, Vec3 const& dflt) const;
+    std::string getString(std::string const& name, std::string const& dflt) const;
+    /// Array getters (any length); absent gives an empty vector.
+    std::vector<float> const* getFloats(std::string const& name, ParamType type) const;
+    std::vector<int> const* getInts(std::string const& name) const;
+
+    /// Warns once for each parameter that no one read (typos, unsupported options).
+    void warnUnused(Diagnostics& diagnostics, std::string const& owner) const;
+
+private:
+    Param const& expect(Param const& p, std::initializer_list<ParamType> types, size_t count) const;
+    std::vector<Param> m_params;
+};
+
+}  // namespace bxdflab

@@ -1,0 +1,131 @@
+#include "parse/RibRequest.h"
+
+#include <cmath>
+#include <sstream>
+
+namespace bxdflab {
+
+std::string RibValue::describe() const {
+    std::ostringstream out;
+    switch (kind) {
+        case Kind::Number: out << "number " << numbers[0]; break;
+        case Kind::String: out << "string \"" << strings[0] << "\""; break;
+        case Kind::NumberArray: out << "an array of " << numbers.size() << " numbers"; break;
+        case Kind::StringArray: out << "an array of " << strings.size() << " strings"; break;
+    }
+    return out.str();
+}
+
+void RequestReader::fail(SourceLocation const& where, std::string const& message) const {
+    throw RibError(where, m_request.name + ": " + message);
+}
+
+RibValue const& RequestReader::take(const char* what, const char* expected) {
+    if (atEnd()) fail(m_request.where, std::string("expected ") + what + " (" + expected + "), but the request ends here");
+    return m_request.args[m_next++];
+}
+
+bool RequestReader::nextIsString() const {
+    if (atEnd()) return false;
+    auto kind = m_request.args[m_next].kind;
+    return kind == RibValue::Kind::String || kind == RibValue::Kind::StringArray;
+}
+
+float RequestReader::number(const char* what) {
+    RibValue const& v = take(what, "a number");
+    if ((v.kind == RibValue::Kind::Number || v.kind == RibValue::Kind::NumberArray) && v.numbers.size() == 1) {
+        if (!std::isfinite(v.numbers[0])) fail(v.where, std::string(what) + " must be a finite number");
+        return static_cast<float>(v.numbers[0]);
+    }
+    fail(v.where, std::string("expected ") + what + " (a number), found " + v.describe());
+}
+
+std::vector<float> RequestReader::numbers(size_t count, const char* what) {
+    std::vector<float> out;
+    if (!atEnd() && m_request.args[m_next].kind == RibValue::Kind::NumberArray) {
+        RibValue const& v = take(what, "numbers");
+        if (v.numbers.size() != count)
+            fail(v.where, std::string("expected ") + std::to_string(count) + " numbers for " + what + ", found " +
+                              std::to_string(v.numbers.size()));
+        for (double d : v.numbers) out.push_back(static_cast<float>(d));
+    } else {
+        for (size_t i = 0; i < count; ++i) out.push_back(number(what));
+    }
+    for (float f : out)
+        if (!std::isfinite(f)) fail(m_request.where, std::string(what) + " must be finite numbers");
+    return out;
+}
+
+std::vector<float> RequestReader::numberArray(const char* what) {
+    RibValue const& v = take(what, "an array of numbers");
+    if (v.kind != RibValue::Kind::NumberArray && v.kind != RibValue::Kind::Number)
+        fail(v.where, std::string("expected ") + what + " (an array of numbers), found " + v.describe());
+    std::vector<float> out;
+    for (double d : v.numbers) {
+        if (!std::isfinite(d)) fail(v.where, std::string(what) + " must be finite numbers");
+        out.push_back(static_cast<float>(d));
+    }
+    return out;
+}
+
+std::vector<int> RequestReader::intArray(const char* what) {
+    RibValue const& v = take(what, "an array of integers");
+    if (v.kind != RibValue::Kind::NumberArray && v.kind != RibValue::Kind::Number)
+        fail(v.where, std::string("expected ") + what + " (an array of integers), found " + v.describe());
+    std::vector<int> out;
+    for (double d : v.numbers) {
+        if (d != std::floor(d) || std::fabs(d) > 2e9) fail(v.where, std::string(what) + " must be whole numbers");
+        out.push_back(static_cast<int>(d));
+    }
+    return out;
+}
+
+std::string RequestReader::string(const char* what) {
+    RibValue const& v = take(what, "a string");
+    if ((v.kind == RibValue::Kind::String || v.kind == RibValue::Kind::StringArray) && v.strings.size() == 1)
+        return v.strings[0];
+    fail(v.where, std::string("expected ") + what + " (a string), found " + v.describe());
+}
+
+ParamList RequestReader::params() {
+    ParamList list;
+    while (!atEnd()) {
+        RibValue const& nameValue = m_request.args[m_next++];
+        if (nameValue.kind != RibValue::Kind::String)
+            fail(nameValue.where, "expected a parameter name such as \"float intensity\", found " + nameValue.describe());
+        if (atEnd()) fail(nameValue.where, "parameter \"" + nameValue.strings[0] + "\" has no value");
+        RibValue const& value = m_request.args[m_next++];
+        Param param;
+        param.decl = m_declarations.resolve(nameValue.strings[0], nameValue.where);
+        param.location = nameValue.where;
+        bool isString = value.kind == RibValue::Kind::String || value.kind == RibValue::Kind::StringArray;
+        if ((param.decl.type == ParamType::String) != isString)
+            fail(value.where, "parameter \"" + param.name() + "\" is declared " + paramTypeName(param.decl.type) +
+                                  " but its value is " + value.describe());
+        if (isString) {
+            param.strings = value.strings;
+        } else {
+            size_t group = static_cast<size_t>(componentsOf(param.decl.type) * param.decl.arraySize);
+            if (value.numbers.empty() || value.numbers.size() % group != 0)
+                fail(value.where, "parameter \"" + param.name() + "\" (" + paramTypeName(param.decl.type) + ") needs a multiple of " +
+                                      std::to_string(group) + " numbers, found " + std::to_string(value.numbers.size()));
+            for (double d : value.numbers) {
+                if (!std::isfinite(d)) fail(value.where, "parameter \"" + param.name() + "\" has a non-finite value");
+                if (param.decl.type == ParamType::Int) {
+                    if (d != std::floor(d))
+                        fail(value.where, "parameter \"" + param.name() + "\" is an int but has value " + std::to_string(d));
+                    param.ints.push_back(static_cast<int>(d));
+                }
+                param.floats.push_back(static_cast<float>(d));
+            }
+        }
+        list.add(std::move(param));
+    }
+    return list;
+}
+
+void RequestReader::finish() {
+    if (!atEnd()) fail(m_request.args[m_next].where, "unexpected extra argument " + m_request.args[m_next].describe());
+}
+
+}  // namespace bxdflab

@@ -1,0 +1,59 @@
+// One RIB request with its arguments, and a reader that checks them.
+//
+// RIB is loosely typed: `Sphere 1 -1 1 360` and `Sphere [1 -1 1 360]` mean
+// the same. The reader accepts both and reports mismatches as
+// "file:line:col: Sphere: expected zmax (a number), found string \"x\"".
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "core/Error.h"
+#include "parse/ParamList.h"
+
+namespace bxdflab {
+
+struct RibValue {
+    enum class Kind { Number, String, NumberArray, StringArray };
+    Kind kind = Kind::Number;
+    std::vector<double> numbers;
+    std::vector<std::string> strings;
+    SourceLocation where;
+    std::string describe() const;
+};
+
+struct RibRequest {
+    std::string name;
+    SourceLocation where;
+    std::vector<RibValue> args;
+};
+
+class RequestReader {
+public:
+    RequestReader(RibRequest const& request, Declarations const& declarations)
+        : m_request(request), m_declarations(declarations) {}
+
+    float number(const char* what);
+    /// `count` numbers, given one by one or as one array.
+    std::vector<float> numbers(size_t count, const char* what);
+    /// One array of numbers of any length (a lone number counts as an array of one).
+    std::vector<float> numberArray(const char* what);
+    std::vector<int> intArray(const char* what);
+    std::string string(const char* what);
+    bool atEnd() const { return m_next >= m_request.args.size(); }
+    bool nextIsString() const;
+    /// The remaining arguments as "type name" value pairs.
+    ParamList params();
+    /// Throws if arguments are left over.
+    void finish();
+    [[noreturn]] void fail(SourceLocation const& where, std::string const& message) const;
+    SourceLocation const& where() const { return m_request.where; }
+
+private:
+    RibValue const& take(const char* what, const char* expected);
+    RibRequest const& m_request;
+    Declarations const& m_declarations;
+    size_t m_next = 0;
+};
+
+}  // namespace bxdflab

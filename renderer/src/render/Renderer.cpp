@@ -1,0 +1,341 @@
+#include "render/Renderer.h"
+
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/global_control.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <chrono>
+#include <cstdio>
+#include <mutex>
+#include <thread>
+
+#include "accel/RayTracer.h"
+#include "scene/Camera.h"
+#include "shade/BxdfInstance.h"
+#include "shade/MemoryArena.h"
+#include "shade/PluginSearchPath.h"
+#include "shade/ShadingContextImpl.h"
+
+namespace bxdflab {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+
+/// At most this many shade points are in flight per tile (bounds memory at any spp).
+constexpr int kMaxPointsPerChunk = 4096;
+
+/// Per-worker state: memory, ray counts, shading-time counters.
+struct Worker {
+    MemoryArena arena;
+    std::vector<HitRecord> hits, groupHits;
+    std::vector<RixRNG::SampleCtx> samples, groupSamples;
+    std::vector<RtColorRGB> radiance, groupRadiance;
+    std::vector<float> alpha;
+    std::vector<int> order;
+};
+
+class ProgressBar {
+public:
+    ProgressBar(bool enabled, int total) : m_enabled(enabled), m_total(total) {}
+    void tick() {
+        int done = ++m_done;
+        if (!m_enabled) return;
+        int percent = 100 * done / m_total;
+        std::lock_guard<std::mutex> guard(m_lock);
+        if (percent == m_shown) return;
+        m_shown = percent;
+        int bar = percent / 4;
+        std::fprintf(stderr, "\rrendering [%s%s] %3d%%", std::string(static_cast<size_t>(bar), '#').c_str(),
+                     std::string(static_cast<size_t>(25 - bar), ' ').c_str(), percent);
+        if (done == m_total) std::fputc('\n', stderr);
+        std::fflush(stderr);
+    }
+
+private:
+    bool m_enabled;
+    int m_total;
+    std::atomic<int> m_done{0};
+    std::mutex m_lock;
+    int m_shown = -1;
+};
+
+}  // namespace
+
+struct Renderer::Impl {
+    Scene& scene;
+    RenderSettings settings;
+    Diagnostics& diagnostics;
+    PluginLoader loader;
+    std::vector<std::unique_ptr<BxdfInstance>> materials;
+    std::unique_ptr<RayTracer> tracer;
+    std::unique_ptr<Camera> camera;
+    std::unique_ptr<Integrator> integrator;
+    std::vector<Light const*> shadingLights;  // what next-event estimation samples
+    std::vector<Light const*> cameraLights;   // lights the camera sees directly
+    PluginMessages messages;
+    BuiltinCounters builtins;
+    std::atomic<uint64_t> shadePoints{0}, batches{0}, nonFinite{0};
+
+    Impl(Scene& s, RenderSettings const& rs, Diagnostics& d)
+        : scene(s),
+          settings(rs),
+          diagnostics(d),
+          loader(pluginSearchPath({rs.pluginPath, s.pluginSearchPath, s.file}), d),
+          messages(d, "renderer") {}
+
+    void renderTile(int tileX, int tileY, int spp, Film& film, Worker& worker);
+    void shadeChunk(Worker& worker, int count);
+};
+
+Renderer::Renderer(Scene& scene, RenderSettings settings, Diagnostics& diagnostics)
+    : m_impl(std::make_unique<Impl>(scene, settings, diagnostics)) {
+    auto start = Clock::now();
+    Impl& r = *m_impl;
+
+    // Plugins: one instance per Bxdf statement; each plugin hears RenderBegin once.
+    for (MaterialDesc const& material : scene.materials) {
+        BxdfPlugin& plugin = r.loader.bxdf(material.plugin, material.where);
+        r.materials.push_back(std::make_unique<BxdfInstance>(material, plugin, diagnostics));
+    }
+    std::vector<BxdfPlugin*> synced;
+    for (auto const& m : r.materials) {
+        BxdfPlugin& plugin = m->plugin();
+        if (std::find(synced.begin(), synced.end(), &plugin) != synced.end()) continue;
+        plugin.factory()->Synchronize(plugin.context(), k_RixSCRenderBegin, nullptr);
+        synced.push_back(&plugin);
+        m_stats.plugins.push_back(plugin.name() + " (" + plugin.path() + ")");
+    }
+
+    r.camera = std::make_unique<Camera>(scene.camera, scene.xres, scene.yres, scene.pixelAspect);
+    r.integrator = makeIntegrator(scene.integrator, scene, r.camera->position(), diagnostics);
+    r.shadingLights = r.integrator->extraLights();
+    if (r.shadingLights.empty())
+        for (auto const& light : scene.lights) r.shadingLights.push_back(light.get());
+    for (auto const& light : scene.lights)
+        if (light->visibility.camera) r.cameraLights.push_back(light.get());
+    r.tracer = std::make_unique<RayTracer>(scene);
+
+    // What this render will and will not simulate.
+    EffectReport& effects = m_stats.effects;
+    r.integrator->describeEffects(scene, effects);
+    bool opaque = true;
+    for (auto const& m : r.materials) opaque = opaque && m->hints() == RixBxdfFactory::k_TriviallyOpaque;
+    if (opaque)
+        effects.skip("opacity and presence", "every Bxdf is trivially opaque");
+    else
+        diagnostics.warn("a Bxdf asks for presence/opacity/interior computation, which this renderer does not do; "
+                         "surfaces are treated as opaque");
+    for (std::string const& dropped : scene.dropped) effects.skip("dropped at load", dropped);
+
+    m_stats.integrator = r.integrator->name();
+    m_stats.width = scene.xres;
+    m_stats.height = scene.yres;
+    m_stats.spp = settings.spp > 0 ? settings.spp : scene.spp;
+    m_stats.threads = settings.threads > 0 ? settings.threads
+                                           : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    m_stats.setupSeconds = secondsSince(start);
+}
+
+Renderer::~Renderer() {
+    if (!m_impl) return;
+    std::vector<BxdfPlugin*> done;
+    for (auto const& m : m_impl->materials) {
+        BxdfPlugin& plugin = m->plugin();
+        if (std::find(done.begin(), done.end(), &plugin) != done.end()) continue;
+        plugin.factory()->Synchronize(plugin.context(), k_RixSCRenderEnd, nullptr);
+        done.push_back(&plugin);
+    }
+    m_impl->materials.clear();  // instance data is freed before the plugins unload
+}
+
+void Renderer::Impl::renderTile(int tileX, int tileY, int spp, Film& film, Worker& w) {
+    int const size = settings.tileSize;
+    int x0 = tileX * size, y0 = tileY * size;
+    int x1 = std::min(x0 + size, scene.xres), y1 = std::min(y0 + size, scene.yres);
+    int pixels = (x1 - x0) * (y1 - y0);
+    int chunk = std::max(1, std::min(spp, kMaxPointsPerChunk / pixels));
+    RayCounts counts;
+
+    for (int s0 = 0; s0 < spp; s0 += chunk) {
+        int s1 = std::min(spp, s0 + chunk);
+        int count = pixels * (s1 - s0);
+        w.hits.resize(static_cast<size_t>(count));
+        w.samples.resize(static_cast<size_t>(count));
+        w.radiance.assign(static_cast<size_t>(count), RtColorRGB(0.0f));
+        w.alpha.assign(static_cast<size_t>(count), 0.0f);
+
+        // Camera rays, pixel by pixel and sample by sample: this order fixes
+        // each pixel's sample sequence, whatever the thread count.
+        int k = 0;
+        for (int y = y0; y < y1; ++y)
+            for (int x = x0; x < x1; ++x) {
+                uint32_t pixelSeed = RixRNG::Hash(static_cast<uint32_t>(y * scene.xres + x) ^ RixRNG::Hash(settings.seed + 0x5bd1e995u));
+                for (int s = s0; s < s1; ++s, ++k) {
+                    RixRNG::SampleCtx& sample = w.samples[static_cast<size_t>(k)];
+                    sample = {pixelSeed, static_cast<uint32_t>(s), 0};
+                    RtFloat2 jitter = RixRNG::Sample2D(sample);
+                    Vec3 org, dir;
+                    camera->generateRay(static_cast<float>(x) + jitter.x, static_cast<float>(y) + jitter.y, org, dir);
+                    w.hits[static_cast<size_t>(k)] = tracer->intersect(org, dir, 0.0f, kInfinity, RayKind::Camera, counts);
+                }
+            }
+
+        // Lights the camera sees directly, in front of any geometry.
+        for (int i = 0; i < count; ++i) {
+            HitRecord& hit = w.hits[static_cast<size_t>(i)];
+            float nearest = hit.hit() ? hit.t : kInfinity;
+            for (Light const* light : cameraLights) {
+                float distance, pdf;
+                RtColorRGB radiance;
+                if (light->intersect(hit.org, hit.dir, distance, radiance, pdf) &&
+                    (distance < nearest || (light->isInfinite() && !hit.hit()))) {
+                    nearest = distance;
+                    w.radiance[static_cast<size_t>(i)] = radiance;
+                    w.alpha[static_cast<size_t>(i)] = 1.0f;
+                    hit.geomID = RTC_INVALID_GEOMETRY_ID;  // nothing to shade behind the light
+                }
+            }
+            if (hit.hit()) w.alpha[static_cast<size_t>(i)] = 1.0f;
+        }
+
+        shadeChunk(w, count);
+
+        // Into the film, in the fixed sample order; non-finite values are counted and dropped.
+        k = 0;
+        for (int y = y0; y < y1; ++y)
+            for (int x = x0; x < x1; ++x)
+                for (int s = s0; s < s1; ++s, ++k) {
+                    RtColorRGB value = w.radiance[static_cast<size_t>(k)];
+                    if (!std::isfinite(value.r) || !std::isfinite(value.g) || !std::isfinite(value.b)) {
+                        nonFinite.fetch_add(1, std::memory_order_relaxed);
+                        value = RtColorRGB(0.0f);
+                    }
+                    film.addSample(x, y, value, w.alpha[static_cast<size_t>(k)]);
+                }
+    }
+    tracer->counters().add(counts);
+}
+
+void Renderer::Impl::shadeChunk(Worker& w, int count) {
+    // Group the hits by Bxdf instance (a counting sort keeps sample order within a group).
+    size_t numMaterials = materials.size();
+    std::vector<int> starts(numMaterials + 1, 0);
+    for (int i = 0; i < count; ++i) {
+        HitRecord const& hit = w.hits[static_cast<size_t>(i)];
+        if (hit.hit()) ++starts[static_cast<size_t>(scene.shapes[hit.geomID]->material) + 1];
+    }
+    for (size_t m = 0; m < numMaterials; ++m) starts[m + 1] += starts[m];
+    w.order.resize(static_cast<size_t>(starts[numMaterials]));
+    std::vector<int> fill(starts.begin(), starts.end() - 1);
+    for (int i = 0; i < count; ++i) {
+        HitRecord const& hit = w.hits[static_cast<size_t>(i)];
+        if (hit.hit()) w.order[static_cast<size_t>(fill[static_cast<size_t>(scene.shapes[hit.geomID]->material)]++)] = i;
+    }
+
+    IntegratorServices services(*tracer, shadingLights);
+    for (size_t m = 0; m < numMaterials; ++m) {
+        int begin = starts[m], n = starts[m + 1] - starts[m];
+        if (n == 0) continue;
+        w.groupHits.resize(static_cast<size_t>(n));
+        w.groupSamples.resize(static_cast<size_t>(n));
+        w.groupRadiance.assign(static_cast<size_t>(n), RtColorRGB(0.0f));
+        for (int j = 0; j < n; ++j) {
+            int source = w.order[static_cast<size_t>(begin + j)];
+            w.groupHits[static_cast<size_t>(j)] = w.hits[static_cast<size_t>(source)];
+            w.groupSamples[static_cast<size_t>(j)] = w.samples[static_cast<size_t>(source)];
+        }
+        BxdfInstance const& material = *materials[m];
+        ShadingContextImpl ctx(scene, material, w.groupHits.data(), n, camera->pixelSpread(), w.arena, &messages, builtins);
+        RixRNG rng(w.groupSamples.data(), n);
+        RixBxdfFactory* factory = material.plugin().factory();
+        RixBxdf* bxdf = factory->BeginScatter(&ctx, RixBXLobeTraits::All(), k_RixSCScatterQuery, nullptr,
+                                              material.instanceData());
+        if (!bxdf) {
+            diagnostics.warn("plugin \"" + material.plugin().name() + "\": BeginScatter returned null; its surfaces render black");
+        } else {
+            integrator->integrate(ctx, *bxdf, rng, services, w.groupRadiance.data());
+            factory->EndScatter(bxdf);
+        }
+        for (int j = 0; j < n; ++j)
+            w.radiance[static_cast<size_t>(w.order[static_cast<size_t>(begin + j)])] += w.groupRadiance[static_cast<size_t>(j)];
+        w.arena.reset();
+        shadePoints.fetch_add(static_cast<uint64_t>(n), std::memory_order_relaxed);
+        batches.fetch_add(1, std::memory_order_relaxed);
+    }
+    tracer->counters().add(services.rayCounts());
+    nonFinite.fetch_add(services.takeNonFinite(), std::memory_order_relaxed);
+}
+
+Film Renderer::render() {
+    Impl& r = *m_impl;
+    auto start = Clock::now();
+    int spp = m_stats.spp;
+    Film film(r.scene.xres, r.scene.yres);
+    int size = r.settings.tileSize;
+    int tilesX = (r.scene.xres + size - 1) / size, tilesY = (r.scene.yres + size - 1) / size;
+    int tiles = tilesX * tilesY;
+    ProgressBar progress(r.settings.progress, tiles);
+    tbb::enumerable_thread_specific<Worker> workers;
+
+    tbb::task_arena arena(m_stats.threads);
+    arena.execute([&] {
+        tbb::parallel_for(0, tiles, [&](int tile) {
+            r.renderTile(tile % tilesX, tile / tilesX, spp, film, workers.local());
+            progress.tick();
+        });
+    });
+
+    m_stats.renderSeconds = secondsSince(start);
+    RayCounters const& rays = r.tracer->counters();
+    m_stats.cameraRays = rays.camera.load();
+    m_stats.shadowRays = rays.shadow.load();
+    m_stats.indirectRays = rays.indirect.load();
+    m_stats.shadePoints = r.shadePoints.load();
+    m_stats.batches = r.batches.load();
+    m_stats.surfacePoints = r.builtins.surfacePoints.load();
+    m_stats.tangentPoints = r.builtins.tangentPoints.load();
+    m_stats.nonFiniteSamples = r.nonFinite.load();
+
+    // Effects decided while shading: tangent frames are computed only on request.
+    auto& effects = m_stats.effects;
+    if (m_stats.tangentPoints > 0)
+        effects.simulate("tangent frames (dPdu, dPdv, Tn) for " + std::to_string(m_stats.tangentPoints) + " points");
+    else
+        effects.skip("tangent frames", "no plugin asked for Tn, dPdu, dPdv, du or dv");
+    if (m_stats.nonFiniteSamples > 0)
+        r.diagnostics.warn(std::to_string(m_stats.nonFiniteSamples) +
+                           " non-finite (NaN or infinite) sample values were dropped; check the Bxdf for divisions by zero");
+    return film;
+}
+
+nlohmann::json RenderStats::toJson(Diagnostics const& diagnostics) const {
+    nlohmann::json skipped = nlohmann::json::array();
+    for (auto const& [effect, reason] : effects.skipped) skipped.push_back({{"effect", effect}, {"reason", reason}});
+    nlohmann::json warnings = nlohmann::json::array();
+    for (auto const& entry : diagnostics.entries())
+        if (entry.severity != Diagnostics::Severity::Info) warnings.push_back({{"message", entry.text}, {"count", entry.count}});
+    return {
+        {"wall_s", setupSeconds + renderSeconds},
+        {"setup_s", setupSeconds},
+        {"render_s", renderSeconds},
+        {"threads", threads},
+        {"spp", spp},
+        {"width", width},
+        {"height", height},
+        {"integrator", integrator},
+        {"rays", {{"camera", cameraRays}, {"shadow", shadowRays}, {"indirect", indirectRays}}},
+        {"shade_points", shadePoints},
+        {"batches", batches},
+        {"builtins", {{"surface_points", surfacePoints}, {"tangent_points", tangentPoints}}},
+        {"nonfinite_samples", nonFiniteSamples},
+        {"effects", {{"simulated", effects.simulated}, {"skipped", skipped}}},
+        {"plugins", plugins},
+        {"warnings", warnings},
+    };
+}
+
+}  // namespace bxdflab

@@ -1,0 +1,60 @@
+// Drives a render: loads the scene's plugins, builds the acceleration
+// structure, works out which effects the scene calls for, then renders tiles
+// in parallel. Within a tile, camera hits are grouped by Bxdf instance and
+// each group is shaded as one batch (one RixShadingContext, numPts > 1).
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "core/Diagnostics.h"
+#include "film/Film.h"
+#include "integrate/Integrator.h"
+#include "scene/Scene.h"
+#include "shade/PluginLoader.h"
+
+namespace bxdflab {
+
+struct RenderSettings {
+    int spp = 0;        ///< 0: the scene's PixelSamples / Hider maxsamples
+    int threads = 0;    ///< 0: all cores
+    uint32_t seed = 0;  ///< sample-sequence seed
+    bool progress = false;
+    std::string pluginPath;  ///< --plugin-path
+    int tileSize = 16;
+};
+
+struct RenderStats {
+    double setupSeconds = 0, renderSeconds = 0;
+    int threads = 0, spp = 0, width = 0, height = 0;
+    uint64_t cameraRays = 0, shadowRays = 0, indirectRays = 0;
+    uint64_t shadePoints = 0, batches = 0;
+    uint64_t surfacePoints = 0, tangentPoints = 0;
+    uint64_t nonFiniteSamples = 0;
+    EffectReport effects;
+    std::vector<std::string> plugins;
+    std::string integrator;
+    nlohmann::json toJson(Diagnostics const& diagnostics) const;
+};
+
+class Renderer {
+public:
+    /// Loads plugins and builds everything needed to render; throws
+    /// RenderError / RibError on bad input (missing plugin, bad parameters).
+    Renderer(Scene& scene, RenderSettings settings, Diagnostics& diagnostics);
+    ~Renderer();
+
+    /// Renders the whole image; can be called more than once.
+    Film render();
+    RenderStats const& stats() const { return m_stats; }
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> m_impl;
+    RenderStats m_stats;
+};
+
+}  // namespace bxdflab

@@ -1,0 +1,572 @@
+#include "scene/SceneBuilder.h"
+
+#include <array>
+#include <cmath>
+#include <filesystem>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/type_ptr.hpp>
+#include <sstream>
+
+#include "parse/RibParser.h"
+#include "scene/lights/LightFactory.h"
+#include "scene/shapes/MeshBuilders.h"
+#include "scene/shapes/Quadric.h"
+
+namespace bxdflab {
+namespace fs = std::filesystem;
+
+namespace {
+constexpr int kMaxArchiveDepth = 32;
+constexpr int kMaxResolution = 16384;
+
+std::vector<std::string> splitPath(std::string const& list) {
+    std::vector<std::string> parts;
+    std::stringstream in(list);
+    for (std::string item; std::getline(in, item, ':');)
+        if (!item.empty()) parts.push_back(item);
+    return parts;
+}
+}  // namespace
+
+SceneBuilder::SceneBuilder(Scene& scene, Diagnostics& diagnostics) : m_scene(scene), m_diagnostics(diagnostics) {}
+
+std::map<std::string, SceneBuilder::Handler> const& SceneBuilder::handlers() {
+    static const std::map<std::string, Handler> table = {
+        {"version", &SceneBuilder::ignore},
+        {"FrameBegin", &SceneBuilder::ignore},
+        {"FrameEnd", &SceneBuilder::ignore},
+        {"Display", &SceneBuilder::display},
+        {"Format", &SceneBuilder::format},
+        {"Projection", &SceneBuilder::projection},
+        {"ScreenWindow", &SceneBuilder::screenWindow},
+        {"PixelSamples", &SceneBuilder::pixelSamples},
+        {"Hider", &SceneBuilder::hider},
+        {"Integrator", &SceneBuilder::integrator},
+        {"Option", &SceneBuilder::option},
+        {"Declare", &SceneBuilder::declare},
+        {"WorldBegin", &SceneBuilder::worldBegin},
+        {"WorldEnd", &SceneBuilder::worldEnd},
+        {"AttributeBegin", &SceneBuilder::attributeBegin},
+        {"AttributeEnd", &SceneBuilder::attributeEnd},
+        {"TransformBegin", &SceneBuilder::transformBegin},
+        {"TransformEnd", &SceneBuilder::transformEnd},
+        {"Identity", &SceneBuilder::identity},
+        {"Transform", &SceneBuilder::transform},
+        {"ConcatTransform", &SceneBuilder::concatTransform},
+        {"Translate", &SceneBuilder::translate},
+        {"Rotate", &SceneBuilder::rotate},
+        {"Scale", &SceneBuilder::scale},
+        {"Attribute", &SceneBuilder::attribute},
+        {"Color", &SceneBuilder::color},
+        {"ReverseOrientation", &SceneBuilder::reverseOrientation},
+        {"Orientation", &SceneBuilder::orientation},
+        {"Bxdf", &SceneBuilder::bxdf},
+        {"Light", &SceneBuilder::light},
+        {"Sphere", &SceneBuilder::sphere},
+        {"Cylinder", &SceneBuilder::cylinder},
+        {"Disk", &SceneBuilder::disk},
+        {"Polygon", &SceneBuilder::polygon},
+        {"PointsPolygons", &SceneBuilder::pointsPolygons},
+        {"PointsGeneralPolygons", &SceneBuilder::pointsGeneralPolygons},
+        {"Patch", &SceneBuilder::patch},
+        {"Geometry", &SceneBuilder::geometry},
+        {"ReadArchive", &SceneBuilder::readArchive},
+    };
+    return table;
+}
+
+void SceneBuilder::readFile(std::string const& path) {
+    if (m_fileStack.empty()) m_scene.file = path;
+    if (static_cast<int>(m_fileStack.size()) >= kMaxArchiveDepth)
+        throw RenderError("archives nested more than " + std::to_string(kMaxArchiveDepth) + " deep (at \"" + path + "\")");
+    m_fileStack.push_back(path);
+    parseRibFile(path, [this](RibRequest const& r) { handle(r); });
+    m_fileStack.pop_back();
+    if (m_fileStack.empty() && m_blocks.size() > 0)
+        m_diagnostics.warn(path + ": " + std::to_string(m_blocks.size()) + " AttributeBegin/TransformBegin left open at end of file");
+}
+
+void SceneBuilder::readText(std::string const& text, std::string const& fileName) {
+    if (m_fileStack.empty()) m_scene.file = fileName;
+    m_fileStack.push_back(fileName);
+    parseRib(text, fileName, [this](RibRequest const& r) { handle(r); });
+    m_fileStack.pop_back();
+}
+
+std::string SceneBuilder::currentDirectory() const {
+    if (m_fileStack.empty()) return ".";
+    fs::path parent = fs::path(m_fileStack.back()).parent_path();
+    return parent.empty() ? "." : parent.string();
+}
+
+void SceneBuilder::warnOnce(std::string const& kind, SourceLocation const& where, std::string const& message) {
+    if (m_warnedKinds.insert(kind).second)
+        m_diagnostics.warn(where, message);
+    else
+        m_diagnostics.report(Diagnostics::Severity::Info, "(repeated) " + message);
+}
+
+void SceneBuilder::handle(RibRequest const& request) {
+    auto found = handlers().find(request.name);
+    if (found == handlers().end()) {
+        warnOnce("request " + request.name, request.where, "unsupported request " + request.name + " skipped");
+        return;
+    }
+    RequestReader reader(request, m_declarations);
+    (this->*found->second)(reader);
+}
+
+void SceneBuilder::ignore(RequestReader&) {}
+
+// ------------------------------------------------------------------ options
+
+void SceneBuilder::display(RequestReader& in) {
+    std::string name = in.string("image name");
+    std::string type = in.string("display type");
+    std::string mode = in.string("display mode");
+    ParamList params = in.params();
+    if (!name.empty() && name[0] == '+') {
+        warnOnce("secondary Display", in.where(), "secondary Display \"" + name + "\" (AOV output) is not supported; skipped");
+        return;
+    }
+    m_scene.display = {name, type, mode, in.where()};
+}
+
+void SceneBuilder::format(RequestReader& in) {
+    std::vector<float> v = in.numbers(3, "xresolution yresolution pixelaspectratio");
+    in.finish();
+    if (v[0] < 1 || v[1] < 1 || v[0] != std::floor(v[0]) || v[1] != std::floor(v[1]))
+        in.fail(in.where(), "resolution must be whole numbers of at least 1 pixel, got " + std::to_string(v[0]) + " x " +
+                                std::to_string(v[1]));
+    if (v[0] > kMaxResolution || v[1] > kMaxResolution)
+        in.fail(in.where(), "resolution " + std::to_string(static_cast<long>(v[0])) + " x " +
+                                std::to_string(static_cast<long>(v[1])) + " exceeds the limit of " +
+                                std::to_string(kMaxResolution) + " pixels per side");
+    m_scene.xres = static_cast<int>(v[0]);
+    m_scene.yres = static_cast<int>(v[1]);
+    m_scene.pixelAspect = v[2] > 0.0f ? v[2] : 1.0f;
+}
+
+void SceneBuilder::projection(RequestReader& in) {
+    std::string type = in.string("projection type");
+    ParamList params = in.params();
+    if (type != "perspective" && type != "orthographic")
+        in.fail(in.where(), "unsupported projection \"" + type + "\" (use \"perspective\" or \"orthographic\")");
+    m_scene.camera.projection = type;
+    if (Param const* fov = params.find("fov")) {
+        float value = params.getFloat("fov", 90.0f);
+        if (!(value > 0.0f && value < 180.0f))
+            throw RibError(fov->location, "Projection: fov must be between 0 and 180 degrees (exclusive), got " +
+                                              std::to_string(value));
+        m_scene.camera.fov = value;
+    }
+    params.warnUnused(m_diagnostics, "Projection");
+}
+
+void SceneBuilder::screenWindow(RequestReader& in) {
+    std::vector<float> v = in.numbers(4, "left right bottom top");
+    in.finish();
+    if (v[0] == v[1] || v[2] == v[3]) in.fail(in.where(), "screen window has zero width or height");
+    m_scene.camera.hasScreenWindow = true;
+    std::copy(v.begin(), v.end(), m_scene.camera.screenWindow);
+}
+
+void SceneBuilder::pixelSamples(RequestReader& in) {
+    std::vector<float> v = in.numbers(2, "xsamples ysamples");
+    in.finish();
+    if (!(v[0] >= 1.0f && v[1] >= 1.0f)) in.fail(in.where(), "sample counts must be at least 1");
+    m_scene.spp = static_cast<int>(std::ceil(v[0] * v[1]));
+    m_sppFromPixelSamples = true;
+}
+
+void SceneBuilder::hider(RequestReader& in) {
+    std::string type = in.string("hider type");
+    ParamList params = in.params();
+    if (type != "raytrace") warnOnce("hider " + type, in.where(), "Hider \"" + type + "\" treated as \"raytrace\"");
+    if (Param const* p = params.find("maxsamples")) {
+        int spp = params.getInt("maxsamples", 16);
+        if (spp < 1) throw RibError(p->location, "Hider: maxsamples must be at least 1, got " + std::to_string(spp));
+        m_scene.spp = spp;
+    }
+    params.find("minsamples");  // adaptive sampling is not implemented: every pixel gets maxsamples
+    params.warnUnused(m_diagnostics, "Hider");
+}
+
+void SceneBuilder::integrator(RequestReader& in) {
+    m_scene.integrator.name = in.string("integrator name");
+    m_scene.integrator.handle = in.string("integrator handle");
+    m_scene.integrator.params = in.params();
+    m_scene.integrator.where = in.where();
+    m_scene.integrator.given = true;
+}
+
+void SceneBuilder::option(RequestReader& in) {
+    std::string category = in.string("option name");
+    ParamList params = in.params();
+    if (category != "searchpath") {
+        warnOnce("option " + category, in.where(), "Option \"" + category + "\" is not supported; skipped");
+        return;
+    }
+    auto update = [&](std::vector<std::string>& list, std::string const& key) {
+        Param const* p = params.find(key);
+        if (!p) return;
+        std::string value = params.getString(key, "");
+        std::vector<std::string> previous = list;
+        list.clear();
+        for (std::string const& item : splitPath(value)) {
+            if (item == "&") {
+                list.insert(list.end(), previous.begin(), previous.end());  // the path so far
+            } else if (item == "@") {
+                continue;  // the built-in default is always searched last
+            } else {
+                fs::path path(item);
+                list.push_back(path.is_relative() ? (fs::path(currentDirectory()) / path).string() : item);
+            }
+        }
+    };
+    update(m_scene.pluginSearchPath, "rixplugin");
+    update(m_archiveSearchPath, "archive");
+    for (auto const& p : params.all())
+        if (!p.used) warnOnce("searchpath " + p.name(), p.location, "Option \"searchpath\" \"" + p.name() + "\" is not used; skipped");
+}
+
+void SceneBuilder::declare(RequestReader& in) {
+    std::string name = in.string("parameter name");
+    std::string decl = in.string("declaration");
+    in.finish();
+    m_declarations.declare(name, decl, in.where());
+}
+
+void SceneBuilder::worldBegin(RequestReader& in) {
+    in.finish();
+    if (m_inWorld) in.fail(in.where(), "WorldBegin inside a world block");
+    m_scene.camera.worldToCamera = state().transform;
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j)
+            if (!std::isfinite(m_scene.camera.worldToCamera[i][j])) in.fail(in.where(), "the camera transform is not finite");
+    if (std::fabs(glm::determinant(m_scene.camera.worldToCamera)) < 1e-12f)
+        in.fail(in.where(), "the camera transform is singular (a zero scale?)");
+    state().transform = Mat4(1.0f);
+    m_inWorld = true;
+    m_sawWorld = true;
+}
+
+void SceneBuilder::worldEnd(RequestReader& in) {
+    in.finish();
+    if (!m_inWorld) in.fail(in.where(), "WorldEnd without WorldBegin");
+    m_inWorld = false;
+}
+
+// ------------------------------------------------------------------ graphics state
+
+void SceneBuilder::attributeBegin(RequestReader& in) {
+    in.finish();
+    m_attributes.push_back(state());
+    m_blocks.push_back(Block::Attribute);
+}
+
+void SceneBuilder::attributeEnd(RequestReader& in) {
+    in.finish();
+    if (m_blocks.empty() || m_blocks.back() != Block::Attribute)
+        in.fail(in.where(), m_blocks.empty() ? "AttributeEnd without a matching AttributeBegin"
+                                             : "AttributeEnd closes a TransformBegin block (expected TransformEnd)");
+    m_blocks.pop_back();
+    m_attributes.pop_back();
+}
+
+void SceneBuilder::transformBegin(RequestReader& in) {
+    in.finish();
+    m_attributes.push_back(state());
+    m_blocks.push_back(Block::Transform);
+}
+
+void SceneBuilder::transformEnd(RequestReader& in) {
+    in.finish();
+    if (m_blocks.empty() || m_blocks.back() != Block::Transform)
+        in.fail(in.where(), m_blocks.empty() ? "TransformEnd without a matching TransformBegin"
+                                             : "TransformEnd closes an AttributeBegin block (expected AttributeEnd)");
+    m_blocks.pop_back();
+    // Only the transform is restored; attributes set inside the block persist.
+    Attributes inner = m_attributes.back();
+    m_attributes.pop_back();
+    inner.transform = state().transform;
+    state() = inner;
+}
+
+void SceneBuilder::identity(RequestReader& in) {
+    in.finish();
+    state().transform = Mat4(1.0f);
+}
+
+// RIB matrices are row-major for row vectors (p' = p M); read as column-major
+// they are exactly the column-vector matrix GLM uses.
+void SceneBuilder::transform(RequestReader& in) {
+    std::vector<float> m = in.numbers(16, "a 4x4 matrix");
+    in.finish();
+    state().transform = glm::make_mat4(m.data());
+}
+
+void SceneBuilder::concatTransform(RequestReader& in) {
+    std::vector<float> m = in.numbers(16, "a 4x4 matrix");
+    in.finish();
+    state().transform = state().transform * glm::make_mat4(m.data());
+}
+
+void SceneBuilder::translate(RequestReader& in) {
+    std::vector<float> v = in.numbers(3, "dx dy dz");
+    in.finish();
+    state().transform = glm::translate(state().transform, Vec3(v[0], v[1], v[2]));
+}
+
+void SceneBuilder::rotate(RequestReader& in) {
+    std::vector<float> v = in.numbers(4, "angle dx dy dz");
+    in.finish();
+    Vec3 axis(v[1], v[2], v[3]);
+    if (glm::length(axis) == 0.0f) in.fail(in.where(), "rotation axis is the zero vector");
+    state().transform = glm::rotate(state().transform, glm::radians(v[0]), glm::normalize(axis));
+}
+
+void SceneBuilder::scale(RequestReader& in) {
+    std::vector<float> v = in.numbers(3, "sx sy sz");
+    in.finish();
+    if (v[0] == 0.0f || v[1] == 0.0f || v[2] == 0.0f)
+        m_diagnostics.warn(in.where(), "Scale by zero collapses everything that follows");
+    state().transform = glm::scale(state().transform, Vec3(v[0], v[1], v[2]));
+}
+
+void SceneBuilder::attribute(RequestReader& in) {
+    std::string category = in.string("attribute name");
+    ParamList params = in.params();
+    if (category == "visibility") {
+        Visibility& vis = state().visibility;
+        vis.camera = params.getInt("camera", vis.camera) != 0;
+        vis.indirect = params.getInt("indirect", vis.indirect) != 0;
+        vis.transmission = params.getInt("transmission", vis.transmission) != 0;
+    } else if (category == "identifier") {
+        state().name = params.getString("name", state().name);
+    } else {
+        warnOnce("attribute " + category, in.where(), "Attribute \"" + category + "\" is not supported; skipped");
+        return;
+    }
+    for (auto const& p : params.all())
+        if (!p.used)
+            warnOnce("attribute " + category + " " + p.name(), p.location,
+                     "Attribute \"" + category + "\" \"" + p.name() + "\" is not supported; skipped");
+}
+
+void SceneBuilder::color(RequestReader& in) {
+    std::vector<float> c = in.numbers(3, "red green blue");
+    in.finish();
+    state().color = Vec3(c[0], c[1], c[2]);
+}
+
+void SceneBuilder::reverseOrientation(RequestReader& in) {
+    in.finish();
+    state().reverseOrientation = !state().reverseOrientation;
+}
+
+void SceneBuilder::orientation(RequestReader& in) {
+    std::string value = in.string("orientation");
+    in.finish();
+    if (value == "outside" || value == "lh")
+        state().reverseOrientation = false;
+    else if (value == "inside" || value == "rh")
+        state().reverseOrientation = true;
+    else
+        in.fail(in.where(), "orientation must be \"outside\", \"inside\", \"lh\" or \"rh\", not \"" + value + "\"");
+}
+
+// ------------------------------------------------------------------ materials and lights
+
+void SceneBuilder::bxdf(RequestReader& in) {
+    MaterialDesc material;
+    material.plugin = in.string("Bxdf plugin name");
+    material.handle = in.string("Bxdf handle");
+    material.params = in.params();
+    material.where = in.where();
+    if (material.plugin.empty()) in.fail(in.where(), "the plugin name is empty");
+    state().material = static_cast<int>(m_scene.materials.size());
+    m_scene.materials.push_back(std::move(material));
+}
+
+int SceneBuilder::defaultMaterial() {
+    // RenderMan shades surfaces without a Bxdf with a plain diffuse material
+    // whose colour is the legacy `Color` attribute.
+    Vec3 c = state().color;
+    std::string key = std::to_string(c.x) + " " + std::to_string(c.y) + " " + std::to_string(c.z);
+    auto found = m_defaultMaterials.find(key);
+    if (found != m_defaultMaterials.end()) return found->second;
+    MaterialDesc material;
+    material.plugin = "diffuse";
+    material.handle = "default material (Color " + key + ")";
+    Param color;
+    color.decl.name = "diffuseColor";
+    color.decl.type = ParamType::Color;
+    color.floats = {c.x, c.y, c.z};
+    material.params.add(color);
+    int index = static_cast<int>(m_scene.materials.size());
+    m_scene.materials.push_back(std::move(material));
+    m_defaultMaterials[key] = index;
+    return index;
+}
+
+void SceneBuilder::light(RequestReader& in) {
+    std::string type = in.string("light type");
+    std::string handle = in.string("light handle");
+    ParamList params = in.params();
+    std::unique_ptr<Light> light = makeLight(type, params, state().transform, currentDirectory(), in.where());
+    if (!light) {
+        warnOnce("light " + type, in.where(), "unsupported light type \"" + type + "\" skipped");
+        return;
+    }
+    params.warnUnused(m_diagnostics, type + " \"" + handle + "\"");
+    light->handle = handle;
+    light->visibility = state().visibility;
+    if (light->color.IsBlack()) {
+        m_scene.dropped.push_back("light \"" + handle + "\" (" + type + ") has zero intensity");
+        return;
+    }
+    m_scene.lights.push_back(std::move(light));
+}
+
+// ------------------------------------------------------------------ geometry
+
+void SceneBuilder::addShape(std::unique_ptr<Shape> shape, SourceLocation const& where) {
+    if (!m_inWorld) throw RibError(where, "geometry must come between WorldBegin and WorldEnd");
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j)
+            if (!std::isfinite(state().transform[i][j])) throw RibError(where, "the current transform is not finite");
+    shape->visibility = state().visibility;
+    shape->name = state().name;
+    shape->where = where;
+    if (!shape->visibility.any()) {
+        m_scene.dropped.push_back(std::string(shape->kind()) + " at " + where.str() + " is invisible to every ray type");
+        return;
+    }
+    shape->material = state().material >= 0 ? state().material : defaultMaterial();
+    m_scene.shapes.push_back(std::move(shape));
+}
+
+void SceneBuilder::sphere(RequestReader& in) {
+    std::vector<float> v = in.numbers(4, "radius zmin zmax thetamax");
+    in.params().warnUnused(m_diagnostics, "Sphere");
+    if (!(v[0] > 0.0f)) in.fail(in.where(), "radius must be positive, got " + std::to_string(v[0]));
+    addShape(std::make_unique<Sphere>(v[0], v[1], v[2], v[3], state().transform, state().reverseOrientation), in.where());
+}
+
+void SceneBuilder::cylinder(RequestReader& in) {
+    std::vector<float> v = in.numbers(4, "radius zmin zmax thetamax");
+    in.params().warnUnused(m_diagnostics, "Cylinder");
+    if (!(v[0] > 0.0f)) in.fail(in.where(), "radius must be positive, got " + std::to_string(v[0]));
+    addShape(std::make_unique<Cylinder>(v[0], v[1], v[2], v[3], state().transform, state().reverseOrientation), in.where());
+}
+
+void SceneBuilder::disk(RequestReader& in) {
+    std::vector<float> v = in.numbers(3, "height radius thetamax");
+    in.params().warnUnused(m_diagnostics, "Disk");
+    if (!(v[1] > 0.0f)) in.fail(in.where(), "radius must be positive, got " + std::to_string(v[1]));
+    addShape(std::make_unique<Disk>(v[0], v[1], v[2], state().transform, state().reverseOrientation), in.where());
+}
+
+namespace {
+bool mirrors(Mat4 const& m) { return glm::determinant(Mat3(m)) < 0.0f; }
+}  // namespace
+
+void SceneBuilder::polygon(RequestReader& in) {
+    ParamList params = in.params();
+    std::vector<float> const* P = params.getFloats("P", ParamType::Point);
+    if (!P) in.fail(in.where(), "needs a \"P\" parameter with the vertex positions");
+    int count = static_cast<int>(P->size() / 3);
+    if (count < 3) in.fail(in.where(), "a polygon needs at least 3 vertices, got " + std::to_string(count));
+    std::vector<int> indices(static_cast<size_t>(count));
+    for (int i = 0; i < count; ++i) indices[static_cast<size_t>(i)] = i;
+    MeshData mesh = buildPolygonMesh({1}, {count}, indices, params, state().transform, in.where(), m_diagnostics);
+    params.find("Cs");  // per-vertex colour is read by no Bxdf yet; accepted quietly
+    params.warnUnused(m_diagnostics, "Polygon");
+    addShape(std::make_unique<TriangleMesh>(std::move(mesh), "Polygon", state().reverseOrientation), in.where());
+}
+
+void SceneBuilder::pointsPolygons(RequestReader& in) {
+    std::vector<int> nverts = in.intArray("nvertices (vertex count per face)");
+    std::vector<int> verts = in.intArray("vertices (point indices)");
+    ParamList params = in.params();
+    std::vector<int> loops(nverts.size(), 1);
+    MeshData mesh = buildPolygonMesh(loops, nverts, verts, params, state().transform, in.where(), m_diagnostics);
+    params.find("Cs");
+    params.warnUnused(m_diagnostics, "PointsPolygons");
+    addShape(std::make_unique<TriangleMesh>(std::move(mesh), "PointsPolygons", state().reverseOrientation), in.where());
+}
+
+void SceneBuilder::pointsGeneralPolygons(RequestReader& in) {
+    std::vector<int> nloops = in.intArray("nloops (loop count per face)");
+    std::vector<int> nverts = in.intArray("nvertices (vertex count per loop)");
+    std::vector<int> verts = in.intArray("vertices (point indices)");
+    ParamList params = in.params();
+    MeshData mesh = buildPolygonMesh(nloops, nverts, verts, params, state().transform, in.where(), m_diagnostics);
+    params.find("Cs");
+    params.warnUnused(m_diagnostics, "PointsGeneralPolygons");
+    addShape(std::make_unique<TriangleMesh>(std::move(mesh), "PointsGeneralPolygons", state().reverseOrientation),
+             in.where());
+}
+
+void SceneBuilder::patch(RequestReader& in) {
+    std::string type = in.string("patch type");
+    ParamList params = in.params();
+    if (type != "bilinear") {
+        warnOnce("patch " + type, in.where(), "Patch \"" + type + "\" is not supported; skipped");
+        return;
+    }
+    std::vector<float> const* P = params.getFloats("P", ParamType::Point);
+    if (!P || P->size() != 12) in.fail(in.where(), "a bilinear patch needs \"P\" with exactly 4 points");
+    std::array<Vec3, 4> corners;
+    for (int i = 0; i < 4; ++i) corners[static_cast<size_t>(i)] = Vec3((*P)[3 * i], (*P)[3 * i + 1], (*P)[3 * i + 2]);
+    params.warnUnused(m_diagnostics, "Patch");
+    bool flip = state().reverseOrientation != mirrors(state().transform);
+    addShape(std::make_unique<TriangleMesh>(buildBilinearPatch(corners, state().transform, flip), "Patch", false),
+             in.where());
+}
+
+void SceneBuilder::geometry(RequestReader& in) {
+    std::string type = in.string("geometry type");
+    ParamList params = in.params();
+    if (type != "teapot") {
+        warnOnce("geometry " + type, in.where(), "Geometry \"" + type + "\" is not supported; skipped");
+        return;
+    }
+    params.warnUnused(m_diagnostics, "Geometry \"teapot\"");
+    bool flip = state().reverseOrientation != mirrors(state().transform);
+    addShape(std::make_unique<TriangleMesh>(buildTeapot(state().transform, flip), "teapot", false), in.where());
+}
+
+void SceneBuilder::readArchive(RequestReader& in) {
+    std::string name = in.string("archive file name");
+    in.params().warnUnused(m_diagnostics, "ReadArchive");
+    std::vector<std::string> tried;
+    std::vector<std::string> folders;
+    if (fs::path(name).is_absolute()) {
+        folders.push_back("");
+    } else {
+        folders.push_back(currentDirectory());
+        folders.insert(folders.end(), m_archiveSearchPath.begin(), m_archiveSearchPath.end());
+    }
+    for (std::string const& folder : folders) {
+        fs::path candidate = folder.empty() ? fs::path(name) : fs::path(folder) / name;
+        tried.push_back(candidate.string());
+        if (fs::is_regular_file(candidate)) {
+            readFile(candidate.string());
+            return;
+        }
+    }
+    std::string list;
+    for (auto const& t : tried) list += "\n    " + t;
+    in.fail(in.where(), "archive \"" + name + "\" not found; tried:" + list);
+}
+
+Scene loadScene(std::string const& path, Diagnostics& diagnostics) {
+    Scene scene;
+    SceneBuilder builder(scene, diagnostics);
+    builder.readFile(path);
+    return scene;
+}
+
+}  // namespace bxdflab

@@ -1,0 +1,107 @@
+// Interprets RIB requests: keeps the graphics state (transform and attribute
+// stacks) and fills a Scene with the camera, materials, lights and shapes.
+#pragma once
+
+#include <map>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "core/Diagnostics.h"
+#include "parse/ParamList.h"
+#include "parse/RibRequest.h"
+#include "scene/Scene.h"
+
+namespace bxdflab {
+
+class SceneBuilder {
+public:
+    SceneBuilder(Scene& scene, Diagnostics& diagnostics);
+
+    /// Reads a RIB file (and every archive it includes) into the scene.
+    void readFile(std::string const& path);
+    /// Reads RIB text; `fileName` is used in messages and to resolve relative paths.
+    void readText(std::string const& text, std::string const& fileName);
+
+private:
+    struct Attributes {
+        Mat4 transform{1.0f};
+        int material = -1;
+        Visibility visibility;
+        std::string name;
+        Vec3 color{1.0f};
+        bool reverseOrientation = false;
+    };
+    enum class Block { Attribute, Transform };
+
+    void handle(RibRequest const& request);
+    using Handler = void (SceneBuilder::*)(RequestReader&);
+    static std::map<std::string, Handler> const& handlers();
+
+    // Options and camera (before WorldBegin).
+    void display(RequestReader& in);
+    void format(RequestReader& in);
+    void projection(RequestReader& in);
+    void screenWindow(RequestReader& in);
+    void pixelSamples(RequestReader& in);
+    void hider(RequestReader& in);
+    void integrator(RequestReader& in);
+    void option(RequestReader& in);
+    void declare(RequestReader& in);
+    void worldBegin(RequestReader& in);
+    void worldEnd(RequestReader& in);
+    void ignore(RequestReader& in);
+    // Graphics state.
+    void attributeBegin(RequestReader& in);
+    void attributeEnd(RequestReader& in);
+    void transformBegin(RequestReader& in);
+    void transformEnd(RequestReader& in);
+    void identity(RequestReader& in);
+    void transform(RequestReader& in);
+    void concatTransform(RequestReader& in);
+    void translate(RequestReader& in);
+    void rotate(RequestReader& in);
+    void scale(RequestReader& in);
+    void attribute(RequestReader& in);
+    void color(RequestReader& in);
+    void reverseOrientation(RequestReader& in);
+    void orientation(RequestReader& in);
+    // Materials and lights.
+    void bxdf(RequestReader& in);
+    void light(RequestReader& in);
+    // Geometry.
+    void sphere(RequestReader& in);
+    void cylinder(RequestReader& in);
+    void disk(RequestReader& in);
+    void polygon(RequestReader& in);
+    void pointsPolygons(RequestReader& in);
+    void pointsGeneralPolygons(RequestReader& in);
+    void patch(RequestReader& in);
+    void geometry(RequestReader& in);
+    void readArchive(RequestReader& in);
+
+    void addShape(std::unique_ptr<Shape> shape, SourceLocation const& where);
+    int defaultMaterial();
+    std::string currentDirectory() const;
+    /// Warns once per request (or parameter) kind, counting the rest.
+    void warnOnce(std::string const& kind, SourceLocation const& where, std::string const& message);
+    Attributes& state() { return m_attributes.back(); }
+
+    Scene& m_scene;
+    Diagnostics& m_diagnostics;
+    Declarations m_declarations;
+    std::vector<Attributes> m_attributes{Attributes{}};
+    std::vector<Block> m_blocks;
+    std::vector<std::string> m_fileStack;
+    std::vector<std::string> m_archiveSearchPath;
+    std::map<std::string, int> m_defaultMaterials;
+    std::set<std::string> m_warnedKinds;
+    bool m_inWorld = false;
+    bool m_sawWorld = false;
+    bool m_sppFromPixelSamples = false;
+};
+
+/// Parses a RIB file into a new Scene (a convenience for tools and tests).
+Scene loadScene(std::string const& path, Diagnostics& diagnostics);
+
+}  // namespace bxdflab

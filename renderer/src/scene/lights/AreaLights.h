@@ -1,0 +1,45 @@
+// Lights with a shape: PxrDiskLight, PxrRectLight, PxrSphereLight.
+// Disk and rect lights lie in their local xy plane (unit diameter / unit
+// square) and emit toward their local -z only; sphere lights (unit diameter)
+// emit outward everywhere.
+#pragma once
+
+#include "scene/lights/Light.h"
+
+namespace bxdflab {
+
+/// A flat light: a disk or a rectangle spanned by axes ex, ey around center.
+class PlanarLight final : public Light {
+public:
+    enum class Shape { Disk, Rect };
+    PlanarLight(Shape shape, Mat4 const& lightToWorld);
+    const char* kind() const override { return m_shape == Shape::Disk ? "PxrDiskLight" : "PxrRectLight"; }
+    LightSample sample(Vec3 const& P, Vec2 const& xi) const override;
+    bool intersect(Vec3 const& org, Vec3 const& dir, float& distance, RtColorRGB& radiance, float& pdf) const override;
+    float area() const { return m_area; }
+
+private:
+    float solidAnglePdf(Vec3 const& towardLight, float distance) const;
+    Shape m_shape;
+    Vec3 m_center, m_axisX, m_axisY, m_emitNormal, m_planeNormal;
+    float m_area;
+};
+
+/// A sphere light, sampled uniformly inside the cone it subtends (exact
+/// solid-angle sampling).
+class SphereLight final : public Light {
+public:
+    explicit SphereLight(Mat4 const& lightToWorld);
+    const char* kind() const override { return "PxrSphereLight"; }
+    LightSample sample(Vec3 const& P, Vec2 const& xi) const override;
+    bool intersect(Vec3 const& org, Vec3 const& dir, float& distance, RtColorRGB& radiance, float& pdf) const override;
+    float radius() const { return m_radius; }
+
+private:
+    /// 1 - cos(theta_max) of the cone seen from P, or 0 inside the sphere.
+    float coneOneMinusCos(Vec3 const& P) const;
+    Vec3 m_center;
+    float m_radius;
+};
+
+}  // namespace bxdflab

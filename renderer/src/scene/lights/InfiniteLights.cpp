@@ -1,0 +1,138 @@
+#include "scene/lights/InfiniteLights.h"
+
+#include <OpenImageIO/imagebuf.h>
+#include <OpenImageIO/imagebufalgo.h>
+
+#include <cmath>
+
+#include "core/Error.h"
+
+namespace bxdflab {
+
+DistantLight::DistantLight(Mat4 const& lightToWorld, float angleExtentDegrees) {
+    m_towardLight = safeNormalize(transformVector(lightToWorld, Vec3(0.0f, 0.0f, 1.0f)));
+    orthonormalBasis(m_towardLight, m_b1, m_b2);
+    float halfAngle = 0.5f * std::clamp(angleExtentDegrees, 0.0f, 180.0f) * kPi / 180.0f;
+    m_cosHalfAngle = halfAngle > 0.0f ? std::cos(halfAngle) : 1.0f;
+    float sinHalf = std::sin(halfAngle);
+    m_radianceScale = halfAngle > 0.0f ? 1.0f / (kPi * sinHalf * sinHalf) : 1.0f;
+}
+
+LightSample DistantLight::sample(Vec3 const&, Vec2 const& xi) const {
+    LightSample s;
+    if (isDelta()) {
+        s.wi = m_towardLight;
+        s.pdf = 1.0f;
+        s.delta = true;
+        s.radiance = color;
+        return s;
+    }
+    float cosTheta = 1.0f - xi.x * (1.0f - m_cosHalfAngle);
+    float sinTheta = std::sqrt(std::max(0.0f, 1.0f - cosTheta * cosTheta));
+    float phi = 2.0f * kPi * xi.y;
+    s.wi = sinTheta * std::cos(phi) * m_b1 + sinTheta * std::sin(phi) * m_b2 + cosTheta * m_towardLight;
+    s.pdf = 1.0f / (2.0f * kPi * (1.0f - m_cosHalfAngle));
+    s.radiance = color * m_radianceScale;
+    return s;
+}
+
+bool DistantLight::intersect(Vec3 const&, Vec3 const& dir, float& distance, RtColorRGB& radiance, float& pdf) const {
+    if (isDelta() || glm::dot(dir, m_towardLight) < m_cosHalfAngle) return false;
+    distance = kInfinity;
+    radiance = color * m_radianceScale;
+    pdf = 1.0f / (2.0f * kPi * (1.0f - m_cosHalfAngle));
+    return true;
+}
+
+DomeLight::DomeLight(Mat4 const& lightToWorld, std::string const& imagePath) {
+    // Only the rotation matters for a light at infinity.
+    Mat3 linear(lightToWorld);
+    for (int c = 0; c < 3; ++c) linear[c] = safeNormalize(linear[c]);
+    m_toWorld = linear;
+    m_toLight = glm::transpose(linear);
+    if (imagePath.empty()) return;
+
+    OIIO::ImageBuf image(imagePath);
+    if (!image.read(0, 0, true, OIIO::TypeDesc::FLOAT))
+        throw RenderError("PxrDomeLight: cannot read lightColorMap \"" + imagePath + "\": " + image.geterror());
+    OIIO::ROI roi = image.roi();
+    m_width = roi.width();
+    m_height = roi.height();
+    int channels = roi.nchannels();
+    m_pixels.resize(static_cast<size_t>(m_width) * m_height);
+    std::vector<float> weights(m_pixels.size());
+    std::vector<float> row(static_cast<size_t>(m_width) * channels);
+    for (int y = 0; y < m_height; ++y) {
+        image.get_pixels(OIIO::ROI(roi.xbegin, roi.xend, roi.ybegin + y, roi.ybegin + y + 1, 0, 1, 0, channels),
+                         OIIO::TypeDesc::FLOAT, row.data());
+        float sinTheta = std::sin(kPi * (y + 0.5f) / m_height);
+        for (int x = 0; x < m_width; ++x) {
+            float const* p = &row[static_cast<size_t>(x) * channels];
+            Vec3 rgb = channels >= 3 ? Vec3(p[0], p[1], p[2]) : Vec3(p[0]);
+            if (!isFinite(rgb)) rgb = Vec3(0.0f);
+            size_t index = static_cast<size_t>(y) * m_width + x;
+            m_pixels[index] = glm::max(rgb, Vec3(0.0f));
+            weights[index] = (0.2126f * rgb.x + 0.7152f * rgb.y + 0.0722f * rgb.z) * sinTheta;
+        }
+    }
+    m_distribution = Distribution2D(weights, m_width, m_height);
+}
+
+Vec2 DomeLight::toImage(Vec3 const& worldDir) const {
+    Vec3 d = m_toLight * worldDir;
+    float u = 0.5f + std::atan2(d.x, -d.z) / (2.0f * kPi);
+    float v = std::acos(std::clamp(d.y, -1.0f, 1.0f)) / kPi;
+    return Vec2(u - std::floor(u), v);
+}
+
+Vec3 DomeLight::fromImage(Vec2 const& uv) const {
+    float phi = 2.0f * kPi * (uv.x - 0.5f), theta = kPi * uv.y;
+    Vec3 local(std::sin(theta) * std::sin(phi), std::cos(theta), -std::sin(theta) * std::cos(phi));
+    return m_toWorld * local;
+}
+
+RtColorRGB DomeLight::radiance(Vec3 const& dir) const {
+    if (m_pixels.empty()) return color;
+    Vec2 uv = toImage(dir);
+    int x = std::clamp(static_cast<int>(uv.x * m_width), 0, m_width - 1);
+    int y = std::clamp(static_cast<int>(uv.y * m_height), 0, m_height - 1);
+    Vec3 const& p = m_pixels[static_cast<size_t>(y) * m_width + x];
+    return color * RtColorRGB(p.x, p.y, p.z);
+}
+
+float DomeLight::directionPdf(Vec3 const& worldDir) const {
+    if (m_pixels.empty()) return 1.0f / (4.0f * kPi);
+    Vec2 uv = toImage(worldDir);
+    float sinTheta = std::sin(kPi * uv.y);
+    if (sinTheta <= 0.0f) return 0.0f;
+    return m_distribution.pdf(uv) / (2.0f * kPi * kPi * sinTheta);
+}
+
+LightSample DomeLight::sample(Vec3 const&, Vec2 const& xi) const {
+    LightSample s;
+    if (m_pixels.empty()) {
+        float z = 1.0f - 2.0f * xi.x;
+        float r = std::sqrt(std::max(0.0f, 1.0f - z * z));
+        float phi = 2.0f * kPi * xi.y;
+        s.wi = Vec3(r * std::cos(phi), r * std::sin(phi), z);
+        s.pdf = 1.0f / (4.0f * kPi);
+        s.radiance = color;
+        return s;
+    }
+    float uvPdf;
+    Vec2 uv = m_distribution.sample(xi, uvPdf);
+    s.wi = fromImage(uv);
+    float sinTheta = std::sin(kPi * uv.y);
+    s.pdf = sinTheta > 0.0f ? uvPdf / (2.0f * kPi * kPi * sinTheta) : 0.0f;
+    s.radiance = s.pdf > 0.0f ? radiance(s.wi) : RtColorRGB(0.0f);
+    return s;
+}
+
+bool DomeLight::intersect(Vec3 const&, Vec3 const& dir, float& distance, RtColorRGB& radianceOut, float& pdf) const {
+    distance = kInfinity;
+    radianceOut = radiance(dir);
+    pdf = directionPdf(dir);
+    return true;
+}
+
+}  // namespace bxdflab

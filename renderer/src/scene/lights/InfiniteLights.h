@@ -1,0 +1,55 @@
+// Lights at infinity: PxrDistantLight (the sun) and PxrDomeLight (the sky).
+#pragma once
+
+#include <string>
+
+#include "core/Distribution.h"
+#include "scene/lights/Light.h"
+
+namespace bxdflab {
+
+/// Light arriving from one direction (its local +z; it travels along -z).
+/// With angleExtent > 0 (degrees, the apparent diameter) it is a small cone of
+/// directions; with 0 it is a delta light. Either way, `color` is the
+/// irradiance on a surface facing the light.
+class DistantLight final : public Light {
+public:
+    DistantLight(Mat4 const& lightToWorld, float angleExtentDegrees);
+    const char* kind() const override { return "PxrDistantLight"; }
+    LightSample sample(Vec3 const& P, Vec2 const& xi) const override;
+    bool intersect(Vec3 const& org, Vec3 const& dir, float& distance, RtColorRGB& radiance, float& pdf) const override;
+    bool isDelta() const override { return m_cosHalfAngle >= 1.0f; }
+    bool isInfinite() const override { return true; }
+
+private:
+    Vec3 m_towardLight, m_b1, m_b2;
+    float m_cosHalfAngle;
+    float m_radianceScale;  ///< 1 / (pi sin^2(half angle)): irradiance -> radiance
+};
+
+/// An environment surrounding the scene: a constant colour, or a lat-long
+/// image ("lightColorMap") with +y up in the light's space. Images are
+/// importance sampled by luminance.
+class DomeLight final : public Light {
+public:
+    /// Loads the image if `imagePath` is not empty (throws RenderError if it cannot).
+    DomeLight(Mat4 const& lightToWorld, std::string const& imagePath);
+    const char* kind() const override { return "PxrDomeLight"; }
+    LightSample sample(Vec3 const& P, Vec2 const& xi) const override;
+    bool intersect(Vec3 const& org, Vec3 const& dir, float& distance, RtColorRGB& radiance, float& pdf) const override;
+    bool isInfinite() const override { return true; }
+    /// Radiance arriving from direction dir (world space, unit).
+    RtColorRGB radiance(Vec3 const& dir) const;
+
+private:
+    Vec2 toImage(Vec3 const& worldDir) const;
+    Vec3 fromImage(Vec2 const& uv) const;
+    float directionPdf(Vec3 const& worldDir) const;
+
+    Mat3 m_toWorld, m_toLight;
+    int m_width = 0, m_height = 0;
+    std::vector<Vec3> m_pixels;
+    Distribution2D m_distribution;
+};
+
+}  // namespace bxdflab

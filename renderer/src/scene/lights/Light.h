@@ -1,0 +1,46 @@
+// Analytic lights. They are not Embree geometry: integrators sample them
+// directly (next-event estimation) and intersect them explicitly when a
+// Bxdf-sampled ray may hit one (for multiple importance sampling).
+//
+// Every light's radiance is intensity * 2^exposure * lightColor.
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include "RiTypesHelper.h"
+#include "core/Math.h"
+#include "scene/shapes/Shape.h"
+
+namespace bxdflab {
+
+/// A direction toward a light, as chosen by Light::sample.
+struct LightSample {
+    Vec3 wi{0.0f};                ///< unit direction from the shading point toward the light
+    float distance = kInfinity;   ///< to the sampled point on the light
+    RtColorRGB radiance;          ///< arriving along -wi (zero when the light faces away)
+    float pdf = 0.0f;             ///< per unit solid angle; 1 for delta lights
+    bool delta = false;           ///< a direction no Bxdf sample can ever hit
+};
+
+class Light {
+public:
+    virtual ~Light() = default;
+    virtual const char* kind() const = 0;
+    /// Chooses a direction toward the light from P, using a 2-D sample xi.
+    virtual LightSample sample(Vec3 const& P, Vec2 const& xi) const = 0;
+    /// If the ray (org, unit dir) hits the light: the distance, the radiance
+    /// it carries back along -dir, and the pdf sample() would assign to dir.
+    virtual bool intersect(Vec3 const& org, Vec3 const& dir, float& distance, RtColorRGB& radiance,
+                           float& pdf) const = 0;
+    /// Delta lights (a distant light with no angular extent) cannot be hit.
+    virtual bool isDelta() const { return false; }
+    /// Lights at infinity are seen by rays that miss all geometry.
+    virtual bool isInfinite() const { return false; }
+
+    RtColorRGB color;  ///< intensity * 2^exposure * lightColor
+    Visibility visibility;
+    std::string handle;
+};
+
+}  // namespace bxdflab

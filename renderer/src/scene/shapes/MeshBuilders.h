@@ -1,0 +1,29 @@
+// Turn RIB primitives that are not quadrics into world-space triangle meshes.
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include "core/Diagnostics.h"
+#include "parse/ParamList.h"
+#include "scene/shapes/TriangleMesh.h"
+
+namespace bxdflab {
+
+/// Polygon, PointsPolygons and PointsGeneralPolygons. `loopsPerFace` has one
+/// entry per face (1 for simple polygons; more means holes, which are not
+/// supported: the outer loop is kept and a warning given). Concave faces are
+/// triangulated by ear clipping. Primvars read from `params`: P (required),
+/// N and st (or s and t) with class vertex/varying/facevarying/uniform/constant.
+MeshData buildPolygonMesh(std::vector<int> const& loopsPerFace, std::vector<int> const& verticesPerLoop,
+                          std::vector<int> const& vertexIndices, ParamList const& params, Mat4 const& toWorld,
+                          SourceLocation const& where, Diagnostics& diagnostics);
+
+/// Patch "bilinear": four corners in the order (0,0) (1,0) (0,1) (1,1).
+MeshData buildBilinearPatch(std::array<Vec3, 4> const& corners, Mat4 const& toWorld, bool flip);
+
+/// Geometry "teapot": the Newell teapot, tessellated finely, with smooth
+/// normals and exact dPdu/dPdv from its Bezier patches.
+MeshData buildTeapot(Mat4 const& toWorld, bool flip);
+
+}  // namespace bxdflab

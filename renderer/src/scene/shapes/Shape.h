@@ -1,0 +1,69 @@
+// A surface the renderer can intersect and shade.
+//
+// Each shape builds its own Embree geometry and, given a hit, computes the
+// differential geometry the shading context hands to plugins. The work is
+// split in two so that the expensive part (tangents) is only done when a
+// plugin asks for it:
+//   basics()    P, geometric and shading normals, u, v, s, t, error bound of P
+//   tangents()  dPdu, dPdv
+#pragma once
+
+#include <embree3/rtcore.h>
+
+#include <string>
+
+#include "core/Error.h"
+#include "core/Math.h"
+
+namespace bxdflab {
+
+/// Which kinds of rays see an object (RIB: Attribute "visibility").
+struct Visibility {
+    bool camera = true;
+    bool indirect = true;
+    bool transmission = true;
+    bool any() const { return camera || indirect || transmission; }
+};
+
+/// What Embree reports for a hit, plus the ray that made it.
+struct HitRecord {
+    Vec3 org{0.0f};
+    Vec3 dir{0.0f};
+    float t = 0.0f;
+    unsigned geomID = RTC_INVALID_GEOMETRY_ID;
+    unsigned primID = 0;
+    float u = 0.0f;  ///< barycentric (triangles) or surface parameter (quadrics)
+    float v = 0.0f;
+    bool hit() const { return geomID != RTC_INVALID_GEOMETRY_ID; }
+};
+
+struct SurfaceBasics {
+    Vec3 P{0.0f};
+    Vec3 Ng{0.0f, 0.0f, 1.0f};  ///< unit geometric normal, pointing "outside"
+    Vec3 N{0.0f, 0.0f, 1.0f};   ///< unit shading normal
+    Vec3 pError{0.0f};          ///< conservative per-axis bound on the error in P
+    float u = 0.0f, v = 0.0f, s = 0.0f, t = 0.0f;
+};
+
+struct SurfaceTangents {
+    Vec3 dPdu{0.0f};
+    Vec3 dPdv{0.0f};
+};
+
+class Shape {
+public:
+    virtual ~Shape() = default;
+    /// A short name for messages ("sphere", "polygon mesh", ...).
+    virtual const char* kind() const = 0;
+    /// Creates and commits the Embree geometry (caller attaches and releases it).
+    virtual RTCGeometry build(RTCDevice device) const = 0;
+    virtual SurfaceBasics basics(HitRecord const& hit) const = 0;
+    virtual SurfaceTangents tangents(HitRecord const& hit) const = 0;
+
+    int material = -1;  ///< index into Scene::materials
+    Visibility visibility;
+    std::string name;  ///< Attribute "identifier" "name"
+    SourceLocation where;
+};
+
+}  // namespace bxdflab

@@ -1,0 +1,58 @@
+// A triangle mesh in world space: what polygons, subdivided patches and the
+// teapot become. Vertex attributes other than P are optional:
+//   N            smooth shading normals (else the facet normal is used)
+//   uv           surface parameters (else the barycentric coordinates)
+//   st           texture coordinates (else uv)
+//   dPdu, dPdv   exact derivatives of a parametric surface (else derived from uv per triangle)
+#pragma once
+
+#include <vector>
+
+#include "scene/shapes/Shape.h"
+
+namespace bxdflab {
+
+struct MeshData {
+    std::vector<Vec3> P;
+    std::vector<unsigned> indices;  ///< three per triangle
+    std::vector<Vec3> N;
+    std::vector<Vec2> uv;
+    std::vector<Vec2> st;
+    std::vector<Vec3> dPdu;
+    std::vector<Vec3> dPdv;
+
+    size_t triangleCount() const { return indices.size() / 3; }
+    /// Appends one vertex with whichever attributes this mesh carries.
+    unsigned addVertex(Vec3 const& p) {
+        P.push_back(p);
+        return static_cast<unsigned>(P.size() - 1);
+    }
+};
+
+class TriangleMesh final : public Shape {
+public:
+    /// `kindName` names the RIB primitive it came from. When `flipNormals` is
+    /// set the facet normals point the other way (ReverseOrientation, or a
+    /// transform that mirrors space).
+    TriangleMesh(MeshData data, const char* kindName, bool flipNormals);
+
+    const char* kind() const override { return m_kind; }
+    RTCGeometry build(RTCDevice device) const override;
+    SurfaceBasics basics(HitRecord const& hit) const override;
+    SurfaceTangents tangents(HitRecord const& hit) const override;
+    MeshData const& data() const { return m_data; }
+
+private:
+    template <typename T>
+    T interpolate(std::vector<T> const& values, unsigned prim, float b1, float b2) const {
+        unsigned const* tri = &m_data.indices[3 * prim];
+        return (1.0f - b1 - b2) * values[tri[0]] + b1 * values[tri[1]] + b2 * values[tri[2]];
+    }
+    Vec2 parameters(unsigned prim, float b1, float b2) const;
+
+    MeshData m_data;
+    const char* m_kind;
+    float m_orientation;
+};
+
+}  // namespace bxdflab

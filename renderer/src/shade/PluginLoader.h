@@ -1,0 +1,62 @@
+// Loads Bxdf plugins (shared objects) by name from the plugin search path.
+#pragma once
+
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "RixBxdf.h"
+#include "core/Diagnostics.h"
+#include "core/Error.h"
+#include "shade/PluginMessages.h"
+
+namespace bxdflab {
+
+/// One loaded plugin: its factory (initialised) and its parameter table.
+class BxdfPlugin {
+public:
+    BxdfPlugin(std::string name, std::string path, Diagnostics& diagnostics);
+    ~BxdfPlugin();
+    BxdfPlugin(BxdfPlugin const&) = delete;
+    BxdfPlugin& operator=(BxdfPlugin const&) = delete;
+
+    std::string const& name() const { return m_name; }
+    std::string const& path() const { return m_path; }
+    RixBxdfFactory* factory() const { return m_factory; }
+    std::vector<RixSCParamInfo> const& paramTable() const { return m_table; }
+    /// Index of a parameter in the table, or -1.
+    int paramId(std::string const& name) const;
+    RixContext& context() { return m_context; }
+
+private:
+    using CreateFn = RixBxdfFactory* (*)(const char*);
+    using DestroyFn = void (*)(RixBxdfFactory*);
+    using VersionFn = int (*)();
+
+    std::string m_name, m_path;
+    PluginMessages m_messages;
+    PluginContext m_context;
+    void* m_handle = nullptr;
+    RixBxdfFactory* m_factory = nullptr;
+    DestroyFn m_destroy = nullptr;
+    std::vector<RixSCParamInfo> m_table;
+};
+
+class PluginLoader {
+public:
+    PluginLoader(std::vector<std::string> searchPath, Diagnostics& diagnostics)
+        : m_searchPath(std::move(searchPath)), m_diagnostics(diagnostics) {}
+
+    /// The plugin `name` (loading it on first use). Throws a RenderError that
+    /// names the plugin and every folder searched when it cannot be found.
+    BxdfPlugin& bxdf(std::string const& name, SourceLocation const& where = {});
+    std::vector<std::string> const& searchPath() const { return m_searchPath; }
+
+private:
+    std::vector<std::string> m_searchPath;
+    Diagnostics& m_diagnostics;
+    std::map<std::string, std::unique_ptr<BxdfPlugin>> m_plugins;
+};
+
+}  // namespace bxdflab

@@ -1,0 +1,173 @@
+#include "shade/ShadingContextImpl.h"
+
+#include <cstring>
+
+namespace bxdflab {
+namespace {
+
+bool isFloatBuiltin(RixShadingContext::BuiltinId id) {
+    switch (id) {
+        case RixShadingContext::k_VLen:
+        case RixShadingContext::k_u:
+        case RixShadingContext::k_v:
+        case RixShadingContext::k_du:
+        case RixShadingContext::k_dv:
+        case RixShadingContext::k_s:
+        case RixShadingContext::k_t: return true;
+        default: return false;
+    }
+}
+
+bool isTriple(RixSCType type) {
+    return type == k_RixSCPoint || type == k_RixSCVector || type == k_RixSCNormal || type == k_RixSCColor;
+}
+
+}  // namespace
+
+ShadingContextImpl::ShadingContextImpl(Scene const& scene, BxdfInstance const& material, HitRecord const* hits,
+                                       int count, float pixelSpread, MemoryArena& arena, RixInterface* messages,
+                                       BuiltinCounters& counters)
+    : m_scene(scene),
+      m_material(material),
+      m_hits(hits),
+      m_pixelSpread(pixelSpread),
+      m_arena(arena),
+      m_messages(messages),
+      m_counters(counters) {
+    numPts = count;
+}
+
+void ShadingContextImpl::computeSurfaceGroup() const {
+    auto* P = m_arena.allocArray<RtPoint3>(static_cast<size_t>(numPts));
+    auto* Nn = m_arena.allocArray<RtNormal3>(static_cast<size_t>(numPts));
+    auto* Ngn = m_arena.allocArray<RtNormal3>(static_cast<size_t>(numPts));
+    float* uvst[4];
+    for (auto& array : uvst) array = m_arena.allocArray<float>(static_cast<size_t>(numPts));
+    m_pError = m_arena.allocArray<Vec3>(static_cast<size_t>(numPts));
+    for (int i = 0; i < numPts; ++i) {
+        SurfaceBasics b = m_scene.shapes[m_hits[i].geomID]->basics(m_hits[i]);
+        P[i] = toRt(b.P);
+        Nn[i] = toRt(b.N);
+        Ngn[i] = toRt(b.Ng);
+        uvst[0][i] = b.u;
+        uvst[1][i] = b.v;
+        uvst[2][i] = b.s;
+        uvst[3][i] = b.t;
+        m_pError[i] = b.pError;
+    }
+    m_builtins[k_P] = P;
+    m_builtins[k_Nn] = Nn;
+    m_builtins[k_Ngn] = Ngn;
+    m_builtins[k_u] = uvst[0];
+    m_builtins[k_v] = uvst[1];
+    m_builtins[k_s] = uvst[2];
+    m_builtins[k_t] = uvst[3];
+    m_counters.surfacePoints.fetch_add(static_cast<uint64_t>(numPts), std::memory_order_relaxed);
+}
+
+void ShadingContextImpl::computeView() const {
+    auto* Vn = m_arena.allocArray<RtVector3>(static_cast<size_t>(numPts));
+    auto* VLen = m_arena.allocArray<float>(static_cast<size_t>(numPts));
+    for (int i = 0; i < numPts; ++i) {
+        float len = glm::length(m_hits[i].dir);
+        Vn[i] = toRt(-m_hits[i].dir / len);
+        VLen[i] = m_hits[i].t * len;
+    }
+    m_builtins[k_Vn] = Vn;
+    m_builtins[k_VLen] = VLen;
+}
+
+void ShadingContextImpl::computeTangentGroup() const {
+    if (!m_builtins[k_Nn]) computeSurfaceGroup();
+    if (!m_builtins[k_VLen]) computeView();
+    auto const* Nn = static_cast<RtNormal3 const*>(m_builtins[k_Nn]);
+    auto const* VLen = static_cast<float const*>(m_builtins[k_VLen]);
+    auto* dPdu = m_arena.allocArray<RtVector3>(static_cast<size_t>(numPts));
+    auto* dPdv = m_arena.allocArray<RtVector3>(static_cast<size_t>(numPts));
+    auto* Tn = m_arena.allocArray<RtVector3>(static_cast<size_t>(numPts));
+    auto* du = m_arena.allocArray<float>(static_cast<size_t>(numPts));
+    auto* dv = m_arena.allocArray<float>(static_cast<size_t>(numPts));
+    for (int i = 0; i < numPts; ++i) {
+        SurfaceTangents t = m_scene.shapes[m_hits[i].geomID]->tangents(m_hits[i]);
+        dPdu[i] = toRt(t.dPdu);
+        dPdv[i] = toRt(t.dPdv);
+        Vec3 n = toVec3(Nn[i]);
+        Tn[i] = toRt(safeNormalize(t.dPdu - n * glm::dot(n, t.dPdu)));
+        // The parametric change across the pixel footprint (ray-cone estimate).
+        float footprint = VLen[i] * m_pixelSpread;
+        float lu = glm::length(t.dPdu), lv = glm::length(t.dPdv);
+        du[i] = lu > 0.0f ? footprint / lu : 0.0f;
+        dv[i] = lv > 0.0f ? footprint / lv : 0.0f;
+    }
+    m_builtins[k_dPdu] = dPdu;
+    m_builtins[k_dPdv] = dPdv;
+    m_builtins[k_Tn] = Tn;
+    m_builtins[k_du] = du;
+    m_builtins[k_dv] = dv;
+    m_counters.tangentPoints.fetch_add(static_cast<uint64_t>(numPts), std::memory_order_relaxed);
+}
+
+Vec3 const* ShadingContextImpl::pError() const {
+    if (!m_pError) computeSurfaceGroup();
+    return m_pError;
+}
+
+int ShadingContextImpl::Builtin(BuiltinId id, RixSCType wanted, void const** result) const {
+    *result = nullptr;
+    if (id < 0 || id >= k_numBuiltins) return 1;
+    if (isFloatBuiltin(id) ? wanted != k_RixSCFloat : !isTriple(wanted)) return 1;
+    if (!m_builtins[id]) {
+        switch (id) {
+            case k_Vn:
+            case k_VLen: computeView(); break;
+            case k_Tn:
+            case k_dPdu:
+            case k_dPdv:
+            case k_du:
+            case k_dv: computeTangentGroup(); break;
+            default: computeSurfaceGroup(); break;
+        }
+    }
+    *result = m_builtins[id];
+    return 0;
+}
+
+void const* ShadingContextImpl::replicate(void const* value, size_t elementSize) const {
+    auto* out = static_cast<std::byte*>(m_arena.allocate(elementSize * static_cast<size_t>(numPts), 16));
+    for (int i = 0; i < numPts; ++i) std::memcpy(out + elementSize * static_cast<size_t>(i), value, elementSize);
+    return out;
+}
+
+RixSCDetail ShadingContextImpl::Param(int id, int arrayIndex, RixSCType wanted, size_t elementSize,
+                                      void const** result, void const* dflt, bool promote) const {
+    auto fallback = [&](RixSCDetail detail) {
+        *result = promote && dflt ? replicate(dflt, elementSize) : dflt;
+        return detail;
+    };
+    ParamValue const* value = m_material.value(id);
+    if (!value) return fallback(k_RixSCInvalidDetail);
+    bool typeOk = value->type == wanted || (isTriple(value->type) && isTriple(wanted) && value->type != k_RixSCColor &&
+                                            wanted != k_RixSCColor);
+    if (!typeOk) return fallback(k_RixSCInvalidDetail);
+    if (!value->set) return fallback(k_RixSCUniform);
+
+    size_t index = arrayIndex > 0 ? static_cast<size_t>(arrayIndex) : 0;
+    void const* source = nullptr;
+    switch (value->type) {
+        case k_RixSCInteger:
+            if (index < value->ints.size()) source = &value->ints[index];
+            break;
+        case k_RixSCString:
+            if (index < value->strings.size()) source = &value->strings[index];
+            break;
+        default: {
+            size_t floatsPerItem = elementSize / sizeof(float);
+            if ((index + 1) * floatsPerItem <= value->floats.size()) source = &value->floats[index * floatsPerItem];
+        }
+    }
+    if (!source) return fallback(k_RixSCInvalidDetail);
+    *result = promote ? replicate(source, elementSize) : source;
+    return k_RixSCUniform;
+}
+
+}  // namespace bxdflab
