@@ -16,7 +16,7 @@ LightHit IntegratorServices::visibleLight(Vec3 const& P, Vec3 const& pError, Vec
         if (light->isDelta()) continue;
         LightHit candidate;
         if (light->intersect(origin, dir, candidate.distance, candidate.radiance, candidate.pdf) &&
-            candidate.distance < nearest.distance) {
+            (!nearest.light || candidate.distance < nearest.distance)) {
             candidate.light = light;
             nearest = candidate;
         }

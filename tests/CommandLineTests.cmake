@@ -1,0 +1,28 @@
+# rixrender's command-line contract: each bad input is a located message and
+# exit status 1, never a crash (a crash would not print the expected text).
+set(CLI_OUT ${CMAKE_CURRENT_BINARY_DIR}/cli)
+file(MAKE_DIRECTORY ${CLI_OUT})
+set(BAD ${CMAKE_CURRENT_SOURCE_DIR}/bad-input)
+
+function(add_cli_failure name expected)
+  add_test(NAME cli.${name}
+           COMMAND sh ${CMAKE_CURRENT_SOURCE_DIR}/expect-failure.sh "${expected}" $<TARGET_FILE:rixrender> --quiet ${ARGN}
+           WORKING_DIRECTORY ${CLI_OUT})
+endfunction()
+
+add_cli_failure(malformed_rib "bad-input/unterminated.rib:4:29: unterminated string" ${BAD}/unterminated.rib -o out.exr)
+add_cli_failure(unknown_plugin "Bxdf plugin \"notaplugin\" not found" ${BAD}/unknown-plugin.rib -o out.exr)
+add_cli_failure(wrong_param_type "wrong-type.rib:[0-9]+:[0-9]+: Bxdf \"diffuse\" parameter \"diffuseColor\" is a color" ${BAD}/wrong-type.rib -o out.exr)
+add_cli_failure(missing_image "lightColorMap \".*no-such-sky.exr\" does not exist" ${BAD}/missing-image.rib -o out.exr)
+add_cli_failure(unwritable_output "folder \"/nonexistent-folder\" does not exist" ${PROJECT_SOURCE_DIR}/scenes/ch06/diffuse.rib -o /nonexistent-folder/x.exr)
+add_cli_failure(zero_size_image "zero-size.rib:3:1: Format: resolution must be whole numbers of at least 1 pixel" ${BAD}/zero-size.rib -o out.exr)
+add_cli_failure(nan_transform "nan-transform.rib:[0-9]+:[0-9]+: Translate: .*finite" ${BAD}/nan-transform.rib -o out.exr)
+add_cli_failure(missing_scene "cannot open RIB file" ${BAD}/does-not-exist.rib -o out.exr)
+add_cli_failure(unknown_format "unknown image format \".bmpx\"" ${PROJECT_SOURCE_DIR}/scenes/ch06/diffuse.rib --spp 1 -o out.bmpx)
+# A good render writes its image and stats, and the stats say what happened.
+add_test(NAME cli.renders_chapter6 COMMAND rixrender --quiet --spp 2 -o ch06.png --stats-json ch06.json
+         --variance ch06-variance.exr ${PROJECT_SOURCE_DIR}/scenes/ch06/diffuse.rib)
+set_tests_properties(cli.renders_chapter6 PROPERTIES WORKING_DIRECTORY ${CLI_OUT} PASS_REGULAR_EXPRESSION "wrote ch06.png")
+add_test(NAME cli.stats_schema COMMAND ${CMAKE_COMMAND}
+         -DSTATS=${CLI_OUT}/ch06.json -P ${CMAKE_CURRENT_SOURCE_DIR}/check-stats.cmake)
+set_tests_properties(cli.stats_schema PROPERTIES DEPENDS cli.renders_chapter6)

@@ -1,0 +1,127 @@
+// A configurable test Bxdf: a constant-albedo diffuse whose misbehaviour is
+// chosen at compile time, so the tests can check how the renderer copes.
+//   PROBE_NAN        GenerateSample and EvaluateSample return NaN weights on odd points
+//   PROBE_TANGENTS   asks for Tn and dPdu (to test the on-demand tangent frames)
+//   PROBE_NULL_TABLE GetParamTable returns null
+//   PROBE_NO_CREATE  the create entry point is missing
+#include <cmath>
+#include <limits>
+#include <new>
+
+#include "RixBxdf.h"
+#include "RixShadingUtils.h"
+
+namespace {
+
+RixBXLobeSampled g_lobe;
+RixBXLobeTraits g_traits;
+
+class Probe : public RixBxdf {
+public:
+    explicit Probe(RixShadingContext const* sc, RixBxdfFactory* f) : RixBxdf(sc, f) {
+        sc->GetBuiltinVar(RixShadingContext::k_Nn, &m_Nn);
+        sc->GetBuiltinVar(RixShadingContext::k_Vn, &m_Vn);
+#ifdef PROBE_TANGENTS
+        RtVector3 const* dPdu;
+        sc->GetBuiltinVar(RixShadingContext::k_Tn, &m_Tn);
+        sc->GetBuiltinVar(RixShadingContext::k_dPdu, &dPdu);
+#endif
+    }
+    RixBXEvaluateDomain GetEvaluateDomain() override { return k_RixBXReflect; }
+    void GetAggregateLobeTraits(RixBXLobeTraits* t) override { *t = g_traits; }
+
+    void GenerateSample(RixBXTransportTrait, RixBXLobeTraits const*, RixRNG* rng, RixBXLobeSampled* sampled,
+                        RtVector3* Ln, RixBXLobeWeights& W, float* FPdf, float* RPdf, RtColorRGB*) override {
+        RtColorRGB* w = W.AddActiveLobe(g_lobe);
+        for (int i = 0; i < shadingCtx->numPts; ++i) {
+            RtNormal3 N = RixGetForwardFacingNormal(m_Vn[i], m_Nn[i]);
+            RtVector3 TX, TY;
+            RixComputeShadingBasis(N, tangent(i), TX, TY);
+            float cosTheta;
+            RixCosDirectionalDistribution(rng->DrawSample2D(i), N, TX, TY, Ln[i], cosTheta);
+            FPdf[i] = cosTheta * F_INVPI;
+            RPdf[i] = FPdf[i];
+            w[i] = RtColorRGB(poison(i, 0.5f * FPdf[i]));
+            sampled[i] = g_lobe;
+            sampled[i].SetValid(true);
+        }
+    }
+    void EvaluateSample(RixBXTransportTrait, RixBXLobeTraits const*, RixRNG*, RixBXLobeTraits* evaluated,
+                        RtVector3 const* Ln, RixBXLobeWeights& W, float* FPdf, float* RPdf) override {
+        RtColorRGB* w = W.AddActiveLobe(g_lobe);
+        for (int i = 0; i < shadingCtx->numPts; ++i) {
+            float cosTheta = RixMax(0.0f, RixGetForwardFacingNormal(m_Vn[i], m_Nn[i]).Dot(Ln[i]));
+            FPdf[i] = RPdf[i] = cosTheta * F_INVPI;
+            w[i] = RtColorRGB(poison(i, 0.5f * FPdf[i]));
+            evaluated[i] = g_traits;
+        }
+    }
+    void EvaluateSamplesAtIndex(RixBXTransportTrait, RixBXLobeTraits const&, RixRNG*, int, int numSamples,
+                                RixBXLobeTraits* evaluated, RtVector3 const*, RixBXLobeWeights& W, float* FPdf,
+                                float* RPdf) override {
+        W.AddActiveLobe(g_lobe);
+        for (int s = 0; s < numSamples; ++s) {
+            evaluated[s].SetNone();
+            FPdf[s] = RPdf[s] = 0.0f;
+        }
+    }
+
+private:
+    RtVector3 tangent(int i) const {
+#ifdef PROBE_TANGENTS
+        return m_Tn[i];
+#else
+        PIXAR_ARGUSED(i);
+        return RtVector3(0.0f, 0.0f, 0.0f);
+#endif
+    }
+    static float poison(int i, float value) {
+#ifdef PROBE_NAN
+        if (i % 2) return std::numeric_limits<float>::quiet_NaN();
+#else
+        PIXAR_ARGUSED(i);
+#endif
+        return value;
+    }
+    RtNormal3 const* m_Nn;
+    RtVector3 const* m_Vn;
+#ifdef PROBE_TANGENTS
+    RtVector3 const* m_Tn;
+#endif
+};
+
+class ProbeFactory : public RixBxdfFactory {
+public:
+    int Init(RixContext&, RtUString const) override { return 0; }
+    void Finalize(RixContext&) override {}
+    RixSCParamInfo const* GetParamTable() override {
+#ifdef PROBE_NULL_TABLE
+        return nullptr;
+#else
+        static RixSCParamInfo table[] = {RixSCParamInfo()};
+        return table;
+#endif
+    }
+    void Synchronize(RixContext& ctx, RixSCSyncMsg msg, RixParameterList const*) override {
+        if (msg == k_RixSCRenderBegin) {
+            g_lobe = RixBXLookupLobeByName(ctx, false, false, true, false, 0, "Diffuse");
+            g_traits = RixBXLobeTraits(g_lobe);
+        }
+    }
+    RixBxdf* BeginScatter(RixShadingContext const* sCtx, RixBXLobeTraits const&, RixSCShadingMode, void*,
+                          RtPointer) override {
+        RixShadingContext::Allocator pool(sCtx);
+        return new (pool.AllocForBxdf<Probe>(1)) Probe(sCtx, this);
+    }
+    void EndScatter(RixBxdf*) override {}
+};
+
+}  // namespace
+
+#ifndef PROBE_NO_CREATE
+RIX_BXDFPLUGINCREATE {
+    PIXAR_ARGUSED(hint);
+    return new ProbeFactory();
+}
+#endif
+RIX_BXDFPLUGINDESTROY { delete static_cast<ProbeFactory*>(bxdf); }

@@ -1,0 +1,57 @@
+#include "support/RenderHelpers.h"
+
+#include <filesystem>
+
+#include "scene/SceneBuilder.h"
+
+namespace bxdflab::test {
+
+bool RenderOutcome::anyMessageContains(std::string const& text) const {
+    for (auto const& m : messages)
+        if (m.text.find(text) != std::string::npos) return true;
+    return false;
+}
+
+Scene parseRib(std::string const& rib, Diagnostics& diagnostics, std::string const& name) {
+    Scene scene;
+    SceneBuilder builder(scene, diagnostics);
+    builder.readText(rib, name);
+    return scene;
+}
+
+RenderOutcome renderRib(std::string const& rib, RenderSettings settings, std::string const& name) {
+    Diagnostics diagnostics(false);
+    Scene scene = parseRib(rib, diagnostics, name);
+    if (settings.pluginPath.empty()) settings.pluginPath = TEST_PLUGIN_DIR;
+    RenderOutcome out;
+    {
+        Renderer renderer(scene, settings, diagnostics);
+        Film film = renderer.render();
+        out.rgba = film.rgba();
+        out.variance = film.varianceOfMean();
+        out.width = film.width();
+        out.height = film.height();
+        out.stats = renderer.stats();
+    }
+    out.messages = diagnostics.entries();
+    return out;
+}
+
+double meanChannel(RenderOutcome const& r, int c, std::function<bool(int, int)> const& keep) {
+    double sum = 0.0;
+    long count = 0;
+    for (int y = 0; y < r.height; ++y)
+        for (int x = 0; x < r.width; ++x)
+            if (keep(x, y)) {
+                sum += r.channel(x, y, c);
+                ++count;
+            }
+    return count ? sum / static_cast<double>(count) : 0.0;
+}
+
+std::string outputDir() {
+    std::filesystem::create_directories(TEST_OUTPUT_DIR);
+    return TEST_OUTPUT_DIR;
+}
+
+}  // namespace bxdflab::test

@@ -1,0 +1,39 @@
+// Helpers for tests that render small scenes written inline.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "core/Diagnostics.h"
+#include "film/Film.h"
+#include "render/Renderer.h"
+#include "scene/Scene.h"
+
+namespace bxdflab::test {
+
+struct RenderOutcome {
+    std::vector<float> rgba;  ///< per-pixel mean, RGBA
+    std::vector<float> variance;
+    int width = 0, height = 0;
+    RenderStats stats;
+    std::vector<Diagnostics::Entry> messages;
+
+    float channel(int x, int y, int c) const { return rgba[4 * (static_cast<size_t>(y) * width + x) + c]; }
+    bool anyMessageContains(std::string const& text) const;
+};
+
+/// Renders RIB text. The test plugin folder is on the search path; `name`
+/// is the file name used in messages.
+RenderOutcome renderRib(std::string const& rib, RenderSettings settings = {}, std::string const& name = "test.rib");
+
+/// Parses RIB text into a scene (throws like the renderer does).
+Scene parseRib(std::string const& rib, Diagnostics& diagnostics, std::string const& name = "test.rib");
+
+/// Mean of channel c over the pixels for which keep(x, y) is true.
+double meanChannel(RenderOutcome const& r, int c, std::function<bool(int, int)> const& keep);
+
+/// A folder under the build tree for files a test must write.
+std::string outputDir();
+
+}  // namespace bxdflab::test

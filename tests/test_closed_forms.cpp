@@ -1,0 +1,105 @@
+// Renders whose answer is known in closed form. Each sets up a white (or
+// known-albedo) Lambertian surface, so the radiance toward the camera is
+// albedo / pi times the irradiance E, and compares with the formula.
+#include <catch2/catch.hpp>
+
+#include "support/RenderHelpers.h"
+
+using namespace bxdflab;
+
+namespace {
+
+/// An 8x8 orthographic view of a tiny patch around the origin of a white
+/// diffuse plane at z = 5 facing the camera, lit by `lights` (RIB text).
+std::string planeScene(std::string const& lights, std::string const& integrator) {
+    return "Format 8 8 1\n"
+           "Projection \"orthographic\"\n"
+           "ScreenWindow -0.01 0.01 -0.01 0.01\n" +
+           integrator +
+           "WorldBegin\n"
+           "  AttributeBegin\n"
+           "    Attribute \"visibility\" \"int camera\" [0]\n" +
+           lights +
+           "  AttributeEnd\n"
+           "  Bxdf \"diffuse\" \"white\" \"color diffuseColor\" [1 1 1]\n"
+           "  Polygon \"P\" [-10 -10 5  10 -10 5  10 10 5  -10 10 5]\n"
+           "WorldEnd\n";
+}
+
+double centreRadiance(test::RenderOutcome const& r) {
+    return test::meanChannel(r, 1, [](int, int) { return true; });
+}
+
+}  // namespace
+
+TEST_CASE("disk light: radiance below its centre is L r^2 / (r^2 + h^2) for every sampling strategy", "[closed-form]") {
+    const float r = 1.0f, h = 2.0f, L = 10.0f;
+    std::string light = "    Translate 0 0 " + std::to_string(5.0f - h) +
+                        "\n    Rotate 180 1 0 0\n    Scale " + std::to_string(2 * r) + " " + std::to_string(2 * r) +
+                        " 1\n    Light \"PxrDiskLight\" \"disk\" \"float intensity\" [" + std::to_string(L) + "]\n";
+    // E = pi L r^2 / (r^2 + h^2); a white Lambertian reflects E / pi.
+    const double expected = L * r * r / (r * r + h * h);
+    struct Strategy {
+        const char* name;
+        const char* integrator;
+    };
+    auto strategy = GENERATE(values<Strategy>({
+        {"MIS", "Integrator \"PxrDirectLighting\" \"d\" \"int numLightSamples\" [1] \"int numBxdfSamples\" [1]\n"},
+        {"light only", "Integrator \"PxrDirectLighting\" \"d\" \"int numLightSamples\" [1] \"int numBxdfSamples\" [0]\n"},
+        {"bxdf only", "Integrator \"PxrDirectLighting\" \"d\" \"int numLightSamples\" [0] \"int numBxdfSamples\" [1]\n"},
+    }));
+    CAPTURE(strategy.name);
+    RenderSettings settings;
+    settings.spp = 1024;
+    auto result = test::renderRib(planeScene(light, strategy.integrator), settings);
+    CHECK(centreRadiance(result) == Approx(expected).epsilon(0.01));
+    CHECK(result.stats.nonFiniteSamples == 0u);
+}
+
+TEST_CASE("sphere light: radiance of a facing point is L (r/d)^2", "[closed-form]") {
+    const float d = 3.0f, L = 36.0f;  // unit-diameter light: r = 0.5
+    std::string light = "    Translate 0 0 " + std::to_string(5.0f - d) +
+                        "\n    Light \"PxrSphereLight\" \"ball\" \"float intensity\" [" + std::to_string(L) + "]\n";
+    const double expected = L * 0.25 / (d * d);  // E = pi L (r/d)^2
+    RenderSettings settings;
+    settings.spp = 512;
+    auto result = test::renderRib(
+        planeScene(light, "Integrator \"PxrDirectLighting\" \"d\" \"int numLightSamples\" [1] \"int numBxdfSamples\" [1]\n"),
+        settings);
+    CHECK(centreRadiance(result) == Approx(expected).epsilon(0.01));
+}
+
+TEST_CASE("distant light: E cos(theta) / pi, exactly (a delta light has no noise)", "[closed-form]") {
+    // Light travelling along -z, turned 60 degrees: it arrives at the plane at 60 degrees.
+    std::string light =
+        "    Rotate 60 0 1 0\n    Rotate 180 1 0 0\n"
+        "    Light \"PxrDistantLight\" \"sun\" \"float intensity\" [3] \"float angleExtent\" [0]\n";
+    auto result = test::renderRib(planeScene(light, "Integrator \"PxrDirectLighting\" \"d\"\n"));
+    const double expected = 3.0 * 0.5 / F_PI;
+    for (int y = 0; y < result.height; ++y)
+        for (int x = 0; x < result.width; ++x) REQUIRE(result.channel(x, y, 0) == Approx(expected).epsilon(1e-5));
+}
+
+TEST_CASE("constant dome light: a convex diffuse object renders to albedo x L", "[closed-form]") {
+    std::string rib =
+        "Format 32 32 1\nProjection \"perspective\" \"fov\" [30]\n"
+        "Integrator \"PxrDirectLighting\" \"d\"\n"
+        "WorldBegin\n"
+        "  AttributeBegin\n"
+        "    Attribute \"visibility\" \"int camera\" [0]\n"
+        "    Light \"PxrDomeLight\" \"sky\" \"float intensity\" [2] \"color lightColor\" [1 0.5 0.25]\n"
+        "  AttributeEnd\n"
+        "  Translate 0 0 5\n"
+        "  Bxdf \"diffuse\" \"grey\" \"color diffuseColor\" [0.5 0.5 0.5]\n"
+        "  Sphere 1 -1 1 360\n"
+        "WorldEnd\n";
+    RenderSettings settings;
+    settings.spp = 256;
+    auto result = test::renderRib(rib, settings);
+    auto covered = [&](int x, int y) { return result.channel(x, y, 3) == 1.0f; };
+    CHECK(test::meanChannel(result, 0, covered) == Approx(1.0).epsilon(0.01));
+    CHECK(test::meanChannel(result, 1, covered) == Approx(0.5).epsilon(0.01));
+    CHECK(test::meanChannel(result, 2, covered) == Approx(0.25).epsilon(0.01));
+    // The background is black: the dome is invisible to the camera.
+    CHECK(result.channel(0, 0, 0) == 0.0f);
+}

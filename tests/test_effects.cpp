@@ -1,0 +1,79 @@
+// "Simulate only what the scene calls for", proven by the counters.
+#include <catch2/catch.hpp>
+
+#include "support/RenderHelpers.h"
+
+using namespace bxdflab;
+
+namespace {
+std::string sceneWith(std::string const& bxdf, std::string const& lights,
+                      std::string const& integrator = "Integrator \"PxrDirectLighting\" \"d\"\n") {
+    return "Format 24 24 1\nProjection \"perspective\" \"fov\" [20]\n" + integrator +
+           "WorldBegin\n" + lights + "  Translate 0 0 5\n  " + bxdf + "\n  Sphere 1 -1 1 360\nWorldEnd\n";
+}
+const std::string kDiskLight =
+    "  AttributeBegin\n  Translate 0 3 5\n  Rotate -90 1 0 0\n"
+    "  Light \"PxrDiskLight\" \"key\" \"float intensity\" [20]\n  AttributeEnd\n";
+
+bool skipped(RenderStats const& stats, std::string const& effect) {
+    for (auto const& [name, reason] : stats.effects.skipped)
+        if (name.find(effect) != std::string::npos || reason.find(effect) != std::string::npos) return true;
+    return false;
+}
+}  // namespace
+
+TEST_CASE("an emissive-only scene casts no shadow rays, even with a light present", "[effects]") {
+    auto r = test::renderRib(sceneWith("Bxdf \"emissive\" \"glow\" \"color emissiveColor\" [2 2 2]", kDiskLight));
+    CHECK(r.stats.cameraRays == 24u * 24u * 16u);
+    CHECK(r.stats.shadowRays == 0u);
+    CHECK(r.stats.indirectRays == 0u);
+    CHECK(r.stats.shadePoints > 0u);
+    CHECK(r.channel(12, 12, 0) == 2.0f);  // EmitLocal only
+}
+
+TEST_CASE("a scene without lights skips light sampling and casts no shadow rays", "[effects]") {
+    auto r = test::renderRib(sceneWith("Bxdf \"diffuse\" \"d\"", ""));
+    CHECK(r.stats.shadowRays == 0u);
+    CHECK(skipped(r.stats, "light sampling"));
+    CHECK(r.channel(12, 12, 0) == 0.0f);
+}
+
+TEST_CASE("direct lighting casts shadow rays but never indirect rays", "[effects]") {
+    auto r = test::renderRib(sceneWith("Bxdf \"diffuse\" \"d\"", kDiskLight));
+    CHECK(r.stats.shadowRays > 0u);
+    CHECK(r.stats.indirectRays == 0u);
+    CHECK(skipped(r.stats, "indirect rays"));
+}
+
+TEST_CASE("tangent frames are computed only when a plugin asks for them", "[effects]") {
+    auto plain = test::renderRib(sceneWith("Bxdf \"diffuse\" \"d\"", kDiskLight));
+    CHECK(plain.stats.tangentPoints == 0u);
+    CHECK(plain.stats.surfacePoints > 0u);
+    CHECK(skipped(plain.stats, "tangent frames"));
+    auto asking = test::renderRib(sceneWith("Bxdf \"probe_tangents\" \"t\"", kDiskLight));
+    CHECK(asking.stats.tangentPoints == asking.stats.shadePoints);
+    CHECK_FALSE(skipped(asking.stats, "tangent frames"));
+}
+
+TEST_CASE("lights with zero intensity and objects invisible to all rays are dropped at load", "[effects]") {
+    std::string lights = kDiskLight +
+                         "  Light \"PxrSphereLight\" \"off\" \"float intensity\" [0]\n"
+                         "  AttributeBegin\n  Attribute \"visibility\" \"int camera\" [0] \"int indirect\" [0]"
+                         " \"int transmission\" [0]\n  Sphere 1 -1 1 360\n  AttributeEnd\n";
+    auto r = test::renderRib(sceneWith("Bxdf \"diffuse\" \"d\"", lights));
+    CHECK(skipped(r.stats, "zero intensity"));
+    CHECK(skipped(r.stats, "invisible to every ray type"));
+}
+
+TEST_CASE("opacity work is skipped for trivially opaque Bxdfs", "[effects]") {
+    auto r = test::renderRib(sceneWith("Bxdf \"diffuse\" \"d\"", kDiskLight));
+    CHECK(skipped(r.stats, "opacity"));
+}
+
+TEST_CASE("PxrDefault lights an unlit scene with a headlight and samples no Bxdf", "[effects]") {
+    auto r = test::renderRib(sceneWith("Bxdf \"diffuse\" \"d\" \"color diffuseColor\" [1 1 1]", "", ""));
+    CHECK(r.stats.integrator == "PxrDefault");
+    // A white Lambertian facing the camera at the centre has radiance ~1 under the headlight.
+    CHECK(r.channel(12, 12, 0) == Approx(1.0f).epsilon(0.02));
+    CHECK(skipped(r.stats, "bxdf sampling"));
+}

@@ -1,0 +1,163 @@
+// Shapes: intersections, partial quadrics, and the differential geometry
+// handed to plugins (normals, u, v, dPdu, dPdv), checked against finite
+// differences and closed forms.
+#include <catch2/catch.hpp>
+
+#include "accel/RayTracer.h"
+#include "scene/shapes/MeshBuilders.h"
+#include "scene/shapes/Quadric.h"
+#include "support/RenderHelpers.h"
+
+using namespace bxdflab;
+
+namespace {
+
+Scene sceneWith(std::string const& rib) {
+    Diagnostics diagnostics(false);
+    return test::parseRib("WorldBegin\n" + rib + "\nWorldEnd\n", diagnostics);
+}
+
+HitRecord trace(RayTracer const& tracer, Vec3 org, Vec3 dir) {
+    RayCounts counts;
+    return tracer.intersect(org, glm::normalize(dir), 0.0f, kInfinity, RayKind::Camera, counts);
+}
+
+/// dPdu and dPdv must be the derivatives of P(u, v): compare with central
+/// differences of the quadric's own parameterisation.
+void checkDerivatives(Quadric const& q, float u, float v) {
+    const float h = 1e-3f;
+    auto P = [&](float uu, float vv) { return transformPoint(q.objectToWorld(), q.surfaceLocal(uu, vv).P); };
+    HitRecord hit;
+    hit.u = u;
+    hit.v = v;
+    SurfaceTangents t = q.tangents(hit);
+    Vec3 du = (P(u + h, v) - P(u - h, v)) / (2 * h);
+    Vec3 dv = (P(u, v + h) - P(u, v - h)) / (2 * h);
+    for (int k = 0; k < 3; ++k) {
+        CHECK(t.dPdu[k] == Approx(du[k]).margin(2e-3));
+        CHECK(t.dPdv[k] == Approx(dv[k]).margin(2e-3));
+    }
+    // RenderMan's convention: the outward normal is dPdu x dPdv.
+    SurfaceBasics b = q.basics(hit);
+    Vec3 cross = glm::cross(t.dPdu, t.dPdv);
+    if (glm::length(cross) > 1e-4f) CHECK(glm::dot(glm::normalize(cross), b.Ng) == Approx(1.0f).margin(1e-4));
+}
+
+}  // namespace
+
+TEST_CASE("sphere: hit distance, outward normal and RI parameterisation", "[geometry]") {
+    Scene scene = sceneWith("Translate 0 0 5\nSphere 2 -2 2 360");
+    RayTracer tracer(scene);
+    HitRecord hit = trace(tracer, Vec3(0), Vec3(0, 0, 1));
+    REQUIRE(hit.hit());
+    CHECK(hit.t == Approx(3.0f).epsilon(1e-6));
+    SurfaceBasics b = scene.shapes[0]->basics(hit);
+    CHECK(b.P.z == Approx(3.0f).epsilon(1e-6));
+    CHECK(b.Ng.z == Approx(-1.0f).epsilon(1e-6));  // outward, toward the camera
+    CHECK(b.v == Approx(0.0f).margin(1e-4));       // z = zmin: v = 0 (v grows with z)
+    auto const& sphere = dynamic_cast<Quadric const&>(*scene.shapes[0]);
+    for (float u : {0.1f, 0.5f, 0.9f})
+        for (float v : {0.2f, 0.5f, 0.8f}) checkDerivatives(sphere, u, v);
+}
+
+TEST_CASE("partial sphere: zmin, zmax and thetamax cut the surface", "[geometry]") {
+    // A hemisphere (z >= 0) swept only over phi in [0, 90] degrees.
+    Scene scene = sceneWith("Sphere 1 0 1 90");
+    RayTracer tracer(scene);
+    // Into the kept quadrant (x, y, z > 0) from outside: hits the outside.
+    HitRecord kept = trace(tracer, Vec3(3, 3, 3), Vec3(-1, -1, -1));
+    REQUIRE(kept.hit());
+    CHECK(kept.t == Approx(std::sqrt(27.0f) - 1.0f).epsilon(1e-5));
+    // The quadrant phi in [90, 180] is cut away: the ray passes straight through.
+    HitRecord cutAway = trace(tracer, Vec3(-3, 0.5f, 0.5f), Vec3(1, 0, 0));
+    REQUIRE(cutAway.hit());  // misses the removed front, hits the kept back from inside
+    CHECK(scene.shapes[0]->basics(cutAway).P.x > 0.0f);
+    // Below zmin there is nothing: a ray from below passes through to the dome.
+    HitRecord fromBelow = trace(tracer, Vec3(0.3f, 0.3f, -3), Vec3(0, 0, 1));
+    REQUIRE(fromBelow.hit());
+    CHECK(scene.shapes[0]->basics(fromBelow).P.z > 0.0f);  // the inside of the dome, not the missing bottom
+    CHECK_FALSE(trace(tracer, Vec3(-0.3f, -0.3f, -3), Vec3(0, 0, 1)).hit());  // outside the 90-degree sweep
+}
+
+TEST_CASE("sphere poles: dPdu vanishes but the normal stays defined", "[geometry]") {
+    Scene scene = sceneWith("Sphere 1 -1 1 360");
+    auto const& sphere = dynamic_cast<Quadric const&>(*scene.shapes[0]);
+    HitRecord top;
+    top.u = 0.3f;
+    top.v = 1.0f;
+    SurfaceTangents t = sphere.tangents(top);
+    CHECK(glm::length(t.dPdu) == Approx(0.0f).margin(1e-5));
+    SurfaceBasics b = sphere.basics(top);
+    CHECK(b.Ng.z == Approx(1.0f).epsilon(1e-5));
+    CHECK(isFinite(b.N));
+}
+
+TEST_CASE("cylinder and disk: hits, normals and derivatives", "[geometry]") {
+    Scene scene = sceneWith("Cylinder 1 -1 1 360\nTranslate 0 0 3\nDisk 0.5 2 270");
+    RayTracer tracer(scene);
+    HitRecord side = trace(tracer, Vec3(5, 0, 0.5f), Vec3(-1, 0, 0));
+    REQUIRE(side.hit());
+    CHECK(side.geomID == 0u);
+    CHECK(side.t == Approx(4.0f).epsilon(1e-6));
+    CHECK(scene.shapes[0]->basics(side).Ng.x == Approx(1.0f).epsilon(1e-6));
+    CHECK(scene.shapes[0]->basics(side).v == Approx(0.75f).epsilon(1e-5));
+
+    HitRecord cap = trace(tracer, Vec3(1, 0.2f, 10), Vec3(0, 0, -1));
+    REQUIRE(cap.hit());
+    CHECK(cap.geomID == 1u);
+    CHECK(cap.t == Approx(10.0f - 3.5f).epsilon(1e-6));
+    SurfaceBasics disk = scene.shapes[1]->basics(cap);
+    CHECK(disk.Ng.z == Approx(1.0f).epsilon(1e-6));
+    CHECK(disk.v == Approx(1.0f - std::sqrt(1.04f) / 2.0f).epsilon(1e-4));
+    // thetamax 270: the quadrant x > 0, y < 0 is missing.
+    CHECK_FALSE(trace(tracer, Vec3(1, -0.5f, 10), Vec3(0, 0, -1)).hit());
+    checkDerivatives(dynamic_cast<Quadric const&>(*scene.shapes[0]), 0.3f, 0.6f);
+    checkDerivatives(dynamic_cast<Quadric const&>(*scene.shapes[1]), 0.3f, 0.6f);
+}
+
+TEST_CASE("polygons: concave faces are triangulated without covering the notch", "[geometry]") {
+    // An L shape in the z = 2 plane: the square [0,2]^2 minus [1,2]x[1,2].
+    Scene scene = sceneWith("Polygon \"P\" [0 0 2  2 0 2  2 1 2  1 1 2  1 2 2  0 2 2]");
+    RayTracer tracer(scene);
+    CHECK(trace(tracer, Vec3(0.5f, 0.5f, 0), Vec3(0, 0, 1)).hit());
+    CHECK(trace(tracer, Vec3(1.5f, 0.5f, 0), Vec3(0, 0, 1)).hit());
+    CHECK(trace(tracer, Vec3(0.5f, 1.5f, 0), Vec3(0, 0, 1)).hit());
+    CHECK_FALSE(trace(tracer, Vec3(1.5f, 1.5f, 0), Vec3(0, 0, 1)).hit());
+    HitRecord hit = trace(tracer, Vec3(0.5f, 0.5f, 0), Vec3(0, 0, 1));
+    CHECK(std::fabs(scene.shapes[0]->basics(hit).Ng.z) == Approx(1.0f));
+}
+
+TEST_CASE("PointsPolygons: vertex normals and st are interpolated", "[geometry]") {
+    Scene scene = sceneWith(
+        "PointsPolygons [4] [0 1 2 3] \"P\" [0 0 1  1 0 1  1 1 1  0 1 1]"
+        " \"N\" [0 0 -1  0 0 -1  0 0 -1  0 0 -1] \"st\" [0 0  1 0  1 1  0 1]");
+    RayTracer tracer(scene);
+    HitRecord hit = trace(tracer, Vec3(0.25f, 0.75f, 0), Vec3(0, 0, 1));
+    REQUIRE(hit.hit());
+    SurfaceBasics b = scene.shapes[0]->basics(hit);
+    CHECK(b.s == Approx(0.25f).epsilon(1e-5));
+    CHECK(b.t == Approx(0.75f).epsilon(1e-5));
+    CHECK(b.N.z == Approx(-1.0f));
+    CHECK(b.Ng.z == Approx(-1.0f));  // follows the authored normals
+    SurfaceTangents t = scene.shapes[0]->tangents(hit);
+    CHECK(t.dPdu.x == Approx(1.0f).epsilon(1e-5));  // ds along +x
+    CHECK(t.dPdv.y == Approx(1.0f).epsilon(1e-5));
+}
+
+TEST_CASE("bilinear patch and teapot tessellate with exact derivatives", "[geometry]") {
+    Mat4 identity(1.0f);
+    MeshData patch = buildBilinearPatch({Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 1), Vec3(1, 1, 0)}, identity, false);
+    CHECK(patch.triangleCount() == 2u * 16u * 16u);  // twisted: sampled finely
+    MeshData teapot = buildTeapot(identity, false);
+    CHECK(teapot.triangleCount() == 32u * 12u * 12u * 2u);
+    for (size_t i = 0; i < teapot.N.size(); ++i) REQUIRE(glm::length(teapot.N[i]) == Approx(1.0f).epsilon(1e-3));
+    // The Newell teapot spans about 6.4 units along x (spout to handle) and 3.15 high.
+    Vec3 lo(kInfinity), hi(-kInfinity);
+    for (Vec3 const& p : teapot.P) {
+        lo = glm::min(lo, p);
+        hi = glm::max(hi, p);
+    }
+    CHECK(hi.z == Approx(3.15f).epsilon(1e-3));
+    CHECK(lo.z == Approx(0.0f).margin(1e-4));
+    CHECK(hi.x - lo.x == Approx(6.43f).epsilon(0.01));
+}

@@ -1,0 +1,95 @@
+// Plugins: book-style code works, and every way a plugin can be missing or
+// broken gives a clear message instead of a crash.
+#include <catch2/catch.hpp>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+
+#include "shade/PluginLoader.h"
+#include "shade/PluginSearchPath.h"
+#include "support/RenderHelpers.h"
+
+using namespace bxdflab;
+using Catch::Matchers::Contains;
+
+namespace {
+const std::string kLitSphere =
+    "Format 24 24 1\nProjection \"perspective\" \"fov\" [25]\n"
+    "Integrator \"PxrDirectLighting\" \"d\"\n"
+    "WorldBegin\n  AttributeBegin\n  Translate 0 2 4\n  Rotate -90 1 0 0\n"
+    "  Light \"PxrDiskLight\" \"key\" \"float intensity\" [30]\n  AttributeEnd\n"
+    "  Translate 0 0 5\n  BXDF\n  Sphere 1 -1 1 360\nWorldEnd\n";
+
+std::string withBxdf(std::string const& bxdf) {
+    std::string rib = kLitSphere;
+    return rib.replace(rib.find("BXDF"), 4, bxdf);
+}
+
+std::string renderError(std::string const& rib) {
+    try {
+        test::renderRib(rib);
+    } catch (RenderError const& e) {
+        return e.what();
+    }
+    FAIL("expected a RenderError");
+    return {};
+}
+}  // namespace
+
+TEST_CASE("a plugin written in the course text's style compiles, loads and matches the solution", "[plugins]") {
+    RenderSettings settings;
+    settings.spp = 64;
+    auto book = test::renderRib(withBxdf("Bxdf \"bookdiffuse\" \"b\" \"color diffuse_color\" [0.7 0.7 0.7]"), settings);
+    auto solution = test::renderRib(withBxdf("Bxdf \"diffuse\" \"s\" \"color diffuseColor\" [0.7 0.7 0.7]"), settings);
+    auto all = [](int, int) { return true; };
+    double bookMean = test::meanChannel(book, 0, all), solutionMean = test::meanChannel(solution, 0, all);
+    CHECK(bookMean > 0.01);
+    CHECK(bookMean == Approx(solutionMean).epsilon(0.01));
+    CHECK(book.stats.tangentPoints > 0u);  // it asks for Tn, so tangents were computed
+
+    auto glowing = test::renderRib(withBxdf("Bxdf \"bookdiffuse\" \"g\" \"color emissive_color\" [1 0 0] \"color diffuse_color\" [0 0 0]"));
+    CHECK(glowing.channel(12, 12, 0) == 1.0f);
+    CHECK(glowing.channel(12, 12, 1) == 0.0f);
+}
+
+TEST_CASE("a missing plugin names itself and every folder searched", "[plugins][errors]") {
+    std::string message = renderError(withBxdf("Bxdf \"nosuchplugin\" \"x\""));
+    CHECK_THAT(message, Contains("test.rib:11:3"));
+    CHECK_THAT(message, Contains("\"nosuchplugin\" not found"));
+    CHECK_THAT(message, Contains(TEST_PLUGIN_DIR));
+    CHECK_THAT(message, Contains("plugins/solutions"));
+}
+
+TEST_CASE("broken plugins are refused with the reason", "[plugins][errors]") {
+    CHECK_THAT(renderError(withBxdf("Bxdf \"probe_no_create\" \"x\"")), Contains("does not export CreateRixBxdfFactory"));
+    CHECK_THAT(renderError(withBxdf("Bxdf \"probe_null_table\" \"x\"")), Contains("GetParamTable returned null"));
+}
+
+TEST_CASE("parameters are checked against the plugin's table", "[plugins][errors]") {
+    CHECK_THAT(renderError(withBxdf("Bxdf \"diffuse\" \"x\" \"float diffuseColor\" [1]")),
+               Contains("\"diffuseColor\" is a color, but the RIB gives a float"));
+    auto r = test::renderRib(withBxdf("Bxdf \"diffuse\" \"x\" \"color difuseColor\" [1 0 0]"));
+    CHECK(r.anyMessageContains("has no parameter \"difuseColor\""));
+    CHECK(r.anyMessageContains("its parameters: diffuseColor"));
+}
+
+TEST_CASE("plugin search order: command line, environment, RIB option, ini file, built-in", "[plugins]") {
+    namespace fs = std::filesystem;
+    fs::path dir = fs::path(test::outputDir()) / "searchpath";
+    fs::create_directories(dir);
+    {
+        std::ofstream ini(dir / "rixrender.ini");
+        ini << "# plugin folders for scenes in this folder\n/standardrixpluginpath  mine:/abs/theirs\n";
+    }
+    setenv("RIX_PLUGIN_PATH", "/env/a:/env/b", 1);
+    auto path = pluginSearchPath({"/cli/x", {"/rib/y"}, (dir / "scene.rib").string()});
+    unsetenv("RIX_PLUGIN_PATH");
+    REQUIRE(path.size() >= 7u);
+    CHECK(path[0] == "/cli/x");
+    CHECK(path[1] == "/env/a");
+    CHECK(path[2] == "/env/b");
+    CHECK(path[3] == "/rib/y");
+    CHECK(path[4] == (dir / "mine").lexically_normal().string());
+    CHECK(path[5] == "/abs/theirs");
+    CHECK_THAT(path.back(), Contains("plugins/stock"));
+}

@@ -1,0 +1,175 @@
+// The RIB front end: tokens, requests, the graphics state, and located errors.
+#include <catch2/catch.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "parse/RibLexer.h"
+#include "parse/RibParser.h"
+#include "scene/SceneBuilder.h"
+#include "scene/shapes/Quadric.h"
+#include "support/RenderHelpers.h"
+
+using namespace bxdflab;
+using bxdflab::test::parseRib;
+
+namespace {
+/// The message of the RibError the text raises (fails the test if none).
+std::string ribErrorOf(std::string const& rib) {
+    Diagnostics diagnostics(false);
+    try {
+        parseRib(rib, diagnostics, "bad.rib");
+    } catch (RibError const& e) {
+        return e.what();
+    }
+    FAIL("expected a RibError for:\n" << rib);
+    return {};
+}
+}  // namespace
+
+TEST_CASE("lexer: requests, numbers, strings, arrays and comments with positions", "[rib]") {
+    RibLexer lexer("Sphere 1 -2.5e1 \"a \\\"q\\\"\" # comment\n[ 3 ]", "t.rib");
+    RibToken t = lexer.next();
+    CHECK(t.kind == RibToken::Kind::Request);
+    CHECK(t.text == "Sphere");
+    CHECK(lexer.next().number == 1.0);
+    CHECK(lexer.next().number == -25.0);
+    RibToken s = lexer.next();
+    CHECK(s.kind == RibToken::Kind::String);
+    CHECK(s.text == "a \"q\"");
+    RibToken open = lexer.next();
+    CHECK(open.kind == RibToken::Kind::ArrayBegin);
+    CHECK(open.location.line == 2);
+    CHECK(open.location.column == 1);
+    CHECK(lexer.next().number == 3.0);
+    CHECK(lexer.next().kind == RibToken::Kind::ArrayEnd);
+    CHECK(lexer.next().kind == RibToken::Kind::End);
+}
+
+TEST_CASE("malformed RIB gives file:line:col and what was expected", "[rib][errors]") {
+    struct Case {
+        const char* rib;
+        const char* location;
+        const char* mentions;
+    };
+    auto c = GENERATE(values<Case>({
+        {"WorldBegin\nSphere 1 -1 1\nWorldEnd", "bad.rib:2:1", "thetamax"},
+        {"WorldBegin\n  Sphere 1 -1 \"x\" 360", "bad.rib:2:15", "zmax"},
+        {"Display \"a.exr\" \"file\" \"rgba\n", "bad.rib:1:24", "unterminated string"},
+        {"Format 10 10 1 [1 2", "bad.rib:1:16", "unterminated array"},
+        {"AttributeEnd", "bad.rib:1:1", "without a matching AttributeBegin"},
+        {"Projection \"perspective\" \"fov\" [200]", "bad.rib:1:26", "between 0 and 180"},
+        {"Projection \"perspective\" \"fov\" [0]", "bad.rib:1:26", "between 0 and 180"},
+        {"Format 0 10 1", "bad.rib:1:1", "at least 1 pixel"},
+        {"Format 100000 100 1", "bad.rib:1:1", "exceeds the limit"},
+        {"PixelSamples 0 0", "bad.rib:1:1", "at least 1"},
+        {"Hider \"raytrace\" \"int maxsamples\" [0]", "bad.rib:1:18", "at least 1"},
+        {"WorldBegin\nSphere -1 -1 1 360", "bad.rib:2:1", "radius must be positive"},
+        {"Light \"PxrDiskLight\" \"l\" \"blah intensity\" [1]", "bad.rib:1:26", "unknown parameter type"},
+        {"Light \"PxrDiskLight\" \"l\" \"strength\" [1]", "bad.rib:1:26", "has no type"},
+        {"Light \"PxrDiskLight\" \"l\" \"float intensity\" \"x\"", "bad.rib:1:44", "declared float"},
+        {"Translate 1e999 0 0", "bad.rib:1:1", "finite"},
+        {"WorldBegin\nPolygon \"P\" [0 0 0 1 0 0]", "bad.rib:2:1", "at least 3 vertices"},
+        {"WorldBegin\nPointsPolygons [3] [0 1 7] \"P\" [0 0 0 1 0 0 0 1 0]", "bad.rib:2:1", "out of range"},
+        {"] Sphere", "bad.rib:1:1", "expected a request name"},
+        {"Rotate 30 0 0 0", "bad.rib:1:1", "zero vector"},
+        {"Scale 1 1 1 \"extra\"", "bad.rib:1:13", "unexpected extra argument"},
+    }));
+    CAPTURE(c.rib);
+    std::string message = ribErrorOf(c.rib);
+    CHECK_THAT(message, Catch::Matchers::StartsWith(c.location));
+    CHECK_THAT(message, Catch::Matchers::Contains(c.mentions));
+}
+
+TEST_CASE("unknown requests are warned about once with their location, then skipped", "[rib]") {
+    Diagnostics diagnostics(false);
+    Scene scene = parseRib("ShadingRate 1\nShadingRate 2\nWorldBegin\nSphere 1 -1 1 360\nWorldEnd\n", diagnostics);
+    CHECK(scene.shapes.size() == 1);
+    int warnings = 0;
+    for (auto const& e : diagnostics.entries())
+        if (e.severity == Diagnostics::Severity::Warning) {
+            ++warnings;
+            CHECK_THAT(e.text, Catch::Matchers::StartsWith("test.rib:1:1"));
+            CHECK_THAT(e.text, Catch::Matchers::Contains("ShadingRate"));
+        }
+    CHECK(warnings == 1);
+}
+
+TEST_CASE("transforms compose the RenderMan way: the last one applies first", "[rib]") {
+    Diagnostics diagnostics(false);
+    Scene scene = parseRib(
+        "Translate 0 0 5\n"  // camera transform: world -> camera
+        "WorldBegin\n"
+        "  TransformBegin\n"
+        "    Translate 1 0 0\n"
+        "    Scale 2 2 2\n"
+        "    Sphere 1 -1 1 360\n"
+        "  TransformEnd\n"
+        "  Sphere 1 -1 1 360\n"
+        "WorldEnd\n",
+        diagnostics);
+    REQUIRE(scene.shapes.size() == 2);
+    CHECK(transformPoint(scene.camera.worldToCamera, Vec3(0)) == Vec3(0, 0, 5));
+    auto const& scaled = dynamic_cast<Quadric const&>(*scene.shapes[0]);
+    // Scale first, then translate: the point (1,0,0) lands at (3,0,0).
+    CHECK(transformPoint(scaled.objectToWorld(), Vec3(1, 0, 0)) == Vec3(3, 0, 0));
+    auto const& plain = dynamic_cast<Quadric const&>(*scene.shapes[1]);
+    CHECK(transformPoint(plain.objectToWorld(), Vec3(1, 0, 0)) == Vec3(1, 0, 0));
+}
+
+TEST_CASE("ConcatTransform reads RIB's row-vector matrices", "[rib]") {
+    Diagnostics diagnostics(false);
+    Scene scene = parseRib("WorldBegin\nConcatTransform [1 0 0 0  0 1 0 0  0 0 1 0  4 5 6 1]\nSphere 1 -1 1 360\n",
+                           diagnostics);
+    auto const& sphere = dynamic_cast<Quadric const&>(*scene.shapes[0]);
+    CHECK(transformPoint(sphere.objectToWorld(), Vec3(0)) == Vec3(4, 5, 6));
+}
+
+TEST_CASE("typed inline declarations, Declare and option values", "[rib]") {
+    Diagnostics diagnostics(false);
+    Scene scene = parseRib(
+        "Declare \"myfov\" \"float\"\n"
+        "Projection \"perspective\" \"uniform float fov\" [33]\n"
+        "Format 64 32 1\nPixelSamples 2 3\n"
+        "Display \"x.tif\" \"tiff\" \"rgba\"\n"
+        "Integrator \"PxrDirectLighting\" \"i\" \"int numLightSamples\" [4]\n",
+        diagnostics);
+    CHECK(scene.camera.fov == 33.0f);
+    CHECK(scene.xres == 64);
+    CHECK(scene.yres == 32);
+    CHECK(scene.spp == 6);
+    CHECK(scene.display.name == "x.tif");
+    CHECK(scene.integrator.name == "PxrDirectLighting");
+    CHECK(scene.integrator.params.getInt("numLightSamples", 0) == 4);
+}
+
+TEST_CASE("attributes scope visibility, names and materials", "[rib]") {
+    Diagnostics diagnostics(false);
+    Scene scene = parseRib(
+        "WorldBegin\n"
+        "AttributeBegin\n"
+        "  Attribute \"visibility\" \"int camera\" [0]\n"
+        "  Attribute \"identifier\" \"name\" [\"hidden\"]\n"
+        "  Bxdf \"diffuse\" \"red\" \"color diffuseColor\" [1 0 0]\n"
+        "  Sphere 1 -1 1 360\n"
+        "AttributeEnd\n"
+        "Sphere 1 -1 1 360\n"
+        "AttributeBegin\n"
+        "  Attribute \"visibility\" \"int camera\" [0] \"int indirect\" [0] \"int transmission\" [0]\n"
+        "  Sphere 1 -1 1 360\n"
+        "AttributeEnd\n",
+        diagnostics);
+    REQUIRE(scene.shapes.size() == 2);  // the third is invisible to every ray: dropped
+    CHECK_FALSE(scene.shapes[0]->visibility.camera);
+    CHECK(scene.shapes[0]->visibility.indirect);
+    CHECK(scene.shapes[0]->name == "hidden");
+    CHECK(scene.materials[static_cast<size_t>(scene.shapes[0]->material)].handle == "red");
+    CHECK(scene.shapes[1]->visibility.camera);
+    CHECK(scene.materials[static_cast<size_t>(scene.shapes[1]->material)].plugin == "diffuse");  // default material
+    REQUIRE(scene.dropped.size() == 1);
+}
+
+TEST_CASE("ReadArchive resolves relative to the including file and reports what it tried", "[rib]") {
+    std::string message = ribErrorOf("WorldBegin\nReadArchive \"nowhere.rib\"\n");
+    CHECK_THAT(message, Catch::Matchers::StartsWith("bad.rib:2:1"));
+    CHECK_THAT(message, Catch::Matchers::Contains("nowhere.rib"));
+    CHECK_THAT(message, Catch::Matchers::Contains("tried"));
+}

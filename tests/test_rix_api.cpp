@@ -1,0 +1,184 @@
+// The student-facing API: value types, lobes, the RNG and RixShadingUtils.
+#include <catch2/catch.hpp>
+#include <set>
+
+#include "RixBxdf.h"
+#include "RixShadingUtils.h"
+
+
+namespace {
+void checkOrthonormal(RtNormal3 const& N, RtVector3 const& TX, RtVector3 const& TY) {
+    CHECK(TX.Length() == Approx(1.0f).epsilon(1e-5));
+    CHECK(TY.Length() == Approx(1.0f).epsilon(1e-5));
+    CHECK(TX.Dot(N) == Approx(0.0f).margin(1e-5));
+    CHECK(TY.Dot(N) == Approx(0.0f).margin(1e-5));
+    CHECK(TX.Dot(TY) == Approx(0.0f).margin(1e-5));
+}
+}  // namespace
+
+TEST_CASE("Rt types: vector algebra, colour arithmetic, interned strings", "[api]") {
+    RtVector3 a(1, 2, 3), b(4, 5, 6);
+    CHECK(a.Dot(b) == 32.0f);
+    RtVector3 c = a.Cross(b);
+    CHECK((c.x == -3.0f && c.y == 6.0f && c.z == -3.0f));
+    RtNormal3 n = 2.0f * a - b;  // vectors convert to normals and back
+    CHECK(n.x == -2.0f);
+    RtVector3 zero(0, 0, 0);
+    zero.Normalize();
+    CHECK(zero.IsZero());  // no NaN from normalising zero
+    RtColorRGB red(1, 0, 0), grey(0.5f);
+    RtColorRGB product = red * grey;
+    CHECK(product.r == 0.5f);
+    CHECK(product.g == 0.0f);
+    CHECK(RtUString("diffuseColor") == RtUString(std::string("diffuseColor").c_str()));
+    CHECK(RtUString("a") != RtUString("b"));
+}
+
+TEST_CASE("lobe traits: sets of lobes combine with & and |", "[api]") {
+    RixBXLobeSampled diffuse(false, false, true, false, 1, 0);
+    RixBXLobeSampled specular(false, true, true, false, 2, 0);
+    RixBXLobeTraits d(diffuse), s(specular);
+    CHECK(d.HasAny());
+    CHECK((d & s).HasAny() == false);
+    CHECK(((d | s) & s).HasAny());
+    CHECK((RixBXLobeTraits::All() & d) == d);
+    RixBXLobeTraits none;
+    CHECK_FALSE(none.HasAny());
+    none.SetValid(true);
+    CHECK(none.GetValid());
+}
+
+TEST_CASE("lobe weights: AddActiveLobe zeroes once and the sum covers every lobe", "[api]") {
+    std::vector<RtColorRGB> storage(3 * RixBXLobeWeights::k_numSlots, RtColorRGB(7.0f));
+    RixBXLobeWeights W(3, storage.data());
+    RixBXLobeSampled diffuse(false, false, true, false, 1, 0), specular(false, true, true, false, 2, 3);
+    RtColorRGB* wd = W.AddActiveLobe(diffuse);
+    CHECK(wd[2].r == 0.0f);
+    wd[1] = RtColorRGB(0.25f);
+    CHECK(W.AddActiveLobe(diffuse)[1].r == 0.25f);  // not zeroed again
+    W.AddActiveLobe(specular)[1] = RtColorRGB(0.5f);
+    CHECK(W.GetNumActiveLobes() == 2);
+    CHECK(W.SumAtPoint(1).g == 0.75f);
+}
+
+TEST_CASE("RixBXChooseLobe picks in proportion and remaps the random number", "[api]") {
+    float weights[3] = {1.0f, 0.0f, 3.0f};
+    float remapped, probability;
+    CHECK(RixBXChooseLobe(0.1f, weights, 3, &remapped, &probability) == 0);
+    CHECK(probability == Approx(0.25f));
+    CHECK(remapped == Approx(0.4f));
+    CHECK(RixBXChooseLobe(0.5f, weights, 3, &remapped, &probability) == 2);
+    CHECK(remapped == Approx(1.0f / 3.0f));
+    float none[2] = {0.0f, 0.0f};
+    CHECK(RixBXChooseLobe(0.5f, none, 2) == -1);
+}
+
+TEST_CASE("RNG: deterministic, batch and per-point draws agree, stratified per pixel", "[api][rng]") {
+    std::vector<RixRNG::SampleCtx> a(16), b(16);
+    for (uint32_t i = 0; i < 16; ++i) a[i] = b[i] = {12345u, i, 0};
+    RixRNG batch(a.data(), 16), single(b.data(), 16);
+    std::vector<RtFloat2> xi(16);
+    batch.DrawSamples2D(xi.data());
+    std::set<int> cells;
+    for (int i = 0; i < 16; ++i) {
+        RtFloat2 one = single.DrawSample2D(i);
+        CHECK(one.x == xi[static_cast<size_t>(i)].x);
+        CHECK(one.y == xi[static_cast<size_t>(i)].y);
+        REQUIRE(xi[static_cast<size_t>(i)].x >= 0.0f);
+        REQUIRE(xi[static_cast<size_t>(i)].x < 1.0f);
+        // 16 Sobol' points form a (0,2)-net: one in each cell of a 4x4 grid.
+        cells.insert(static_cast<int>(xi[static_cast<size_t>(i)].x * 4) * 4 + static_cast<int>(xi[static_cast<size_t>(i)].y * 4));
+    }
+    CHECK(cells.size() == 16u);
+    // A second draw is a new, independently scrambled set.
+    RtFloat2 next = batch.DrawSample2D(0);
+    CHECK(next.x != xi[0].x);
+    // Another pixel gets different numbers.
+    RixRNG::SampleCtx other{54321u, 0, 0};
+    CHECK(RixRNG::Sample2D(other).x != xi[0].x);
+}
+
+TEST_CASE("shading basis is orthonormal for any tangent, including degenerate ones", "[api][hard]") {
+    RtNormal3 N(0.0f, 0.6f, 0.8f);
+    RtVector3 TX, TY;
+    auto tangent = GENERATE(RtVector3(1, 0, 0), RtVector3(0, 0, 0), RtVector3(0, 3, 4), RtVector3(5, 0, 0),
+                            RtVector3(0, 0.6f, 0.8f + 1e-7f));
+    RixComputeShadingBasis(N, tangent, TX, TY);
+    checkOrthonormal(N, TX, TY);
+    RtNormal3 down(0, 0, -1);
+    RixComputeShadingBasis(down, tangent, TX, TY);
+    checkOrthonormal(down, TX, TY);
+}
+
+TEST_CASE("hemisphere samplers: unit directions above the surface, also at xi = 0 and 1 - 2^-24", "[api][hard]") {
+    RtNormal3 N(0.0f, 0.0f, 1.0f);
+    float const last = 1.0f - 0x1p-24f;
+    for (float u : {0.0f, 0.25f, last})
+        for (float v : {0.0f, 0.5f, last}) {
+            RtVector3 out;
+            float cosTheta;
+            RixCosDirectionalDistribution(RtFloat2(u, v), N, out, cosTheta);
+            CHECK(out.Length() == Approx(1.0f).epsilon(1e-5));
+            CHECK(cosTheta > 0.0f);
+            CHECK(out.Dot(N) == Approx(cosTheta).epsilon(1e-5));
+            RixUniformDirectionalDistribution(RtFloat2(u, v), N, out, cosTheta);
+            CHECK(out.Length() == Approx(1.0f).epsilon(1e-5));
+            CHECK(cosTheta > 0.0f);
+        }
+}
+
+TEST_CASE("samplers have the stated densities: E[cos] is 2/3 for cosine, 1/2 for uniform", "[api]") {
+    // Under pdf cos/pi, E[cos] = integral of cos^2 / pi over the hemisphere = 2/3;
+    // under the uniform pdf 1/(2 pi) it is 1/2. A wrong mapping moves these means.
+    double cosineMean = 0.0, uniformMean = 0.0;
+    const int n = 1 << 16;
+    for (int i = 0; i < n; ++i) {
+        RixRNG::SampleCtx ctx{99u, static_cast<uint32_t>(i), 0};
+        RtFloat2 xi = RixRNG::Sample2D(ctx);
+        RtVector3 out;
+        float cosTheta;
+        RixCosDirectionalDistribution(xi, RtNormal3(0, 0, 1), out, cosTheta);
+        cosineMean += out.z;
+        RixUniformDirectionalDistribution(xi, RtNormal3(0, 0, 1), out, cosTheta);
+        uniformMean += out.z;
+    }
+    CHECK(cosineMean / n == Approx(2.0 / 3.0).epsilon(1e-3));
+    CHECK(uniformMean / n == Approx(0.5).epsilon(1e-3));
+}
+
+TEST_CASE("Fresnel: normal incidence, grazing, and total internal reflection", "[api][hard]") {
+    float Kr;
+    RixFresnelDielectric(1.0f, 1.0f / 1.5f, &Kr);
+    CHECK(Kr == Approx(0.04f).epsilon(1e-4));  // ((1 - 1.5) / (1 + 1.5))^2
+    RixFresnelDielectric(0.0f, 1.0f / 1.5f, &Kr);
+    CHECK(Kr == Approx(1.0f).epsilon(1e-4));
+    RixFresnelDielectric(0.2f, 1.5f, &Kr);  // from inside glass at 78 degrees: beyond the critical angle
+    CHECK(Kr == 1.0f);
+
+    RtVector3 V = Normalize(RtVector3(0.3f, 0.0f, 1.0f));
+    RtNormal3 N(0, 0, 1);
+    RtVector3 R, T;
+    RixFresnelDielectric(V, N, 1.0f / 1.5f, &Kr, &R, &T);
+    CHECK(R.z == Approx(V.z));
+    CHECK(R.x == Approx(-V.x));
+    CHECK(T.z < 0.0f);  // into the surface
+    CHECK(T.Length() == Approx(1.0f).epsilon(1e-5));
+    // Snell: sin(theta_t) = eta sin(theta_i)
+    CHECK(std::sqrt(1 - T.z * T.z) == Approx(std::sqrt(1 - V.z * V.z) / 1.5f).epsilon(1e-4));
+    RtVector3 grazingInside = Normalize(RtVector3(1.0f, 0.0f, 0.1f));
+    RixFresnelDielectric(grazingInside, N, 1.5f, &Kr, &R, &T);
+    CHECK(Kr == 1.0f);
+    CHECK(T.IsZero());
+}
+
+TEST_CASE("reflect and forward-facing normals", "[api]") {
+    RtVector3 I(1, 0, -1);
+    RtVector3 R = RixReflect(I, RtNormal3(0, 0, 1));
+    CHECK((R.x == 1.0f && R.z == 1.0f));
+    RtNormal3 N(0, 0, 1);
+    float NdV;
+    RtNormal3 f = RixGetForwardFacingNormal(RtVector3(0, 0, -1), N, &NdV);
+    CHECK(f.z == -1.0f);
+    CHECK(NdV == 1.0f);
+    CHECK(RixGetBackwardFacingNormal(RtVector3(0, 0, 1), N).z == -1.0f);
+}
