@@ -26,3 +26,11 @@ set_tests_properties(cli.renders_chapter6 PROPERTIES WORKING_DIRECTORY ${CLI_OUT
 add_test(NAME cli.stats_schema COMMAND ${CMAKE_COMMAND}
          -DSTATS=${CLI_OUT}/ch06.json -P ${CMAKE_CURRENT_SOURCE_DIR}/check-stats.cmake)
 set_tests_properties(cli.stats_schema PROPERTIES DEPENDS cli.renders_chapter6)
+
+# A framebuffer display writes a file named after the display, and says where.
+add_test(NAME cli.framebuffer_display COMMAND rixrender --quiet --spp 1 ${CMAKE_CURRENT_SOURCE_DIR}/scenes/framebuffer.rib)
+set_tests_properties(cli.framebuffer_display PROPERTIES WORKING_DIRECTORY ${CLI_OUT}
+  PASS_REGULAR_EXPRESSION "framebuffer; the image was written to framebuffer-test.exr")
+# TIFF output keeps linear floats.
+add_test(NAME cli.tiff_output COMMAND rixrender --quiet --spp 1 -o ch06.tif ${PROJECT_SOURCE_DIR}/scenes/ch06/diffuse.rib)
+set_tests_properties(cli.tiff_output PROPERTIES WORKING_DIRECTORY ${CLI_OUT} PASS_REGULAR_EXPRESSION "wrote ch06.tif")

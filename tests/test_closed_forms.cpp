@@ -3,6 +3,7 @@
 // albedo / pi times the irradiance E, and compares with the formula.
 #include <catch2/catch.hpp>
 
+#include "film/Film.h"
 #include "support/RenderHelpers.h"
 
 using namespace bxdflab;
@@ -102,4 +103,34 @@ TEST_CASE("constant dome light: a convex diffuse object renders to albedo x L", 
     CHECK(test::meanChannel(result, 2, covered) == Approx(0.25).epsilon(0.01));
     // The background is black: the dome is invisible to the camera.
     CHECK(result.channel(0, 0, 0) == 0.0f);
+}
+
+TEST_CASE("image dome light: a constant lat-long map is importance sampled without bias", "[closed-form]") {
+    // A 64 x 32 map of constant colour: the sampling density follows sin(theta)
+    // over the image, so a wrong pdf conversion would show up as a wrong mean.
+    std::string path = test::outputDir() + "/constant-sky.exr";
+    std::vector<float> pixels(64 * 32 * 3);
+    for (size_t i = 0; i < pixels.size(); i += 3) {
+        pixels[i] = 0.5f;
+        pixels[i + 1] = 1.0f;
+        pixels[i + 2] = 2.0f;
+    }
+    writeImage(path, pixels, 64, 32, 3);
+    std::string rib =
+        "Format 32 32 1\nProjection \"perspective\" \"fov\" [30]\n"
+        "Integrator \"PxrDirectLighting\" \"d\"\n"
+        "WorldBegin\n"
+        "  Light \"PxrDomeLight\" \"sky\" \"string lightColorMap\" [\"" + path + "\"]\n"
+        "  Translate 0 0 5\n"
+        "  Bxdf \"diffuse\" \"white\" \"color diffuseColor\" [1 1 1]\n"
+        "  Sphere 1 -1 1 360\n"
+        "WorldEnd\n";
+    RenderSettings settings;
+    settings.spp = 256;
+    auto result = test::renderRib(rib, settings);
+    auto covered = [&](int x, int y) { return result.channel(x, y, 3) == 1.0f; };
+    CHECK(test::meanChannel(result, 0, covered) == Approx(0.5).epsilon(0.01));
+    CHECK(test::meanChannel(result, 2, covered) == Approx(2.0).epsilon(0.01));
+    // The camera sees the dome itself behind the sphere.
+    CHECK(result.channel(0, 0, 1) == Approx(1.0f));
 }
