@@ -27,6 +27,20 @@ std::string planeScene(std::string const& lights, std::string const& integrator)
            "WorldEnd\n";
 }
 
+/// A diffuse sphere of the given albedo in front of a 32x32 camera, lit by `dome` only.
+std::string sphereUnderDome(std::string const& dome, std::string const& albedo) {
+    return "Format 32 32 1\nProjection \"perspective\" \"fov\" [30]\n"
+           "Integrator \"PxrDirectLighting\" \"d\"\n"
+           "WorldBegin\n" +
+           dome + "  Translate 0 0 5\n  Bxdf \"diffuse\" \"grey\" \"color diffuseColor\" [" + albedo +
+           "]\n  Sphere 1 -1 1 360\nWorldEnd\n";
+}
+
+/// Mean of channel c over the pixels the sphere fully covers.
+double coveredMean(test::RenderOutcome const& r, int c) {
+    return test::meanChannel(r, c, [&](int x, int y) { return r.channel(x, y, 3) == 1.0f; });
+}
+
 double centreRadiance(test::RenderOutcome const& r) {
     return test::meanChannel(r, 1, [](int, int) { return true; });
 }
@@ -82,25 +96,16 @@ TEST_CASE("distant light: E cos(theta) / pi, exactly (a delta light has no noise
 }
 
 TEST_CASE("constant dome light: a convex diffuse object renders to albedo x L", "[closed-form]") {
-    std::string rib =
-        "Format 32 32 1\nProjection \"perspective\" \"fov\" [30]\n"
-        "Integrator \"PxrDirectLighting\" \"d\"\n"
-        "WorldBegin\n"
-        "  AttributeBegin\n"
-        "    Attribute \"visibility\" \"int camera\" [0]\n"
+    std::string dome =
+        "  AttributeBegin\n    Attribute \"visibility\" \"int camera\" [0]\n"
         "    Light \"PxrDomeLight\" \"sky\" \"float intensity\" [2] \"color lightColor\" [1 0.5 0.25]\n"
-        "  AttributeEnd\n"
-        "  Translate 0 0 5\n"
-        "  Bxdf \"diffuse\" \"grey\" \"color diffuseColor\" [0.5 0.5 0.5]\n"
-        "  Sphere 1 -1 1 360\n"
-        "WorldEnd\n";
+        "  AttributeEnd\n";
     RenderSettings settings;
     settings.spp = 256;
-    auto result = test::renderRib(rib, settings);
-    auto covered = [&](int x, int y) { return result.channel(x, y, 3) == 1.0f; };
-    CHECK(test::meanChannel(result, 0, covered) == Approx(1.0).epsilon(0.01));
-    CHECK(test::meanChannel(result, 1, covered) == Approx(0.5).epsilon(0.01));
-    CHECK(test::meanChannel(result, 2, covered) == Approx(0.25).epsilon(0.01));
+    auto result = test::renderRib(sphereUnderDome(dome, "0.5 0.5 0.5"), settings);
+    CHECK(coveredMean(result, 0) == Approx(1.0).epsilon(0.01));
+    CHECK(coveredMean(result, 1) == Approx(0.5).epsilon(0.01));
+    CHECK(coveredMean(result, 2) == Approx(0.25).epsilon(0.01));
     // The background is black: the dome is invisible to the camera.
     CHECK(result.channel(0, 0, 0) == 0.0f);
 }
@@ -116,21 +121,12 @@ TEST_CASE("image dome light: a constant lat-long map is importance sampled witho
         pixels[i + 2] = 2.0f;
     }
     writeImage(path, pixels, 64, 32, 3);
-    std::string rib =
-        "Format 32 32 1\nProjection \"perspective\" \"fov\" [30]\n"
-        "Integrator \"PxrDirectLighting\" \"d\"\n"
-        "WorldBegin\n"
-        "  Light \"PxrDomeLight\" \"sky\" \"string lightColorMap\" [\"" + path + "\"]\n"
-        "  Translate 0 0 5\n"
-        "  Bxdf \"diffuse\" \"white\" \"color diffuseColor\" [1 1 1]\n"
-        "  Sphere 1 -1 1 360\n"
-        "WorldEnd\n";
+    std::string dome = "  Light \"PxrDomeLight\" \"sky\" \"string lightColorMap\" [\"" + path + "\"]\n";
     RenderSettings settings;
     settings.spp = 256;
-    auto result = test::renderRib(rib, settings);
-    auto covered = [&](int x, int y) { return result.channel(x, y, 3) == 1.0f; };
-    CHECK(test::meanChannel(result, 0, covered) == Approx(0.5).epsilon(0.01));
-    CHECK(test::meanChannel(result, 2, covered) == Approx(2.0).epsilon(0.01));
+    auto result = test::renderRib(sphereUnderDome(dome, "1 1 1"), settings);
+    CHECK(coveredMean(result, 0) == Approx(0.5).epsilon(0.01));
+    CHECK(coveredMean(result, 2) == Approx(2.0).epsilon(0.01));
     // The camera sees the dome itself behind the sphere.
     CHECK(result.channel(0, 0, 1) == Approx(1.0f));
 }
