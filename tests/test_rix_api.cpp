@@ -75,7 +75,7 @@ TEST_CASE("RixBXChooseLobe picks in proportion and remaps the random number", "[
 
 TEST_CASE("RNG: deterministic, batch and per-point draws agree, stratified per pixel", "[api][rng]") {
     std::vector<RixRNG::SampleCtx> a(16), b(16);
-    for (uint32_t i = 0; i < 16; ++i) a[i] = b[i] = {12345u, i, 0};
+    for (uint32_t i = 0; i < 16; ++i) a[i] = b[i] = {12345u, i, 0, -1.0f};
     RixRNG batch(a.data(), 16), single(b.data(), 16);
     std::vector<RtFloat2> xi(16);
     batch.DrawSamples2D(xi.data());
@@ -94,7 +94,7 @@ TEST_CASE("RNG: deterministic, batch and per-point draws agree, stratified per p
     RtFloat2 next = batch.DrawSample2D(0);
     CHECK(next.x != xi[0].x);
     // Another pixel gets different numbers.
-    RixRNG::SampleCtx other{54321u, 0, 0};
+    RixRNG::SampleCtx other{54321u, 0, 0, -1.0f};
     CHECK(RixRNG::Sample2D(other).x != xi[0].x);
 }
 
@@ -133,7 +133,7 @@ TEST_CASE("samplers have the stated densities: E[cos] is 2/3 for cosine, 1/2 for
     double cosineMean = 0.0, uniformMean = 0.0;
     const int n = 1 << 16;
     for (int i = 0; i < n; ++i) {
-        RixRNG::SampleCtx ctx{99u, static_cast<uint32_t>(i), 0};
+        RixRNG::SampleCtx ctx{99u, static_cast<uint32_t>(i), 0, -1.0f};
         RtFloat2 xi = RixRNG::Sample2D(ctx);
         RtVector3 out;
         float cosTheta;

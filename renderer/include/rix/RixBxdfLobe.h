@@ -191,6 +191,7 @@ PRMAN_INLINE int RixBXChooseLobe(float xi, float const* weights, int numLobes,
         if (target < start + w) break;
         start += w;
     }
+    if (chosen < 0) return -1;
     float w = weights[chosen];
     if (xiRemapped) {
         float r = (target - start) / w;

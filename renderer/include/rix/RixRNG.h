@@ -26,6 +26,9 @@ public:
         uint32_t pixelSeed = 0;    ///< hash of pixel and render seed (decorrelates pixels)
         uint32_t sampleIndex = 0;  ///< which of the pixel's samples this is
         uint32_t draw = 0;         ///< how many draws this point has made so far
+        /// Testing hook: when >= 0, every draw returns this value in every
+        /// dimension (how the test suite feeds a Bxdf xi = 0 or xi = 1 - 2^-24).
+        float fixedValue = -1.0f;
     };
 
     RixRNG(SampleCtx* contexts, int numPoints) : numPts(numPoints), sampleCtxArray(contexts) {}
@@ -46,6 +49,7 @@ public:
 
     /// The next 2-D sample of a context (advances its draw counter).
     static RtFloat2 Sample2D(SampleCtx& ctx) {
+        if (ctx.fixedValue >= 0.0f) return RtFloat2(ctx.fixedValue, ctx.fixedValue);
         uint32_t seed = Hash(ctx.pixelSeed ^ Hash(ctx.draw++ * 0x9e3779b9u + 0x632be5abu));
         uint32_t index = NestedUniformScramble(ctx.sampleIndex, seed);
         uint32_t x = NestedUniformScramble(ReverseBits(index), Hash(seed ^ 0xa511e9b3u));
@@ -54,6 +58,7 @@ public:
     }
     /// The next 1-D sample of a context (advances its draw counter).
     static float Sample1D(SampleCtx& ctx) {
+        if (ctx.fixedValue >= 0.0f) return ctx.fixedValue;
         uint32_t seed = Hash(ctx.pixelSeed ^ Hash(ctx.draw++ * 0x9e3779b9u + 0x1b873593u));
         uint32_t index = NestedUniformScramble(ctx.sampleIndex, seed);
         return ToUnitFloat(NestedUniformScramble(ReverseBits(index), Hash(seed ^ 0x85ebca6bu)));
@@ -75,8 +80,8 @@ private:
         v = ((v >> 8) & 0x00ff00ffu) | ((v & 0x00ff00ffu) << 8);
         return (v >> 16) | (v << 16);
     }
-    // Sobol' dimension 2 in bit-reversed order of generation: the direction
-    // numbers are 1, 11, 101, 1111, ... (Pascal's triangle mod 2).
+    // The second dimension of Sobol's sequence: its direction numbers are the
+    // rows of Pascal's triangle mod 2 (1, 11, 101, 1111, ...), MSB first.
     static uint32_t SobolSecondDimension(uint32_t index) {
         uint32_t result = 0;
         for (uint32_t v = 1u << 31; index != 0; index >>= 1, v ^= v >> 1)

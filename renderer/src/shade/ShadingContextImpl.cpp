@@ -22,7 +22,47 @@ bool isTriple(RixSCType type) {
     return type == k_RixSCPoint || type == k_RixSCVector || type == k_RixSCNormal || type == k_RixSCColor;
 }
 
+void const* replicate(void const* value, size_t elementSize, int count, MemoryArena& arena) {
+    auto* out = static_cast<std::byte*>(arena.allocate(elementSize * static_cast<size_t>(count), 16));
+    for (int i = 0; i < count; ++i) std::memcpy(out + elementSize * static_cast<size_t>(i), value, elementSize);
+    return out;
+}
+
 }  // namespace
+
+RixSCDetail evalInstanceParam(BxdfInstance const& material, int id, int arrayIndex, RixSCType wanted,
+                              size_t elementSize, void const** result, void const* dflt, bool promote, int numPts,
+                              MemoryArena& arena) {
+    auto fallback = [&](RixSCDetail detail) {
+        *result = promote && dflt ? replicate(dflt, elementSize, numPts, arena) : dflt;
+        return detail;
+    };
+    ParamValue const* value = material.value(id);
+    if (!value) return fallback(k_RixSCInvalidDetail);
+    // Points, vectors and normals are interchangeable; colours are not.
+    bool typeOk = value->type == wanted || (isTriple(value->type) && isTriple(wanted) && value->type != k_RixSCColor &&
+                                            wanted != k_RixSCColor);
+    if (!typeOk) return fallback(k_RixSCInvalidDetail);
+    if (!value->set) return fallback(k_RixSCUniform);
+
+    size_t index = arrayIndex > 0 ? static_cast<size_t>(arrayIndex) : 0;
+    void const* source = nullptr;
+    switch (value->type) {
+        case k_RixSCInteger:
+            if (index < value->ints.size()) source = &value->ints[index];
+            break;
+        case k_RixSCString:
+            if (index < value->strings.size()) source = &value->strings[index];
+            break;
+        default: {
+            size_t floatsPerItem = elementSize / sizeof(float);
+            if ((index + 1) * floatsPerItem <= value->floats.size()) source = &value->floats[index * floatsPerItem];
+        }
+    }
+    if (!source) return fallback(k_RixSCInvalidDetail);
+    *result = promote ? replicate(source, elementSize, numPts, arena) : source;
+    return k_RixSCUniform;
+}
 
 ShadingContextImpl::ShadingContextImpl(Scene const& scene, BxdfInstance const& material, HitRecord const* hits,
                                        int count, float pixelSpread, MemoryArena& arena, RixInterface* messages,
@@ -132,42 +172,9 @@ int ShadingContextImpl::Builtin(BuiltinId id, RixSCType wanted, void const** res
     return 0;
 }
 
-void const* ShadingContextImpl::replicate(void const* value, size_t elementSize) const {
-    auto* out = static_cast<std::byte*>(m_arena.allocate(elementSize * static_cast<size_t>(numPts), 16));
-    for (int i = 0; i < numPts; ++i) std::memcpy(out + elementSize * static_cast<size_t>(i), value, elementSize);
-    return out;
-}
-
 RixSCDetail ShadingContextImpl::Param(int id, int arrayIndex, RixSCType wanted, size_t elementSize,
                                       void const** result, void const* dflt, bool promote) const {
-    auto fallback = [&](RixSCDetail detail) {
-        *result = promote && dflt ? replicate(dflt, elementSize) : dflt;
-        return detail;
-    };
-    ParamValue const* value = m_material.value(id);
-    if (!value) return fallback(k_RixSCInvalidDetail);
-    bool typeOk = value->type == wanted || (isTriple(value->type) && isTriple(wanted) && value->type != k_RixSCColor &&
-                                            wanted != k_RixSCColor);
-    if (!typeOk) return fallback(k_RixSCInvalidDetail);
-    if (!value->set) return fallback(k_RixSCUniform);
-
-    size_t index = arrayIndex > 0 ? static_cast<size_t>(arrayIndex) : 0;
-    void const* source = nullptr;
-    switch (value->type) {
-        case k_RixSCInteger:
-            if (index < value->ints.size()) source = &value->ints[index];
-            break;
-        case k_RixSCString:
-            if (index < value->strings.size()) source = &value->strings[index];
-            break;
-        default: {
-            size_t floatsPerItem = elementSize / sizeof(float);
-            if ((index + 1) * floatsPerItem <= value->floats.size()) source = &value->floats[index * floatsPerItem];
-        }
-    }
-    if (!source) return fallback(k_RixSCInvalidDetail);
-    *result = promote ? replicate(source, elementSize) : source;
-    return k_RixSCUniform;
+    return evalInstanceParam(m_material, id, arrayIndex, wanted, elementSize, result, dflt, promote, numPts, m_arena);
 }
 
 }  // namespace bxdflab

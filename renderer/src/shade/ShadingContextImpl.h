@@ -18,6 +18,12 @@
 
 namespace bxdflab {
 
+/// EvalParam for a Bxdf instance's parameters over a batch of numPts points
+/// (shared by every RixShadingContext the renderer builds).
+RixSCDetail evalInstanceParam(BxdfInstance const& material, int id, int arrayIndex, RixSCType wanted,
+                              size_t elementSize, void const** result, void const* dflt, bool promote, int numPts,
+                              MemoryArena& arena);
+
 struct BuiltinCounters {
     std::atomic<uint64_t> surfacePoints{0};  ///< points whose surface group was computed
     std::atomic<uint64_t> tangentPoints{0};  ///< points whose tangent group was computed
@@ -48,7 +54,6 @@ private:
     void computeSurfaceGroup() const;
     void computeTangentGroup() const;
     void computeView() const;
-    void const* replicate(void const* value, size_t elementSize) const;
 
     Scene const& m_scene;
     BxdfInstance const& m_material;

@@ -1,0 +1,221 @@
+#include "probe/BxdfProbe.h"
+
+#include "scene/SceneBuilder.h"
+#include "shade/BxdfInstance.h"
+#include "shade/MemoryArena.h"
+#include "shade/PluginLoader.h"
+#include "shade/PluginSearchPath.h"
+#include "shade/ShadingContextImpl.h"
+
+namespace bxdflab {
+namespace {
+
+/// A RixShadingContext whose builtins are the hand-made probe points.
+class ProbeShadingContext final : public RixShadingContext {
+public:
+    ProbeShadingContext(BxdfInstance const& material, std::vector<ProbePoint> const& points, MemoryArena& arena,
+                        RixInterface* messages)
+        : m_material(material), m_arena(arena), m_messages(messages) {
+        numPts = static_cast<int>(points.size());
+        auto n = static_cast<size_t>(numPts);
+        auto* P = arena.allocArray<RtPoint3>(n);
+        auto* Nn = arena.allocArray<RtNormal3>(n);
+        auto* Ngn = arena.allocArray<RtNormal3>(n);
+        auto* Tn = arena.allocArray<RtVector3>(n);
+        auto* Vn = arena.allocArray<RtVector3>(n);
+        auto* dPdu = arena.allocArray<RtVector3>(n);
+        auto* dPdv = arena.allocArray<RtVector3>(n);
+        float* scalars[7];
+        for (auto& s : scalars) s = arena.allocArray<float>(n);
+        for (size_t i = 0; i < n; ++i) {
+            ProbePoint const& p = points[i];
+            P[i] = RtPoint3(0.0f, 0.0f, 0.0f);
+            Nn[i] = toRt(p.N);
+            Ngn[i] = toRt(p.Ng);
+            Vn[i] = toRt(p.V);
+            dPdu[i] = toRt(p.dPdu);
+            dPdv[i] = toRt(glm::cross(p.N, p.dPdu));
+            Tn[i] = toRt(safeNormalize(p.dPdu - p.N * glm::dot(p.N, p.dPdu)));
+            float values[7] = {1.0f, 0.5f, 0.5f, 0.0f, 0.0f, 0.5f, 0.5f};  // VLen u v du dv s t
+            for (int k = 0; k < 7; ++k) scalars[k][i] = values[k];
+        }
+        void* table[k_numBuiltins] = {P, Nn, Ngn, Tn, Vn, scalars[0], scalars[1], scalars[2],
+                                      scalars[3], scalars[4], dPdu, dPdv, scalars[5], scalars[6]};
+        std::copy(std::begin(table), std::end(table), m_builtins);
+    }
+    RixInterface* GetRixInterface(RixInterfaceId id) const override {
+        return id == k_RixMessages ? m_messages : nullptr;
+    }
+
+protected:
+    int Builtin(BuiltinId id, RixSCType wanted, void const** result) const override {
+        *result = nullptr;
+        if (id < 0 || id >= k_numBuiltins) return 1;
+        bool scalar = id == k_VLen || id == k_u || id == k_v || id == k_du || id == k_dv || id == k_s || id == k_t;
+        if (scalar != (wanted == k_RixSCFloat)) return 1;
+        *result = m_builtins[id];
+        return 0;
+    }
+    RixSCDetail Param(int id, int arrayIndex, RixSCType wanted, size_t elementSize, void const** result,
+                      void const* dflt, bool promote) const override {
+        return evalInstanceParam(m_material, id, arrayIndex, wanted, elementSize, result, dflt, promote, numPts, m_arena);
+    }
+    void* Allocate(size_t bytes, size_t alignment) const override { return m_arena.allocate(bytes, alignment); }
+
+private:
+    BxdfInstance const& m_material;
+    MemoryArena& m_arena;
+    RixInterface* m_messages;
+    void* m_builtins[k_numBuiltins] = {};
+};
+
+}  // namespace
+
+struct BxdfProbe::Impl {
+    Diagnostics& diagnostics;
+    PluginLoader loader;
+    Scene scene;
+    std::unique_ptr<BxdfInstance> instance;
+    MemoryArena arena;
+    std::unique_ptr<PluginMessages> messages;
+
+    Impl(std::vector<std::string> const& searchPath, Diagnostics& d)
+        : diagnostics(d), loader(pluginSearchPath({[&] {
+                                                       std::string joined;
+                                                       for (auto const& f : searchPath) joined += f + ":";
+                                                       return joined;
+                                                   }(),
+                                                   {},
+                                                   ""}),
+                                 d) {}
+
+    /// Runs `body` with a Bxdf built for `points`, then releases it.
+    template <typename Body>
+    void withBxdf(std::vector<ProbePoint> const& points, Body&& body) {
+        arena.reset();
+        ProbeShadingContext ctx(*instance, points, arena, messages.get());
+        RixBxdfFactory* factory = instance->plugin().factory();
+        RixBxdf* bxdf = factory->BeginScatter(&ctx, RixBXLobeTraits::All(), k_RixSCScatterQuery, nullptr,
+                                              instance->instanceData());
+        if (!bxdf) throw RenderError("plugin \"" + instance->plugin().name() + "\": BeginScatter returned null");
+        body(ctx, *bxdf);
+        factory->EndScatter(bxdf);
+    }
+};
+
+BxdfProbe::BxdfProbe(std::string const& plugin, std::string const& ribParams, std::vector<std::string> const& searchPath,
+                     Diagnostics& diagnostics)
+    : m_impl(std::make_unique<Impl>(searchPath, diagnostics)) {
+    SceneBuilder builder(m_impl->scene, diagnostics);
+    builder.readText("Bxdf \"" + plugin + "\" \"probe\" " + ribParams + "\n", "<probe parameters>");
+    BxdfPlugin& loaded = m_impl->loader.bxdf(plugin);
+    m_impl->instance = std::make_unique<BxdfInstance>(m_impl->scene.materials.at(0), loaded, diagnostics);
+    m_impl->messages = std::make_unique<PluginMessages>(diagnostics, plugin);
+    loaded.factory()->Synchronize(loaded.context(), k_RixSCRenderBegin, nullptr);
+}
+
+BxdfProbe::~BxdfProbe() {
+    if (m_impl && m_impl->instance) {
+        BxdfPlugin& plugin = m_impl->instance->plugin();
+        plugin.factory()->Synchronize(plugin.context(), k_RixSCRenderEnd, nullptr);
+        m_impl->instance.reset();
+    }
+}
+
+std::vector<ProbeResult> BxdfProbe::generate(std::vector<ProbePoint> const& points, uint32_t firstSample, uint32_t seed,
+                                             float fixedXi) {
+    std::vector<ProbeResult> out(points.size());
+    int n = static_cast<int>(points.size());
+    m_impl->withBxdf(points, [&](RixShadingContext const& ctx, RixBxdf& bxdf) {
+        RixShadingContext::Allocator pool(&ctx);
+        auto* samples = pool.AllocFor<RixRNG::SampleCtx>(n);
+        for (int i = 0; i < n; ++i)
+            samples[i] = {RixRNG::Hash(seed ^ 0x3c6ef372u), firstSample + static_cast<uint32_t>(i), 0, fixedXi};
+        RixRNG rng(samples, n);
+        auto* wanted = pool.AllocFor<RixBXLobeTraits>(n);
+        auto* sampled = pool.AllocFor<RixBXLobeSampled>(n);
+        auto* Ln = pool.AllocFor<RtVector3>(n);
+        auto* FPdf = pool.AllocFor<float>(n);
+        auto* RPdf = pool.AllocFor<float>(n);
+        for (int i = 0; i < n; ++i) {
+            wanted[i] = RixBXLobeTraits::All();
+            sampled[i] = RixBXLobeSampled();
+            Ln[i] = RtVector3(0.0f, 0.0f, 0.0f);
+            FPdf[i] = RPdf[i] = 0.0f;
+        }
+        RixBXLobeWeights W(n, pool.AllocFor<RtColorRGB>(n * RixBXLobeWeights::k_numSlots));
+        bxdf.GenerateSample(k_RixBXDirectLighting, wanted, &rng, sampled, Ln, W, FPdf, RPdf);
+        for (int i = 0; i < n; ++i)
+            out[static_cast<size_t>(i)] = {toVec3(Ln[i]), W.SumAtPoint(i), FPdf[i], RPdf[i], sampled[i].GetValid()};
+    });
+    return out;
+}
+
+std::vector<ProbeResult> BxdfProbe::evaluate(std::vector<ProbePoint> const& points, std::vector<Vec3> const& L) {
+    std::vector<ProbeResult> out(points.size());
+    int n = static_cast<int>(points.size());
+    m_impl->withBxdf(points, [&](RixShadingContext const& ctx, RixBxdf& bxdf) {
+        RixShadingContext::Allocator pool(&ctx);
+        auto* samples = pool.AllocFor<RixRNG::SampleCtx>(n);
+        auto* wanted = pool.AllocFor<RixBXLobeTraits>(n);
+        auto* evaluated = pool.AllocFor<RixBXLobeTraits>(n);
+        auto* Ln = pool.AllocFor<RtVector3>(n);
+        auto* FPdf = pool.AllocFor<float>(n);
+        auto* RPdf = pool.AllocFor<float>(n);
+        for (int i = 0; i < n; ++i) {
+            samples[i] = {0u, static_cast<uint32_t>(i), 0, -1.0f};
+            wanted[i] = RixBXLobeTraits::All();
+            evaluated[i] = RixBXLobeTraits();
+            Ln[i] = toRt(L[static_cast<size_t>(i)]);
+            FPdf[i] = RPdf[i] = 0.0f;
+        }
+        RixRNG rng(samples, n);
+        RixBXLobeWeights W(n, pool.AllocFor<RtColorRGB>(n * RixBXLobeWeights::k_numSlots));
+        bxdf.EvaluateSample(k_RixBXDirectLighting, wanted, &rng, evaluated, Ln, W, FPdf, RPdf);
+        for (int i = 0; i < n; ++i)
+            out[static_cast<size_t>(i)] = {L[static_cast<size_t>(i)], W.SumAtPoint(i), FPdf[i], RPdf[i],
+                                           evaluated[i].GetValid() || evaluated[i].HasAny()};
+    });
+    return out;
+}
+
+std::vector<ProbeResult> BxdfProbe::evaluateAtIndex(ProbePoint const& point, std::vector<Vec3> const& L) {
+    std::vector<ProbeResult> out(L.size());
+    int n = static_cast<int>(L.size());
+    m_impl->withBxdf({point}, [&](RixShadingContext const& ctx, RixBxdf& bxdf) {
+        RixShadingContext::Allocator pool(&ctx);
+        RixRNG::SampleCtx sample{0u, 0u, 0u, -1.0f};
+        RixRNG rng(&sample, 1);
+        auto* evaluated = pool.AllocFor<RixBXLobeTraits>(n);
+        auto* Ln = pool.AllocFor<RtVector3>(n);
+        auto* FPdf = pool.AllocFor<float>(n);
+        auto* RPdf = pool.AllocFor<float>(n);
+        for (int i = 0; i < n; ++i) {
+            evaluated[i] = RixBXLobeTraits();
+            Ln[i] = toRt(L[static_cast<size_t>(i)]);
+            FPdf[i] = RPdf[i] = 0.0f;
+        }
+        RixBXLobeWeights W(n, pool.AllocFor<RtColorRGB>(n * RixBXLobeWeights::k_numSlots));
+        bxdf.EvaluateSamplesAtIndex(k_RixBXDirectLighting, RixBXLobeTraits::All(), &rng, 0, n, evaluated, Ln, W, FPdf, RPdf);
+        for (int i = 0; i < n; ++i)
+            out[static_cast<size_t>(i)] = {L[static_cast<size_t>(i)], W.SumAtPoint(i), FPdf[i], RPdf[i],
+                                           evaluated[i].GetValid() || evaluated[i].HasAny()};
+    });
+    return out;
+}
+
+std::vector<RtColorRGB> BxdfProbe::emission(std::vector<ProbePoint> const& points) {
+    std::vector<RtColorRGB> out(points.size(), RtColorRGB(0.0f));
+    m_impl->withBxdf(points, [&](RixShadingContext const&, RixBxdf& bxdf) {
+        if (!bxdf.EmitLocal(out.data())) std::fill(out.begin(), out.end(), RtColorRGB(0.0f));
+    });
+    return out;
+}
+
+RixBXLobeTraits BxdfProbe::lobes() {
+    RixBXLobeTraits traits;
+    m_impl->withBxdf({ProbePoint{}}, [&](RixShadingContext const&, RixBxdf& bxdf) { traits = bxdf.GetAllLobeTraits(); });
+    return traits;
+}
+
+}  // namespace bxdflab

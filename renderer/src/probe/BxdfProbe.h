@@ -1,0 +1,64 @@
+// Drives a Bxdf plugin directly, without a scene: the test suite and the
+// autograder use it to ask a plugin for values, pdfs and samples at shade
+// points they choose (normal, tangent, view direction), through the same
+// loader, parameter matching and RixShadingContext interface as a render.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "RixBxdf.h"
+#include "core/Diagnostics.h"
+#include "core/Math.h"
+
+namespace bxdflab {
+
+/// A shade point set up by hand.
+struct ProbePoint {
+    Vec3 N{0.0f, 0.0f, 1.0f};     ///< unit shading normal
+    Vec3 Ng{0.0f, 0.0f, 1.0f};    ///< unit geometric normal
+    Vec3 dPdu{1.0f, 0.0f, 0.0f};  ///< tangent (any length; zero for a degenerate frame)
+    Vec3 V{0.0f, 0.0f, 1.0f};     ///< unit direction toward the viewer
+};
+
+/// One answer of the Bxdf: the sampled or given direction, W = f |cos|, pdfs.
+struct ProbeResult {
+    Vec3 L{0.0f};
+    RtColorRGB W;
+    float FPdf = 0.0f;
+    float RPdf = 0.0f;
+    bool valid = false;  ///< GenerateSample: lobeSampled valid; EvaluateSample: some lobe evaluated
+};
+
+class BxdfProbe {
+public:
+    /// Loads `plugin` (searching `searchPath`, then the built-in folders) and
+    /// makes one instance with `ribParams`, written as in a RIB Bxdf line,
+    /// e.g. "\"color diffuseColor\" [1 1 1]". Throws RenderError/RibError.
+    BxdfProbe(std::string const& plugin, std::string const& ribParams, std::vector<std::string> const& searchPath,
+              Diagnostics& diagnostics);
+    ~BxdfProbe();
+    BxdfProbe(BxdfProbe const&) = delete;
+    BxdfProbe& operator=(BxdfProbe const&) = delete;
+
+    /// GenerateSample for a batch; point i uses sample index firstSample + i
+    /// of the sequence with the given seed. With fixedXi >= 0, every random
+    /// number the Bxdf draws is fixedXi instead (for the xi = 0 / xi -> 1 cases).
+    std::vector<ProbeResult> generate(std::vector<ProbePoint> const& points, uint32_t firstSample = 0,
+                                      uint32_t seed = 0, float fixedXi = -1.0f);
+    /// EvaluateSample for a batch: direction L[i] at points[i].
+    std::vector<ProbeResult> evaluate(std::vector<ProbePoint> const& points, std::vector<Vec3> const& L);
+    /// EvaluateSamplesAtIndex: many directions at one point.
+    std::vector<ProbeResult> evaluateAtIndex(ProbePoint const& point, std::vector<Vec3> const& L);
+    /// EmitLocal for a batch (zero where the Bxdf does not emit).
+    std::vector<RtColorRGB> emission(std::vector<ProbePoint> const& points);
+    /// The Bxdf's aggregate lobes (asked on a one-point batch).
+    RixBXLobeTraits lobes();
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> m_impl;
+};
+
+}  // namespace bxdflab

@@ -1,0 +1,334 @@
+// The reference plugins, driven through the probe harness: values against
+// hand-computed numbers, sampling against the declared pdf (chi-squared),
+// generate/evaluate consistency, pdf normalisation, reciprocity, energy, and
+// the hard cases of models.md (one table: adding a case is one line).
+#include <catch2/catch.hpp>
+#include <cmath>
+
+#include "probe/BxdfProbe.h"
+#include "support/Statistics.h"
+
+using namespace bxdflab;
+
+namespace {
+
+Vec3 direction(float thetaDegrees, float phiDegrees) {
+    float t = glm::radians(thetaDegrees), p = glm::radians(phiDegrees);
+    return Vec3(std::sin(t) * std::cos(p), std::sin(t) * std::sin(p), std::cos(t));
+}
+
+ProbePoint viewFrom(float thetaDegrees, float phiDegrees = 0.0f) {
+    ProbePoint point;
+    point.V = direction(thetaDegrees, phiDegrees);
+    return point;
+}
+
+std::unique_ptr<BxdfProbe> probe(std::string const& plugin, std::string const& params) {
+    static Diagnostics diagnostics(false);
+    return std::make_unique<BxdfProbe>(plugin, params, std::vector<std::string>{}, diagnostics);
+}
+
+RtColorRGB weightAt(BxdfProbe& p, ProbePoint const& point, Vec3 const& L) { return p.evaluate({point}, {L})[0].W; }
+
+struct Model {
+    const char* plugin;
+    const char* params;
+    bool reciprocal;       ///< f(V, L) = f(L, V)
+    bool conservesEnergy;  ///< directional albedo <= 1 for these (white) parameters
+    bool mayReject;        ///< GenerateSample can return invalid samples (pdf integrates to < 1)
+};
+
+// Every solution, in the configurations the tests below exercise.
+const std::vector<Model> kModels = {
+    {"diffuse", "\"color diffuseColor\" [1 1 1]", true, true, false},
+    {"buggydiffuse", "\"color diffuseColor\" [1 1 1]", true, true, false},
+    {"specular", "\"float gloss\" [30]", true, true, false},
+    {"specular", "\"float gloss\" [30] \"int samplingMode\" [1]", true, true, true},
+    {"plastic", "\"color diffuseColor\" [0.6 0.6 0.6] \"color specularColor\" [0.4 0.4 0.4] \"float gloss\" [40]", true,
+     true, true},
+    {"ward", "\"float uRoughness\" [0.3] \"float vRoughness\" [0.1]", true, false, true},
+    {"ward", "\"float uRoughness\" [0.3] \"float vRoughness\" [0.1] \"int samplingMode\" [0]", true, false, false},
+    {"ward", "\"float uRoughness\" [0.2] \"float vRoughness\" [0.2] \"color diffuseColor\" [0.4 0.4 0.4]", true, false,
+     true},
+    {"finishedwood", "", false, false, false},
+    {"finishedwood", "\"vector fiberAxis\" [0.6 0.8 0] \"float beta\" [0.3] \"float eta\" [1.3]", false, false, false},
+};
+
+std::string describe(Model const& m) { return std::string(m.plugin) + " " + m.params; }
+
+/// Sum of FPdf sin(theta) dtheta dphi over the upper hemisphere (midpoint rule).
+double integratePdf(BxdfProbe& p, ProbePoint const& point, int thetaSteps, int phiSteps) {
+    std::vector<ProbePoint> points(static_cast<size_t>(thetaSteps * phiSteps), point);
+    std::vector<Vec3> L;
+    std::vector<float> solidAngle;
+    float dTheta = 0.5f * kPi / thetaSteps, dPhi = 2.0f * kPi / phiSteps;
+    for (int i = 0; i < thetaSteps; ++i)
+        for (int j = 0; j < phiSteps; ++j) {
+            float theta = (i + 0.5f) * dTheta, phi = (j + 0.5f) * dPhi;
+            L.emplace_back(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta));
+            solidAngle.push_back(std::sin(theta) * dTheta * dPhi);
+        }
+    auto results = p.evaluate(points, L);
+    double total = 0.0;
+    for (size_t k = 0; k < results.size(); ++k) total += static_cast<double>(results[k].FPdf) * solidAngle[k];
+    return total;
+}
+
+}  // namespace
+
+TEST_CASE("solutions: values at fixed directions match hand-computed numbers", "[solutions]") {
+    const float pi = F_PI;
+    SECTION("diffuse: W = rho cos / pi, FPdf = cos / pi, RPdf = cos_V / pi") {
+        auto p = probe("diffuse", "\"color diffuseColor\" [0.8 0.4 0.2]");
+        auto r = p->evaluate({viewFrom(0)}, {direction(60, 10)})[0];
+        CHECK(r.W.r == Approx(0.8 * 0.5 / pi).epsilon(1e-5));
+        CHECK(r.W.b == Approx(0.2 * 0.5 / pi).epsilon(1e-5));
+        CHECK(r.FPdf == Approx(0.5 / pi).epsilon(1e-5));
+        CHECK(r.RPdf == Approx(1.0 / pi).epsilon(1e-5));
+        CHECK(p->evaluate({viewFrom(0)}, {direction(100, 0)})[0].W.r == 0.0f);  // below the surface
+    }
+    SECTION("specular: normalised Phong around the mirror direction") {
+        auto p = probe("specular", "\"color specularColor\" [1 1 1] \"float gloss\" [10]");
+        // V at 30 degrees (phi 0): the mirror direction is at 30 degrees, phi 180.
+        CHECK(weightAt(*p, viewFrom(30), direction(30, 180)).g == Approx(12.0 / (2 * pi) * std::cos(pi / 6)).epsilon(1e-4));
+        // 10 degrees off the mirror direction: cos(10 deg)^10.
+        double expected = 12.0 / (2 * pi) * std::pow(std::cos(pi / 18), 10.0) * std::cos(40 * pi / 180);
+        CHECK(weightAt(*p, viewFrom(30), direction(40, 180)).g == Approx(expected).epsilon(1e-4));
+        auto raw = probe("specular", "\"float gloss\" [10] \"int normalize\" [0]");
+        CHECK(weightAt(*raw, viewFrom(30), direction(30, 180)).g == Approx(std::cos(pi / 6)).epsilon(1e-4));
+    }
+    SECTION("plastic: the sum of both lobes, and the albedo-weighted mixture pdf") {
+        auto p = probe("plastic", "\"color diffuseColor\" [0.5 0.5 0.5] \"color specularColor\" [0.25 0.25 0.25] "
+                                  "\"float gloss\" [10]");
+        auto r = p->evaluate({viewFrom(30)}, {direction(40, 180)})[0];
+        double cosL = std::cos(40 * pi / 180), lobe = std::pow(std::cos(pi / 18), 10.0);
+        CHECK(r.W.r == Approx(0.5 * cosL / pi + 0.25 * 12.0 / (2 * pi) * lobe * cosL).epsilon(1e-4));
+        double pSpecular = 0.25 / 0.75;
+        CHECK(r.FPdf == Approx((1 - pSpecular) * cosL / pi + pSpecular * 11.0 / (2 * pi) * lobe).epsilon(1e-4));
+    }
+    SECTION("ward: peak value and an anisotropic fall-off") {
+        auto p = probe("ward", "\"color specularColor\" [1 1 1] \"float uRoughness\" [0.2] \"float vRoughness\" [0.4]");
+        CHECK(weightAt(*p, viewFrom(0), Vec3(0, 0, 1)).r == Approx(1.0 / (4 * pi * 0.2 * 0.4)).epsilon(1e-4));
+        // V = N, L tilted by 20 degrees toward u (dPdu = +x): H = L + V.
+        double t = 20 * pi / 180;
+        double alongU = std::exp(-std::pow(std::sin(t) / 0.2, 2) / std::pow(1 + std::cos(t), 2)) * std::sqrt(std::cos(t)) /
+                        (4 * pi * 0.08);
+        double alongV = std::exp(-std::pow(std::sin(t) / 0.4, 2) / std::pow(1 + std::cos(t), 2)) * std::sqrt(std::cos(t)) /
+                        (4 * pi * 0.08);
+        CHECK(weightAt(*p, viewFrom(0), direction(20, 0)).r == Approx(alongU).epsilon(1e-4));
+        CHECK(weightAt(*p, viewFrom(0), direction(20, 90)).r == Approx(alongV).epsilon(1e-4));
+    }
+    SECTION("finishedwood with eta = 1: no coat, diffuse and fiber lobes through a clear boundary") {
+        auto p = probe("finishedwood", "\"float eta\" [1] \"color diffuseColor\" [0.5 0.5 0.5] "
+                                       "\"color fiberColor\" [1 1 1] \"float beta\" [0.1] \"vector fiberAxis\" [1 0 0]");
+        // L in the plane across the fiber (yz): psi_i = psi_r = 0, g(0) = 1 / (beta sqrt(2 pi)).
+        double cosL = std::cos(pi / 6);
+        double expected = 0.5 / pi * cosL + 1.0 / (0.1 * std::sqrt(2 * pi)) * cosL;
+        CHECK(weightAt(*p, viewFrom(0), direction(30, 90)).r == Approx(expected).epsilon(1e-4));
+        // Along the fiber the highlight is gone: psi_h = 30 degrees is 5 beta away.
+        CHECK(weightAt(*p, viewFrom(0), direction(30, 0)).r == Approx(0.5 / pi * cosL).epsilon(1e-3));
+    }
+    SECTION("emissive: no lobes, only emission") {
+        auto p = probe("emissive", "\"color emissiveColor\" [3 2 1]");
+        CHECK_FALSE(p->lobes().HasAny());
+        CHECK(p->emission({viewFrom(0)})[0].g == 2.0f);
+        CHECK_FALSE(p->generate({viewFrom(0)})[0].valid);
+    }
+}
+
+TEST_CASE("solutions: GenerateSample agrees with EvaluateSample and EvaluateSamplesAtIndex", "[solutions][consistency]") {
+    auto model = GENERATE(from_range(kModels));
+    auto viewTheta = GENERATE(0.0f, 45.0f, 80.0f, 89.9f);
+    CAPTURE(describe(model), viewTheta);
+    auto p = probe(model.plugin, model.params);
+    std::vector<ProbePoint> points(1024, viewFrom(viewTheta, 25.0f));
+    auto generated = p->generate(points);
+    std::vector<Vec3> L;
+    for (auto const& g : generated) L.push_back(g.L);
+    auto evaluated = p->evaluate(points, L);
+    auto atIndex = p->evaluateAtIndex(points[0], L);
+    int valid = 0;
+    for (size_t i = 0; i < generated.size(); ++i) {
+        if (!generated[i].valid) continue;
+        ++valid;
+        REQUIRE(generated[i].FPdf > 0.0f);
+        for (auto const* other : {&evaluated[i], &atIndex[i]}) {
+            REQUIRE(other->FPdf == Approx(generated[i].FPdf).epsilon(1e-4));
+            REQUIRE(other->RPdf == Approx(generated[i].RPdf).epsilon(1e-4));
+            for (int c = 0; c < 3; ++c) REQUIRE(other->W[c] == Approx(generated[i].W[c]).epsilon(1e-4).margin(1e-12));
+        }
+    }
+    CHECK(valid > 0);
+}
+
+TEST_CASE("solutions: FPdf integrates to 1 over the hemisphere, or to the valid fraction", "[solutions][pdf]") {
+    auto model = GENERATE(from_range(kModels));
+    auto viewTheta = GENERATE(0.0f, 60.0f);
+    CAPTURE(describe(model), viewTheta);
+    auto p = probe(model.plugin, model.params);
+    ProbePoint point = viewFrom(viewTheta, 25.0f);
+    double integral = integratePdf(*p, point, 512, 1024);
+    CHECK(integral <= 1.002);
+    if (!model.mayReject) CHECK(integral == Approx(1.0).epsilon(0.003));
+    // Rejected samples carry exactly the missing probability.
+    std::vector<ProbePoint> points(20000, point);
+    int valid = 0;
+    for (auto const& g : p->generate(points)) valid += g.valid;
+    CHECK(valid / 20000.0 == Approx(integral).margin(0.01));
+}
+
+TEST_CASE("solutions: sampled directions follow FPdf (chi-squared, Sidak-corrected)", "[solutions][chi2]") {
+    const std::vector<float> views = {0.0f, 45.0f, 85.0f};
+    const double alpha = test::sidak(0.01, static_cast<int>(kModels.size() * views.size()));
+    auto model = GENERATE(from_range(kModels));
+    auto viewTheta = GENERATE(0.0f, 45.0f, 85.0f);
+    CAPTURE(describe(model), viewTheta);
+    auto p = probe(model.plugin, model.params);
+    ProbePoint point = viewFrom(viewTheta, 25.0f);
+
+    // Equal-area cells: cos(theta) in [0, 1] and phi in [0, 2 pi).
+    const int cosCells = 16, phiCells = 32, sub = 12;
+    const int samples = 200000;
+    std::vector<double> observed(cosCells * phiCells, 0.0), expected(cosCells * phiCells, 0.0);
+    std::vector<ProbePoint> points(samples, point);
+    double validSamples = 0.0;
+    for (auto const& g : p->generate(points, 0, 7u)) {
+        if (!g.valid) continue;  // how many are rejected is checked against the pdf's integral elsewhere
+        validSamples += 1.0;
+        Vec3 L = glm::normalize(g.L);
+        int ci = std::min(cosCells - 1, static_cast<int>(std::max(0.0f, L.z) * cosCells));
+        float phi = std::atan2(L.y, L.x);
+        if (phi < 0) phi += 2 * kPi;
+        int pj = std::min(phiCells - 1, static_cast<int>(phi / (2 * kPi) * phiCells));
+        observed[static_cast<size_t>(ci * phiCells + pj)] += 1;
+    }
+    // Expected counts: the pdf integrated over each cell, supersampled.
+    std::vector<Vec3> L;
+    for (int ci = 0; ci < cosCells; ++ci)
+        for (int pj = 0; pj < phiCells; ++pj)
+            for (int a = 0; a < sub; ++a)
+                for (int b = 0; b < sub; ++b) {
+                    float c = (ci + (a + 0.5f) / sub) / cosCells, phi = 2 * kPi * (pj + (b + 0.5f) / sub) / phiCells;
+                    float s = std::sqrt(std::max(0.0f, 1 - c * c));
+                    L.emplace_back(s * std::cos(phi), s * std::sin(phi), c);
+                }
+    auto pdfs = p->evaluate(std::vector<ProbePoint>(L.size(), point), L);
+    // The shape of the valid samples' distribution: expected counts are scaled
+    // to the number of valid samples (which also absorbs the small error of
+    // supersampling a sharp lobe).
+    double cellArea = 2 * kPi / (cosCells * phiCells), total = 0.0;
+    for (size_t k = 0; k < pdfs.size(); ++k) {
+        double e = pdfs[k].FPdf * cellArea / (sub * sub);
+        expected[k / (sub * sub)] += e;
+        total += e;
+    }
+    REQUIRE(total > 0.0);
+    for (double& e : expected) e *= validSamples / total;
+    auto result = test::chiSquaredTest(observed, expected);
+    CAPTURE(result.statistic, result.degreesOfFreedom, result.pValue);
+    CHECK(result.impossibleSamples == 0);
+    CHECK(result.pValue > alpha);
+}
+
+TEST_CASE("solutions: reciprocal models satisfy f(V, L) = f(L, V) and RPdf(V, L) = FPdf(L, V)", "[solutions]") {
+    auto model = GENERATE(from_range(kModels));
+    if (!model.reciprocal) return;
+    CAPTURE(describe(model));
+    auto p = probe(model.plugin, model.params);
+    for (float thetaV : {5.0f, 35.0f, 70.0f})
+        for (float thetaL : {15.0f, 50.0f, 80.0f})
+            for (float phiL : {0.0f, 100.0f, 200.0f}) {
+                Vec3 V = direction(thetaV, 30.0f), L = direction(thetaL, phiL);
+                ProbePoint fromV = viewFrom(thetaV, 30.0f), fromL;
+                fromL.V = L;
+                auto forward = p->evaluate({fromV}, {L})[0], backward = p->evaluate({fromL}, {V})[0];
+                // W = f cos(theta_L): divide the cosines out to compare f.
+                for (int c = 0; c < 3; ++c)
+                    CHECK(forward.W[c] / L.z == Approx(backward.W[c] / V.z).epsilon(1e-3).margin(1e-9));
+                CHECK(forward.RPdf == Approx(backward.FPdf).epsilon(1e-3).margin(1e-9));
+            }
+}
+
+TEST_CASE("solutions: white furnace, the directional albedo never exceeds 1", "[solutions][energy]") {
+    auto model = GENERATE(from_range(kModels));
+    if (!model.conservesEnergy) return;
+    auto viewTheta = GENERATE(0.0f, 45.0f, 80.0f);
+    CAPTURE(describe(model), viewTheta);
+    auto p = probe(model.plugin, model.params);
+    std::vector<ProbePoint> points(65536, viewFrom(viewTheta));
+    double albedo = 0.0;
+    for (auto const& g : p->generate(points))
+        if (g.valid) albedo += g.W.g / g.FPdf;
+    albedo /= static_cast<double>(points.size());
+    CHECK(albedo <= 1.01);
+    if (std::string(model.plugin).find("diffuse") != std::string::npos) CHECK(albedo == Approx(1.0).epsilon(1e-3));
+}
+
+TEST_CASE("solutions: hard cases stay finite, with non-negative pdfs and invalid rather than garbage samples",
+          "[solutions][hard]") {
+    struct HardCase {
+        const char* plugin;
+        const char* params;
+    };
+    auto row = GENERATE(values<HardCase>({
+        {"diffuse", ""},
+        {"specular", "\"float gloss\" [0]"},
+        {"specular", "\"float gloss\" [1] \"int samplingMode\" [1]"},
+        {"specular", "\"float gloss\" [100000]"},
+        {"specular", "\"float gloss\" [100000] \"int samplingMode\" [1]"},
+        {"plastic", "\"color diffuseColor\" [0.8 0.8 0.8] \"color specularColor\" [0.8 0.8 0.8]"},
+        {"plastic", "\"float gloss\" [100000] \"color diffuseColor\" [0 0 0]"},
+        {"ward", "\"float uRoughness\" [0.0001] \"float vRoughness\" [0.0001]"},
+        {"ward", "\"float uRoughness\" [1] \"float vRoughness\" [0.01]"},
+        {"ward", "\"float uRoughness\" [0] \"float vRoughness\" [0] \"int samplingMode\" [0]"},
+        {"finishedwood", "\"float eta\" [1]"},
+        {"finishedwood", "\"float eta\" [0.5]"},  // total internal reflection on the way out
+        {"finishedwood", "\"vector fiberAxis\" [0 0 1]"},
+        {"finishedwood", "\"float beta\" [0.0001]"},
+        {"finishedwood", "\"vector fiberAxis\" [0 0 0] \"float roughness\" [0]"},
+    }));
+    CAPTURE(row.plugin, row.params);
+    auto p = probe(row.plugin, row.params);
+    const float tiny = 1e-7f;
+    std::vector<Vec3> views = {Vec3(0, 0, 1), glm::normalize(Vec3(1, 0, tiny)), Vec3(1, 0, 0),
+                               glm::normalize(Vec3(1, 0, -tiny)), glm::normalize(Vec3(0.3f, 0.2f, -0.9f))};
+    std::vector<Vec3> tangents = {Vec3(1, 0, 0), Vec3(0), Vec3(0, 0, 1), Vec3(0, 3, 0.5f)};
+    std::vector<Vec3> lights = {Vec3(0, 0, 1), glm::normalize(Vec3(0, 1, tiny)), Vec3(0, 1, 0),
+                                glm::normalize(Vec3(0, 1, -tiny)), glm::normalize(Vec3(-0.5f, 0.1f, 0.8f))};
+    for (Vec3 const& V : views)
+        for (Vec3 const& T : tangents) {
+            ProbePoint point;
+            point.V = V;
+            point.dPdu = T;
+            CAPTURE(V.x, V.y, V.z, T.x, T.y, T.z);
+            for (float xi : {-1.0f, 0.0f, 1.0f - 0x1p-24f}) {
+                std::vector<ProbePoint> points(xi < 0 ? 64 : 1, point);
+                auto generated = p->generate(points, 0, 0, xi);
+                std::vector<Vec3> L;
+                for (auto const& g : generated) {
+                    for (int c = 0; c < 3; ++c) REQUIRE(std::isfinite(g.W[c]));
+                    REQUIRE(std::isfinite(g.FPdf));
+                    REQUIRE(g.FPdf >= 0.0f);
+                    REQUIRE(g.RPdf >= 0.0f);
+                    if (g.valid) {
+                        REQUIRE(g.FPdf > 0.0f);
+                        REQUIRE(isFinite(g.L));
+                        REQUIRE(glm::length(g.L) == Approx(1.0f).epsilon(1e-3));
+                    }
+                    L.push_back(g.valid ? g.L : Vec3(0, 0, 1));
+                }
+                auto evaluated = p->evaluate(points, L);
+                for (size_t i = 0; i < generated.size(); ++i)
+                    if (generated[i].valid) {
+                        REQUIRE(evaluated[i].FPdf == Approx(generated[i].FPdf).epsilon(1e-3));
+                        REQUIRE(evaluated[i].W.g == Approx(generated[i].W.g).epsilon(1e-3).margin(1e-12));
+                    }
+            }
+            for (auto const& e : p->evaluate(std::vector<ProbePoint>(lights.size(), point), lights)) {
+                for (int c = 0; c < 3; ++c) REQUIRE(std::isfinite(e.W[c]));
+                REQUIRE(e.W.g >= 0.0f);
+                REQUIRE(std::isfinite(e.FPdf));
+                REQUIRE(e.FPdf >= 0.0f);
+            }
+        }
+}
