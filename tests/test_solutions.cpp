@@ -332,3 +332,25 @@ TEST_CASE("solutions: hard cases stay finite, with non-negative pdfs and invalid
             }
         }
 }
+
+TEST_CASE("chapter 7: the buggydiffuse starter's GenerateSample and EvaluateSample disagree; the solution's agree",
+          "[solutions][ch07]") {
+    Diagnostics diagnostics(false);
+    BxdfProbe buggy("buggydiffuse", "", {std::string(STARTER_PLUGIN_DIR)}, diagnostics);
+    BxdfProbe fixed("buggydiffuse", "", {}, diagnostics);
+    std::vector<ProbePoint> points(256, viewFrom(50.0f));
+    auto mismatches = [&](BxdfProbe& p) {
+        auto generated = p.generate(points);
+        std::vector<Vec3> L;
+        for (auto const& g : generated) L.push_back(g.L);
+        auto evaluated = p.evaluate(points, L);
+        int count = 0;
+        for (size_t i = 0; i < generated.size(); ++i)
+            if (generated[i].valid && (std::fabs(evaluated[i].FPdf - generated[i].FPdf) > 1e-4f * generated[i].FPdf ||
+                                       std::fabs(evaluated[i].W.g - generated[i].W.g) > 1e-4f * generated[i].W.g))
+                ++count;
+        return count;
+    };
+    CHECK(mismatches(buggy) > 200);
+    CHECK(mismatches(fixed) == 0);
+}
