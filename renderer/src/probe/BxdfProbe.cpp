@@ -77,7 +77,6 @@ struct BxdfProbe::Impl {
     Scene scene;
     std::unique_ptr<BxdfInstance> instance;
     MemoryArena arena;
-    std::unique_ptr<PluginMessages> messages;
 
     Impl(std::vector<std::string> const& searchPath, Diagnostics& d)
         : diagnostics(d), loader(pluginSearchPath({[&] {
@@ -93,7 +92,7 @@ struct BxdfProbe::Impl {
     template <typename Body>
     void withBxdf(std::vector<ProbePoint> const& points, Body&& body) {
         arena.reset();
-        ProbeShadingContext ctx(*instance, points, arena, messages.get());
+        ProbeShadingContext ctx(*instance, points, arena, &instance->plugin().messages());
         RixBxdfFactory* factory = instance->plugin().factory();
         RixBxdf* bxdf = factory->BeginScatter(&ctx, RixBXLobeTraits::All(), k_RixSCScatterQuery, nullptr,
                                               instance->instanceData());
@@ -110,7 +109,6 @@ BxdfProbe::BxdfProbe(std::string const& plugin, std::string const& ribParams, st
     builder.readText("Bxdf \"" + plugin + "\" \"probe\" " + ribParams + "\n", "<probe parameters>");
     BxdfPlugin& loaded = m_impl->loader.bxdf(plugin);
     m_impl->instance = std::make_unique<BxdfInstance>(m_impl->scene.materials.at(0), loaded, diagnostics);
-    m_impl->messages = std::make_unique<PluginMessages>(diagnostics, plugin);
     loaded.factory()->Synchronize(loaded.context(), k_RixSCRenderBegin, nullptr);
 }
 

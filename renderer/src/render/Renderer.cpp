@@ -76,7 +76,6 @@ struct Renderer::Impl {
     std::unique_ptr<Integrator> integrator;
     std::vector<Light const*> shadingLights;  // what next-event estimation samples
     std::vector<Light const*> cameraLights;   // lights the camera sees directly
-    PluginMessages messages;
     BuiltinCounters builtins;
     std::atomic<uint64_t> shadePoints{0}, batches{0}, nonFinite{0};
 
@@ -84,8 +83,7 @@ struct Renderer::Impl {
         : scene(s),
           settings(rs),
           diagnostics(d),
-          loader(pluginSearchPath({rs.pluginPath, s.pluginSearchPath, s.file}), d),
-          messages(d, "renderer") {}
+          loader(pluginSearchPath({rs.pluginPath, s.pluginSearchPath, s.file}), d) {}
 
     void renderTile(int tileX, int tileY, int spp, Film& film, Worker& worker);
     void shadeChunk(Worker& worker, int count);
@@ -249,7 +247,8 @@ void Renderer::Impl::shadeChunk(Worker& w, int count) {
             w.groupSamples[static_cast<size_t>(j)] = w.samples[static_cast<size_t>(source)];
         }
         BxdfInstance const& material = *materials[m];
-        ShadingContextImpl ctx(scene, material, w.groupHits.data(), n, camera->pixelSpread(), w.arena, &messages, builtins);
+        ShadingContextImpl ctx(scene, material, w.groupHits.data(), n, camera->pixelSpread(), w.arena,
+                               &material.plugin().messages(), builtins);
         RixRNG rng(w.groupSamples.data(), n);
         RixBxdfFactory* factory = material.plugin().factory();
         RixBxdf* bxdf = factory->BeginScatter(&ctx, RixBXLobeTraits::All(), k_RixSCScatterQuery, nullptr,

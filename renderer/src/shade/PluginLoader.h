@@ -28,6 +28,8 @@ public:
     /// Index of a parameter in the table, or -1.
     int paramId(std::string const& name) const;
     RixContext& context() { return m_context; }
+    /// Messages from this plugin, prefixed with its name.
+    RixMessages& messages() { return m_messages; }
 
 private:
     using CreateFn = RixBxdfFactory* (*)(const char*);
