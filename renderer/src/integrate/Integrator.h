@@ -16,6 +16,7 @@
 #include "accel/RayTracer.h"
 #include "core/Diagnostics.h"
 #include "scene/Scene.h"
+#include "render/BatchShader.h"
 #include "shade/ShadingContextImpl.h"
 
 namespace bxdflab {
@@ -40,8 +41,9 @@ struct LightHit {
 /// instance per worker thread; not shared.
 class IntegratorServices {
 public:
-    IntegratorServices(RayTracer const& tracer, std::vector<Light const*> lights)
-        : m_tracer(tracer), m_lights(std::move(lights)) {}
+    IntegratorServices(RayTracer const& tracer, std::vector<Light const*> lights, BatchShader const& shader,
+                       MemoryArena& arena)
+        : m_tracer(tracer), m_lights(std::move(lights)), m_shader(shader), m_arena(arena) {}
 
     /// Lights that next-event estimation samples.
     std::vector<Light const*> const& lights() const { return m_lights; }
@@ -54,6 +56,18 @@ public:
     /// blocked by geometry.
     LightHit visibleLight(Vec3 const& P, Vec3 const& pError, Vec3 const& Ng, Vec3 const& dir);
 
+    /// The nearest light along a ray from `origin` closer than maxDistance
+    /// (occlusion by geometry is the caller's business).
+    LightHit lightAlong(Vec3 const& origin, Vec3 const& dir, float maxDistance) const;
+
+    /// The first surface an indirect ray leaving surface point P toward dir hits.
+    HitRecord traceIndirect(Vec3 const& P, Vec3 const& pError, Vec3 const& Ng, Vec3 const& dir);
+
+    /// Shades hits as batches grouped by Bxdf (see BatchShader).
+    void shade(HitRecord const* hits, RixRNG::SampleCtx const* samples, int count, BatchShader::Visitor const& visit) {
+        m_shader.shade(hits, samples, count, m_arena, visit);
+    }
+
     /// Counts a non-finite contribution (a Bxdf bug); the contribution is dropped.
     void countNonFinite() { ++m_nonFinite; }
 
@@ -63,6 +77,8 @@ public:
 private:
     RayTracer const& m_tracer;
     std::vector<Light const*> m_lights;
+    BatchShader const& m_shader;
+    MemoryArena& m_arena;
     RayCounts m_counts;
     uint64_t m_nonFinite = 0;
 };

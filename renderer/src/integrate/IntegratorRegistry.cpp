@@ -1,5 +1,6 @@
 #include "integrate/DirectLighting.h"
 #include "integrate/Integrator.h"
+#include "integrate/ValidateBxdf.h"
 #include "scene/lights/HeadLight.h"
 
 namespace bxdflab {
@@ -23,8 +24,18 @@ std::unique_ptr<Integrator> makeIntegrator(IntegratorDesc const& desc, Scene con
                                                       sampleCount(desc.params, "numBxdfSamples", 1));
     } else if (desc.name == "PxrDefault") {
         integrator = std::make_unique<DirectLighting>(1, 0, std::make_unique<HeadLight>(cameraPosition));
+    } else if (desc.name == "PxrValidateBxdf") {
+        integrator = std::make_unique<ValidateBxdf>(std::max(1, sampleCount(desc.params, "numSamples", 4)));
+    } else if (desc.name == "PxrDebugShadingContext") {
+        integrator = std::make_unique<DebugShadingContext>(desc.params.getString("viewchannel", "Nn"), desc.where);
+    } else if (desc.name == "PxrOcclusion") {
+        float maxDistance = desc.params.getFloat("maxDistance", 1e30f);
+        if (!(maxDistance > 0.0f)) throw RibError(desc.where, "PxrOcclusion: maxDistance must be positive");
+        integrator = std::make_unique<Occlusion>(std::max(1, sampleCount(desc.params, "numSamples", 16)), maxDistance);
     } else {
-        throw RibError(desc.where, "unknown integrator \"" + desc.name + "\" (available: PxrDirectLighting, PxrDefault)");
+        throw RibError(desc.where, "unknown integrator \"" + desc.name +
+                                       "\" (available: PxrDirectLighting, PxrDefault, PxrValidateBxdf, "
+                                       "PxrDebugShadingContext, PxrOcclusion)");
     }
     desc.params.warnUnused(diagnostics, "Integrator \"" + desc.name + "\"");
     return integrator;

@@ -13,6 +13,7 @@
 #include <thread>
 
 #include "accel/RayTracer.h"
+#include "render/BatchShader.h"
 #include "scene/Camera.h"
 #include "shade/BxdfInstance.h"
 #include "shade/MemoryArena.h"
@@ -31,11 +32,10 @@ constexpr int kMaxPointsPerChunk = 4096;
 /// Per-worker state: memory, ray counts, shading-time counters.
 struct Worker {
     MemoryArena arena;
-    std::vector<HitRecord> hits, groupHits;
-    std::vector<RixRNG::SampleCtx> samples, groupSamples;
+    std::vector<HitRecord> hits;
+    std::vector<RixRNG::SampleCtx> samples;
     std::vector<RtColorRGB> radiance, groupRadiance;
     std::vector<float> alpha;
-    std::vector<int> order;
 };
 
 class ProgressBar {
@@ -76,8 +76,9 @@ struct Renderer::Impl {
     std::unique_ptr<Integrator> integrator;
     std::vector<Light const*> shadingLights;  // what next-event estimation samples
     std::vector<Light const*> cameraLights;   // lights the camera sees directly
-    BuiltinCounters builtins;
-    std::atomic<uint64_t> shadePoints{0}, batches{0}, nonFinite{0};
+    ShadingCounters counters;
+    std::unique_ptr<BatchShader> shader;
+    std::atomic<uint64_t> nonFinite{0};
 
     Impl(Scene& s, RenderSettings const& rs, Diagnostics& d)
         : scene(s),
@@ -116,6 +117,7 @@ Renderer::Renderer(Scene& scene, RenderSettings settings, Diagnostics& diagnosti
     for (auto const& light : scene.lights)
         if (light->visibility.camera) r.cameraLights.push_back(light.get());
     r.tracer = std::make_unique<RayTracer>(scene);
+    r.shader = std::make_unique<BatchShader>(scene, r.materials, r.camera->pixelSpread(), r.counters, diagnostics);
 
     // What this render will and will not simulate.
     EffectReport& effects = m_stats.effects;
@@ -219,52 +221,14 @@ void Renderer::Impl::renderTile(int tileX, int tileY, int spp, Film& film, Worke
 }
 
 void Renderer::Impl::shadeChunk(Worker& w, int count) {
-    // Group the hits by Bxdf instance (a counting sort keeps sample order within a group).
-    size_t numMaterials = materials.size();
-    std::vector<int> starts(numMaterials + 1, 0);
-    for (int i = 0; i < count; ++i) {
-        HitRecord const& hit = w.hits[static_cast<size_t>(i)];
-        if (hit.hit()) ++starts[static_cast<size_t>(scene.shapes[hit.geomID]->material) + 1];
-    }
-    for (size_t m = 0; m < numMaterials; ++m) starts[m + 1] += starts[m];
-    w.order.resize(static_cast<size_t>(starts[numMaterials]));
-    std::vector<int> fill(starts.begin(), starts.end() - 1);
-    for (int i = 0; i < count; ++i) {
-        HitRecord const& hit = w.hits[static_cast<size_t>(i)];
-        if (hit.hit()) w.order[static_cast<size_t>(fill[static_cast<size_t>(scene.shapes[hit.geomID]->material)]++)] = i;
-    }
-
-    IntegratorServices services(*tracer, shadingLights);
-    for (size_t m = 0; m < numMaterials; ++m) {
-        int begin = starts[m], n = starts[m + 1] - starts[m];
-        if (n == 0) continue;
-        w.groupHits.resize(static_cast<size_t>(n));
-        w.groupSamples.resize(static_cast<size_t>(n));
+    IntegratorServices services(*tracer, shadingLights, *shader, w.arena);
+    services.shade(w.hits.data(), w.samples.data(), count, [&](ShadeGroup& group) {
+        int n = group.ctx.numPts;
         w.groupRadiance.assign(static_cast<size_t>(n), RtColorRGB(0.0f));
-        for (int j = 0; j < n; ++j) {
-            int source = w.order[static_cast<size_t>(begin + j)];
-            w.groupHits[static_cast<size_t>(j)] = w.hits[static_cast<size_t>(source)];
-            w.groupSamples[static_cast<size_t>(j)] = w.samples[static_cast<size_t>(source)];
-        }
-        BxdfInstance const& material = *materials[m];
-        ShadingContextImpl ctx(scene, material, w.groupHits.data(), n, camera->pixelSpread(), w.arena,
-                               &material.plugin().messages(), builtins);
-        RixRNG rng(w.groupSamples.data(), n);
-        RixBxdfFactory* factory = material.plugin().factory();
-        RixBxdf* bxdf = factory->BeginScatter(&ctx, RixBXLobeTraits::All(), k_RixSCScatterQuery, nullptr,
-                                              material.instanceData());
-        if (!bxdf) {
-            diagnostics.warn("plugin \"" + material.plugin().name() + "\": BeginScatter returned null; its surfaces render black");
-        } else {
-            integrator->integrate(ctx, *bxdf, rng, services, w.groupRadiance.data());
-            factory->EndScatter(bxdf);
-        }
-        for (int j = 0; j < n; ++j)
-            w.radiance[static_cast<size_t>(w.order[static_cast<size_t>(begin + j)])] += w.groupRadiance[static_cast<size_t>(j)];
-        w.arena.reset();
-        shadePoints.fetch_add(static_cast<uint64_t>(n), std::memory_order_relaxed);
-        batches.fetch_add(1, std::memory_order_relaxed);
-    }
+        integrator->integrate(group.ctx, group.bxdf, group.rng, services, w.groupRadiance.data());
+        for (int j = 0; j < n; ++j) w.radiance[static_cast<size_t>(group.source[j])] += w.groupRadiance[static_cast<size_t>(j)];
+    });
+    w.arena.reset();
     tracer->counters().add(services.rayCounts());
     nonFinite.fetch_add(services.takeNonFinite(), std::memory_order_relaxed);
 }
@@ -293,10 +257,10 @@ Film Renderer::render() {
     m_stats.cameraRays = rays.camera.load();
     m_stats.shadowRays = rays.shadow.load();
     m_stats.indirectRays = rays.indirect.load();
-    m_stats.shadePoints = r.shadePoints.load();
-    m_stats.batches = r.batches.load();
-    m_stats.surfacePoints = r.builtins.surfacePoints.load();
-    m_stats.tangentPoints = r.builtins.tangentPoints.load();
+    m_stats.shadePoints = r.counters.shadePoints.load();
+    m_stats.batches = r.counters.batches.load();
+    m_stats.surfacePoints = r.counters.builtins.surfacePoints.load();
+    m_stats.tangentPoints = r.counters.builtins.tangentPoints.load();
     m_stats.nonFiniteSamples = r.nonFinite.load();
 
     // Effects decided while shading: tangent frames are computed only on request.

@@ -21,6 +21,18 @@ public:
     /// Frees everything allocated since the last reset (keeps the first block).
     void reset();
 
+    /// A position in the arena. release(mark) frees everything allocated
+    /// after mark() was taken, so nested users (a path tracer's bounces) can
+    /// free their own memory while an outer batch's stays valid.
+    struct Mark {
+        size_t block = 0, offset = 0;
+    };
+    Mark mark() const { return {m_current, m_offset}; }
+    void release(Mark const& m) {
+        m_current = m.block;
+        m_offset = m.offset;
+    }
+
 private:
     struct Block {
         std::unique_ptr<std::byte[]> memory;
