@@ -15,6 +15,8 @@
 // never much worse than the better of the two.
 #include "integrate/DirectLighting.h"
 
+#include "integrate/BxdfScratch.h"
+
 #include <cmath>
 
 namespace bxdflab {
@@ -23,6 +25,13 @@ namespace {
 bool isFinite(RtColorRGB const& c) { return std::isfinite(c.r) && std::isfinite(c.g) && std::isfinite(c.b); }
 
 }  // namespace
+
+void accumulate(IntegratorServices& services, RtColorRGB& radiance, RtColorRGB const& contribution) {
+    if (isFinite(contribution))
+        radiance += contribution;
+    else
+        services.countNonFinite();
+}
 
 DirectLighting::DirectLighting(int numLightSamples, int numBxdfSamples, std::unique_ptr<Light> ownLight)
     : m_numLightSamples(numLightSamples), m_numBxdfSamples(numBxdfSamples), m_ownLight(std::move(ownLight)) {}
@@ -55,89 +64,87 @@ void DirectLighting::describeEffects(Scene const& scene, EffectReport& report) c
     report.skip("indirect rays", name() + " computes direct lighting only");
 }
 
-void DirectLighting::integrate(ShadingContextImpl const& ctx, RixBxdf& bxdf, RixRNG& rng,
-                               IntegratorServices& services, RtColorRGB* radiance) {
+void addLightSamples(ShadingContextImpl const& ctx, RixBxdf& bxdf, RixRNG& rng, IntegratorServices& services,
+                     int numLightSamples, int numBxdfSamples, RtColorRGB const* throughput, RtColorRGB* radiance) {
     int const n = ctx.numPts;
-    RixShadingContext::Allocator pool(&ctx);
-
-    // 1. Light the surface emits itself (e.g. the emissive plugin).
-    RtColorRGB* emitted = pool.AllocFor<RtColorRGB>(n);
-    if (bxdf.EmitLocal(emitted))
-        for (int i = 0; i < n; ++i) radiance[i] += emitted[i];
-
-    // 2. A Bxdf with no lobes (purely emissive) reflects nothing: no rays at all.
-    RixBXLobeTraits const lobes = bxdf.GetAllLobeTraits();
     std::vector<Light const*> const& lights = services.lights();
-    if (!lobes.HasAny() || lights.empty()) return;
-
+    if (numLightSamples <= 0 || lights.empty()) return;
     RtPoint3 const* P;
     RtNormal3 const* Ngn;
     ctx.GetBuiltinVar(RixShadingContext::k_P, &P);
     ctx.GetBuiltinVar(RixShadingContext::k_Ngn, &Ngn);
     Vec3 const* pError = ctx.pError();
-
-    // Per-point scratch arrays, as the Rix API passes them.
-    RixBXLobeTraits* lobesWanted = pool.AllocFor<RixBXLobeTraits>(n);
-    RixBXLobeTraits* lobesEvaluated = pool.AllocFor<RixBXLobeTraits>(n);
-    RixBXLobeSampled* lobeSampled = pool.AllocFor<RixBXLobeSampled>(n);
-    RtVector3* Ln = pool.AllocFor<RtVector3>(n);
-    float* FPdf = pool.AllocFor<float>(n);
-    float* RPdf = pool.AllocFor<float>(n);
+    RixShadingContext::Allocator pool(&ctx);
     RtFloat2* xi = pool.AllocFor<RtFloat2>(n);
     LightSample* lightSample = pool.AllocFor<LightSample>(n);
-    RixBXLobeWeights W(n, pool.AllocFor<RtColorRGB>(n * RixBXLobeWeights::k_numSlots));
-    for (int i = 0; i < n; ++i) lobesWanted[i] = RixBXLobeTraits::All();
+    BxdfScratch q(ctx);
+    float const nL = static_cast<float>(numLightSamples), nB = static_cast<float>(numBxdfSamples);
 
-    float const nL = static_cast<float>(m_numLightSamples);
-    float const nB = static_cast<float>(m_ownLight ? 0 : m_numBxdfSamples);
-
-    auto accumulate = [&](int i, RtColorRGB const& contribution) {
-        if (isFinite(contribution))
-            radiance[i] += contribution;
-        else
-            services.countNonFinite();
-    };
-
-    // 3. Light sampling: for each light, pick points on it and ask the Bxdf
-    //    how much of that light it reflects toward the viewer.
+    // For each light, pick points on it and ask the Bxdf how much of that
+    // light it reflects toward the viewer.
     for (Light const* light : lights) {
-        for (int s = 0; s < m_numLightSamples; ++s) {
+        for (int s = 0; s < numLightSamples; ++s) {
             rng.DrawSamples2D(xi);
             for (int i = 0; i < n; ++i) {
                 lightSample[i] = light->sample(toVec3(P[i]), Vec2(xi[i].x, xi[i].y));
-                Ln[i] = toRt(lightSample[i].wi);
+                q.Ln[i] = toRt(lightSample[i].wi);
             }
-            W.ClearActiveLobes();
-            bxdf.EvaluateSample(k_RixBXDirectLighting, lobesWanted, &rng, lobesEvaluated, Ln, W, FPdf, RPdf);
+            q.evaluate(bxdf, rng);
             for (int i = 0; i < n; ++i) {
                 LightSample const& ls = lightSample[i];
                 if (!(ls.pdf > 0.0f) || ls.radiance.IsBlack()) continue;
-                RtColorRGB f = W.SumAtPoint(i);
+                RtColorRGB f = q.W.SumAtPoint(i);
                 if (f.IsBlack()) continue;
                 if (!services.unoccluded(toVec3(P[i]), pError[i], toVec3(Ngn[i]), ls.wi, ls.distance)) continue;
-                float weight = ls.delta ? 1.0f : powerHeuristic(nL, ls.pdf, nB, std::max(0.0f, FPdf[i]));
-                accumulate(i, f * ls.radiance * (weight / (nL * ls.pdf)));
+                // Weighted against the chance that Bxdf sampling finds the same light (MIS).
+                float weight = ls.delta ? 1.0f : powerHeuristic(nL, ls.pdf, nB, std::max(0.0f, q.FPdf[i]));
+                RtColorRGB contribution = f * ls.radiance * (weight / (nL * ls.pdf));
+                if (throughput) contribution *= throughput[i];
+                accumulate(services, radiance[i], contribution);
             }
         }
     }
+}
+
+void DirectLighting::integrate(ShadingContextImpl const& ctx, RixBxdf& bxdf, RixRNG& rng,
+                               IntegratorServices& services, RtColorRGB* radiance) {
+    int const n = ctx.numPts;
+
+    // 1. Light the surface emits itself (e.g. the emissive plugin).
+    RtColorRGB* emitted = RixShadingContext::Allocator(&ctx).AllocFor<RtColorRGB>(n);
+    if (bxdf.EmitLocal(emitted))
+        for (int i = 0; i < n; ++i) radiance[i] += emitted[i];
+
+    // 2. A Bxdf with no lobes (purely emissive) reflects nothing: no rays at all.
+    if (!bxdf.GetAllLobeTraits().HasAny() || services.lights().empty()) return;
+
+    // 3. Light sampling (next-event estimation).
+    int const bxdfSamples = m_ownLight ? 0 : m_numBxdfSamples;
+    addLightSamples(ctx, bxdf, rng, services, m_numLightSamples, bxdfSamples, nullptr, radiance);
 
     // 4. Bxdf sampling: let the Bxdf choose directions, and see which reach a light.
-    for (int s = 0; s < static_cast<int>(nB); ++s) {
-        W.ClearActiveLobes();
-        bxdf.GenerateSample(k_RixBXDirectLighting, lobesWanted, &rng, lobeSampled, Ln, W, FPdf, RPdf);
+    RtPoint3 const* P;
+    RtNormal3 const* Ngn;
+    ctx.GetBuiltinVar(RixShadingContext::k_P, &P);
+    ctx.GetBuiltinVar(RixShadingContext::k_Ngn, &Ngn);
+    Vec3 const* pError = ctx.pError();
+    BxdfScratch q(ctx);
+    float const nL = static_cast<float>(m_numLightSamples), nB = static_cast<float>(bxdfSamples);
+    for (int s = 0; s < bxdfSamples; ++s) {
+        q.generate(bxdf, rng);
         for (int i = 0; i < n; ++i) {
-            if (!lobeSampled[i].GetValid() || !(FPdf[i] > 0.0f)) continue;
-            Vec3 dir = toVec3(Ln[i]);
+            if (!q.lobeSampled[i].GetValid() || !(q.FPdf[i] > 0.0f)) continue;
+            Vec3 dir = toVec3(q.Ln[i]);
             if (!isFinite(dir) || glm::length(dir) == 0.0f) {
                 services.countNonFinite();
                 continue;
             }
-            RtColorRGB f = W.SumAtPoint(i);
+            RtColorRGB f = q.W.SumAtPoint(i);
             if (f.IsBlack()) continue;
             LightHit hit = services.visibleLight(toVec3(P[i]), pError[i], toVec3(Ngn[i]), glm::normalize(dir));
             if (!hit.light) continue;
-            float weight = lobeSampled[i].GetDiscrete() ? 1.0f : powerHeuristic(nB, FPdf[i], nL, hit.pdf);
-            accumulate(i, f * hit.radiance * (weight / (nB * FPdf[i])));
+            float weight = q.lobeSampled[i].GetDiscrete() ? 1.0f : powerHeuristic(nB, q.FPdf[i], nL, hit.pdf);
+            accumulate(services, radiance[i], f * hit.radiance * (weight / (nB * q.FPdf[i])));
         }
     }
 }

@@ -9,6 +9,16 @@
 
 namespace bxdflab {
 
+/// Next-event estimation for a batch: adds to radiance[i] the light arriving
+/// straight from the lights and reflected toward the viewer, times
+/// throughput[i] (or 1 when throughput is null), from numLightSamples samples
+/// per light, MIS-weighted against numBxdfSamples Bxdf samples.
+void addLightSamples(ShadingContextImpl const& ctx, RixBxdf& bxdf, RixRNG& rng, IntegratorServices& services,
+                     int numLightSamples, int numBxdfSamples, RtColorRGB const* throughput, RtColorRGB* radiance);
+
+/// Adds a contribution, or counts it when it is not finite (a Bxdf bug).
+void accumulate(IntegratorServices& services, RtColorRGB& radiance, RtColorRGB const& contribution);
+
 class DirectLighting : public Integrator {
 public:
     /// `ownLight` replaces the scene's lights when given (PxrDefault's headlight).

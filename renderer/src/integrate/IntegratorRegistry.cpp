@@ -1,5 +1,6 @@
 #include "integrate/DirectLighting.h"
 #include "integrate/Integrator.h"
+#include "integrate/PathTracer.h"
 #include "integrate/ValidateBxdf.h"
 #include "scene/lights/HeadLight.h"
 
@@ -24,6 +25,13 @@ std::unique_ptr<Integrator> makeIntegrator(IntegratorDesc const& desc, Scene con
                                                       sampleCount(desc.params, "numBxdfSamples", 1));
     } else if (desc.name == "PxrDefault") {
         integrator = std::make_unique<DirectLighting>(1, 0, std::make_unique<HeadLight>(cameraPosition));
+    } else if (desc.name == "PxrPathTracer") {
+        int maxPathLength = desc.params.getInt("maxPathLength", 10);
+        if (maxPathLength < 1 || maxPathLength > 1000)
+            throw RibError(desc.where, "PxrPathTracer: maxPathLength must be between 1 and 1000");
+        integrator = std::make_unique<PathTracer>(maxPathLength, sampleCount(desc.params, "numLightSamples", 1),
+                                                  std::max(1, sampleCount(desc.params, "numBxdfSamples", 1)),
+                                                  desc.params.getInt("allowCaustics", 0) != 0);
     } else if (desc.name == "PxrValidateBxdf") {
         integrator = std::make_unique<ValidateBxdf>(std::max(1, sampleCount(desc.params, "numSamples", 4)));
     } else if (desc.name == "PxrDebugShadingContext") {
@@ -34,7 +42,7 @@ std::unique_ptr<Integrator> makeIntegrator(IntegratorDesc const& desc, Scene con
         integrator = std::make_unique<Occlusion>(std::max(1, sampleCount(desc.params, "numSamples", 16)), maxDistance);
     } else {
         throw RibError(desc.where, "unknown integrator \"" + desc.name +
-                                       "\" (available: PxrDirectLighting, PxrDefault, PxrValidateBxdf, "
+                                       "\" (available: PxrPathTracer, PxrDirectLighting, PxrDefault, PxrValidateBxdf, "
                                        "PxrDebugShadingContext, PxrOcclusion)");
     }
     desc.params.warnUnused(diagnostics, "Integrator \"" + desc.name + "\"");

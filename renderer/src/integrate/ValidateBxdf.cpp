@@ -3,36 +3,12 @@
 #include <cmath>
 
 #include "RixShadingUtils.h"
+#include "integrate/BxdfScratch.h"
 
 namespace bxdflab {
 namespace {
 
 bool agree(float a, float b) { return std::fabs(a - b) <= 1e-3f * std::fmax(std::fabs(a), std::fabs(b)) + 1e-12f; }
-
-/// Scratch arrays for one round of Bxdf queries on a batch.
-struct Queries {
-    RixBXLobeTraits* wanted;
-    RixBXLobeTraits* evaluated;
-    RixBXLobeSampled* sampled;
-    RtVector3* Ln;
-    float *FPdf, *RPdf, *FPdf2, *RPdf2;
-    RixBXLobeWeights W, W2;
-
-    Queries(RixShadingContext const& ctx, int n)
-        : W(n, RixShadingContext::Allocator(&ctx).AllocFor<RtColorRGB>(n * RixBXLobeWeights::k_numSlots)),
-          W2(n, RixShadingContext::Allocator(&ctx).AllocFor<RtColorRGB>(n * RixBXLobeWeights::k_numSlots)) {
-        RixShadingContext::Allocator pool(&ctx);
-        wanted = pool.AllocFor<RixBXLobeTraits>(n);
-        evaluated = pool.AllocFor<RixBXLobeTraits>(n);
-        sampled = pool.AllocFor<RixBXLobeSampled>(n);
-        Ln = pool.AllocFor<RtVector3>(n);
-        FPdf = pool.AllocFor<float>(n);
-        RPdf = pool.AllocFor<float>(n);
-        FPdf2 = pool.AllocFor<float>(n);
-        RPdf2 = pool.AllocFor<float>(n);
-        for (int i = 0; i < n; ++i) wanted[i] = RixBXLobeTraits::All();
-    }
-};
 
 }  // namespace
 
@@ -47,44 +23,43 @@ void ValidateBxdf::integrate(ShadingContextImpl const& ctx, RixBxdf& bxdf, RixRN
                              RtColorRGB* radiance) {
     int const n = ctx.numPts;
     if (!bxdf.GetAllLobeTraits().HasAny()) return;
-    Queries q(ctx, n);
+    BxdfScratch generated(ctx), evaluated(ctx);
     RtNormal3 const* Nn;
     RtVector3 const* Vn;
     ctx.GetBuiltinVar(RixShadingContext::k_Nn, &Nn);
     ctx.GetBuiltinVar(RixShadingContext::k_Vn, &Vn);
     RtFloat2* xi = RixShadingContext::Allocator(&ctx).AllocFor<RtFloat2>(n);
+    float* cosinePdf = RixShadingContext::Allocator(&ctx).AllocFor<float>(n);
     float const scale = 1.0f / static_cast<float>(m_numSamples);
 
     for (int s = 0; s < m_numSamples; ++s) {
         // Red and green: the Bxdf's own samples, then the same directions re-evaluated.
-        q.W.ClearActiveLobes();
-        bxdf.GenerateSample(k_RixBXDirectLighting, q.wanted, &rng, q.sampled, q.Ln, q.W, q.FPdf, q.RPdf);
-        q.W2.ClearActiveLobes();
-        bxdf.EvaluateSample(k_RixBXDirectLighting, q.wanted, &rng, q.evaluated, q.Ln, q.W2, q.FPdf2, q.RPdf2);
+        generated.generate(bxdf, rng);
+        for (int i = 0; i < n; ++i) evaluated.Ln[i] = generated.Ln[i];
+        evaluated.evaluate(bxdf, rng);
         for (int i = 0; i < n; ++i) {
-            if (!q.sampled[i].GetValid() || !(q.FPdf[i] > 0.0f)) continue;
-            float generated = q.W.SumAtPoint(i).Luminance();
-            float red = generated / q.FPdf[i];
+            if (!generated.lobeSampled[i].GetValid() || !(generated.FPdf[i] > 0.0f)) continue;
+            float w = generated.W.SumAtPoint(i).Luminance();
+            float red = w / generated.FPdf[i];
             if (!std::isfinite(red)) {
                 services.countNonFinite();
                 continue;
             }
             radiance[i].r += red * scale;
-            float evaluated = q.W2.SumAtPoint(i).Luminance();
-            if (agree(evaluated, generated) && agree(q.FPdf2[i], q.FPdf[i])) radiance[i].g += red * scale;
+            if (agree(evaluated.W.SumAtPoint(i).Luminance(), w) && agree(evaluated.FPdf[i], generated.FPdf[i]))
+                radiance[i].g += red * scale;
         }
         // Blue: the integrator's own cosine-distributed directions.
         rng.DrawSamples2D(xi);
         for (int i = 0; i < n; ++i) {
             float cosTheta;
-            RixCosDirectionalDistribution(xi[i], RixGetForwardFacingNormal(Vn[i], Nn[i]), q.Ln[i], cosTheta);
-            q.FPdf[i] = cosTheta * F_INVPI;  // the integrator's pdf, not the Bxdf's
+            RixCosDirectionalDistribution(xi[i], RixGetForwardFacingNormal(Vn[i], Nn[i]), evaluated.Ln[i], cosTheta);
+            cosinePdf[i] = cosTheta * F_INVPI;  // the integrator's pdf, not the Bxdf's
         }
-        q.W2.ClearActiveLobes();
-        bxdf.EvaluateSample(k_RixBXDirectLighting, q.wanted, &rng, q.evaluated, q.Ln, q.W2, q.FPdf2, q.RPdf2);
+        evaluated.evaluate(bxdf, rng);
         for (int i = 0; i < n; ++i) {
-            if (!(q.FPdf[i] > 0.0f)) continue;
-            float blue = q.W2.SumAtPoint(i).Luminance() / q.FPdf[i];
+            if (!(cosinePdf[i] > 0.0f)) continue;
+            float blue = evaluated.W.SumAtPoint(i).Luminance() / cosinePdf[i];
             if (std::isfinite(blue))
                 radiance[i].b += blue * scale;
             else

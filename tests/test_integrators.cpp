@@ -1,0 +1,154 @@
+// Integrators against closed forms and against each other.
+#include <catch2/catch.hpp>
+#include <fstream>
+#include <sstream>
+
+#include "support/RenderHelpers.h"
+
+using namespace bxdflab;
+
+namespace {
+
+std::string readScene(std::string const& relative) {
+    std::ifstream in(std::string(SCENES_DIR) + "/" + relative);
+    std::stringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+std::string withIntegrator(std::string rib, std::string const& integrator) {
+    size_t start = rib.find("Integrator ");
+    size_t end = rib.find('\n', start);
+    return rib.replace(start, end - start, integrator);
+}
+
+auto const kAll = [](int, int) { return true; };
+
+}  // namespace
+
+TEST_CASE("path tracer furnace: an emitting, reflecting enclosure converges to E / (1 - a)", "[integrators][pathtracer]") {
+    // The camera sits inside a closed sphere whose surface emits E and reflects
+    // a fraction a diffusely: every path sees E + a E + a^2 E + ... = E / (1 - a).
+    std::string rib =
+        "Format 16 16 1\nProjection \"perspective\" \"fov\" [60]\n"
+        "Integrator \"PxrPathTracer\" \"pt\" \"int maxPathLength\" [200]\n"
+        "WorldBegin\n"
+        "  Bxdf \"bookdiffuse\" \"walls\" \"color emissive_color\" [0.5 0.5 0.5] \"color diffuse_color\" [0.5 0.5 0.5]\n"
+        "  Sphere 5 -5 5 360\n"
+        "WorldEnd\n";
+    RenderSettings settings;
+    settings.spp = 1024;
+    auto r = test::renderRib(rib, settings);
+    CHECK(test::meanChannel(r, 0, kAll) == Approx(1.0).epsilon(0.02));
+    CHECK(r.stats.indirectRays > 0u);
+    CHECK(r.stats.shadowRays == 0u);  // no lights: nothing to sample
+}
+
+TEST_CASE("PxrPathTracer with maxPathLength 1 is PxrDirectLighting", "[integrators][pathtracer]") {
+    std::string rib = readScene("ch06/plastic.rib");
+    RenderSettings settings;
+    settings.spp = 2;
+    auto direct = test::renderRib(withIntegrator(rib, "Integrator \"PxrDirectLighting\" \"d\""), settings);
+    auto paths = test::renderRib(withIntegrator(rib, "Integrator \"PxrPathTracer\" \"p\" \"int maxPathLength\" [1]"), settings);
+    CHECK(paths.stats.indirectRays == 0u);
+    CHECK(paths.rgba == direct.rgba);  // the same estimator, sample for sample
+}
+
+TEST_CASE("light-only, Bxdf-only and MIS estimates agree on a glossy surface", "[integrators][mis]") {
+    std::string rib = readScene("ch06/specular.rib");
+    RenderSettings settings;
+    settings.spp = 64;
+    double means[3];
+    const char* integrators[3] = {
+        "Integrator \"PxrDirectLighting\" \"d\" \"int numLightSamples\" [1] \"int numBxdfSamples\" [1]",
+        "Integrator \"PxrDirectLighting\" \"d\" \"int numLightSamples\" [1] \"int numBxdfSamples\" [0]",
+        "Integrator \"PxrDirectLighting\" \"d\" \"int numLightSamples\" [0] \"int numBxdfSamples\" [1]",
+    };
+    for (int k = 0; k < 3; ++k) {
+        std::string scene = withIntegrator(rib, integrators[k]);
+        scene.replace(scene.find("Format 800 700 1"), 16, "Format 200 175 1");
+        // Importance-sample the Phong lobe so Bxdf-only sampling finds the small light.
+        scene.replace(scene.find("\"float gloss\" [200]"), 19, "\"float gloss\" [200] \"int samplingMode\" [1]");
+        means[k] = test::meanChannel(test::renderRib(scene, settings), 1, kAll);
+    }
+    CHECK(means[0] > 0.001);
+    CHECK(means[1] == Approx(means[0]).epsilon(0.03));
+    CHECK(means[2] == Approx(means[0]).epsilon(0.03));
+}
+
+TEST_CASE("path tracing is deterministic across thread counts", "[integrators][determinism]") {
+    std::string rib = withIntegrator(readScene("ch06/diffuse.rib"), "Integrator \"PxrPathTracer\" \"p\" \"int maxPathLength\" [5]");
+    rib.replace(rib.find("Format 800 700 1"), 16, "Format 120 100 1");
+    RenderSettings settings;
+    settings.spp = 4;
+    settings.threads = 1;
+    auto one = test::renderRib(rib, settings);
+    settings.threads = 2;
+    auto two = test::renderRib(rib, settings);
+    CHECK(one.rgba == two.rgba);
+}
+
+TEST_CASE("chapter 7: PxrValidateBxdf shows the planted bugs and equal channels after the fix", "[integrators][ch07]") {
+    std::string rib = readScene("ch07/validate.rib");
+    rib.replace(rib.find("Format 400 350 1"), 16, "Format 100 88 1");
+    auto covered = [](test::RenderOutcome const& r) {
+        return [&r](int x, int y) { return r.channel(x, y, 3) == 1.0f; };
+    };
+    RenderSettings starter;
+    starter.pluginPath = STARTER_PLUGIN_DIR;
+    auto buggy = test::renderRib(rib, starter);
+    double red = test::meanChannel(buggy, 0, covered(buggy)), green = test::meanChannel(buggy, 1, covered(buggy)),
+           blue = test::meanChannel(buggy, 2, covered(buggy));
+    CHECK(std::fabs(red - blue) > 0.1);  // pdf and sampling disagree
+    CHECK(green < 0.1 * red);             // EvaluateSample disagrees with GenerateSample
+
+    auto fixed = test::renderRib(rib);  // the solution
+    red = test::meanChannel(fixed, 0, covered(fixed));
+    green = test::meanChannel(fixed, 1, covered(fixed));
+    blue = test::meanChannel(fixed, 2, covered(fixed));
+    CHECK(red == Approx(1.0).epsilon(1e-4));
+    CHECK(green == Approx(red).epsilon(1e-6));
+    CHECK(blue == Approx(red).epsilon(0.01));
+}
+
+TEST_CASE("PxrDebugShadingContext shows builtins; unknown channels are located errors", "[integrators][debug]") {
+    auto view = [](std::string const& channel, bool inside) {
+        return "Format 9 9 1\nProjection \"perspective\" \"fov\" [10]\n"
+               "Integrator \"PxrDebugShadingContext\" \"dbg\" \"string viewchannel\" [\"" + channel + "\"]\n"
+               "WorldBegin\n  Translate 0 0 " + std::string(inside ? "0" : "5") + "\n  Sphere 1 -1 1 360\nWorldEnd\n";
+    };
+    auto normal = test::renderRib(view("Nn", false));
+    // The sphere's centre faces the camera: N = (0, 0, -1) maps to (0.5, 0.5, 0).
+    CHECK(normal.channel(4, 4, 0) == Approx(0.5).margin(0.02));
+    CHECK(normal.channel(4, 4, 2) == Approx(0.0).margin(0.01));
+    auto outside = test::renderRib(view("InsideOutside", false));
+    CHECK(outside.channel(4, 4, 1) == 1.0f);
+    auto inside = test::renderRib(view("InsideOutside", true));
+    CHECK(inside.channel(4, 4, 0) == 1.0f);
+    CHECK(inside.channel(4, 4, 1) == 0.0f);
+    try {
+        test::renderRib(view("Normals", false));
+        FAIL("expected an error");
+    } catch (RibError const& e) {
+        CHECK_THAT(e.what(), Catch::Matchers::StartsWith("test.rib:3:1"));
+        CHECK_THAT(e.what(), Catch::Matchers::Contains("InsideOutside"));
+    }
+}
+
+TEST_CASE("PxrOcclusion: an open plane is white, a corner under a sphere is darker", "[integrators][occlusion]") {
+    std::string rib =
+        "Format 32 32 1\nProjection \"orthographic\"\nScreenWindow -2 2 -2 2\n"
+        "Integrator \"PxrOcclusion\" \"ao\" \"int numSamples\" [16] \"float maxDistance\" [1.5]\n"
+        "Rotate -90 1 0 0\nTranslate 0 -10 0\n"  // looking straight down at the plane y = 0
+        "WorldBegin\n"
+        "  Polygon \"P\" [-10 0 -10  10 0 -10  10 0 10  -10 0 10]\n"
+        "  AttributeBegin\n  Translate 1 1 1\n  Attribute \"visibility\" \"int camera\" [0]\n  Sphere 1 -1 1 360\n  AttributeEnd\n"
+        "WorldEnd\n";
+    auto r = test::renderRib(rib);
+    // Far from the sphere the plane sees the whole sky; next to its contact point it does not.
+    double open = r.channel(2, 2, 0), shadowed = 0.0;
+    for (int y = 0; y < r.height; ++y)
+        for (int x = 0; x < r.width; ++x) shadowed = std::max(shadowed, 1.0 - r.channel(x, y, 0));
+    CHECK(open == Approx(1.0));
+    CHECK(shadowed > 0.5);
+}
