@@ -163,7 +163,7 @@ TEST_CASE("attributes scope visibility, names and materials", "[rib]") {
     CHECK(scene.shapes[0]->name == "hidden");
     CHECK(scene.materials[static_cast<size_t>(scene.shapes[0]->material)].handle == "red");
     CHECK(scene.shapes[1]->visibility.camera);
-    CHECK(scene.materials[static_cast<size_t>(scene.shapes[1]->material)].plugin == "diffuse");  // default material
+    CHECK(scene.materials[static_cast<size_t>(scene.shapes[1]->material)].plugin == "PxrDiffuse");  // default material
     REQUIRE(scene.dropped.size() == 1);
 }
 

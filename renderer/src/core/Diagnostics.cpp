@@ -15,7 +15,7 @@ void Diagnostics::report(Severity severity, std::string const& message) {
     m_index.emplace(key, m_entries.size());
     m_entries.push_back({severity, message, 1});
     if (m_print) {
-        const char* label = severity == Severity::Error ? "error: " : severity == Severity::Warning ? "warning: " : "";
+        const char* label = severity == Severity::Error ? "error: " : severity == Severity::Warning ? "warning: " : "note: ";
         std::cerr << label << message << '\n';
     }
 }

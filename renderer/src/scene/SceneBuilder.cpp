@@ -71,6 +71,17 @@ std::map<std::string, SceneBuilder::Handler> const& SceneBuilder::handlers() {
         {"Patch", &SceneBuilder::patch},
         {"Geometry", &SceneBuilder::geometry},
         {"ReadArchive", &SceneBuilder::readArchive},
+        {"Cone", &SceneBuilder::cone},
+        {"Paraboloid", &SceneBuilder::paraboloid},
+        {"Hyperboloid", &SceneBuilder::hyperboloid},
+        {"Torus", &SceneBuilder::torus},
+        {"Basis", &SceneBuilder::basis},
+        {"PatchMesh", &SceneBuilder::patchMesh},
+        {"ObjectBegin", &SceneBuilder::objectBegin},
+        {"ObjectInstance", &SceneBuilder::objectInstance},
+        {"ArchiveBegin", &SceneBuilder::archiveBegin},
+        {"Clipping", &SceneBuilder::clipping},
+        {"Sides", &SceneBuilder::sides},
     };
     return table;
 }
@@ -82,6 +93,11 @@ void SceneBuilder::readFile(std::string const& path) {
     m_fileStack.push_back(path);
     parseRibFile(path, [this](RibRequest const& r) { handle(r); });
     m_fileStack.pop_back();
+    if (m_fileStack.empty() && m_repeatedWarnings > 0)
+        m_diagnostics.info(std::to_string(m_repeatedWarnings) + " more statement" + (m_repeatedWarnings > 1 ? "s" : "") +
+                           " of the kinds warned about above " + (m_repeatedWarnings > 1 ? "were" : "was") + " skipped");
+    if (m_fileStack.empty() && m_recording)
+        m_diagnostics.warn(path + ": " + m_recordingEnd + " missing at the end of the file");
     if (m_fileStack.empty() && m_blocks.size() > 0)
         m_diagnostics.warn(path + ": " + std::to_string(m_blocks.size()) + " AttributeBegin/TransformBegin left open at end of file");
 }
@@ -103,10 +119,23 @@ void SceneBuilder::warnOnce(std::string const& kind, SourceLocation const& where
     if (m_warnedKinds.insert(kind).second)
         m_diagnostics.warn(where, message);
     else
-        m_diagnostics.report(Diagnostics::Severity::Info, "(repeated) " + message);
+        ++m_repeatedWarnings;
 }
 
 void SceneBuilder::handle(RibRequest const& request) {
+    if (m_recording) {
+        // Inside ObjectBegin/ArchiveBegin: keep the requests for later.
+        if (request.name == m_recordingEnd) {
+            RequestReader(request, m_declarations).finish();
+            m_recording = nullptr;
+        } else {
+            m_recording->push_back(request);
+        }
+        return;
+    }
+    if (request.name == "ObjectEnd" || request.name == "ArchiveEnd")
+        throw RibError(request.where, request.name + " without a matching " +
+                                          (request.name == "ObjectEnd" ? "ObjectBegin" : "ArchiveBegin"));
     auto found = handlers().find(request.name);
     if (found == handlers().end()) {
         warnOnce("request " + request.name, request.where, "unsupported request " + request.name + " skipped");
@@ -358,6 +387,7 @@ void SceneBuilder::color(RequestReader& in) {
     std::vector<float> c = in.numbers(3, "red green blue");
     in.finish();
     state().color = Vec3(c[0], c[1], c[2]);
+    state().colorSet = true;
 }
 
 void SceneBuilder::reverseOrientation(RequestReader& in) {
@@ -390,20 +420,23 @@ void SceneBuilder::bxdf(RequestReader& in) {
 }
 
 int SceneBuilder::defaultMaterial() {
-    // RenderMan shades surfaces without a Bxdf with a plain diffuse material
-    // whose colour is the legacy `Color` attribute.
+    // RenderMan shades surfaces without a Bxdf with the stock PxrDiffuse; the
+    // legacy `Color` attribute, when set, is its colour.
     Vec3 c = state().color;
-    std::string key = std::to_string(c.x) + " " + std::to_string(c.y) + " " + std::to_string(c.z);
+    bool colored = state().colorSet;
+    std::string key = colored ? std::to_string(c.x) + " " + std::to_string(c.y) + " " + std::to_string(c.z) : "";
     auto found = m_defaultMaterials.find(key);
     if (found != m_defaultMaterials.end()) return found->second;
     MaterialDesc material;
-    material.plugin = "diffuse";
-    material.handle = "default material (Color " + key + ")";
-    Param color;
-    color.decl.name = "diffuseColor";
-    color.decl.type = ParamType::Color;
-    color.floats = {c.x, c.y, c.z};
-    material.params.add(color);
+    material.plugin = "PxrDiffuse";
+    material.handle = colored ? "default material (Color " + key + ")" : "default material";
+    if (colored) {
+        Param color;
+        color.decl.name = "diffuseColor";
+        color.decl.type = ParamType::Color;
+        color.floats = {c.x, c.y, c.z};
+        material.params.add(color);
+    }
     int index = static_cast<int>(m_scene.materials.size());
     m_scene.materials.push_back(std::move(material));
     m_defaultMaterials[key] = index;
@@ -541,6 +574,11 @@ void SceneBuilder::geometry(RequestReader& in) {
 void SceneBuilder::readArchive(RequestReader& in) {
     std::string name = in.string("archive file name");
     in.params().warnUnused(m_diagnostics, "ReadArchive");
+    auto inlineArchive = m_inlineArchives.find(name);
+    if (inlineArchive != m_inlineArchives.end()) {
+        replay(inlineArchive->second);
+        return;
+    }
     std::vector<std::string> tried;
     std::vector<std::string> folders;
     if (fs::path(name).is_absolute()) {
@@ -560,6 +598,146 @@ void SceneBuilder::readArchive(RequestReader& in) {
     std::string list;
     for (auto const& t : tried) list += "\n    " + t;
     in.fail(in.where(), "archive \"" + name + "\" not found; tried:" + list);
+}
+
+void SceneBuilder::cone(RequestReader& in) {
+    std::vector<float> v = in.numbers(3, "height radius thetamax");
+    in.params().warnUnused(m_diagnostics, "Cone");
+    if (!(v[1] > 0.0f) || v[0] == 0.0f) in.fail(in.where(), "needs a positive radius and a non-zero height");
+    addShape(std::make_unique<Cone>(v[0], v[1], v[2], state().transform, state().reverseOrientation), in.where());
+}
+
+void SceneBuilder::paraboloid(RequestReader& in) {
+    std::vector<float> v = in.numbers(4, "rmax zmin zmax thetamax");
+    in.params().warnUnused(m_diagnostics, "Paraboloid");
+    if (!(v[0] > 0.0f) || !(std::max(v[1], v[2]) > 0.0f))
+        in.fail(in.where(), "needs a positive rmax and zmax");
+    addShape(std::make_unique<Paraboloid>(v[0], v[1], v[2], v[3], state().transform, state().reverseOrientation),
+             in.where());
+}
+
+void SceneBuilder::hyperboloid(RequestReader& in) {
+    std::vector<float> v = in.numbers(7, "point1 point2 thetamax");
+    in.params().warnUnused(m_diagnostics, "Hyperboloid");
+    if (v[2] == v[5]) {
+        warnOnce("flat hyperboloid", in.where(), "Hyperboloid with both points at the same height is not supported; skipped");
+        return;
+    }
+    addShape(std::make_unique<Hyperboloid>(Vec3(v[0], v[1], v[2]), Vec3(v[3], v[4], v[5]), v[6], state().transform,
+                                           state().reverseOrientation),
+             in.where());
+}
+
+void SceneBuilder::torus(RequestReader& in) {
+    std::vector<float> v = in.numbers(5, "majorrad minorrad phimin phimax thetamax");
+    in.params().warnUnused(m_diagnostics, "Torus");
+    if (!(v[0] > 0.0f) || !(v[1] > 0.0f)) in.fail(in.where(), "radii must be positive");
+    bool flip = state().reverseOrientation != mirrors(state().transform);
+    addShape(std::make_unique<TriangleMesh>(buildTorus(v[0], v[1], v[2], v[3], v[4], state().transform, flip), "Torus",
+                                            false),
+             in.where());
+}
+
+void SceneBuilder::basis(RequestReader& in) {
+    SplineBasis bases[2];
+    for (int k = 0; k < 2; ++k) {
+        const char* what = k == 0 ? "u basis" : "v basis";
+        if (in.nextIsString()) {
+            std::string name = in.string(what);
+            if (!SplineBasis::named(name, bases[k]))
+                in.fail(in.where(), "unknown basis \"" + name + "\" (bezier, b-spline, catmull-rom, hermite, power)");
+        } else {
+            std::vector<float> m = in.numbers(16, what);
+            for (int i = 0; i < 16; ++i) bases[k].matrix[i / 4][i % 4] = m[static_cast<size_t>(i)];
+        }
+        float step = in.number(k == 0 ? "u step" : "v step");
+        if (step < 1.0f || step != std::floor(step)) in.fail(in.where(), "basis steps must be whole numbers of at least 1");
+        bases[k].step = static_cast<int>(step);
+    }
+    in.finish();
+    state().uBasis = bases[0];
+    state().vBasis = bases[1];
+}
+
+namespace {
+std::vector<Vec3> pointsOf(ParamList const& params, RequestReader& in) {
+    std::vector<float> const* P = params.getFloats("P", ParamType::Point);
+    if (!P || P->empty() || P->size() % 3 != 0) in.fail(in.where(), "needs a \"P\" parameter with control points");
+    std::vector<Vec3> points;
+    for (size_t i = 0; i + 2 < P->size(); i += 3) points.emplace_back((*P)[i], (*P)[i + 1], (*P)[i + 2]);
+    return points;
+}
+}  // namespace
+
+void SceneBuilder::patchMesh(RequestReader& in) {
+    std::string type = in.string("patch type");
+    int nu = static_cast<int>(in.number("nu"));
+    std::string uwrap = in.string("uwrap");
+    int nv = static_cast<int>(in.number("nv"));
+    std::string vwrap = in.string("vwrap");
+    ParamList params = in.params();
+    std::vector<Vec3> points = pointsOf(params, in);
+    params.warnUnused(m_diagnostics, "PatchMesh");
+    bool flip = state().reverseOrientation != mirrors(state().transform);
+    MeshData mesh;
+    if (type == "bicubic")
+        mesh = buildBicubicPatchMesh(points, nu, uwrap == "periodic", nv, vwrap == "periodic", state().uBasis,
+                                     state().vBasis, state().transform, flip, in.where());
+    else if (type == "bilinear")
+        mesh = buildBilinearPatchMesh(points, nu, uwrap == "periodic", nv, vwrap == "periodic", state().transform, flip,
+                                      in.where());
+    else
+        in.fail(in.where(), "unknown patch type \"" + type + "\" (bilinear or bicubic)");
+    addShape(std::make_unique<TriangleMesh>(std::move(mesh), "PatchMesh", false), in.where());
+}
+
+void SceneBuilder::objectBegin(RequestReader& in) {
+    // The handle may be a string (RenderMan 19+) or a number (older RIBs).
+    std::string handle = in.nextIsString() ? in.string("object handle") : std::to_string(in.number("object handle"));
+    in.finish();
+    m_recording = &m_objects[handle];
+    m_recording->clear();
+    m_recordingEnd = "ObjectEnd";
+}
+
+void SceneBuilder::objectInstance(RequestReader& in) {
+    std::string handle = in.nextIsString() ? in.string("object handle") : std::to_string(in.number("object handle"));
+    in.finish();
+    auto found = m_objects.find(handle);
+    if (found == m_objects.end()) in.fail(in.where(), "no object \"" + handle + "\" was defined with ObjectBegin");
+    replay(found->second);
+}
+
+void SceneBuilder::archiveBegin(RequestReader& in) {
+    std::string name = in.string("archive name");
+    in.params();
+    m_recording = &m_inlineArchives[name];
+    m_recording->clear();
+    m_recordingEnd = "ArchiveEnd";
+}
+
+void SceneBuilder::replay(std::vector<RibRequest> const& requests) {
+    // An instance sees the graphics state in effect where it is used, and
+    // leaves it as it found it.
+    m_attributes.push_back(state());
+    size_t depth = m_blocks.size();
+    for (RibRequest const& request : requests) handle(request);
+    if (m_blocks.size() != depth) throw RibError(requests.back().where, "unbalanced blocks inside an object or archive");
+    m_attributes.pop_back();
+}
+
+void SceneBuilder::clipping(RequestReader& in) {
+    // Ray tracing needs no near and far planes; accepted for compatibility.
+    in.numbers(2, "near far");
+    in.finish();
+}
+
+void SceneBuilder::sides(RequestReader& in) {
+    // Every surface is shaded from the side it is seen from, so one- and
+    // two-sided surfaces render alike here; accepted for compatibility.
+    float sides = in.number("number of sides");
+    in.finish();
+    if (sides != 1.0f && sides != 2.0f) in.fail(in.where(), "Sides must be 1 or 2");
 }
 
 Scene loadScene(std::string const& path, Diagnostics& diagnostics) {

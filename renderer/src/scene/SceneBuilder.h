@@ -11,6 +11,7 @@
 #include "parse/ParamList.h"
 #include "parse/RibRequest.h"
 #include "scene/Scene.h"
+#include "scene/shapes/MeshBuilders.h"
 
 namespace bxdflab {
 
@@ -31,6 +32,8 @@ private:
         std::string name;
         Vec3 color{1.0f};
         bool reverseOrientation = false;
+        bool colorSet = false;
+        SplineBasis uBasis = SplineBasis::bezier(), vBasis = SplineBasis::bezier();
     };
     enum class Block { Attribute, Transform };
 
@@ -79,6 +82,19 @@ private:
     void patch(RequestReader& in);
     void geometry(RequestReader& in);
     void readArchive(RequestReader& in);
+    void cone(RequestReader& in);
+    void paraboloid(RequestReader& in);
+    void hyperboloid(RequestReader& in);
+    void torus(RequestReader& in);
+    void basis(RequestReader& in);
+    void patchMesh(RequestReader& in);
+    void objectBegin(RequestReader& in);
+    void objectInstance(RequestReader& in);
+    void archiveBegin(RequestReader& in);
+    void clipping(RequestReader& in);
+    void sides(RequestReader& in);
+    /// Replays recorded requests (an object instance or an inline archive).
+    void replay(std::vector<RibRequest> const& requests);
 
     void addShape(std::unique_ptr<Shape> shape, SourceLocation const& where);
     int defaultMaterial();
@@ -96,6 +112,12 @@ private:
     std::vector<std::string> m_archiveSearchPath;
     std::map<std::string, int> m_defaultMaterials;
     std::set<std::string> m_warnedKinds;
+    int m_repeatedWarnings = 0;
+    /// Requests being recorded into an object or inline archive (null when not recording).
+    std::vector<RibRequest>* m_recording = nullptr;
+    std::string m_recordingEnd;  ///< the request that stops the recording
+    std::map<std::string, std::vector<RibRequest>> m_objects;
+    std::map<std::string, std::vector<RibRequest>> m_inlineArchives;
     bool m_inWorld = false;
     bool m_sawWorld = false;
     bool m_sppFromPixelSamples = false;

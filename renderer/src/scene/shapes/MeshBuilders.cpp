@@ -1,5 +1,6 @@
 #include "scene/shapes/MeshBuilders.h"
 
+#include <algorithm>
 #include <functional>
 #include <numeric>
 
@@ -126,19 +127,6 @@ void tessellate(MeshData& mesh, int nu, int nv, SurfaceFunction const& surface, 
         }
 }
 
-/// Cubic Bernstein basis and its derivative at t.
-void bernstein(float t, float b[4], float db[4]) {
-    float s = 1.0f - t;
-    b[0] = s * s * s;
-    b[1] = 3.0f * t * s * s;
-    b[2] = 3.0f * t * t * s;
-    b[3] = t * t * t;
-    db[0] = -3.0f * s * s;
-    db[1] = 3.0f * s * s - 6.0f * t * s;
-    db[2] = 6.0f * t * s - 3.0f * t * t;
-    db[3] = 3.0f * t * t;
-}
-
 }  // namespace
 
 MeshData buildPolygonMesh(std::vector<int> const& loopsPerFace, std::vector<int> const& verticesPerLoop,
@@ -236,32 +224,144 @@ MeshData buildBilinearPatch(std::array<Vec3, 4> const& c, Mat4 const& toWorld, b
     return mesh;
 }
 
+bool SplineBasis::named(std::string const& name, SplineBasis& out) {
+    struct Named {
+        const char* name;
+        float scale;
+        float m[4][4];
+        int step;
+    };
+    static const Named table[] = {
+        {"bezier", 1.0f, {{-1, 3, -3, 1}, {3, -6, 3, 0}, {-3, 3, 0, 0}, {1, 0, 0, 0}}, 3},
+        {"b-spline", 1.0f / 6.0f, {{-1, 3, -3, 1}, {3, -6, 3, 0}, {-3, 0, 3, 0}, {1, 4, 1, 0}}, 1},
+        {"catmull-rom", 0.5f, {{-1, 3, -3, 1}, {2, -5, 4, -1}, {-1, 0, 1, 0}, {0, 2, 0, 0}}, 1},
+        {"hermite", 1.0f, {{2, 1, -2, 1}, {-3, -2, 3, -1}, {0, 1, 0, 0}, {1, 0, 0, 0}}, 2},
+        {"power", 1.0f, {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}}, 4},
+    };
+    for (Named const& n : table)
+        if (name == n.name) {
+            for (int i = 0; i < 4; ++i)
+                for (int j = 0; j < 4; ++j) out.matrix[i][j] = n.scale * n.m[i][j];
+            out.step = n.step;
+            return true;
+        }
+    return false;
+}
+
+SplineBasis SplineBasis::bezier() {
+    SplineBasis b{};
+    named("bezier", b);
+    return b;
+}
+
+namespace {
+
+/// The four basis weights [t^3 t^2 t 1] M and their derivatives.
+void splineWeights(SplineBasis const& basis, float t, float w[4], float dw[4]) {
+    float powers[4] = {t * t * t, t * t, t, 1.0f}, slopes[4] = {3 * t * t, 2 * t, 1.0f, 0.0f};
+    for (int j = 0; j < 4; ++j) {
+        w[j] = dw[j] = 0.0f;
+        for (int i = 0; i < 4; ++i) {
+            w[j] += powers[i] * basis.matrix[i][j];
+            dw[j] += slopes[i] * basis.matrix[i][j];
+        }
+    }
+}
+
+int patchCount(int points, bool periodic, int step, int order, SourceLocation const& where, const char* axis) {
+    int count = periodic ? points / step : (points - order) / step + 1;
+    bool fits = periodic ? points % step == 0 : points >= order && (points - order) % step == 0;
+    if (!fits || count < 1)
+        throw RibError(where, std::string("PatchMesh: ") + std::to_string(points) + " points in " + axis +
+                                  " do not make whole patches for this basis (step " + std::to_string(step) + ")");
+    return count;
+}
+
+}  // namespace
+
+MeshData buildBicubicPatchMesh(std::vector<Vec3> const& points, int nu, bool uPeriodic, int nv, bool vPeriodic,
+                               SplineBasis const& uBasis, SplineBasis const& vBasis, Mat4 const& toWorld, bool flip,
+                               SourceLocation const& where) {
+    if (nu < 1 || nv < 1 || points.size() != static_cast<size_t>(nu) * static_cast<size_t>(nv))
+        throw RibError(where, "PatchMesh: \"P\" has " + std::to_string(points.size()) + " points, expected nu x nv = " +
+                                  std::to_string(nu) + " x " + std::to_string(nv));
+    int patchesU = patchCount(nu, uPeriodic, uBasis.step, 4, where, "u");
+    int patchesV = patchCount(nv, vPeriodic, vBasis.step, 4, where, "v");
+    MeshData mesh;
+    for (int pv = 0; pv < patchesV; ++pv)
+        for (int pu = 0; pu < patchesU; ++pu) {
+            Vec3 control[4][4];  // [row in v][column in u]
+            for (int j = 0; j < 4; ++j)
+                for (int i = 0; i < 4; ++i) {
+                    int col = (pu * uBasis.step + i) % nu, row = (pv * vBasis.step + j) % nv;
+                    control[j][i] = points[static_cast<size_t>(row) * static_cast<size_t>(nu) + static_cast<size_t>(col)];
+                }
+            tessellate(
+                mesh, 12, 12,
+                [&](float u, float v, Vec3& P, Vec3& dPdu, Vec3& dPdv) {
+                    float wu[4], dwu[4], wv[4], dwv[4];
+                    splineWeights(uBasis, u, wu, dwu);
+                    splineWeights(vBasis, v, wv, dwv);
+                    P = dPdu = dPdv = Vec3(0.0f);
+                    for (int j = 0; j < 4; ++j)
+                        for (int i = 0; i < 4; ++i) {
+                            P += wu[i] * wv[j] * control[j][i];
+                            dPdu += dwu[i] * wv[j] * control[j][i];
+                            dPdv += wu[i] * dwv[j] * control[j][i];
+                        }
+                },
+                toWorld, flip);
+        }
+    mesh.st = mesh.uv;
+    return mesh;
+}
+
+MeshData buildBilinearPatchMesh(std::vector<Vec3> const& points, int nu, bool uPeriodic, int nv, bool vPeriodic,
+                                Mat4 const& toWorld, bool flip, SourceLocation const& where) {
+    if (nu < 2 || nv < 2 || points.size() != static_cast<size_t>(nu) * static_cast<size_t>(nv))
+        throw RibError(where, "PatchMesh \"bilinear\": \"P\" must have nu x nv points with nu, nv >= 2");
+    MeshData mesh;
+    int patchesU = uPeriodic ? nu : nu - 1, patchesV = vPeriodic ? nv : nv - 1;
+    auto at = [&](int i, int j) { return points[static_cast<size_t>(j % nv) * static_cast<size_t>(nu) + static_cast<size_t>(i % nu)]; };
+    for (int j = 0; j < patchesV; ++j)
+        for (int i = 0; i < patchesU; ++i)
+            mesh.append(buildBilinearPatch({at(i, j), at(i + 1, j), at(i, j + 1), at(i + 1, j + 1)}, toWorld, flip));
+    return mesh;
+}
+
+MeshData buildTorus(float majorRadius, float minorRadius, float phiMinDegrees, float phiMaxDegrees,
+                    float thetaMaxDegrees, Mat4 const& toWorld, bool flip) {
+    float thetaMax = glm::radians(std::clamp(thetaMaxDegrees, 0.0f, 360.0f));
+    float phiMin = glm::radians(phiMinDegrees), deltaPhi = glm::radians(phiMaxDegrees - phiMinDegrees);
+    int nu = std::max(4, static_cast<int>(96.0f * thetaMax / (2.0f * kPi)));
+    int nv = std::max(4, static_cast<int>(48.0f * std::fabs(deltaPhi) / (2.0f * kPi)));
+    MeshData mesh;
+    tessellate(
+        mesh, nu, nv,
+        [&](float u, float v, Vec3& P, Vec3& dPdu, Vec3& dPdv) {
+            float theta = u * thetaMax, phi = phiMin + v * deltaPhi;
+            float ring = majorRadius + minorRadius * std::cos(phi);
+            P = Vec3(ring * std::cos(theta), ring * std::sin(theta), minorRadius * std::sin(phi));
+            dPdu = thetaMax * Vec3(-P.y, P.x, 0.0f);
+            dPdv = deltaPhi * Vec3(-minorRadius * std::sin(phi) * std::cos(theta),
+                                   -minorRadius * std::sin(phi) * std::sin(theta), minorRadius * std::cos(phi));
+        },
+        toWorld, flip);
+    mesh.st = mesh.uv;
+    return mesh;
+}
+
 MeshData buildTeapot(Mat4 const& toWorld, bool flip) {
     MeshData mesh;
     for (auto const& patch : teapot::kPatches) {
-        Vec3 control[16];
+        std::vector<Vec3> control;
         for (int k = 0; k < 16; ++k) {
             float const* p = teapot::kPoints[patch[k] - 1];
-            control[k] = Vec3(p[0], p[1], p[2]);
+            control.emplace_back(p[0], p[1], p[2]);
         }
-        tessellate(
-            mesh, 12, 12,
-            [&](float u, float v, Vec3& P, Vec3& dPdu, Vec3& dPdv) {
-                float bu[4], dbu[4], bv[4], dbv[4];
-                bernstein(u, bu, dbu);
-                bernstein(v, bv, dbv);
-                P = dPdu = dPdv = Vec3(0.0f);
-                for (int j = 0; j < 4; ++j)
-                    for (int i = 0; i < 4; ++i) {
-                        Vec3 const& cp = control[4 * j + i];
-                        P += bu[i] * bv[j] * cp;
-                        dPdu += dbu[i] * bv[j] * cp;
-                        dPdv += bu[i] * dbv[j] * cp;
-                    }
-            },
-            toWorld, flip);
+        mesh.append(buildBicubicPatchMesh(control, 4, false, 4, false, SplineBasis::bezier(), SplineBasis::bezier(),
+                                          toWorld, flip, SourceLocation{}));
     }
-    mesh.st = mesh.uv;
     return mesh;
 }
 

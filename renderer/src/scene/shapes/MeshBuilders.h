@@ -2,6 +2,7 @@
 #pragma once
 
 #include <array>
+#include <string>
 #include <vector>
 
 #include "core/Diagnostics.h"
@@ -21,6 +22,32 @@ MeshData buildPolygonMesh(std::vector<int> const& loopsPerFace, std::vector<int>
 
 /// Patch "bilinear": four corners in the order (0,0) (1,0) (0,1) (1,1).
 MeshData buildBilinearPatch(std::array<Vec3, 4> const& corners, Mat4 const& toWorld, bool flip);
+
+/// A RenderMan spline basis (Basis request): a 4x4 matrix and the step
+/// between successive patches of a patch mesh.
+struct SplineBasis {
+    float matrix[4][4];
+    int step;
+    /// "bezier", "b-spline", "catmull-rom", "hermite" or "power"; false if unknown.
+    static bool named(std::string const& name, SplineBasis& out);
+    static SplineBasis bezier();
+};
+
+/// Patch "bicubic" / PatchMesh "bicubic": nu x nv control points (u varies
+/// fastest), periodic or not in each direction, tessellated with exact
+/// derivatives. Throws RibError when the counts do not fit the basis.
+MeshData buildBicubicPatchMesh(std::vector<Vec3> const& points, int nu, bool uPeriodic, int nv, bool vPeriodic,
+                               SplineBasis const& uBasis, SplineBasis const& vBasis, Mat4 const& toWorld, bool flip,
+                               SourceLocation const& where);
+
+/// PatchMesh "bilinear": a grid of nu x nv points.
+MeshData buildBilinearPatchMesh(std::vector<Vec3> const& points, int nu, bool uPeriodic, int nv, bool vPeriodic,
+                                Mat4 const& toWorld, bool flip, SourceLocation const& where);
+
+/// Torus majorrad minorrad phimin phimax thetamax, tessellated finely with
+/// exact derivatives of the RenderMan parameterisation.
+MeshData buildTorus(float majorRadius, float minorRadius, float phiMinDegrees, float phiMaxDegrees,
+                    float thetaMaxDegrees, Mat4 const& toWorld, bool flip);
 
 /// Geometry "teapot": the Newell teapot, tessellated finely, with smooth
 /// normals and exact dPdu/dPdv from its Bezier patches.

@@ -280,4 +280,150 @@ void Disk::boundsLocal(Vec3& lower, Vec3& upper) const {
     upper = Vec3(r, r, h);
 }
 
+// ---------------------------------------------------------------- Cone
+
+Cone::Cone(float height, float radius, float thetaMaxDegrees, Mat4 const& toWorld, bool reverse)
+    : Quadric(toWorld, reverse), m_height(height), m_radius(radius), m_phiMax(sweepRadians(thetaMaxDegrees)) {}
+
+std::optional<Quadric::LocalHit> Cone::intersectLocal(DVec3 const& o, DVec3 const& d, double tnear, double tfar) const {
+    // x^2 + y^2 = (r (1 - z/h))^2
+    double k = (m_radius / m_height) * (m_radius / m_height);
+    double a = d.x * d.x + d.y * d.y - k * d.z * d.z;
+    double b = 2.0 * (o.x * d.x + o.y * d.y - k * d.z * (o.z - m_height));
+    double c = o.x * o.x + o.y * o.y - k * (o.z - m_height) * (o.z - m_height);
+    double t0, t1;
+    if (!solveQuadratic(a, b, c, t0, t1)) return std::nullopt;
+    for (double t : {t0, t1}) {
+        if (t <= tnear || t >= tfar) continue;
+        DVec3 p = o + t * d;
+        double v = p.z / m_height;
+        double phi = azimuth(p.x, p.y);
+        if (v < 0.0 || v > 1.0 || phi > m_phiMax) continue;
+        return LocalHit{t, static_cast<float>(phi / m_phiMax), static_cast<float>(v)};
+    }
+    return std::nullopt;
+}
+
+Quadric::LocalSurface Cone::surfaceLocal(float u, float v) const {
+    double phi = u * m_phiMax, cosPhi = std::cos(phi), sinPhi = std::sin(phi);
+    double rho = m_radius * (1.0 - v);
+    DVec3 p(rho * cosPhi, rho * sinPhi, v * m_height);
+    LocalSurface s;
+    s.P = Vec3(p);
+    s.dPdu = Vec3(-m_phiMax * p.y, m_phiMax * p.x, 0.0);
+    s.dPdv = Vec3(DVec3(-m_radius * cosPhi, -m_radius * sinPhi, m_height));
+    // The outward normal does not depend on v (so it is defined at the apex too).
+    s.N = safeNormalize(Vec3(DVec3(m_height * cosPhi, m_height * sinPhi, m_radius)));
+    return s;
+}
+
+void Cone::boundsLocal(Vec3& lower, Vec3& upper) const {
+    float r = static_cast<float>(m_radius), h = static_cast<float>(m_height);
+    lower = Vec3(-r, -r, std::min(0.0f, h));
+    upper = Vec3(r, r, std::max(0.0f, h));
+}
+
+// ---------------------------------------------------------------- Paraboloid
+
+Paraboloid::Paraboloid(float rmax, float zmin, float zmax, float thetaMaxDegrees, Mat4 const& toWorld, bool reverse)
+    : Quadric(toWorld, reverse),
+      m_rmax(rmax),
+      m_zMin(std::min(zmin, zmax)),
+      m_zMax(std::max(zmin, zmax)),
+      m_phiMax(sweepRadians(thetaMaxDegrees)) {}
+
+std::optional<Quadric::LocalHit> Paraboloid::intersectLocal(DVec3 const& o, DVec3 const& d, double tnear,
+                                                            double tfar) const {
+    double k = m_zMax / (m_rmax * m_rmax);  // k (x^2 + y^2) = z
+    double t0, t1;
+    if (!solveQuadratic(k * (d.x * d.x + d.y * d.y), 2.0 * k * (o.x * d.x + o.y * d.y) - d.z,
+                        k * (o.x * o.x + o.y * o.y) - o.z, t0, t1))
+        return std::nullopt;
+    for (double t : {t0, t1}) {
+        if (t <= tnear || t >= tfar) continue;
+        DVec3 p = o + t * d;
+        double phi = azimuth(p.x, p.y);
+        if (p.z < m_zMin || p.z > m_zMax || phi > m_phiMax) continue;
+        double height = m_zMax - m_zMin;
+        return LocalHit{t, static_cast<float>(phi / m_phiMax), static_cast<float>(height > 0 ? (p.z - m_zMin) / height : 0)};
+    }
+    return std::nullopt;
+}
+
+Quadric::LocalSurface Paraboloid::surfaceLocal(float u, float v) const {
+    double phi = u * m_phiMax, cosPhi = std::cos(phi), sinPhi = std::sin(phi);
+    double z = m_zMin + v * (m_zMax - m_zMin);
+    double rho = m_rmax * std::sqrt(std::max(0.0, z / m_zMax));
+    DVec3 p(rho * cosPhi, rho * sinPhi, z);
+    LocalSurface s;
+    s.P = Vec3(p);
+    s.dPdu = Vec3(-m_phiMax * p.y, m_phiMax * p.x, 0.0);
+    // d rho / dz = rho / (2 z); at the tip (z = 0) the tangent is horizontal.
+    double slope = z > 1e-12 ? 0.5 / z : 0.0;
+    s.dPdv = Vec3((m_zMax - m_zMin) * DVec3(p.x * slope, p.y * slope, 1.0));
+    // Outward normal of k rho^2 - z = 0: (2 k x, 2 k y, -1), flipped to point away from the axis.
+    double k = m_zMax / (m_rmax * m_rmax);
+    s.N = safeNormalize(Vec3(DVec3(2.0 * k * p.x, 2.0 * k * p.y, -1.0)));
+    return s;
+}
+
+void Paraboloid::boundsLocal(Vec3& lower, Vec3& upper) const {
+    float r = static_cast<float>(m_rmax);
+    lower = Vec3(-r, -r, static_cast<float>(m_zMin));
+    upper = Vec3(r, r, static_cast<float>(m_zMax));
+}
+
+// ---------------------------------------------------------------- Hyperboloid
+
+Hyperboloid::Hyperboloid(Vec3 const& p1, Vec3 const& p2, float thetaMaxDegrees, Mat4 const& toWorld, bool reverse)
+    : Quadric(toWorld, reverse), m_p1(p1), m_p2(p2), m_phiMax(sweepRadians(thetaMaxDegrees)) {}
+
+std::optional<Quadric::LocalHit> Hyperboloid::intersectLocal(DVec3 const& o, DVec3 const& d, double tnear,
+                                                             double tfar) const {
+    // A point at height z lies on the line at v = (z - p1.z) / (p2.z - p1.z), whose
+    // squared distance from the axis is r2(v) = A v^2 + B v + C. The ray meets the
+    // surface where x(t)^2 + y(t)^2 = r2(v(t)): a quadratic in t.
+    DVec3 e = m_p2 - m_p1;
+    double A = e.x * e.x + e.y * e.y, B = 2.0 * (m_p1.x * e.x + m_p1.y * e.y), C = m_p1.x * m_p1.x + m_p1.y * m_p1.y;
+    double v0 = (o.z - m_p1.z) / e.z, vd = d.z / e.z;
+    double a = d.x * d.x + d.y * d.y - A * vd * vd;
+    double b = 2.0 * (o.x * d.x + o.y * d.y) - 2.0 * A * v0 * vd - B * vd;
+    double c = o.x * o.x + o.y * o.y - A * v0 * v0 - B * v0 - C;
+    double t0, t1;
+    if (!solveQuadratic(a, b, c, t0, t1)) return std::nullopt;
+    for (double t : {t0, t1}) {
+        if (t <= tnear || t >= tfar) continue;
+        DVec3 p = o + t * d;
+        double v = v0 + t * vd;
+        if (v < 0.0 || v > 1.0) continue;
+        DVec3 line = m_p1 + v * e;
+        double phi = azimuth(p.x, p.y) - azimuth(line.x, line.y);
+        if (phi < 0.0) phi += kTwoPi;
+        if (phi > m_phiMax) continue;
+        return LocalHit{t, static_cast<float>(phi / m_phiMax), static_cast<float>(v)};
+    }
+    return std::nullopt;
+}
+
+Quadric::LocalSurface Hyperboloid::surfaceLocal(float u, float v) const {
+    double phi = u * m_phiMax, cosPhi = std::cos(phi), sinPhi = std::sin(phi);
+    DVec3 line = m_p1 + static_cast<double>(v) * (m_p2 - m_p1);
+    DVec3 e = m_p2 - m_p1;
+    DVec3 p(line.x * cosPhi - line.y * sinPhi, line.x * sinPhi + line.y * cosPhi, line.z);
+    LocalSurface s;
+    s.P = Vec3(p);
+    s.dPdu = Vec3(-m_phiMax * p.y, m_phiMax * p.x, 0.0);
+    s.dPdv = Vec3(DVec3(e.x * cosPhi - e.y * sinPhi, e.x * sinPhi + e.y * cosPhi, e.z));
+    Vec3 n = glm::cross(s.dPdu, s.dPdv);
+    if (glm::length(n) < 1e-12f) n = Vec3(float(cosPhi), float(sinPhi), 0.0f);  // on the axis
+    s.N = safeNormalize(n);
+    return s;
+}
+
+void Hyperboloid::boundsLocal(Vec3& lower, Vec3& upper) const {
+    float r = static_cast<float>(std::max(glm::length(glm::dvec2(m_p1)), glm::length(glm::dvec2(m_p2))));
+    lower = Vec3(-r, -r, static_cast<float>(std::min(m_p1.z, m_p2.z)));
+    upper = Vec3(r, r, static_cast<float>(std::max(m_p1.z, m_p2.z)));
+}
+
 }  // namespace bxdflab

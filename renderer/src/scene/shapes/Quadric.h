@@ -84,4 +84,45 @@ private:
     double m_height, m_radius, m_phiMax;
 };
 
+/// Cone height radius thetamax: apex at z = height, base circle at z = 0.
+class Cone final : public Quadric {
+public:
+    Cone(float height, float radius, float thetaMaxDegrees, Mat4 const& toWorld, bool reverse);
+    const char* kind() const override { return "Cone"; }
+    std::optional<LocalHit> intersectLocal(DVec3 const& org, DVec3 const& dir, double tnear, double tfar) const override;
+    LocalSurface surfaceLocal(float u, float v) const override;
+    void boundsLocal(Vec3& lower, Vec3& upper) const override;
+
+private:
+    double m_height, m_radius, m_phiMax;
+};
+
+/// Paraboloid rmax zmin zmax thetamax: x^2 + y^2 = rmax^2 z / zmax.
+class Paraboloid final : public Quadric {
+public:
+    Paraboloid(float rmax, float zmin, float zmax, float thetaMaxDegrees, Mat4 const& toWorld, bool reverse);
+    const char* kind() const override { return "Paraboloid"; }
+    std::optional<LocalHit> intersectLocal(DVec3 const& org, DVec3 const& dir, double tnear, double tfar) const override;
+    LocalSurface surfaceLocal(float u, float v) const override;
+    void boundsLocal(Vec3& lower, Vec3& upper) const override;
+
+private:
+    double m_rmax, m_zMin, m_zMax, m_phiMax;
+};
+
+/// Hyperboloid point1 point2 thetamax: the line from point1 to point2 swept
+/// about the z axis (point1.z must differ from point2.z).
+class Hyperboloid final : public Quadric {
+public:
+    Hyperboloid(Vec3 const& p1, Vec3 const& p2, float thetaMaxDegrees, Mat4 const& toWorld, bool reverse);
+    const char* kind() const override { return "Hyperboloid"; }
+    std::optional<LocalHit> intersectLocal(DVec3 const& org, DVec3 const& dir, double tnear, double tfar) const override;
+    LocalSurface surfaceLocal(float u, float v) const override;
+    void boundsLocal(Vec3& lower, Vec3& upper) const override;
+
+private:
+    DVec3 m_p1, m_p2;
+    double m_phiMax;
+};
+
 }  // namespace bxdflab

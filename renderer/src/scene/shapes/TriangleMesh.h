@@ -22,6 +22,17 @@ struct MeshData {
     std::vector<Vec3> dPdv;
 
     size_t triangleCount() const { return indices.size() / 3; }
+    /// Appends another mesh with the same attributes.
+    void append(MeshData const& other) {
+        unsigned base = static_cast<unsigned>(P.size());
+        P.insert(P.end(), other.P.begin(), other.P.end());
+        for (unsigned i : other.indices) indices.push_back(base + i);
+        N.insert(N.end(), other.N.begin(), other.N.end());
+        uv.insert(uv.end(), other.uv.begin(), other.uv.end());
+        st.insert(st.end(), other.st.begin(), other.st.end());
+        dPdu.insert(dPdu.end(), other.dPdu.begin(), other.dPdu.end());
+        dPdv.insert(dPdv.end(), other.dPdv.begin(), other.dPdv.end());
+    }
     /// Appends one vertex with whichever attributes this mesh carries.
     unsigned addVertex(Vec3 const& p) {
         P.push_back(p);

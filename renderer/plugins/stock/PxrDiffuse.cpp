@@ -1,0 +1,44 @@
+// PxrDiffuse — the stock Lambertian material that RIBs from other courses and
+// tools name ("color diffuseColor", default 0.5 grey). It is also the
+// material of surfaces that have no Bxdf. The scattering is the chapter 6
+// diffuse solution's; only the factory (name and default) differs.
+#include <new>
+
+#include "Diffuse.h"
+
+namespace {
+
+class PxrDiffuseFactory : public RixBxdfFactory {
+public:
+    int Init(RixContext&, RtUString const) override { return 0; }
+    void Finalize(RixContext&) override {}
+    RixSCParamInfo const* GetParamTable() override {
+        static RixSCParamInfo table[] = {RixSCParamInfo(RtUString("diffuseColor"), k_RixSCColor, k_RixSCScatterInput),
+                                         RixSCParamInfo()};
+        return table;
+    }
+    void Synchronize(RixContext& ctx, RixSCSyncMsg msg, RixParameterList const*) override {
+        if (msg != k_RixSCRenderBegin) return;
+        g_diffuseLobe = RixBXLookupLobeByName(ctx, false, false, true, false, 0, "Diffuse");
+        g_diffuseTraits = RixBXLobeTraits(g_diffuseLobe);
+    }
+    RixBxdf* BeginScatter(RixShadingContext const* sCtx, RixBXLobeTraits const&, RixSCShadingMode, void*,
+                          RtPointer) override {
+        RtColorRGB const* color;
+        sCtx->EvalParam(0, -1, &color, &m_default, true);
+        RixShadingContext::Allocator pool(sCtx);
+        return new (pool.AllocForBxdf<Diffuse>(1)) Diffuse(sCtx, this, color);
+    }
+    void EndScatter(RixBxdf*) override {}
+
+private:
+    RtColorRGB m_default{0.5f, 0.5f, 0.5f};
+};
+
+}  // namespace
+
+RIX_BXDFPLUGINCREATE {
+    PIXAR_ARGUSED(hint);
+    return new PxrDiffuseFactory();
+}
+RIX_BXDFPLUGINDESTROY { delete static_cast<PxrDiffuseFactory*>(bxdf); }
