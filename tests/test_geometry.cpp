@@ -161,3 +161,20 @@ TEST_CASE("bilinear patch and teapot tessellate with exact derivatives", "[geome
     CHECK(lo.z == Approx(0.0f).margin(1e-4));
     CHECK(hi.x - lo.x == Approx(6.43f).epsilon(0.01));
 }
+
+TEST_CASE("cone, paraboloid and hyperboloid: RI derivatives and outward normals", "[geometry]") {
+    Scene scene = sceneWith("Cone 2 1 300\nParaboloid 1 0.2 2 360\nHyperboloid 1 0 0.5 0.5 1 -0.5 270");
+    for (size_t k = 0; k < scene.shapes.size(); ++k) {
+        CAPTURE(scene.shapes[k]->kind());
+        auto const& q = dynamic_cast<Quadric const&>(*scene.shapes[k]);
+        for (float u : {0.2f, 0.7f})
+            for (float v : {0.25f, 0.6f}) checkDerivatives(q, u, v);
+    }
+    // Seen from the side, the cone's normal faces the viewer (dPdu x dPdv points out).
+    Scene cone = sceneWith("Cone 2 1 360");
+    RayTracer tracer(cone);
+    HitRecord side = trace(tracer, Vec3(5, 0.01f, 0.5f), Vec3(-1, 0, 0));
+    REQUIRE(side.hit());
+    CHECK(side.t == Approx(5.0f - 0.75f).epsilon(1e-4));
+    CHECK(cone.shapes[0]->basics(side).Ng.x > 0.0f);
+}

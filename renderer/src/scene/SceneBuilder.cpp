@@ -503,6 +503,14 @@ void SceneBuilder::disk(RequestReader& in) {
 
 namespace {
 bool mirrors(Mat4 const& m) { return glm::determinant(Mat3(m)) < 0.0f; }
+
+std::vector<Vec3> pointsOf(ParamList const& params, RequestReader& in) {
+    std::vector<float> const* P = params.getFloats("P", ParamType::Point);
+    if (!P || P->empty() || P->size() % 3 != 0) in.fail(in.where(), "needs a \"P\" parameter with control points");
+    std::vector<Vec3> points;
+    for (size_t i = 0; i + 2 < P->size(); i += 3) points.emplace_back((*P)[i], (*P)[i + 1], (*P)[i + 2]);
+    return points;
+}
 }  // namespace
 
 void SceneBuilder::polygon(RequestReader& in) {
@@ -545,18 +553,21 @@ void SceneBuilder::pointsGeneralPolygons(RequestReader& in) {
 void SceneBuilder::patch(RequestReader& in) {
     std::string type = in.string("patch type");
     ParamList params = in.params();
-    if (type != "bilinear") {
-        warnOnce("patch " + type, in.where(), "Patch \"" + type + "\" is not supported; skipped");
-        return;
-    }
-    std::vector<float> const* P = params.getFloats("P", ParamType::Point);
-    if (!P || P->size() != 12) in.fail(in.where(), "a bilinear patch needs \"P\" with exactly 4 points");
-    std::array<Vec3, 4> corners;
-    for (int i = 0; i < 4; ++i) corners[static_cast<size_t>(i)] = Vec3((*P)[3 * i], (*P)[3 * i + 1], (*P)[3 * i + 2]);
+    std::vector<Vec3> points = pointsOf(params, in);
     params.warnUnused(m_diagnostics, "Patch");
     bool flip = state().reverseOrientation != mirrors(state().transform);
-    addShape(std::make_unique<TriangleMesh>(buildBilinearPatch(corners, state().transform, flip), "Patch", false),
-             in.where());
+    MeshData mesh;
+    if (type == "bilinear") {
+        if (points.size() != 4) in.fail(in.where(), "a bilinear patch needs \"P\" with exactly 4 points");
+        mesh = buildBilinearPatch({points[0], points[1], points[2], points[3]}, state().transform, flip);
+    } else if (type == "bicubic") {
+        if (points.size() != 16) in.fail(in.where(), "a bicubic patch needs \"P\" with exactly 16 points");
+        mesh = buildBicubicPatchMesh(points, 4, false, 4, false, state().uBasis, state().vBasis, state().transform, flip,
+                                     in.where());
+    } else {
+        in.fail(in.where(), "unknown patch type \"" + type + "\" (bilinear or bicubic)");
+    }
+    addShape(std::make_unique<TriangleMesh>(std::move(mesh), "Patch", false), in.where());
 }
 
 void SceneBuilder::geometry(RequestReader& in) {
@@ -659,15 +670,6 @@ void SceneBuilder::basis(RequestReader& in) {
     state().vBasis = bases[1];
 }
 
-namespace {
-std::vector<Vec3> pointsOf(ParamList const& params, RequestReader& in) {
-    std::vector<float> const* P = params.getFloats("P", ParamType::Point);
-    if (!P || P->empty() || P->size() % 3 != 0) in.fail(in.where(), "needs a \"P\" parameter with control points");
-    std::vector<Vec3> points;
-    for (size_t i = 0; i + 2 < P->size(); i += 3) points.emplace_back((*P)[i], (*P)[i + 1], (*P)[i + 2]);
-    return points;
-}
-}  // namespace
 
 void SceneBuilder::patchMesh(RequestReader& in) {
     std::string type = in.string("patch type");
