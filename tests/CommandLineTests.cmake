@@ -55,3 +55,22 @@ foreach(pair emissive:ch06/emissive diffuse:ch06/diffuse specular:ch06/specular 
   set_tests_properties(starter.${plugin}.renders_safely PROPERTIES
     PASS_REGULAR_EXPRESSION "${expected}" FAIL_REGULAR_EXPRESSION "non-finite;error")
 endforeach()
+
+# The visual tools.
+add_test(NAME tools.rixdiff_identical COMMAND rixdiff ch06.tif ch06.tif --max-rmse 0 --heatmap same.png WORKING_DIRECTORY ${CLI_OUT})
+set_tests_properties(tools.rixdiff_identical PROPERTIES DEPENDS cli.tiff_output PASS_REGULAR_EXPRESSION "RMSE    0\n")
+add_test(NAME tools.rixdiff_threshold
+         COMMAND sh ${CMAKE_CURRENT_SOURCE_DIR}/expect-failure.sh "FAIL: relMSE above" $<TARGET_FILE:rixdiff>
+                 ch06.tif starter-diffuse.exr --max-relmse 0.01
+         WORKING_DIRECTORY ${CLI_OUT})
+set_tests_properties(tools.rixdiff_threshold PROPERTIES DEPENDS "cli.tiff_output;starter.diffuse.renders_safely")
+add_test(NAME tools.rixwarp_solution_passes COMMAND rixwarp specular --params "\"float gloss\" [40] \"int samplingMode\" [1]"
+         --theta 30 --samples 100000 --out warp-specular.png WORKING_DIRECTORY ${CLI_OUT})
+set_tests_properties(tools.rixwarp_solution_passes PROPERTIES PASS_REGULAR_EXPRESSION "-> PASS")
+add_test(NAME tools.rixwarp_finds_the_planted_bug
+         COMMAND sh ${CMAKE_CURRENT_SOURCE_DIR}/expect-failure.sh "-> FAIL" $<TARGET_FILE:rixwarp> buggydiffuse
+                 --plugin-path ${CMAKE_BINARY_DIR}/plugins/starter --samples 100000 --out warp-buggy.png
+         WORKING_DIRECTORY ${CLI_OUT})
+add_test(NAME tools.rixlobe COMMAND rixlobe ward --params "\"float uRoughness\" [0.3] \"float vRoughness\" [0.1]"
+         --theta 40 --polar lobe-polar.png --sphere lobe-sphere.png WORKING_DIRECTORY ${CLI_OUT})
+set_tests_properties(tools.rixlobe PROPERTIES PASS_REGULAR_EXPRESSION "polar slice: largest W = [0-9.]+.*spherical lobe")

@@ -121,14 +121,19 @@ BxdfProbe::~BxdfProbe() {
 }
 
 std::vector<ProbeResult> BxdfProbe::generate(std::vector<ProbePoint> const& points, uint32_t firstSample, uint32_t seed,
-                                             float fixedXi) {
+                                             float fixedXi, Sequence sequence) {
     std::vector<ProbeResult> out(points.size());
     int n = static_cast<int>(points.size());
     m_impl->withBxdf(points, [&](RixShadingContext const& ctx, RixBxdf& bxdf) {
         RixShadingContext::Allocator pool(&ctx);
         auto* samples = pool.AllocFor<RixRNG::SampleCtx>(n);
-        for (int i = 0; i < n; ++i)
-            samples[i] = {RixRNG::Hash(seed ^ 0x3c6ef372u), firstSample + static_cast<uint32_t>(i), 0, fixedXi};
+        for (int i = 0; i < n; ++i) {
+            uint32_t index = firstSample + static_cast<uint32_t>(i);
+            // An independently scrambled sequence per point makes its first sample uniform random.
+            samples[i] = sequence == Sequence::Stratified
+                             ? RixRNG::SampleCtx{RixRNG::Hash(seed ^ 0x3c6ef372u), index, 0, fixedXi}
+                             : RixRNG::SampleCtx{RixRNG::Hash(seed ^ RixRNG::Hash(index + 0x9e3779b9u)), 0, 0, fixedXi};
+        }
         RixRNG rng(samples, n);
         auto* wanted = pool.AllocFor<RixBXLobeTraits>(n);
         auto* sampled = pool.AllocFor<RixBXLobeSampled>(n);

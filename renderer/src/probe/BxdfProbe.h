@@ -42,11 +42,16 @@ public:
     BxdfProbe(BxdfProbe const&) = delete;
     BxdfProbe& operator=(BxdfProbe const&) = delete;
 
-    /// GenerateSample for a batch; point i uses sample index firstSample + i
-    /// of the sequence with the given seed. With fixedXi >= 0, every random
-    /// number the Bxdf draws is fixedXi instead (for the xi = 0 / xi -> 1 cases).
+    /// How the random numbers of a generate() batch relate to each other.
+    enum class Sequence {
+        Stratified,   ///< point i takes sample firstSample + i of one low-discrepancy sequence (as in a pixel)
+        Independent,  ///< every point gets independent uniform numbers (what statistical tests assume)
+    };
+    /// GenerateSample for a batch. With fixedXi >= 0, every random number the
+    /// Bxdf draws is fixedXi instead (for the xi = 0 / xi -> 1 cases).
     std::vector<ProbeResult> generate(std::vector<ProbePoint> const& points, uint32_t firstSample = 0,
-                                      uint32_t seed = 0, float fixedXi = -1.0f);
+                                      uint32_t seed = 0, float fixedXi = -1.0f,
+                                      Sequence sequence = Sequence::Stratified);
     /// EvaluateSample for a batch: direction L[i] at points[i].
     std::vector<ProbeResult> evaluate(std::vector<ProbePoint> const& points, std::vector<Vec3> const& L);
     /// EvaluateSamplesAtIndex: many directions at one point.

@@ -1,9 +1,10 @@
-// Statistics for the sampling tests: the chi-squared goodness-of-fit test.
+// The chi-squared goodness-of-fit test, for checking sampled directions
+// against the pdf a Bxdf declares.
 #pragma once
 
 #include <vector>
 
-namespace bxdflab::test {
+namespace bxdflab {
 
 /// P(X >= x) for X chi-squared with `dof` degrees of freedom (the test's p-value).
 double chiSquaredSurvival(double x, double dof);
@@ -24,4 +25,4 @@ ChiSquaredResult chiSquaredTest(std::vector<double> const& observed, std::vector
 /// `tests` independent tests (Sidak's correction).
 double sidak(double alpha, int tests);
 
-}  // namespace bxdflab::test
+}  // namespace bxdflab

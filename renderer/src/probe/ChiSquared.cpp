@@ -1,8 +1,8 @@
-#include "support/Statistics.h"
+#include "probe/ChiSquared.h"
 
 #include <cmath>
 
-namespace bxdflab::test {
+namespace bxdflab {
 namespace {
 
 // Regularised lower incomplete gamma P(a, x) by its power series, and the
@@ -73,4 +73,4 @@ ChiSquaredResult chiSquaredTest(std::vector<double> const& observed, std::vector
 
 double sidak(double alpha, int tests) { return 1.0 - std::pow(1.0 - alpha, 1.0 / tests); }
 
-}  // namespace bxdflab::test
+}  // namespace bxdflab
