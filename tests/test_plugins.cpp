@@ -93,3 +93,21 @@ TEST_CASE("plugin search order: command line, environment, RIB option, ini file,
     CHECK(path[5] == "/abs/theirs");
     CHECK_THAT(path.back(), Contains("plugins/stock"));
 }
+
+TEST_CASE("integrators are plugins: a missing one names the folders searched, a bad parameter is located",
+          "[plugins][errors]") {
+    std::string rib = kLitSphere;
+    rib.replace(rib.find("BXDF"), 4, "Bxdf \"diffuse\" \"d\"");
+    std::string missing = rib;
+    missing.replace(missing.find("Integrator \"PxrDirectLighting\" \"d\""), 34, "Integrator \"PxrNoSuchThing\" \"x\"");
+    std::string message = renderError(missing);
+    CHECK_THAT(message, Contains("test.rib:3:1"));
+    CHECK_THAT(message, Contains("Integrator plugin \"PxrNoSuchThing\" not found"));
+    CHECK_THAT(message, Contains("plugins/integrators"));
+    std::string bad = rib;
+    bad.replace(bad.find("Integrator \"PxrDirectLighting\" \"d\""), 34,
+                "Integrator \"PxrDirectLighting\" \"d\" \"int numLightSamples\" [-2]");
+    message = renderError(bad);
+    CHECK_THAT(message, Contains("test.rib:3:1"));
+    CHECK_THAT(message, Contains("numLightSamples must be between 0 and 4096"));
+}

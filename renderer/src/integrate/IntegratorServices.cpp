@@ -1,40 +1,83 @@
-#include "integrate/Integrator.h"
+#include "integrate/IntegratorServices.h"
+
+#include <cmath>
+
+#include "shade/ShadingContextImpl.h"
 
 namespace bxdflab {
+namespace {
 
-bool IntegratorServices::unoccluded(Vec3 const& P, Vec3 const& pError, Vec3 const& Ng, Vec3 const& wi, float distance) {
-    Vec3 origin = offsetRayOrigin(P, pError, Ng, wi);
-    // Stop just short of the light so a surface touching it does not count.
-    float tfar = std::isinf(distance) ? kInfinity : distance * (1.0f - 1e-4f);
-    return !m_tracer.occluded(origin, wi, 0.0f, tfar, m_counts);
+/// Shadow rays stop just short of the light, so a surface touching it does not count.
+float shadowReach(float distance) { return std::isinf(distance) ? kInfinity : distance * (1.0f - 1e-4f); }
+
+}  // namespace
+
+RixLightSample IntegratorServices::SampleLight(int light, RtPoint3 const& P, RtFloat2 const& xi) const {
+    LightSample s = m_lights[static_cast<size_t>(light)]->sample(toVec3(P), Vec2(xi.x, xi.y));
+    RixLightSample out;
+    out.wi = toRt(s.wi);
+    out.distance = s.distance;
+    out.radiance = s.radiance;
+    out.pdf = s.pdf;
+    out.delta = s.delta;
+    return out;
 }
 
-LightHit IntegratorServices::lightAlong(Vec3 const& origin, Vec3 const& dir, float maxDistance) const {
-    LightHit nearest;
+Vec3 IntegratorServices::origin(RixShadingContext const& ctx, int i, Vec3 const& dir) const {
+    // Every context the renderer hands out is one of its own.
+    auto const& impl = static_cast<ShadingContextImpl const&>(ctx);
+    RtPoint3 const* P;
+    RtNormal3 const* Ngn;
+    ctx.GetBuiltinVar(RixShadingContext::k_P, &P);
+    ctx.GetBuiltinVar(RixShadingContext::k_Ngn, &Ngn);
+    return offsetRayOrigin(toVec3(P[i]), impl.pError()[i], toVec3(Ngn[i]), dir);
+}
+
+bool IntegratorServices::Unoccluded(RixShadingContext const& ctx, int i, RtVector3 const& dir, float distance) {
+    Vec3 d = toVec3(dir);
+    return !m_tracer.occluded(origin(ctx, i, d), d, 0.0f, shadowReach(distance), m_counts);
+}
+
+RixLightHit IntegratorServices::lightAlong(Vec3 const& from, Vec3 const& dir, float maxDistance) const {
+    RixLightHit nearest;
     for (Light const* light : m_lights) {
         if (light->isDelta()) continue;
-        LightHit candidate;
-        if (light->intersect(origin, dir, candidate.distance, candidate.radiance, candidate.pdf) &&
-            (!nearest.light || candidate.distance < nearest.distance) &&
-            (candidate.distance < maxDistance || (std::isinf(maxDistance) && light->isInfinite()))) {
-            candidate.light = light;
-            nearest = candidate;
-        }
+        float distance, pdf;
+        RtColorRGB radiance;
+        if (!light->intersect(from, dir, distance, radiance, pdf)) continue;
+        bool inReach = distance < maxDistance || (std::isinf(maxDistance) && light->isInfinite());
+        if (inReach && (!nearest.hit || distance < nearest.distance)) nearest = {true, distance, radiance, pdf};
     }
+    if (nearest.hit && nearest.radiance.IsBlack()) nearest.hit = false;
     return nearest;
 }
 
-HitRecord IntegratorServices::traceIndirect(Vec3 const& P, Vec3 const& pError, Vec3 const& Ng, Vec3 const& dir) {
-    return m_tracer.intersect(offsetRayOrigin(P, pError, Ng, dir), dir, 0.0f, kInfinity, RayKind::Indirect, m_counts);
+RixLightHit IntegratorServices::VisibleLight(RixShadingContext const& ctx, int i, RtVector3 const& dir) {
+    Vec3 d = toVec3(dir), from = origin(ctx, i, d);
+    RixLightHit light = lightAlong(from, d, kInfinity);
+    if (light.hit && m_tracer.occluded(from, d, 0.0f, shadowReach(light.distance), m_counts)) light.hit = false;
+    return light;
 }
 
-LightHit IntegratorServices::visibleLight(Vec3 const& P, Vec3 const& pError, Vec3 const& Ng, Vec3 const& dir) {
-    Vec3 origin = offsetRayOrigin(P, pError, Ng, dir);
-    LightHit nearest = lightAlong(origin, dir, kInfinity);
-    if (!nearest.light || nearest.radiance.IsBlack()) return LightHit{};
-    float tfar = std::isinf(nearest.distance) ? kInfinity : nearest.distance * (1.0f - 1e-4f);
-    if (m_tracer.occluded(origin, dir, 0.0f, tfar, m_counts)) return LightHit{};
-    return nearest;
+void IntegratorServices::TraceIndirect(RixShadingContext const& ctx, int count, int const* indices,
+                                       RtVector3 const* dirs, bool const* shade, RixRNG::SampleCtx const* samples,
+                                       RixLightHit* lightHits, std::function<void(RixShadeBatch&)> const& visit) {
+    MemoryArena::Mark mark = m_arena.mark();
+    HitRecord* hits = m_arena.allocArray<HitRecord>(static_cast<size_t>(std::max(1, count)));
+    for (int k = 0; k < count; ++k) {
+        Vec3 d = glm::normalize(toVec3(dirs[k]));
+        Vec3 from = origin(ctx, indices[k], d);
+        HitRecord hit = m_tracer.intersect(from, d, 0.0f, kInfinity, RayKind::Indirect, m_counts);
+        lightHits[k] = lightAlong(from, d, hit.hit() ? hit.t : kInfinity);
+        // Rays that reach a light first, or that the integrator does not want shaded, end here.
+        if (lightHits[k].hit || !shade[k]) hit.geomID = RTC_INVALID_GEOMETRY_ID;
+        hits[k] = hit;
+    }
+    m_shader.shade(hits, samples, count, m_arena, [&](ShadeGroup& group) {
+        RixShadeBatch batch{group.ctx, group.bxdf, group.rng, group.source};
+        visit(batch);
+    });
+    m_arena.release(mark);
 }
 
 }  // namespace bxdflab

@@ -15,6 +15,7 @@
 #include "accel/RayTracer.h"
 #include "render/BatchShader.h"
 #include "scene/Camera.h"
+#include "scene/lights/HeadLight.h"
 #include "shade/BxdfInstance.h"
 #include "shade/MemoryArena.h"
 #include "shade/PluginSearchPath.h"
@@ -73,7 +74,9 @@ struct Renderer::Impl {
     std::vector<std::unique_ptr<BxdfInstance>> materials;
     std::unique_ptr<RayTracer> tracer;
     std::unique_ptr<Camera> camera;
-    std::unique_ptr<Integrator> integrator;
+    std::unique_ptr<IntegratorPlugin> integratorPlugin;
+    RixIntegrator* integrator = nullptr;
+    std::unique_ptr<Light> headlight;
     std::vector<Light const*> shadingLights;  // what next-event estimation samples
     std::vector<Light const*> cameraLights;   // lights the camera sees directly
     ShadingCounters counters;
@@ -110,10 +113,14 @@ Renderer::Renderer(Scene& scene, RenderSettings settings, Diagnostics& diagnosti
     }
 
     r.camera = std::make_unique<Camera>(scene.camera, scene.xres, scene.yres, scene.pixelAspect);
-    r.integrator = makeIntegrator(scene.integrator, scene, r.camera->position(), diagnostics);
-    r.shadingLights = r.integrator->extraLights();
-    if (r.shadingLights.empty())
+    r.integratorPlugin = r.loader.integrator(scene.integrator.name, scene.integrator.params, scene.integrator.where);
+    r.integrator = &r.integratorPlugin->integrator();
+    if (r.integrator->WantsHeadlight()) {
+        r.headlight = std::make_unique<HeadLight>(r.camera->position());
+        r.shadingLights.push_back(r.headlight.get());
+    } else {
         for (auto const& light : scene.lights) r.shadingLights.push_back(light.get());
+    }
     for (auto const& light : scene.lights)
         if (light->visibility.camera) r.cameraLights.push_back(light.get());
     r.tracer = std::make_unique<RayTracer>(scene);
@@ -121,7 +128,7 @@ Renderer::Renderer(Scene& scene, RenderSettings settings, Diagnostics& diagnosti
 
     // What this render will and will not simulate.
     EffectReport& effects = m_stats.effects;
-    r.integrator->describeEffects(scene, effects);
+    r.integrator->DescribeEffects(static_cast<int>(r.shadingLights.size()), effects);
     bool opaque = true;
     for (auto const& m : r.materials) opaque = opaque && m->hints() == RixBxdfFactory::k_TriviallyOpaque;
     if (opaque)
@@ -131,7 +138,7 @@ Renderer::Renderer(Scene& scene, RenderSettings settings, Diagnostics& diagnosti
                          "surfaces are treated as opaque");
     for (std::string const& dropped : scene.dropped) effects.skip("dropped at load", dropped);
 
-    m_stats.integrator = r.integrator->name();
+    m_stats.integrator = r.integratorPlugin->name();
     m_stats.width = scene.xres;
     m_stats.height = scene.yres;
     m_stats.spp = settings.spp > 0 ? settings.spp : scene.spp;
@@ -225,7 +232,7 @@ void Renderer::Impl::shadeChunk(Worker& w, int count) {
     services.shade(w.hits.data(), w.samples.data(), count, [&](ShadeGroup& group) {
         int n = group.ctx.numPts;
         w.groupRadiance.assign(static_cast<size_t>(n), RtColorRGB(0.0f));
-        integrator->integrate(group.ctx, group.bxdf, group.rng, services, w.groupRadiance.data());
+        integrator->Integrate(group.ctx, group.bxdf, group.rng, services, w.groupRadiance.data());
         for (int j = 0; j < n; ++j) w.radiance[static_cast<size_t>(group.source[j])] += w.groupRadiance[static_cast<size_t>(j)];
     });
     w.arena.reset();

@@ -12,7 +12,7 @@
 
 #include "core/Diagnostics.h"
 #include "film/Film.h"
-#include "integrate/Integrator.h"
+#include "integrate/IntegratorServices.h"
 #include "scene/Scene.h"
 #include "shade/PluginLoader.h"
 

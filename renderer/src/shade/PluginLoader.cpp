@@ -1,8 +1,8 @@
 #include "shade/PluginLoader.h"
 
-#include <dlfcn.h>
-
 #include <filesystem>
+
+#include "shade/RibParameterList.h"
 
 namespace bxdflab {
 namespace {
@@ -24,26 +24,20 @@ std::string describeType(RixSCType type) {
 }  // namespace
 
 BxdfPlugin::BxdfPlugin(std::string name, std::string path, Diagnostics& diagnostics)
-    : m_name(std::move(name)), m_path(std::move(path)), m_messages(diagnostics, m_name), m_context(m_messages) {
+    : m_name(std::move(name)),
+      m_path(std::move(path)),
+      m_messages(diagnostics, m_name),
+      m_context(m_messages),
+      m_library(m_path, "plugin \"" + m_name + "\" (" + m_path + ")") {
     std::string where = "plugin \"" + m_name + "\" (" + m_path + ")";
-    dlerror();
-    m_handle = dlopen(m_path.c_str(), RTLD_NOW | RTLD_LOCAL);
-    if (!m_handle) {
-        const char* why = dlerror();
-        throw RenderError("cannot load " + where + ": " + (why ? why : "unknown dlopen error"));
-    }
-    auto fail = [&](std::string const& message) {
-        dlclose(m_handle);
-        m_handle = nullptr;
-        throw RenderError(where + ": " + message);
-    };
-    auto create = reinterpret_cast<CreateFn>(dlsym(m_handle, "CreateRixBxdfFactory"));
-    m_destroy = reinterpret_cast<DestroyFn>(dlsym(m_handle, "DestroyRixBxdfFactory"));
+    auto fail = [&](std::string const& message) { throw RenderError(where + ": " + message); };
+    auto create = reinterpret_cast<CreateFn>(m_library.symbol("CreateRixBxdfFactory"));
+    m_destroy = reinterpret_cast<DestroyFn>(m_library.symbol("DestroyRixBxdfFactory"));
     if (!create)
         fail("does not export CreateRixBxdfFactory (define it with RIX_BXDFPLUGINCREATE, or extern \"C\" PRMANEXPORT)");
     if (!m_destroy)
         fail("does not export DestroyRixBxdfFactory (define it with RIX_BXDFPLUGINDESTROY, or extern \"C\" PRMANEXPORT)");
-    if (auto version = reinterpret_cast<VersionFn>(dlsym(m_handle, "RixBxdfPluginApiVersion"))) {
+    if (auto version = reinterpret_cast<VersionFn>(m_library.symbol("RixBxdfPluginApiVersion"))) {
         int v = version();
         if (v != RIX_BXDF_API_VERSION)
             fail("was built against Rix API version " + std::to_string(v) + ", this renderer provides version " +
@@ -86,7 +80,6 @@ BxdfPlugin::~BxdfPlugin() {
         m_factory->Finalize(m_context);
         m_destroy(m_factory);
     }
-    if (m_handle) dlclose(m_handle);
 }
 
 int BxdfPlugin::paramId(std::string const& name) const {
@@ -95,23 +88,77 @@ int BxdfPlugin::paramId(std::string const& name) const {
     return -1;
 }
 
-BxdfPlugin& PluginLoader::bxdf(std::string const& name, SourceLocation const& where) {
-    auto found = m_plugins.find(name);
-    if (found != m_plugins.end()) return *found->second;
+std::string PluginLoader::find(std::string const& name, const char* kind, SourceLocation const& where) const {
+    std::string prefix = where.known() ? where.str() + ": " : "";
     if (name.find('/') != std::string::npos)
-        throw RenderError((where.known() ? where.str() + ": " : "") + "plugin names may not contain '/': \"" + name + "\"");
+        throw RenderError(prefix + "plugin names may not contain '/': \"" + name + "\"");
     for (std::string const& folder : m_searchPath) {
         std::filesystem::path candidate = std::filesystem::path(folder) / (name + ".so");
-        if (std::filesystem::is_regular_file(candidate)) {
-            auto plugin = std::make_unique<BxdfPlugin>(name, candidate.string(), m_diagnostics);
-            return *m_plugins.emplace(name, std::move(plugin)).first->second;
-        }
+        if (std::filesystem::is_regular_file(candidate)) return candidate.string();
     }
     std::string searched;
     for (auto const& folder : m_searchPath) searched += "\n    " + folder;
-    throw RenderError((where.known() ? where.str() + ": " : "") + "Bxdf plugin \"" + name + "\" not found: no " + name +
+    throw RenderError(prefix + kind + " plugin \"" + name + "\" not found: no " + name +
                       ".so in any folder of the plugin search path:" + searched +
                       "\n  (add a folder with --plugin-path, $RIX_PLUGIN_PATH or Option \"searchpath\" \"string rixplugin\")");
+}
+
+BxdfPlugin& PluginLoader::bxdf(std::string const& name, SourceLocation const& where) {
+    auto found = m_plugins.find(name);
+    if (found != m_plugins.end()) return *found->second;
+    auto plugin = std::make_unique<BxdfPlugin>(name, find(name, "Bxdf", where), m_diagnostics);
+    return *m_plugins.emplace(name, std::move(plugin)).first->second;
+}
+
+std::unique_ptr<IntegratorPlugin> PluginLoader::integrator(std::string const& name, ParamList const& params,
+                                                           SourceLocation const& where) {
+    return std::make_unique<IntegratorPlugin>(name, find(name, "Integrator", where), params, where, m_diagnostics);
+}
+
+namespace {
+/// Forwards an integrator's messages and keeps its errors, to report a refusal.
+class CapturingMessages final : public RixMessages {
+public:
+    CapturingMessages(Diagnostics& diagnostics, std::string const& name) : m_forward(diagnostics, name) {}
+    std::string errors;
+
+protected:
+    void Report(Severity severity, const char* message) override {
+        if (severity == k_Error) {
+            errors += (errors.empty() ? "" : "; ") + std::string(message);
+            return;
+        }
+        m_forward.Warning("%s", message);
+    }
+
+private:
+    PluginMessages m_forward;
+};
+}  // namespace
+
+IntegratorPlugin::IntegratorPlugin(std::string name, std::string path, ParamList const& params,
+                                   SourceLocation const& where, Diagnostics& diagnostics)
+    : m_name(std::move(name)), m_path(std::move(path)), m_library(m_path, "integrator \"" + m_name + "\" (" + m_path + ")") {
+    std::string what = "integrator \"" + m_name + "\" (" + m_path + ")";
+    auto create = reinterpret_cast<CreateFn>(m_library.symbol("CreateRixIntegrator"));
+    m_destroy = reinterpret_cast<DestroyFn>(m_library.symbol("DestroyRixIntegrator"));
+    if (!create || !m_destroy)
+        throw RenderError(what + ": does not export CreateRixIntegrator and DestroyRixIntegrator "
+                                 "(define them with RIX_INTEGRATORCREATE and RIX_INTEGRATORDESTROY)");
+    using VersionFn = int (*)();
+    if (auto version = reinterpret_cast<VersionFn>(m_library.symbol("RixIntegratorPluginApiVersion")))
+        if (version() != RIX_INTEGRATOR_API_VERSION)
+            throw RenderError(what + ": built against another version of RixIntegrator.h; rebuild it");
+    CapturingMessages messages(diagnostics, m_name);
+    RibParameterList list(params);
+    m_integrator = create(&list, &messages);
+    if (!m_integrator)
+        throw RibError(where, m_name + ": " + (messages.errors.empty() ? "the integrator refused its parameters" : messages.errors));
+    params.warnUnused(diagnostics, "Integrator \"" + m_name + "\"");
+}
+
+IntegratorPlugin::~IntegratorPlugin() {
+    if (m_integrator) m_destroy(m_integrator);
 }
 
 }  // namespace bxdflab

@@ -7,9 +7,12 @@
 #include <vector>
 
 #include "RixBxdf.h"
+#include "RixIntegrator.h"
 #include "core/Diagnostics.h"
 #include "core/Error.h"
+#include "parse/ParamList.h"
 #include "shade/PluginMessages.h"
+#include "shade/SharedObject.h"
 
 namespace bxdflab {
 
@@ -39,10 +42,33 @@ private:
     std::string m_name, m_path;
     PluginMessages m_messages;
     PluginContext m_context;
-    void* m_handle = nullptr;
+    SharedObject m_library;
     RixBxdfFactory* m_factory = nullptr;
     DestroyFn m_destroy = nullptr;
     std::vector<RixSCParamInfo> m_table;
+};
+
+/// One integrator plugin, created from an Integrator statement's parameters.
+class IntegratorPlugin {
+public:
+    /// Throws a RibError located at `where` when the plugin refuses the parameters.
+    IntegratorPlugin(std::string name, std::string path, ParamList const& params, SourceLocation const& where,
+                     Diagnostics& diagnostics);
+    ~IntegratorPlugin();
+    IntegratorPlugin(IntegratorPlugin const&) = delete;
+    IntegratorPlugin& operator=(IntegratorPlugin const&) = delete;
+
+    std::string const& name() const { return m_name; }
+    std::string const& path() const { return m_path; }
+    RixIntegrator& integrator() const { return *m_integrator; }
+
+private:
+    using CreateFn = RixIntegrator* (*)(RixParameterList const*, RixMessages*);
+    using DestroyFn = void (*)(RixIntegrator*);
+    std::string m_name, m_path;
+    SharedObject m_library;
+    RixIntegrator* m_integrator = nullptr;
+    DestroyFn m_destroy = nullptr;
 };
 
 class PluginLoader {
@@ -53,9 +79,14 @@ public:
     /// The plugin `name` (loading it on first use). Throws a RenderError that
     /// names the plugin and every folder searched when it cannot be found.
     BxdfPlugin& bxdf(std::string const& name, SourceLocation const& where = {});
+    /// Loads the integrator plugin `name` and creates it with `params`.
+    std::unique_ptr<IntegratorPlugin> integrator(std::string const& name, ParamList const& params,
+                                                 SourceLocation const& where);
     std::vector<std::string> const& searchPath() const { return m_searchPath; }
 
 private:
+    /// The file name.so in the first folder that has it; throws naming every folder tried.
+    std::string find(std::string const& name, const char* kind, SourceLocation const& where) const;
     std::vector<std::string> m_searchPath;
     Diagnostics& m_diagnostics;
     std::map<std::string, std::unique_ptr<BxdfPlugin>> m_plugins;

@@ -42,7 +42,7 @@ std::vector<std::string> builtinPluginFolders() {
     // Relative to the executable (build/bin/../plugins/...), so a moved build still works.
     std::error_code error;
     fs::path exe = fs::read_symlink("/proc/self/exe", error);
-    for (const char* collection : {"solutions", "stock"}) {
+    for (const char* collection : {"solutions", "integrators", "stock"}) {
         if (!error) folders.push_back((exe.parent_path().parent_path() / "plugins" / collection).string());
 #ifdef BXDFLAB_PLUGIN_ROOT
         std::string configured = std::string(BXDFLAB_PLUGIN_ROOT) + "/" + collection;

@@ -4,7 +4,7 @@
 //   3. Option "searchpath" "string rixplugin" in the RIB
 //   4. /standardrixpluginpath in rixrender.ini, next to the scene, then in
 //      $XDG_CONFIG_HOME/bxdflab/ (default ~/.config/bxdflab/)
-//   5. the built-in folders: the solutions and the stock plugins of this build.
+//   5. the built-in folders: the solutions, the integrators and the stock plugins of this build.
 #pragma once
 
 #include <string>

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "RixBxdf.h"
+#include "RixIntegrator.h"
 
 namespace bxdflab {
 

@@ -1,0 +1,107 @@
+// RixIntegrator.h — the integrator plugin interface.
+//
+// An integrator turns Bxdfs and lights into pixel values. Like a Bxdf it is a
+// shared object the renderer loads by name (`Integrator "PxrDirectLighting" ...`
+// loads PxrDirectLighting.so from the plugin search path). The renderer hands
+// it one batch of shade points at a time, all on the same Bxdf, with the Bxdf
+// already built (BeginScatter); Integrate adds to radiance[i] the light leaving
+// point i toward the viewer. Everything else an integrator needs (lights,
+// shadow rays, tracing further bounces) it asks of the RixIntegratorContext.
+#pragma once
+
+#include <functional>
+
+#include "RixBxdf.h"
+#include "RixShadingUtils.h"
+
+/// A direction toward a light, as the light itself samples it.
+struct RixLightSample {
+    RtVector3 wi;              ///< unit direction from the shade point toward the light
+    float distance = 0.0f;     ///< to the sampled point on the light (infinite for distant/dome lights)
+    RtColorRGB radiance;       ///< arriving along -wi (black when the light faces away)
+    float pdf = 0.0f;          ///< per unit solid angle; 1 for delta lights
+    bool delta = false;        ///< no Bxdf sample can ever find this direction
+};
+
+/// The light a ray reaches (before any surface), if any.
+struct RixLightHit {
+    bool hit = false;
+    float distance = 0.0f;
+    RtColorRGB radiance;
+    float pdf = 0.0f;          ///< the pdf that light's own sampling gives this direction
+};
+
+/// A batch the renderer shaded on the integrator's behalf (a further bounce):
+/// point j of ctx continues ray source[j] of the TraceIndirect call.
+struct RixShadeBatch {
+    RixShadingContext const& ctx;
+    RixBxdf& bxdf;
+    RixRNG& rng;
+    int const* source;
+};
+
+/// What the renderer offers an integrator while it shades a batch.
+class RixIntegratorContext {
+public:
+    virtual ~RixIntegratorContext() = default;
+
+    /// The lights next-event estimation should sample.
+    virtual int GetNumLights() const = 0;
+    virtual RixLightSample SampleLight(int light, RtPoint3 const& P, RtFloat2 const& xi) const = 0;
+
+    /// A shadow ray: is the way from point i of ctx toward dir, up to distance, clear?
+    virtual bool Unoccluded(RixShadingContext const& ctx, int i, RtVector3 const& dir, float distance) = 0;
+    /// A shadow ray toward whichever light lies along dir from point i (hit = false if none, or blocked).
+    virtual RixLightHit VisibleLight(RixShadingContext const& ctx, int i, RtVector3 const& dir) = 0;
+
+    /// Traces count rays leaving points indices[k] of ctx in directions dirs[k]. For every ray,
+    /// lightHits[k] tells whether it reaches a light before any surface. Rays that hit a surface
+    /// first and have shade[k] set are shaded, as batches grouped by Bxdf, and each batch is handed
+    /// to visit; samples[k] is where ray k's point is in its random sequence (it carries on there).
+    virtual void TraceIndirect(RixShadingContext const& ctx, int count, int const* indices, RtVector3 const* dirs,
+                               bool const* shade, RixRNG::SampleCtx const* samples, RixLightHit* lightHits,
+                               std::function<void(RixShadeBatch&)> const& visit) = 0;
+
+    /// Reports a NaN or infinite contribution (a Bxdf bug): counted in the render stats, then dropped.
+    virtual void CountNonFinite() = 0;
+};
+
+/// Which effects a render simulates and which it skips, for the stats.
+class RixEffects {
+public:
+    virtual ~RixEffects() = default;
+    virtual void Simulate(const char* effect) = 0;
+    virtual void Skip(const char* effect, const char* reason) = 0;
+};
+
+class RixIntegrator {
+public:
+    virtual ~RixIntegrator() = default;
+    /// True when the integrator lights the scene itself with a light at the camera
+    /// (PxrDefault): the scene's lights are then not sampled.
+    virtual bool WantsHeadlight() const { return false; }
+    /// States what the integrator will simulate given the number of lights it will sample.
+    virtual void DescribeEffects(int numLights, RixEffects& effects) const = 0;
+    /// Adds to radiance[i] the light leaving point i of the batch toward the viewer.
+    virtual void Integrate(RixShadingContext const& ctx, RixBxdf& bxdf, RixRNG& rng, RixIntegratorContext& ictx,
+                           RtColorRGB* radiance) = 0;
+};
+
+/// Veach's power heuristic (beta = 2): the MIS weight of a sample from strategy
+/// f (nf samples, density pdfF) against strategy g (ng samples, density pdfG).
+PRMAN_INLINE float RixPowerHeuristic(float nf, float pdfF, float ng, float pdfG) {
+    float f = nf * pdfF, g = ng * pdfG;
+    if (std::isinf(f * f)) return 1.0f;
+    float denominator = f * f + g * g;
+    return denominator > 0.0f ? (f * f) / denominator : 0.0f;
+}
+
+/// Version of this API; the renderer refuses integrators built against another one.
+#define RIX_INTEGRATOR_API_VERSION 1
+extern "C" PRMANEXPORT __attribute__((weak)) int RixIntegratorPluginApiVersion() { return RIX_INTEGRATOR_API_VERSION; }
+
+/// Create an integrator from the RIB's parameters. Return null (after saying
+/// why with messages->Error) when the parameters are unusable.
+#define RIX_INTEGRATORCREATE \
+    extern "C" PRMANEXPORT RixIntegrator* CreateRixIntegrator(RixParameterList const* params, RixMessages* messages)
+#define RIX_INTEGRATORDESTROY extern "C" PRMANEXPORT void DestroyRixIntegrator(RixIntegrator* integrator)

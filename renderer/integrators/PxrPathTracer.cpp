@@ -1,0 +1,193 @@
+// PxrPathTracer: unidirectional path tracing. At every surface a path
+// reaches it (1) adds the surface's emission, (2) samples the lights
+// directly (next-event estimation), and (3) samples the Bxdf: a sampled
+// direction that reaches a light adds that light (weighted against the
+// light samples by MIS), and otherwise the path continues to the surface
+// it hits. Continuing paths are traced and shaded batch by batch, grouped
+// by Bxdf like camera hits.
+//
+// Parameters
+//   int maxPathLength    [10]  surfaces a path may visit (1 = direct lighting only)
+//   int numLightSamples  [1]   light samples per light at every vertex
+//   int numBxdfSamples   [1]   Bxdf samples at every vertex (the first continues the path)
+//   int allowCaustics    [0]   0: once a path has bounced off a diffuse lobe, a specular
+//                              bounce does not continue it (caustics are noisy for a path tracer)
+// Russian roulette ends paths from the fourth vertex on with probability
+// 1 - min(0.95, the path's largest throughput channel), and compensates the survivors.
+#include <cmath>
+#include <string>
+
+#include "common/BxdfScratch.h"
+#include "common/DirectLighting.h"
+#include "common/Params.h"
+
+using namespace bxdflab;
+
+namespace {
+
+class PathTracer : public RixIntegrator {
+public:
+    PathTracer(int maxPathLength, int numLightSamples, int numBxdfSamples, bool allowCaustics)
+        : m_maxPathLength(maxPathLength),
+          m_numLightSamples(numLightSamples),
+          m_numBxdfSamples(numBxdfSamples),
+          m_allowCaustics(allowCaustics) {}
+
+    void DescribeEffects(int numLights, RixEffects& effects) const override {
+        effects.Simulate("camera rays");
+        effects.Simulate("emission (EmitLocal) at every path vertex");
+        if (numLights == 0) {
+            effects.Skip("light sampling and shadow rays", "the scene has no lights");
+        } else if (m_numLightSamples > 0) {
+            effects.Simulate(("light sampling (" + std::to_string(m_numLightSamples) + " per light per vertex)").c_str());
+            effects.Simulate("shadow rays");
+        } else {
+            effects.Skip("light sampling", "numLightSamples is 0");
+        }
+        effects.Simulate(("bxdf sampling (" + std::to_string(m_numBxdfSamples) + " per vertex, MIS)").c_str());
+        if (m_maxPathLength > 1) {
+            effects.Simulate(("indirect rays (paths of up to " + std::to_string(m_maxPathLength) + " vertices)").c_str());
+            effects.Simulate("Russian roulette from the fourth vertex");
+        } else {
+            effects.Skip("indirect rays", "maxPathLength is 1");
+        }
+        if (m_allowCaustics)
+            effects.Simulate("caustics");
+        else
+            effects.Skip("caustics", "allowCaustics is 0");
+    }
+
+    void Integrate(RixShadingContext const& ctx, RixBxdf& bxdf, RixRNG& rng, RixIntegratorContext& ictx,
+                   RtColorRGB* radiance) override {
+        int const n = ctx.numPts;
+        RixShadingContext::Allocator pool(&ctx);
+        RtColorRGB* throughput = pool.AllocFor<RtColorRGB>(n);
+        bool* diffusePath = pool.AllocFor<bool>(n);
+        for (int i = 0; i < n; ++i) {
+            throughput[i] = RtColorRGB(1.0f);
+            diffusePath[i] = false;
+        }
+        vertex(ctx, bxdf, rng, ictx, throughput, diffusePath, radiance, 1);
+    }
+
+private:
+    /// Shades one batch of path vertices; throughput[i] is the path's weight
+    /// so far, diffusePath[i] whether it has bounced off a diffuse lobe.
+    void vertex(RixShadingContext const& ctx, RixBxdf& bxdf, RixRNG& rng, RixIntegratorContext& ictx,
+                RtColorRGB const* throughput, bool const* diffusePath, RtColorRGB* radiance, int depth) {
+        int const n = ctx.numPts;
+        RixShadingContext::Allocator pool(&ctx);
+
+        // 1. Emission. Emissive surfaces are not sampled as lights, so a path
+        //    that reaches one simply adds what it emits.
+        RtColorRGB* emitted = pool.AllocFor<RtColorRGB>(n);
+        if (bxdf.EmitLocal(emitted))
+            for (int i = 0; i < n; ++i) accumulate(ictx, radiance[i], throughput[i] * emitted[i]);
+        if (!bxdf.GetAllLobeTraits().HasAny()) return;
+
+        // 2. Next-event estimation.
+        addLightSamples(ctx, bxdf, rng, ictx, m_numLightSamples, m_numBxdfSamples, throughput, radiance);
+
+        // 3. Bxdf samples: light they reach directly, and where the path goes next.
+        float const nL = static_cast<float>(ictx.GetNumLights() == 0 ? 0 : m_numLightSamples);
+        float const nB = static_cast<float>(m_numBxdfSamples);
+        bool const continues = depth < m_maxPathLength;
+        BxdfScratch q(ctx);
+        // The continuation rays (the first Bxdf sample of each point).
+        int* index = pool.AllocFor<int>(n);
+        RtVector3* dir = pool.AllocFor<RtVector3>(n);
+        bool* shade = pool.AllocFor<bool>(n);
+        RixRNG::SampleCtx* samples = pool.AllocFor<RixRNG::SampleCtx>(n);
+        RtColorRGB* weight = pool.AllocFor<RtColorRGB>(n);      // f / FPdf
+        RtColorRGB* next = pool.AllocFor<RtColorRGB>(n);        // throughput after the bounce
+        bool* nextDiffuse = pool.AllocFor<bool>(n);
+        float* misWeightPdf = pool.AllocFor<float>(n);          // FPdf, for the MIS weight of a light hit
+        bool* discrete = pool.AllocFor<bool>(n);
+        int rays = 0;
+
+        for (int s = 0; s < m_numBxdfSamples; ++s) {
+            q.generate(bxdf, rng);
+            for (int i = 0; i < n; ++i) {
+                if (!q.lobeSampled[i].GetValid() || !(q.FPdf[i] > 0.0f)) continue;
+                RtVector3 L = q.Ln[i];
+                if (!std::isfinite(L.x) || !std::isfinite(L.y) || !std::isfinite(L.z) || L.IsZero()) {
+                    ictx.CountNonFinite();
+                    continue;
+                }
+                L.Normalize();
+                RtColorRGB f = q.W.SumAtPoint(i);
+                if (f.IsBlack()) continue;
+                if (!m_allowCaustics && diffusePath[i] && q.lobeSampled[i].GetSpecular()) continue;  // a caustic
+                if (s != 0 || !continues) {
+                    // This sample only looks for light: a shadow ray toward the light it points at.
+                    RixLightHit light = ictx.VisibleLight(ctx, i, L);
+                    if (!light.hit) continue;
+                    float w = q.lobeSampled[i].GetDiscrete() ? 1.0f : RixPowerHeuristic(nB, q.FPdf[i], nL, light.pdf);
+                    accumulate(ictx, radiance[i], throughput[i] * f * light.radiance * (w / (nB * q.FPdf[i])));
+                    continue;
+                }
+                RtColorRGB carried = throughput[i] * f / q.FPdf[i];
+                bool survives = true;
+                if (depth >= 3) {
+                    // Russian roulette: end weak paths early, boost the survivors.
+                    float p = RixMin(0.95f, carried.ChannelMax());
+                    survives = rng.DrawSample1D(i) < p;
+                    if (survives) carried /= p;
+                }
+                index[rays] = i;
+                dir[rays] = L;
+                shade[rays] = survives && std::isfinite(carried.r) && std::isfinite(carried.g) && std::isfinite(carried.b);
+                samples[rays] = rng.sampleCtxArray[i];
+                weight[rays] = f / q.FPdf[i];
+                next[rays] = carried;
+                nextDiffuse[rays] = diffusePath[i] || q.lobeSampled[i].GetDiffuse();
+                misWeightPdf[rays] = q.FPdf[i];
+                discrete[rays] = q.lobeSampled[i].GetDiscrete();
+                ++rays;
+            }
+        }
+        if (rays == 0) return;
+
+        // 4. Trace the continuations: those reaching a light add it (MIS-weighted);
+        //    those reaching a surface are shaded there, batch by batch.
+        RixLightHit* lightHits = pool.AllocFor<RixLightHit>(rays);
+        ictx.TraceIndirect(ctx, rays, index, dir, shade, samples, lightHits, [&](RixShadeBatch& batch) {
+            int m = batch.ctx.numPts;
+            RixShadingContext::Allocator childPool(&batch.ctx);
+            RtColorRGB* childThroughput = childPool.AllocFor<RtColorRGB>(m);
+            bool* childDiffuse = childPool.AllocFor<bool>(m);
+            RtColorRGB* childRadiance = childPool.AllocFor<RtColorRGB>(m);
+            for (int j = 0; j < m; ++j) {
+                childThroughput[j] = next[batch.source[j]];
+                childDiffuse[j] = nextDiffuse[batch.source[j]];
+                childRadiance[j] = RtColorRGB(0.0f);
+            }
+            vertex(batch.ctx, batch.bxdf, batch.rng, ictx, childThroughput, childDiffuse, childRadiance, depth + 1);
+            for (int j = 0; j < m; ++j) radiance[index[batch.source[j]]] += childRadiance[j];
+        });
+        for (int k = 0; k < rays; ++k) {
+            if (!lightHits[k].hit) continue;
+            float w = discrete[k] ? 1.0f : RixPowerHeuristic(nB, misWeightPdf[k], nL, lightHits[k].pdf);
+            accumulate(ictx, radiance[index[k]], throughput[index[k]] * weight[k] * lightHits[k].radiance * (w / nB));
+        }
+    }
+
+    int m_maxPathLength;
+    int m_numLightSamples;
+    int m_numBxdfSamples;
+    bool m_allowCaustics;
+};
+
+}  // namespace
+
+RIX_INTEGRATORCREATE {
+    int maxPathLength, lightSamples, bxdfSamples, caustics;
+    if (!ReadInt(params, messages, "maxPathLength", 10, 1, 1000, maxPathLength) ||
+        !ReadInt(params, messages, "numLightSamples", 1, 0, 4096, lightSamples) ||
+        !ReadInt(params, messages, "numBxdfSamples", 1, 1, 4096, bxdfSamples) ||
+        !ReadInt(params, messages, "allowCaustics", 0, 0, 1, caustics))
+        return nullptr;
+    return new PathTracer(maxPathLength, lightSamples, bxdfSamples, caustics != 0);
+}
+
+RIX_INTEGRATORDESTROY { delete integrator; }

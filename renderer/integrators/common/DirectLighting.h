@@ -1,0 +1,38 @@
+// Direct lighting, shared by the PxrDirectLighting and PxrDefault plugins
+// (and the light sampling by PxrPathTracer). Read DirectLighting.cpp as the
+// course's example integrator.
+#pragma once
+
+#include "RixIntegrator.h"
+
+namespace bxdflab {
+
+/// Next-event estimation for a batch: adds to radiance[i] the light arriving
+/// straight from the lights and reflected toward the viewer, times
+/// throughput[i] (or 1 when throughput is null), from numLightSamples samples
+/// per light, MIS-weighted against numBxdfSamples Bxdf samples.
+void addLightSamples(RixShadingContext const& ctx, RixBxdf& bxdf, RixRNG& rng, RixIntegratorContext& ictx,
+                     int numLightSamples, int numBxdfSamples, RtColorRGB const* throughput, RtColorRGB* radiance);
+
+/// Adds a contribution, or reports it when it is not finite (a Bxdf bug).
+void accumulate(RixIntegratorContext& ictx, RtColorRGB& radiance, RtColorRGB const& contribution);
+
+class DirectLighting : public RixIntegrator {
+public:
+    /// With headlight set, the lights are PxrDefault's light at the camera (a
+    /// point light no Bxdf sample can hit), so only light samples are taken.
+    DirectLighting(int numLightSamples, int numBxdfSamples, bool headlight)
+        : m_numLightSamples(numLightSamples), m_numBxdfSamples(headlight ? 0 : numBxdfSamples), m_headlight(headlight) {}
+
+    bool WantsHeadlight() const override { return m_headlight; }
+    void DescribeEffects(int numLights, RixEffects& effects) const override;
+    void Integrate(RixShadingContext const& ctx, RixBxdf& bxdf, RixRNG& rng, RixIntegratorContext& ictx,
+                   RtColorRGB* radiance) override;
+
+private:
+    int m_numLightSamples;
+    int m_numBxdfSamples;
+    bool m_headlight;
+};
+
+}  // namespace bxdflab

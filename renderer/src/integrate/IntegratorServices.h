@@ -1,0 +1,63 @@
+// The renderer's side of the integrator plugin API (RixIntegrator.h): what
+// an integrator can ask while it shades a batch, and the record of which
+// effects a render simulates. One IntegratorServices per worker and chunk.
+#pragma once
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "RixIntegrator.h"
+#include "accel/RayTracer.h"
+#include "render/BatchShader.h"
+#include "scene/Scene.h"
+
+namespace bxdflab {
+
+/// Which effects a render simulates and which it skips (and why).
+struct EffectReport : RixEffects {
+    std::vector<std::string> simulated;
+    std::vector<std::pair<std::string, std::string>> skipped;  ///< effect, reason
+    void Simulate(const char* effect) override { simulated.emplace_back(effect); }
+    void Skip(const char* effect, const char* reason) override { skipped.emplace_back(effect, reason); }
+    void simulate(std::string const& effect) { simulated.push_back(effect); }
+    void skip(std::string const& effect, std::string const& reason) { skipped.emplace_back(effect, reason); }
+};
+
+class IntegratorServices final : public RixIntegratorContext {
+public:
+    IntegratorServices(RayTracer const& tracer, std::vector<Light const*> lights, BatchShader const& shader,
+                       MemoryArena& arena)
+        : m_tracer(tracer), m_lights(std::move(lights)), m_shader(shader), m_arena(arena) {}
+
+    int GetNumLights() const override { return static_cast<int>(m_lights.size()); }
+    RixLightSample SampleLight(int light, RtPoint3 const& P, RtFloat2 const& xi) const override;
+    bool Unoccluded(RixShadingContext const& ctx, int i, RtVector3 const& dir, float distance) override;
+    RixLightHit VisibleLight(RixShadingContext const& ctx, int i, RtVector3 const& dir) override;
+    void TraceIndirect(RixShadingContext const& ctx, int count, int const* indices, RtVector3 const* dirs,
+                       bool const* shade, RixRNG::SampleCtx const* samples, RixLightHit* lightHits,
+                       std::function<void(RixShadeBatch&)> const& visit) override;
+    void CountNonFinite() override { ++m_nonFinite; }
+
+    /// Shades hits as batches grouped by Bxdf (camera hits use this too).
+    void shade(HitRecord const* hits, RixRNG::SampleCtx const* samples, int count, BatchShader::Visitor const& visit) {
+        m_shader.shade(hits, samples, count, m_arena, visit);
+    }
+    RayCounts& rayCounts() { return m_counts; }
+    uint64_t takeNonFinite() { return std::exchange(m_nonFinite, 0); }
+
+private:
+    /// Where a ray from point i of ctx toward dir starts (pushed off the surface).
+    Vec3 origin(RixShadingContext const& ctx, int i, Vec3 const& dir) const;
+    /// The nearest light along a ray, closer than maxDistance (not tested for occlusion).
+    RixLightHit lightAlong(Vec3 const& origin, Vec3 const& dir, float maxDistance) const;
+
+    RayTracer const& m_tracer;
+    std::vector<Light const*> m_lights;
+    BatchShader const& m_shader;
+    MemoryArena& m_arena;
+    RayCounts m_counts;
+    uint64_t m_nonFinite = 0;
+};
+
+}  // namespace bxdflab
