@@ -42,6 +42,7 @@ struct Model {
 const std::vector<Model> kModels = {
     {"diffuse", "\"color diffuseColor\" [1 1 1]", true, true, false},
     {"buggydiffuse", "\"color diffuseColor\" [1 1 1]", true, true, false},
+    {"diffuse", "\"color diffuseColor\" [1 1 1] \"int samplingMode\" [1]", true, true, false},
     {"specular", "\"float gloss\" [30]", true, true, false},
     {"specular", "\"float gloss\" [30] \"int samplingMode\" [1]", true, true, true},
     {"plastic", "\"color diffuseColor\" [0.6 0.6 0.6] \"color specularColor\" [0.4 0.4 0.4] \"float gloss\" [40]", true,

@@ -5,8 +5,8 @@
 RixBXLobeSampled g_diffuseLobe;
 RixBXLobeTraits g_diffuseTraits;
 
-Diffuse::Diffuse(RixShadingContext const* sc, RixBxdfFactory* factory, RtColorRGB const* albedo)
-    : RixBxdf(sc, factory), m_albedo(albedo) {
+Diffuse::Diffuse(RixShadingContext const* sc, RixBxdfFactory* factory, RtColorRGB const* albedo, int samplingMode)
+    : RixBxdf(sc, factory), m_albedo(albedo), m_samplingMode(samplingMode) {
     // Builtins are arrays with one entry per shade point.
     sc->GetBuiltinVar(RixShadingContext::k_Nn, &m_Nn);
     sc->GetBuiltinVar(RixShadingContext::k_Ngn, &m_Ngn);
@@ -25,9 +25,13 @@ bool Diffuse::evaluate(int i, RtVector3 const& Ln, RtColorRGB& weight, float& fp
         fpdf = rpdf = 0.0f;
         return false;
     }
-    fpdf = NdL * F_INVPI;                  // cosine sampling's pdf for L
-    rpdf = RixMax(NdV, 0.0f) * F_INVPI;    // ...and for V, had we sampled from L
-    weight = m_albedo[i] * fpdf;           // W = (rho / pi) * cos(theta_L)
+    if (m_samplingMode == 1) {
+        fpdf = rpdf = F_INVTWOPI;          // uniform sampling: the same for every direction
+    } else {
+        fpdf = NdL * F_INVPI;              // cosine sampling's pdf for L
+        rpdf = RixMax(NdV, 0.0f) * F_INVPI;  // ...and for V, had we sampled from L
+    }
+    weight = m_albedo[i] * (NdL * F_INVPI);  // W = (rho / pi) * cos(theta_L)
     return true;
 }
 
@@ -49,7 +53,10 @@ void Diffuse::GenerateSample(RixBXTransportTrait, RixBXLobeTraits const* lobesWa
 
         RtNormal3 Nf = RixGetForwardFacingNormal(m_Vn[i], m_Nn[i]);
         float NdL;
-        RixCosDirectionalDistribution(xi[i], Nf, Ln[i], NdL);
+        if (m_samplingMode == 1)
+            RixUniformDirectionalDistribution(xi[i], Nf, Ln[i], NdL);
+        else
+            RixCosDirectionalDistribution(xi[i], Nf, Ln[i], NdL);
         if (!evaluate(i, Ln[i], weights[i], FPdf[i], RPdf[i])) continue;  // below the geometric surface
         lobeSampled[i] = g_diffuseLobe;
         lobeSampled[i].SetValid(true);

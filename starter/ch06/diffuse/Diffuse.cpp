@@ -6,8 +6,8 @@
 RixBXLobeSampled g_diffuseLobe;
 RixBXLobeTraits g_diffuseTraits;
 
-Diffuse::Diffuse(RixShadingContext const* sc, RixBxdfFactory* factory, RtColorRGB const* albedo)
-    : RixBxdf(sc, factory), m_albedo(albedo) {
+Diffuse::Diffuse(RixShadingContext const* sc, RixBxdfFactory* factory, RtColorRGB const* albedo, int samplingMode)
+    : RixBxdf(sc, factory), m_albedo(albedo), m_samplingMode(samplingMode) {
     // Builtins are arrays with one entry per shade point.
     sc->GetBuiltinVar(RixShadingContext::k_Nn, &m_Nn);
     sc->GetBuiltinVar(RixShadingContext::k_Ngn, &m_Ngn);

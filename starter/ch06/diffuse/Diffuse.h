@@ -10,6 +10,9 @@
 //
 // Parameters
 //   color diffuseColor   [0.8 0.8 0.8]   albedo: the fraction of light reflected
+//   int   samplingMode   [0]             0: cosine-weighted (the best choice);
+//                                        1: uniform over the hemisphere, pdf 1/(2 pi),
+//                                        to compare in the chapter 4 study
 //
 // RIB
 //   Bxdf "diffuse" "white" "color diffuseColor" [1 1 1]
@@ -26,7 +29,7 @@ extern RixBXLobeTraits g_diffuseTraits;
 class Diffuse : public RixBxdf {
 public:
     /// `albedo` holds one colour per shade point.
-    Diffuse(RixShadingContext const* sc, RixBxdfFactory* factory, RtColorRGB const* albedo);
+    Diffuse(RixShadingContext const* sc, RixBxdfFactory* factory, RtColorRGB const* albedo, int samplingMode = 0);
 
     RixBXEvaluateDomain GetEvaluateDomain() override { return k_RixBXReflect; }
     void GetAggregateLobeTraits(RixBXLobeTraits* lobes) override { *lobes = g_diffuseTraits; }
@@ -47,6 +50,7 @@ private:
     bool evaluate(int i, RtVector3 const& Ln, RtColorRGB& weight, float& fpdf, float& rpdf) const;
 
     RtColorRGB const* m_albedo;
+    int m_samplingMode;
     RtNormal3 const* m_Nn;   // shading normals
     RtNormal3 const* m_Ngn;  // geometric normals
     RtVector3 const* m_Vn;   // directions toward the viewer

@@ -15,6 +15,7 @@ void DiffuseFactory::Finalize(RixContext& ctx) { PIXAR_ARGUSED(ctx); }
 RixSCParamInfo const* DiffuseFactory::GetParamTable() {
     static RixSCParamInfo s_ptable[] = {
         RixSCParamInfo(RtUString("diffuseColor"), k_RixSCColor, k_RixSCScatterInput),
+        RixSCParamInfo(RtUString("samplingMode"), k_RixSCInteger, k_RixSCScatterInput),
         RixSCParamInfo()  // end of table
     };
     return s_ptable;
@@ -37,11 +38,13 @@ RixBxdf* DiffuseFactory::BeginScatter(RixShadingContext const* sCtx, RixBXLobeTr
     PIXAR_ARGUSED(instanceData);
 
     RtColorRGB const* diffuseColor;
+    int const* samplingMode;
     sCtx->EvalParam(k_diffuseColor, -1, &diffuseColor, &m_defaultDiffuseColor, true);
+    sCtx->EvalParam(k_samplingMode, -1, &samplingMode, &m_defaultSamplingMode, false);
 
     RixShadingContext::Allocator pool(sCtx);
     void* mem = pool.AllocForBxdf<Diffuse>(1);
-    return new (mem) Diffuse(sCtx, this, diffuseColor);
+    return new (mem) Diffuse(sCtx, this, diffuseColor, *samplingMode);
 }
 
 void DiffuseFactory::EndScatter(RixBxdf* bxdf) { PIXAR_ARGUSED(bxdf); }

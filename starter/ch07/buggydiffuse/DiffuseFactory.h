@@ -16,6 +16,7 @@ public:
     void EndScatter(RixBxdf* bxdf) override;
 
 private:
-    enum ParamId { k_diffuseColor = 0, k_numParams };
+    enum ParamId { k_diffuseColor = 0, k_samplingMode, k_numParams };
     RtColorRGB m_defaultDiffuseColor{0.8f, 0.8f, 0.8f};
+    int m_defaultSamplingMode = 0;
 };
