@@ -8,7 +8,7 @@ cd "$(dirname "$0")/.."
 packages=(
   g++ cmake ninja-build
   libembree-dev libopenimageio-dev openimageio-tools libglm-dev libtbb-dev
-  catch2 libcli11-dev nlohmann-json3-dev
+  catch2 libcli11-dev nlohmann-json3-dev python3-matplotlib
 )
 
 missing=()

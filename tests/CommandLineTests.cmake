@@ -74,3 +74,14 @@ add_test(NAME tools.rixwarp_finds_the_planted_bug
 add_test(NAME tools.rixlobe COMMAND rixlobe ward --params "\"float uRoughness\" [0.3] \"float vRoughness\" [0.1]"
          --theta 40 --polar lobe-polar.png --sphere lobe-sphere.png WORKING_DIRECTORY ${CLI_OUT})
 set_tests_properties(tools.rixlobe PROPERTIES PASS_REGULAR_EXPRESSION "polar slice: largest W = [0-9.]+.*spherical lobe")
+
+# The convergence tool on a tiny study: CSV, table and plots.
+add_test(NAME tools.rixconverge
+         COMMAND rixconverge ${PROJECT_SOURCE_DIR}/scenes/ch04/estimators.rib --res 40x30 --spp 1,2,4 --repeats 1
+                 --reference-spp 16 --out converge-test
+                 --variant "cosine=Bxdf \"diffuse\" \"white\" \"int samplingMode\" [0]"
+                 --variant "uniform=Bxdf \"diffuse\" \"white\" \"int samplingMode\" [1]"
+         WORKING_DIRECTORY ${CLI_OUT})
+set_tests_properties(tools.rixconverge PROPERTIES
+  PASS_REGULAR_EXPRESSION "cosine: slope -?[0-9.]+.*uniform: slope -?[0-9.]+.*wrote converge-test/convergence.csv"
+  FAIL_REGULAR_EXPRESSION "plotting failed")

@@ -10,6 +10,7 @@
 
 #include <atomic>
 #include <memory>
+#include <vector>
 
 #include "core/Math.h"
 #include "scene/Scene.h"
@@ -51,11 +52,24 @@ public:
 
     RayCounters& counters() const { return m_counters; }
 
+    /// A traced ray, for the benchmark that replays a render's rays through raw Embree.
+    struct RecordedRay {
+        Vec3 org, dir;
+        float tnear, tfar;
+        RayKind kind;
+        bool occlusion;
+    };
+    /// Records every ray traced from now on (single-threaded renders only); null stops.
+    void record(std::vector<RecordedRay>* log) { m_log = log; }
+    /// Traces recorded rays with Embree alone; returns how many hit something.
+    size_t replay(std::vector<RecordedRay> const& rays) const;
+
 private:
     RTCScene sceneFor(RayKind kind) const;
     RTCDevice m_device = nullptr;
     RTCScene m_camera = nullptr, m_indirect = nullptr, m_shadow = nullptr;
     mutable RayCounters m_counters;
+    std::vector<RecordedRay>* m_log = nullptr;
 };
 
 /// The origin for a ray leaving surface point P (with error bound pError and

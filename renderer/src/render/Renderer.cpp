@@ -240,6 +240,8 @@ void Renderer::Impl::shadeChunk(Worker& w, int count) {
     nonFinite.fetch_add(services.takeNonFinite(), std::memory_order_relaxed);
 }
 
+RayTracer& Renderer::tracer() { return *m_impl->tracer; }
+
 Film Renderer::render() {
     Impl& r = *m_impl;
     auto start = Clock::now();

@@ -12,6 +12,7 @@
 
 #include "core/Diagnostics.h"
 #include "film/Film.h"
+#include "accel/RayTracer.h"
 #include "integrate/IntegratorServices.h"
 #include "scene/Scene.h"
 #include "shade/PluginLoader.h"
@@ -50,6 +51,8 @@ public:
     /// Renders the whole image; can be called more than once.
     Film render();
     RenderStats const& stats() const { return m_stats; }
+    /// The ray tracer (the benchmark records and replays its rays).
+    RayTracer& tracer();
 
 private:
     struct Impl;

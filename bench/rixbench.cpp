@@ -1,0 +1,119 @@
+// rixbench: what the renderer costs, measured in one process.
+//
+//   rixbench [scene.rib]   (default: scenes/ch06/diffuse.rib)
+//
+// 1. Shading overhead: the render's own camera and shadow rays are recorded,
+//    then traced again by Embree alone; the ratio render / raw tracing is the
+//    price of everything that is not ray tracing (target: at most 1.3).
+// 2. Thread scaling: 2 threads against 1 (target: at least 1.85).
+// 3. Cost against samples per pixel, resolution and triangle count.
+// Times are the best of three runs. It prints ratios; it asserts nothing.
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <functional>
+#include <sstream>
+
+#include "render/Renderer.h"
+#include "scene/SceneBuilder.h"
+
+using namespace bxdflab;
+using Clock = std::chrono::steady_clock;
+
+namespace {
+
+double bestOf(int runs, std::function<void()> const& work) {
+    double best = 1e30;
+    for (int r = 0; r < runs; ++r) {
+        auto start = Clock::now();
+        work();
+        best = std::min(best, std::chrono::duration<double>(Clock::now() - start).count());
+    }
+    return best;
+}
+
+double renderSeconds(Scene& scene, int spp, int threads, Diagnostics& diagnostics) {
+    RenderSettings settings;
+    settings.spp = spp;
+    settings.threads = threads;
+    Renderer renderer(scene, settings, diagnostics);
+    return bestOf(3, [&] { renderer.render(); });
+}
+
+/// A sphere of about `triangles` triangles in front of the camera, lit by a disk light.
+std::string meshScene(int triangles) {
+    int n = std::max(4, static_cast<int>(std::sqrt(triangles / 2.0)));
+    std::ostringstream rib;
+    rib << "Format 200 175 1\nProjection \"perspective\" \"fov\" [15]\nIntegrator \"PxrDirectLighting\" \"d\"\n"
+           "WorldBegin\n AttributeBegin\n Translate -2 2 0\n Rotate -165.96 0 1 0\n Rotate -13.63 1 0 0\n"
+           " Light \"PxrDiskLight\" \"l\" \"float intensity\" [150]\n AttributeEnd\n Translate 0 0 8\n"
+           " Bxdf \"diffuse\" \"d\"\n PointsPolygons [";
+    for (int k = 0; k < n * n; ++k) rib << "4 ";
+    rib << "] [";
+    for (int i = 0; i < n; ++i)
+        for (int j = 0; j < n; ++j) {
+            int a = i * (n + 1) + j;
+            rib << a << ' ' << a + 1 << ' ' << a + n + 2 << ' ' << a + n + 1 << ' ';
+        }
+    rib << "] \"P\" [";
+    for (int i = 0; i <= n; ++i)
+        for (int j = 0; j <= n; ++j) {
+            double theta = M_PI * i / n, phi = 2 * M_PI * j / n;
+            rib << 0.8 * std::sin(theta) * std::cos(phi) << ' ' << 0.8 * std::sin(theta) * std::sin(phi) << ' '
+                << 0.8 * std::cos(theta) << ' ';
+        }
+    rib << "]\nWorldEnd\n";
+    return rib.str();
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    std::string sceneFile = argc > 1 ? argv[1] : std::string(BXDFLAB_SOURCE_DIR) + "/scenes/ch06/diffuse.rib";
+    Diagnostics diagnostics(false);
+    Scene scene = loadScene(sceneFile, diagnostics);
+    const int spp = 16;
+
+    // 1. Shading overhead against raw Embree, one thread each.
+    std::vector<RayTracer::RecordedRay> rays;
+    double render1 = 0.0, raw = 0.0;
+    {
+        RenderSettings settings;
+        settings.spp = spp;
+        settings.threads = 1;
+        Renderer renderer(scene, settings, diagnostics);
+        renderer.tracer().record(&rays);
+        renderer.render();
+        renderer.tracer().record(nullptr);
+        render1 = bestOf(3, [&] { renderer.render(); });
+        raw = bestOf(3, [&] { renderer.tracer().replay(rays); });
+    }
+    size_t shadow = static_cast<size_t>(std::count_if(rays.begin(), rays.end(), [](auto const& r) { return r.occlusion; }));
+    std::printf("scene %s, %dx%d, %d spp\n", sceneFile.c_str(), scene.xres, scene.yres, spp);
+    std::printf("rays recorded: %zu camera + %zu shadow\n", rays.size() - shadow, shadow);
+    std::printf("raw Embree: %.3f s   full render: %.3f s   overhead ratio: %.2f (target <= 1.30)\n", raw, render1,
+                render1 / raw);
+
+    // 2. Thread scaling.
+    double render2 = renderSeconds(scene, spp, 2, diagnostics);
+    std::printf("1 thread: %.3f s   2 threads: %.3f s   scaling: %.2fx (target >= 1.85)\n", render1, render2,
+                render1 / render2);
+
+    // 3. Cost scaling (2 threads).
+    std::printf("\nspp      seconds\n");
+    for (int s : {1, 4, 16, 64}) std::printf("%-8d %.3f\n", s, renderSeconds(scene, s, 2, diagnostics));
+    std::printf("\nresolution  seconds (%d spp)\n", spp);
+    int xres = scene.xres, yres = scene.yres;
+    for (int div : {4, 2, 1}) {
+        scene.xres = xres / div;
+        scene.yres = yres / div;
+        std::printf("%4dx%-6d %.3f\n", scene.xres, scene.yres, renderSeconds(scene, spp, 2, diagnostics));
+    }
+    std::printf("\ntriangles   seconds (200x175, %d spp)\n", spp);
+    for (int triangles : {1000, 10000, 100000, 1000000}) {
+        Scene mesh;
+        SceneBuilder(mesh, diagnostics).readText(meshScene(triangles), "<mesh>");
+        std::printf("%-11d %.3f\n", triangles, renderSeconds(mesh, spp, 2, diagnostics));
+    }
+    return 0;
+}

@@ -1,0 +1,50 @@
+#!/usr/bin/env bash
+# Regenerates every accuracy-versus-time study the chapters show, into
+# chapters/figures/studies/: for each study a convergence.csv, a table.md and
+# error-vs-spp / error-vs-time plots. Run scripts/setup.sh first.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+out=chapters/figures/studies
+converge=build/bin/rixconverge
+spp=1,2,4,8,16,32,64
+mkdir -p "$out"
+
+# Chapter 4: uniform against cosine-weighted hemisphere sampling of a diffuse surface.
+$converge scenes/ch04/estimators.rib --spp $spp --repeats 3 --out $out/ch04-uniform-vs-cosine \
+  --variant cosine='Bxdf "diffuse" "white" "color diffuseColor" [0.9 0.9 0.9] "int samplingMode" [0]' \
+  --variant uniform='Bxdf "diffuse" "white" "color diffuseColor" [0.9 0.9 0.9] "int samplingMode" [1]'
+
+# Chapters 6 and 8: cosine sampling against importance sampling, narrower and narrower lobes.
+for gloss in 10 100 1000; do
+  $converge scenes/studies/glossy.rib --spp $spp --repeats 3 --out $out/ch06-phong-n$gloss \
+    --variant importance="Bxdf \"specular\" \"glossy\" \"float gloss\" [$gloss] \"int samplingMode\" [1]" \
+    --variant cosine="Bxdf \"specular\" \"glossy\" \"float gloss\" [$gloss] \"int samplingMode\" [0]"
+done
+for alpha in 0.3 0.1 0.03; do
+  $converge scenes/studies/glossy.rib --spp $spp --repeats 3 --out $out/ch08-ward-a$alpha \
+    --variant walter="Bxdf \"ward\" \"glossy\" \"float uRoughness\" [$alpha] \"float vRoughness\" [$alpha] \"int samplingMode\" [1]" \
+    --variant cosine="Bxdf \"ward\" \"glossy\" \"float uRoughness\" [$alpha] \"float vRoughness\" [$alpha] \"int samplingMode\" [0]"
+done
+
+# Chapters 4 and 6: light sampling, Bxdf sampling and MIS (after Veach).
+$converge scenes/studies/veach.rib --spp $spp --repeats 3 --out $out/ch06-light-bxdf-mis \
+  --variant MIS='Integrator "PxrDirectLighting" "i" "int numLightSamples" [1] "int numBxdfSamples" [1]' \
+  --variant light='Integrator "PxrDirectLighting" "i" "int numLightSamples" [1] "int numBxdfSamples" [0]' \
+  --variant bxdf='Integrator "PxrDirectLighting" "i" "int numLightSamples" [0] "int numBxdfSamples" [1]'
+
+# Direct lighting against path tracing: what each bounce costs and changes.
+$converge scenes/showcase.rib --res 240x100 --spp 1,2,4,8,16,32 --repeats 2 --out $out/ch04-bounces \
+  --variant paths-10='Integrator "PxrPathTracer" "i" "int maxPathLength" [10]' \
+  --variant paths-3='Integrator "PxrPathTracer" "i" "int maxPathLength" [3]' \
+  --variant paths-2='Integrator "PxrPathTracer" "i" "int maxPathLength" [2]' \
+  --variant direct='Integrator "PxrDirectLighting" "i"'
+
+echo "studies written to $out"
+
+# The bench: shading overhead against raw Embree, thread scaling, cost scaling.
+build/bin/rixbench > $out/bench.txt
+echo "bench written to $out/bench.txt"
+
+# The appendix that collects the headline numbers.
+/usr/bin/python3 tools/accuracy_appendix.py $out > chapters/appendix-accuracy-cost.md
+echo "wrote chapters/appendix-accuracy-cost.md"

@@ -1,0 +1,102 @@
+#!/usr/bin/python3
+"""Writes the "what accuracy costs" appendix from the studies' tables and the
+bench output (both produced by scripts/accuracy-studies.sh)."""
+import sys
+from pathlib import Path
+
+
+def table(folder, name):
+    return (Path(folder) / name / "table.md").read_text().strip()
+
+
+def main(folder):
+    bench = (Path(folder) / "bench.txt").read_text().strip()
+    print(f"""# Appendix: what accuracy costs
+
+Every number on this page comes from `scripts/accuracy-studies.sh`, which
+runs `rixconverge` (error against a converged reference as samples double,
+several seeds each) and `rixbench` on a 2-core machine. Run it again to
+regenerate the page. relMSE is mean((x - r)^2 / (r^2 + 0.01)); efficiency is
+1 / (relMSE x seconds), higher is better; "relative" compares with the first
+row.
+
+Our sampler is a scrambled Sobol' sequence, so errors usually fall faster
+than the plain Monte Carlo rate (slope -1 in the log-log plots): smooth
+integrands reach slopes near -1.5 or even -2. Strategies that make the
+integrand rough (cosine sampling of a sharp lobe) fall back toward -1.
+
+## Uniform or cosine-weighted directions (chapter 4)
+
+A diffuse sphere on a floor under an even sky, sampled by its Bxdf only.
+Both strategies converge to the same image; cosine sampling, whose density
+follows the cos(theta) in the integrand, needs less time for the same error.
+
+{table(folder, "ch04-uniform-vs-cosine")}
+
+![relMSE against samples](figures/studies/ch04-uniform-vs-cosine/error_vs_spp.png)
+
+## Cosine against importance sampling of glossy lobes (chapters 6 and 8)
+
+The same scene with a Phong sphere (exponent n) and a Ward sphere
+(roughness alpha). The narrower the lobe, the more cosine sampling wastes its
+samples where the lobe is dark, and the larger the gap grows.
+
+Phong, n = 10:
+
+{table(folder, "ch06-phong-n10")}
+
+Phong, n = 100:
+
+{table(folder, "ch06-phong-n100")}
+
+Phong, n = 1000:
+
+{table(folder, "ch06-phong-n1000")}
+
+Ward, alpha = 0.3:
+
+{table(folder, "ch08-ward-a0.3")}
+
+Ward, alpha = 0.1:
+
+{table(folder, "ch08-ward-a0.1")}
+
+Ward, alpha = 0.03:
+
+{table(folder, "ch08-ward-a0.03")}
+
+![Ward, alpha = 0.03: relMSE against time](figures/studies/ch08-ward-a0.03/error_vs_time.png)
+
+## Light sampling, Bxdf sampling and MIS (after Veach)
+
+A glossy floor under a small and a large sphere light. Sampling the Bxdf
+alone almost never finds the small light and is hopeless; sampling the
+lights does well; multiple importance sampling is within a small factor of
+the better strategy. (Here light sampling edges ahead of MIS: its stratified
+samples in the lights' cones converge at slope -2, while the MIS mixture of
+two strategies is less smooth for the Sobol' points. With independent random
+numbers MIS would not lose.)
+
+{table(folder, "ch06-light-bxdf-mis")}
+
+![relMSE against time](figures/studies/ch06-light-bxdf-mis/error_vs_time.png)
+
+## What a bounce costs (path tracing against direct lighting)
+
+The showcase at 240 x 100 pixels. Each row is measured against a converged
+path-traced reference, so direct lighting's error includes the light it
+never computes (the floor lit by the glowing sphere, the reflections): it
+stops improving however many samples it takes.
+
+{table(folder, "ch04-bounces")}
+
+## The renderer's own costs
+
+```
+{bench}
+```
+""")
+
+
+if __name__ == "__main__":
+    main(sys.argv[1])

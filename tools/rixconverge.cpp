@@ -1,0 +1,214 @@
+// rixconverge: what accuracy costs. Renders a scene with several sampling
+// strategies at doubling sample counts, measures each image's error against
+// a converged reference, and reports error against samples and against time.
+//
+//   rixconverge scene.rib --variant NAME='RIB override' ... --spp 1,2,4,8,16
+//               [--reference auto|FILE] [--reference-spp N] [--repeats K] [--res WxH] --out DIR
+//
+// A variant's override is one or more RIB requests: an Integrator request
+// replaces the scene's integrator, a Bxdf request replaces the Bxdf with the
+// same handle, e.g.
+//   --variant cosine='Bxdf "diffuse" "white" "int samplingMode" [0]'
+//   --variant uniform='Bxdf "diffuse" "white" "int samplingMode" [1]'
+// Per render it records spp, seconds, relMSE = mean((x - r)^2 / (r^2 + 0.01)),
+// RMSE and the mean bias, writes DIR/convergence.csv, DIR/table.md (fitted
+// slope of log relMSE against log spp, about -1 for Monte Carlo, and the
+// efficiency 1 / (relMSE x seconds)), and plots with tools/plot_convergence.py.
+#include <CLI/CLI.hpp>
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <map>
+#include <sstream>
+
+#include "film/Film.h"
+#include "render/Renderer.h"
+#include "scene/SceneBuilder.h"
+
+using namespace bxdflab;
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Variant {
+    std::string name, override;
+};
+
+struct Errors {
+    double relMse = 0, rmse = 0, bias = 0;
+};
+
+Errors compare(std::vector<float> const& image, std::vector<float> const& reference) {
+    Errors e;
+    size_t n = 0;
+    for (size_t i = 0; i < image.size(); ++i) {
+        if (i % 4 == 3) continue;  // colour only
+        double d = static_cast<double>(image[i]) - reference[i];
+        e.relMse += d * d / (static_cast<double>(reference[i]) * reference[i] + 0.01);
+        e.rmse += d * d;
+        e.bias += d;
+        ++n;
+    }
+    e.relMse /= static_cast<double>(n);
+    e.rmse = std::sqrt(e.rmse / static_cast<double>(n));
+    e.bias /= static_cast<double>(n);
+    return e;
+}
+
+/// Applies a variant's RIB requests to the scene: an Integrator replaces the
+/// integrator, a Bxdf replaces the Bxdf with its handle.
+void applyOverride(Scene& scene, std::string const& override, Diagnostics& diagnostics) {
+    Scene changes;
+    SceneBuilder(changes, diagnostics).readText(override, "<variant>");
+    if (changes.integrator.given) scene.integrator = changes.integrator;
+    for (MaterialDesc const& m : changes.materials) {
+        bool found = false;
+        for (MaterialDesc& existing : scene.materials)
+            if (existing.handle == m.handle) {
+                existing = m;
+                found = true;
+            }
+        if (!found) throw RenderError("variant override: the scene has no Bxdf with handle \"" + m.handle + "\"");
+    }
+}
+
+std::vector<float> render(Scene& scene, int spp, uint32_t seed, int threads, Diagnostics& diagnostics, double& seconds) {
+    RenderSettings settings;
+    settings.spp = spp;
+    settings.seed = seed;
+    settings.threads = threads;
+    Renderer renderer(scene, settings, diagnostics);
+    Film film = renderer.render();
+    seconds = renderer.stats().renderSeconds;
+    return film.rgba();
+}
+
+double slope(std::vector<double> const& x, std::vector<double> const& y) {
+    // Least squares in log-log space.
+    double n = static_cast<double>(x.size()), sx = 0, sy = 0, sxx = 0, sxy = 0;
+    for (size_t i = 0; i < x.size(); ++i) {
+        double lx = std::log(x[i]), ly = std::log(y[i]);
+        sx += lx;
+        sy += ly;
+        sxx += lx * lx;
+        sxy += lx * ly;
+    }
+    double denominator = n * sxx - sx * sx;
+    return denominator != 0 ? (n * sxy - sx * sy) / denominator : 0.0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    CLI::App app{"rixconverge: error against samples and time for several sampling strategies"};
+    std::string sceneFile, sppList = "1,2,4,8,16,32", reference = "auto", outDir = "convergence", res;
+    std::vector<std::string> variantArgs;
+    int repeats = 3, referenceSpp = 0, threads = 0;
+    app.add_option("scene", sceneFile, "the RIB scene")->required();
+    app.add_option("--variant", variantArgs, "NAME='RIB override' (repeatable); none: the scene as it is");
+    app.add_option("--spp", sppList, "comma-separated sample counts");
+    app.add_option("--reference", reference, "'auto' (render one) or an image file");
+    app.add_option("--reference-spp", referenceSpp, "samples for the auto reference (default 16 x the largest)");
+    app.add_option("--repeats", repeats, "independent renders per point")->check(CLI::Range(1, 100));
+    app.add_option("--res", res, "override the resolution, e.g. 200x150");
+    app.add_option("--threads", threads, "worker threads (default: all)");
+    app.add_option("--out", outDir, "output folder");
+    CLI11_PARSE(app, argc, argv);
+
+    try {
+        Diagnostics diagnostics(false);
+        std::vector<int> spps;
+        for (std::stringstream in(sppList); in.good();) {
+            std::string item;
+            std::getline(in, item, ',');
+            if (!item.empty()) spps.push_back(std::stoi(item));
+        }
+        std::vector<Variant> variants;
+        for (auto const& arg : variantArgs) {
+            size_t eq = arg.find('=');
+            if (eq == std::string::npos) throw RenderError("--variant needs NAME=override, got \"" + arg + "\"");
+            variants.push_back({arg.substr(0, eq), arg.substr(eq + 1)});
+        }
+        if (variants.empty()) variants.push_back({"scene", ""});
+        auto loadVariant = [&](Variant const& v) {
+            Scene scene = loadScene(sceneFile, diagnostics);
+            if (!res.empty()) {
+                size_t x = res.find('x');
+                scene.xres = std::stoi(res.substr(0, x));
+                scene.yres = std::stoi(res.substr(x + 1));
+            }
+            if (!v.override.empty()) applyOverride(scene, v.override, diagnostics);
+            return scene;
+        };
+        fs::create_directories(outDir);
+
+        // The reference: converged, rendered with the first variant and a seed no study uses.
+        std::vector<float> ref;
+        if (reference == "auto") {
+            Scene scene = loadVariant(variants[0]);
+            int n = referenceSpp > 0 ? referenceSpp : 16 * *std::max_element(spps.begin(), spps.end());
+            double seconds;
+            ref = render(scene, n, 0x7fffffffu, threads, diagnostics, seconds);
+            writeImage(outDir + "/reference.exr", ref, scene.xres, scene.yres, 4);
+            std::cout << "reference: " << n << " spp in " << std::fixed << std::setprecision(2) << seconds << " s\n";
+        } else {
+            throw RenderError("only --reference auto is supported by this build");
+        }
+
+        std::ofstream csv(outDir + "/convergence.csv");
+        csv << "variant,spp,repeat,seconds,relmse,rmse,bias\n";
+        std::ofstream table(outDir + "/table.md");
+        table << "| variant | slope (log relMSE / log spp) | relMSE at " << spps.back() << " spp | seconds at " << spps.back()
+              << " spp | efficiency 1/(relMSE x s) | relative efficiency |\n|---|---|---|---|---|---|\n";
+        double firstEfficiency = 0;
+        for (size_t vi = 0; vi < variants.size(); ++vi) {
+            Scene scene = loadVariant(variants[vi]);
+            std::vector<double> x, y, efficiencies;
+            double lastError = 0, lastSeconds = 0;
+            for (int spp : spps) {
+                double errorSum = 0, secondsSum = 0;
+                for (int k = 0; k < repeats; ++k) {
+                    double seconds;
+                    auto image = render(scene, spp, static_cast<uint32_t>(1 + k), threads, diagnostics, seconds);
+                    Errors e = compare(image, ref);
+                    csv << variants[vi].name << ',' << spp << ',' << k << ',' << seconds << ',' << e.relMse << ',' << e.rmse
+                        << ',' << e.bias << '\n';
+                    errorSum += e.relMse;
+                    secondsSum += seconds;
+                }
+                double error = errorSum / repeats, seconds = secondsSum / repeats;
+                x.push_back(spp);
+                y.push_back(error);
+                if (spp >= 4 && error > 0 && seconds > 0) efficiencies.push_back(1.0 / (error * seconds));
+                lastError = error;
+                lastSeconds = seconds;
+            }
+            // Efficiency is nearly independent of the error level for Monte Carlo
+            // (error ~ 1/spp, time ~ spp); report the median over the counts >= 4.
+            std::sort(efficiencies.begin(), efficiencies.end());
+            double efficiency = efficiencies.empty() ? 0 : efficiencies[efficiencies.size() / 2];
+            if (vi == 0) firstEfficiency = efficiency;
+            double fitted = slope(x, y);
+            table << "| " << variants[vi].name << " | " << std::setprecision(2) << std::fixed << fitted << " | "
+                  << std::scientific << std::setprecision(3) << lastError << " | " << std::fixed << std::setprecision(3)
+                  << lastSeconds << " | " << std::scientific << std::setprecision(3) << efficiency << " | " << std::fixed
+                  << std::setprecision(2) << (firstEfficiency > 0 ? efficiency / firstEfficiency : 0.0) << " |\n";
+            std::cout << variants[vi].name << ": slope " << std::fixed << std::setprecision(2) << fitted << ", relMSE "
+                      << std::scientific << std::setprecision(3) << lastError << " at " << spps.back() << " spp, efficiency "
+                      << efficiency << '\n';
+        }
+        csv.close();
+        table.close();
+        std::string plot = std::string("/usr/bin/python3 ") + BXDFLAB_TOOLS_DIR + "/plot_convergence.py '" + outDir + "'";
+        if (std::system(plot.c_str()) != 0) std::cerr << "rixconverge: plotting failed (is python3-matplotlib installed?)\n";
+        std::cout << "wrote " << outDir << "/convergence.csv, table.md, error_vs_spp.png, error_vs_time.png\n";
+        return 0;
+    } catch (std::exception const& e) {
+        std::cerr << "rixconverge: " << e.what() << '\n';
+        return 1;
+    }
+}
