@@ -14,6 +14,8 @@
 // RMSE and the mean bias, writes DIR/convergence.csv, DIR/table.md (fitted
 // slope of log relMSE against log spp, about -1 for Monte Carlo, and the
 // efficiency 1 / (relMSE x seconds)), and plots with tools/plot_convergence.py.
+#include <OpenImageIO/imagebuf.h>
+
 #include <CLI/CLI.hpp>
 #include <chrono>
 #include <cmath>
@@ -156,7 +158,22 @@ int main(int argc, char** argv) {
             writeImage(outDir + "/reference.exr", ref, scene.xres, scene.yres, 4);
             std::cout << "reference: " << n << " spp in " << std::fixed << std::setprecision(2) << seconds << " s\n";
         } else {
-            throw RenderError("only --reference auto is supported by this build");
+            OIIO::ImageBuf image(reference);
+            if (!image.read(0, 0, true, OIIO::TypeDesc::FLOAT))
+                throw RenderError("cannot read the reference \"" + reference + "\": " + image.geterror());
+            Scene scene = loadVariant(variants[0]);
+            OIIO::ImageSpec const& spec = image.spec();
+            if (spec.width != scene.xres || spec.height != scene.yres)
+                throw RenderError("the reference is " + std::to_string(spec.width) + "x" + std::to_string(spec.height) +
+                                  ", the renders " + std::to_string(scene.xres) + "x" + std::to_string(scene.yres));
+            // As RGBA, whatever the file's channels (a missing alpha reads as 1).
+            ref.assign(static_cast<size_t>(spec.width) * static_cast<size_t>(spec.height) * 4, 1.0f);
+            std::vector<float> pixels(static_cast<size_t>(spec.width) * static_cast<size_t>(spec.height) *
+                                      static_cast<size_t>(spec.nchannels));
+            image.get_pixels(OIIO::ROI::All(), OIIO::TypeDesc::FLOAT, pixels.data());
+            for (size_t p = 0; p < ref.size() / 4; ++p)
+                for (int c = 0; c < std::min(4, spec.nchannels); ++c)
+                    ref[4 * p + static_cast<size_t>(c)] = pixels[p * static_cast<size_t>(spec.nchannels) + static_cast<size_t>(c)];
         }
 
         std::ofstream csv(outDir + "/convergence.csv");
