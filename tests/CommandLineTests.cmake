@@ -85,3 +85,7 @@ add_test(NAME tools.rixconverge
 set_tests_properties(tools.rixconverge PROPERTIES
   PASS_REGULAR_EXPRESSION "cosine: slope -?[0-9.]+.*uniform: slope -?[0-9.]+.*wrote converge-test/convergence.csv"
   FAIL_REGULAR_EXPRESSION "plotting failed")
+
+# Every command the chapters show runs, and every figure they link exists.
+add_test(NAME chapters.commands_and_figures COMMAND /usr/bin/python3 ${CMAKE_CURRENT_SOURCE_DIR}/check_chapters.py ${PROJECT_SOURCE_DIR})
+set_tests_properties(chapters.commands_and_figures PROPERTIES PASS_REGULAR_EXPRESSION "command blocks run; 0 problems" RUN_SERIAL TRUE)
