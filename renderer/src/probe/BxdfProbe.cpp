@@ -78,15 +78,15 @@ struct BxdfProbe::Impl {
     std::unique_ptr<BxdfInstance> instance;
     MemoryArena arena;
 
-    Impl(std::vector<std::string> const& searchPath, Diagnostics& d)
-        : diagnostics(d), loader(pluginSearchPath({[&] {
-                                                       std::string joined;
-                                                       for (auto const& f : searchPath) joined += f + ":";
-                                                       return joined;
-                                                   }(),
-                                                   {},
-                                                   ""}),
-                                 d) {}
+    Impl(std::vector<std::string> const& searchPath, Diagnostics& d, bool searchBuiltins)
+        : diagnostics(d), loader(folders(searchPath, searchBuiltins), d) {}
+
+    static std::vector<std::string> folders(std::vector<std::string> const& first, bool searchBuiltins) {
+        if (!searchBuiltins) return first;
+        std::string joined;
+        for (auto const& f : first) joined += f + ":";
+        return pluginSearchPath({joined, {}, ""});
+    }
 
     /// Runs `body` with a Bxdf built for `points`, then releases it.
     template <typename Body>
@@ -103,8 +103,8 @@ struct BxdfProbe::Impl {
 };
 
 BxdfProbe::BxdfProbe(std::string const& plugin, std::string const& ribParams, std::vector<std::string> const& searchPath,
-                     Diagnostics& diagnostics)
-    : m_impl(std::make_unique<Impl>(searchPath, diagnostics)) {
+                     Diagnostics& diagnostics, bool searchBuiltins)
+    : m_impl(std::make_unique<Impl>(searchPath, diagnostics, searchBuiltins)) {
     SceneBuilder builder(m_impl->scene, diagnostics);
     builder.readText("Bxdf \"" + plugin + "\" \"probe\" " + ribParams + "\n", "<probe parameters>");
     BxdfPlugin& loaded = m_impl->loader.bxdf(plugin);

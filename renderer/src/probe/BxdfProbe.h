@@ -33,11 +33,12 @@ struct ProbeResult {
 
 class BxdfProbe {
 public:
-    /// Loads `plugin` (searching `searchPath`, then the built-in folders) and
-    /// makes one instance with `ribParams`, written as in a RIB Bxdf line,
-    /// e.g. "\"color diffuseColor\" [1 1 1]". Throws RenderError/RibError.
+    /// Loads `plugin` (searching `searchPath`, then, when searchBuiltins is
+    /// set, the usual plugin search path with the built-in folders) and makes
+    /// one instance with `ribParams`, written as in a RIB Bxdf line, e.g.
+    /// "\"color diffuseColor\" [1 1 1]". Throws RenderError/RibError.
     BxdfProbe(std::string const& plugin, std::string const& ribParams, std::vector<std::string> const& searchPath,
-              Diagnostics& diagnostics);
+              Diagnostics& diagnostics, bool searchBuiltins = true);
     ~BxdfProbe();
     BxdfProbe(BxdfProbe const&) = delete;
     BxdfProbe& operator=(BxdfProbe const&) = delete;
