@@ -29,21 +29,22 @@ struct PluginFacts {
     bool reciprocal;
     bool conservesEnergy;
     bool emitsOnly;
+    bool singleLobeSampler;  ///< one 2-D draw maps to the direction (mixtures choose a lobe first)
 };
 
 // The parameters each exercise is checked with: white where energy matters.
 const std::map<std::string, PluginFacts> kPlugins = {
-    {"emissive", {"\"color emissiveColor\" [1 0.5 0.25]", "\"color emissiveColor\" [0.2 2 0.7]", false, false, true}},
-    {"diffuse", {"\"color diffuseColor\" [1 1 1]", "\"color diffuseColor\" [0.7 0.4 0.1]", true, true, false}},
-    {"buggydiffuse", {"\"color diffuseColor\" [1 1 1]", "\"color diffuseColor\" [0.7 0.4 0.1]", true, true, false}},
+    {"emissive", {"\"color emissiveColor\" [1 0.5 0.25]", "\"color emissiveColor\" [0.2 2 0.7]", false, false, true, false}},
+    {"diffuse", {"\"color diffuseColor\" [1 1 1]", "\"color diffuseColor\" [0.7 0.4 0.1]", true, true, false, true}},
+    {"buggydiffuse", {"\"color diffuseColor\" [1 1 1]", "\"color diffuseColor\" [0.7 0.4 0.1]", true, true, false, true}},
     {"specular", {"\"color specularColor\" [1 1 1] \"float gloss\" [30]",
-                  "\"color specularColor\" [0.2 0.8 0.6] \"float gloss\" [80]", true, true, false}},
+                  "\"color specularColor\" [0.2 0.8 0.6] \"float gloss\" [80]", true, true, false, true}},
     {"plastic", {"\"color diffuseColor\" [0.6 0.6 0.6] \"color specularColor\" [0.4 0.4 0.4] \"float gloss\" [40]",
-                 "\"color diffuseColor\" [0.5 0.1 0.1] \"color specularColor\" [0.2 0.3 0.4] \"float gloss\" [10]", true, true, false}},
+                 "\"color diffuseColor\" [0.5 0.1 0.1] \"color specularColor\" [0.2 0.3 0.4] \"float gloss\" [10]", true, true, false, false}},
     {"ward", {"\"color specularColor\" [1 1 1] \"float uRoughness\" [0.3] \"float vRoughness\" [0.1]",
-              "\"color specularColor\" [0.9 0.5 0.2] \"float uRoughness\" [0.1] \"float vRoughness\" [0.4] \"color diffuseColor\" [0.1 0.2 0.3]", true, false, false}},
+              "\"color specularColor\" [0.9 0.5 0.2] \"float uRoughness\" [0.1] \"float vRoughness\" [0.4] \"color diffuseColor\" [0.1 0.2 0.3]", true, false, false, true}},
     {"finishedwood", {"\"vector fiberAxis\" [0.6 0.8 0] \"float beta\" [0.2]",
-                      "\"vector fiberAxis\" [1 0 0] \"float beta\" [0.1] \"float eta\" [1.3] \"color diffuseColor\" [0.4 0.2 0.1]", false, false, false}},
+                      "\"vector fiberAxis\" [1 0 0] \"float beta\" [0.1] \"float eta\" [1.3] \"color diffuseColor\" [0.4 0.2 0.1]", false, false, false, true}},
 };
 
 std::string env(const char* name) {
@@ -176,6 +177,36 @@ TEST_CASE("chi2: sampled directions follow the declared FPdf", "[chi2]") {
                                    << " of the samples are valid");
         REQUIRE(h.pdfIntegral == Approx(validFraction).margin(0.02));
     }
+}
+
+TEST_CASE("jacobian: FPdf is the density the sampling mapping really produces", "[jacobian]") {
+    // Lajolla's check: at fixed random numbers xi, finite differences of the
+    // mapping xi -> L give the solid angle one unit of xi covers, |dL/du x dL/dv|;
+    // its inverse is the density of the sampled directions, which FPdf must equal.
+    if (facts().emitsOnly || !facts().singleLobeSampler) return;
+    requireAttempted();
+    const float h = 1e-3f;
+    int compared = 0;
+    for (float view : {30.0f, 60.0f})
+        for (float u : {0.15f, 0.35f, 0.55f, 0.75f})
+            for (float v : {0.1f, 0.3f, 0.6f, 0.85f}) {
+                ProbePoint point = viewFrom(view);
+                ProbeResult at = student().generateAt(point, RtFloat2(u, v));
+                ProbeResult du1 = student().generateAt(point, RtFloat2(u + h, v));
+                ProbeResult du0 = student().generateAt(point, RtFloat2(u - h, v));
+                ProbeResult dv1 = student().generateAt(point, RtFloat2(u, v + h));
+                ProbeResult dv0 = student().generateAt(point, RtFloat2(u, v - h));
+                if (!at.valid || !du1.valid || !du0.valid || !dv1.valid || !dv0.valid) continue;
+                Vec3 dLdu = (glm::normalize(du1.L) - glm::normalize(du0.L)) / (2 * h);
+                Vec3 dLdv = (glm::normalize(dv1.L) - glm::normalize(dv0.L)) / (2 * h);
+                double area = glm::length(glm::cross(dLdu, dLdv));
+                if (!(area > 0)) continue;
+                ++compared;
+                INFO("viewer at " << view << " degrees, xi = (" << u << ", " << v << "): FPdf " << at.FPdf
+                                  << ", 1/|Jacobian| " << 1.0 / area);
+                REQUIRE(std::fabs(1.0 / area - at.FPdf) <= 0.02 * at.FPdf);
+            }
+    REQUIRE(compared > 0);
 }
 
 TEST_CASE("consistency: EvaluateSample and EvaluateSamplesAtIndex agree with GenerateSample", "[consistency]") {

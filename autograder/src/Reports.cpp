@@ -29,6 +29,7 @@ const char* hint(std::string const& check) {
     if (check == "loads") return "Does the plugin build, export its create/destroy pair and return a parameter table?";
     if (check == "values") return "Compare your W = f cos(theta_L) and pdfs with the formulas in the chapter; rixlobe plots them.";
     if (check == "chi2") return "Your sampling does not match your FPdf: look at rixwarp's picture for this plugin.";
+    if (check == "jacobian") return "At a fixed random number your FPdf is not the density your mapping produces: recheck its derivation.";
     if (check == "consistency") return "GenerateSample and EvaluateSample disagree: render ch07/validate.rib with your plugin.";
     if (check == "reciprocity") return "f(V, L) should equal f(L, V), and RPdf should be the pdf of the reverse direction.";
     if (check == "energy") return "The surface reflects more (or less) than the solution: check the normalisation constants.";

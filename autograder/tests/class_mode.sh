@@ -12,6 +12,11 @@ cat "$out/grades/gradebook.csv"
 alice=$(grep '^alice,' "$out/grades/gradebook.csv" | cut -d, -f2)
 bob=$(grep '^bob,' "$out/grades/gradebook.csv" | cut -d, -f2)
 test -f "$out/grades/alice/report.html" && test -f "$out/grades/bob/results.json"
-# Solving the diffuse exercise earns its 12 remaining points (both already earn 'loads').
-python3 -c "import sys; a, b = float('$alice'), float('$bob'); sys.exit(0 if b - a == 12 else 1)" || { echo "unexpected totals: alice $alice, bob $bob"; exit 1; }
+# Solving diffuse earns all its points except "loads", which the untouched starter already has.
+python3 - "$root/autograder/rubric.json" "$alice" "$bob" <<'EOF' || { echo "unexpected totals: alice $alice, bob $bob"; exit 1; }
+import json, sys
+checks = json.load(open(sys.argv[1]))["chapters"]["6"]["diffuse"]["checks"]
+gain = sum(checks.values()) - checks["loads"]
+sys.exit(0 if float(sys.argv[3]) - float(sys.argv[2]) == gain else 1)
+EOF
 echo "class graded: alice $alice, bob $bob"

@@ -29,6 +29,8 @@ public:
         /// Testing hook: when >= 0, every draw returns this value in every
         /// dimension (how the test suite feeds a Bxdf xi = 0 or xi = 1 - 2^-24).
         float fixedValue = -1.0f;
+        /// With fixedValue: when >= 0, the second coordinate of 2-D draws (else fixedValue).
+        float fixedValue2 = -1.0f;
     };
 
     RixRNG(SampleCtx* contexts, int numPoints) : numPts(numPoints), sampleCtxArray(contexts) {}
@@ -49,7 +51,8 @@ public:
 
     /// The next 2-D sample of a context (advances its draw counter).
     static RtFloat2 Sample2D(SampleCtx& ctx) {
-        if (ctx.fixedValue >= 0.0f) return RtFloat2(ctx.fixedValue, ctx.fixedValue);
+        if (ctx.fixedValue >= 0.0f)
+            return RtFloat2(ctx.fixedValue, ctx.fixedValue2 >= 0.0f ? ctx.fixedValue2 : ctx.fixedValue);
         uint32_t seed = Hash(ctx.pixelSeed ^ Hash(ctx.draw++ * 0x9e3779b9u + 0x632be5abu));
         uint32_t index = NestedUniformScramble(ctx.sampleIndex, seed);
         uint32_t x = NestedUniformScramble(ReverseBits(index), Hash(seed ^ 0xa511e9b3u));

@@ -154,6 +154,23 @@ std::vector<ProbeResult> BxdfProbe::generate(std::vector<ProbePoint> const& poin
     return out;
 }
 
+ProbeResult BxdfProbe::generateAt(ProbePoint const& point, RtFloat2 const& xi) {
+    ProbeResult out;
+    m_impl->withBxdf({point}, [&](RixShadingContext const& ctx, RixBxdf& bxdf) {
+        RixShadingContext::Allocator pool(&ctx);
+        RixRNG::SampleCtx sample{0u, 0u, 0u, xi.x, xi.y};
+        RixRNG rng(&sample, 1);
+        RixBXLobeTraits wanted = RixBXLobeTraits::All();
+        RixBXLobeSampled sampled;
+        RtVector3 Ln(0.0f, 0.0f, 0.0f);
+        float FPdf = 0.0f, RPdf = 0.0f;
+        RixBXLobeWeights W(1, pool.AllocFor<RtColorRGB>(RixBXLobeWeights::k_numSlots));
+        bxdf.GenerateSample(k_RixBXDirectLighting, &wanted, &rng, &sampled, &Ln, W, &FPdf, &RPdf);
+        out = {toVec3(Ln), W.SumAtPoint(0), FPdf, RPdf, sampled.GetValid()};
+    });
+    return out;
+}
+
 std::vector<ProbeResult> BxdfProbe::evaluate(std::vector<ProbePoint> const& points, std::vector<Vec3> const& L) {
     std::vector<ProbeResult> out(points.size());
     int n = static_cast<int>(points.size());

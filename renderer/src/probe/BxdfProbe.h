@@ -53,6 +53,9 @@ public:
     std::vector<ProbeResult> generate(std::vector<ProbePoint> const& points, uint32_t firstSample = 0,
                                       uint32_t seed = 0, float fixedXi = -1.0f,
                                       Sequence sequence = Sequence::Stratified);
+    /// GenerateSample at one point with every 2-D draw returning exactly xi
+    /// (and 1-D draws xi.x): the sampling mapping itself, for Jacobian checks.
+    ProbeResult generateAt(ProbePoint const& point, RtFloat2 const& xi);
     /// EvaluateSample for a batch: direction L[i] at points[i].
     std::vector<ProbeResult> evaluate(std::vector<ProbePoint> const& points, std::vector<Vec3> const& L);
     /// EvaluateSamplesAtIndex: many directions at one point.
