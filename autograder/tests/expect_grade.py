@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Checks a rixgrade results.json: expect_grade.py RESULTS [--fail CHECK]... [--pass-all] [--output-mentions TEXT]"""
+"""Checks a rixgrade results.json: expect_grade.py RESULTS [--fail CHECK]... [--pass-all] [--output-mentions TEXT] [--same-as OTHER_RESULTS]"""
 import json
 import sys
 
@@ -25,6 +25,12 @@ def main(argv):
             text = args.pop(0).replace("_", " ")
             if not any(text in t["output"] for t in results["tests"]):
                 problems.append(f"no check output mentions '{text}'")
+        elif flag == "--same-as":
+            # Every check's status, points and message (numbers included) must repeat exactly.
+            other = json.load(open(args.pop(0)))
+            strip = lambda r: [(t["name"], t["status"], t["score"], t["output"]) for t in r["tests"]]
+            if strip(results) != strip(other):
+                problems.append("two gradings of the same submission differ")
     print(f"score {results['score']} / {results['max_score']}")
     for p in problems:
         print("PROBLEM:", p)
