@@ -122,19 +122,28 @@ BxdfProbe::~BxdfProbe() {
 
 std::vector<ProbeResult> BxdfProbe::generate(std::vector<ProbePoint> const& points, uint32_t firstSample, uint32_t seed,
                                              float fixedXi, Sequence sequence) {
+    std::vector<RixRNG::SampleCtx> samples(points.size());
+    for (size_t i = 0; i < points.size(); ++i) {
+        uint32_t index = firstSample + static_cast<uint32_t>(i);
+        // An independently scrambled sequence per point makes its first sample uniform random.
+        samples[i] = sequence == Sequence::Stratified
+                         ? RixRNG::SampleCtx{RixRNG::Hash(seed ^ 0x3c6ef372u), index, 0, fixedXi}
+                         : RixRNG::SampleCtx{RixRNG::Hash(seed ^ RixRNG::Hash(index + 0x9e3779b9u)), 0, 0, fixedXi};
+    }
+    return generateWith(points, samples);
+}
+
+ProbeResult BxdfProbe::generateAt(ProbePoint const& point, RtFloat2 const& xi) {
+    return generateWith({point}, {RixRNG::SampleCtx{0u, 0u, 0u, xi.x, xi.y}})[0];
+}
+
+std::vector<ProbeResult> BxdfProbe::generateWith(std::vector<ProbePoint> const& points,
+                                                 std::vector<RixRNG::SampleCtx> samples) {
     std::vector<ProbeResult> out(points.size());
     int n = static_cast<int>(points.size());
     m_impl->withBxdf(points, [&](RixShadingContext const& ctx, RixBxdf& bxdf) {
         RixShadingContext::Allocator pool(&ctx);
-        auto* samples = pool.AllocFor<RixRNG::SampleCtx>(n);
-        for (int i = 0; i < n; ++i) {
-            uint32_t index = firstSample + static_cast<uint32_t>(i);
-            // An independently scrambled sequence per point makes its first sample uniform random.
-            samples[i] = sequence == Sequence::Stratified
-                             ? RixRNG::SampleCtx{RixRNG::Hash(seed ^ 0x3c6ef372u), index, 0, fixedXi}
-                             : RixRNG::SampleCtx{RixRNG::Hash(seed ^ RixRNG::Hash(index + 0x9e3779b9u)), 0, 0, fixedXi};
-        }
-        RixRNG rng(samples, n);
+        RixRNG rng(samples.data(), n);
         auto* wanted = pool.AllocFor<RixBXLobeTraits>(n);
         auto* sampled = pool.AllocFor<RixBXLobeSampled>(n);
         auto* Ln = pool.AllocFor<RtVector3>(n);
@@ -150,23 +159,6 @@ std::vector<ProbeResult> BxdfProbe::generate(std::vector<ProbePoint> const& poin
         bxdf.GenerateSample(k_RixBXDirectLighting, wanted, &rng, sampled, Ln, W, FPdf, RPdf);
         for (int i = 0; i < n; ++i)
             out[static_cast<size_t>(i)] = {toVec3(Ln[i]), W.SumAtPoint(i), FPdf[i], RPdf[i], sampled[i].GetValid()};
-    });
-    return out;
-}
-
-ProbeResult BxdfProbe::generateAt(ProbePoint const& point, RtFloat2 const& xi) {
-    ProbeResult out;
-    m_impl->withBxdf({point}, [&](RixShadingContext const& ctx, RixBxdf& bxdf) {
-        RixShadingContext::Allocator pool(&ctx);
-        RixRNG::SampleCtx sample{0u, 0u, 0u, xi.x, xi.y};
-        RixRNG rng(&sample, 1);
-        RixBXLobeTraits wanted = RixBXLobeTraits::All();
-        RixBXLobeSampled sampled;
-        RtVector3 Ln(0.0f, 0.0f, 0.0f);
-        float FPdf = 0.0f, RPdf = 0.0f;
-        RixBXLobeWeights W(1, pool.AllocFor<RtColorRGB>(RixBXLobeWeights::k_numSlots));
-        bxdf.GenerateSample(k_RixBXDirectLighting, &wanted, &rng, &sampled, &Ln, W, &FPdf, &RPdf);
-        out = {toVec3(Ln), W.SumAtPoint(0), FPdf, RPdf, sampled.GetValid()};
     });
     return out;
 }

@@ -66,6 +66,9 @@ public:
     RixBXLobeTraits lobes();
 
 private:
+    /// GenerateSample for a batch, point i drawing from samples[i].
+    std::vector<ProbeResult> generateWith(std::vector<ProbePoint> const& points,
+                                          std::vector<RixRNG::SampleCtx> samples);
     struct Impl;
     std::unique_ptr<Impl> m_impl;
 };
