@@ -16,7 +16,6 @@
 // efficiency 1 / (relMSE x seconds)), and plots with tools/plot_convergence.py.
 #include <OpenImageIO/imagebuf.h>
 
-#include <CLI/CLI.hpp>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
@@ -27,6 +26,7 @@
 #include <map>
 #include <sstream>
 
+#include "CommandLine.h"
 #include "film/Film.h"
 #include "render/Renderer.h"
 #include "scene/SceneBuilder.h"
@@ -119,7 +119,7 @@ int main(int argc, char** argv) {
     app.add_option("--res", res, "override the resolution, e.g. 200x150");
     app.add_option("--threads", threads, "worker threads (default: all)");
     app.add_option("--out", outDir, "output folder");
-    CLI11_PARSE(app, argc, argv);
+    BXDFLAB_PARSE_COMMAND_LINE(app, argc, argv);
 
     try {
         Diagnostics diagnostics(false);

@@ -10,11 +10,12 @@
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>
 
-#include <CLI/CLI.hpp>
 #include <cmath>
 #include <fstream>
 #include <iostream>
 #include <nlohmann/json.hpp>
+
+#include "CommandLine.h"
 
 namespace {
 
@@ -41,7 +42,7 @@ int main(int argc, char** argv) {
     app.add_option("--max-relmse", maxRelMse, "fail when relMSE is larger");
     app.add_option("--min-psnr", minPsnr, "fail when PSNR (dB) is smaller");
     app.add_option("--json", jsonPath, "also write the statistics as JSON");
-    CLI11_PARSE(app, argc, argv);
+    BXDFLAB_PARSE_COMMAND_LINE(app, argc, argv);
 
     try {
         OIIO::ImageBuf a = readRgb(pathA), b = readRgb(pathB);

@@ -10,12 +10,12 @@
 // hemisphere, as a surface rendered by rixrender's own renderer.
 #include <OpenImageIO/imagebufalgo.h>
 
-#include <CLI/CLI.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 #include <iostream>
 #include <sstream>
 
+#include "CommandLine.h"
 #include "ToolSupport.h"
 #include "film/Film.h"
 #include "render/Renderer.h"
@@ -129,7 +129,7 @@ int main(int argc, char** argv) {
     app.add_option("--polar", polar, "the polar plot (empty: skip)");
     app.add_option("--sphere", sphere, "the 3-D plot (empty: skip)");
     app.add_option("--plugin-path", pluginPath, "colon-separated folders searched first");
-    CLI11_PARSE(app, argc, argv);
+    BXDFLAB_PARSE_COMMAND_LINE(app, argc, argv);
     try {
         Diagnostics diagnostics;
         BxdfProbe probe(plugin, params, splitSearchPath(pluginPath), diagnostics);

@@ -9,11 +9,11 @@
 // do (p-value above 0.01: pass, exit status 0; otherwise 1).
 #include <OpenImageIO/imagebufalgo.h>
 
-#include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cstdio>
 #include <iostream>
 
+#include "CommandLine.h"
 #include "ToolSupport.h"
 #include "probe/SamplingHistogram.h"
 
@@ -31,7 +31,7 @@ int main(int argc, char** argv) {
     app.add_option("--samples", samples, "number of sampled directions")->check(CLI::Range(1000, 50000000));
     app.add_option("--out", out, "the side-by-side image");
     app.add_option("--plugin-path", pluginPath, "colon-separated folders searched first");
-    CLI11_PARSE(app, argc, argv);
+    BXDFLAB_PARSE_COMMAND_LINE(app, argc, argv);
 
     try {
         Diagnostics diagnostics;

@@ -5,11 +5,11 @@
 // says where and why), 2 for command-line mistakes.
 #include <unistd.h>
 
-#include <CLI/CLI.hpp>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
 
+#include "CommandLine.h"
 #include "core/Diagnostics.h"
 #include "render/Renderer.h"
 #include "scene/SceneBuilder.h"
@@ -57,7 +57,7 @@ int main(int argc, char** argv) {
     app.add_option("--stats-json", statsJson, "write timing, ray counts and simulated/skipped effects here");
     app.add_option("--variance", variance, "also write each pixel's variance of the mean (an EXR image)");
     app.add_flag("--quiet", quiet, "no progress bar");
-    CLI11_PARSE(app, argc, argv);
+    BXDFLAB_PARSE_COMMAND_LINE(app, argc, argv);
 
     Diagnostics diagnostics;
     try {

@@ -184,9 +184,10 @@ int ParamList::getInt(std::string const& name, int dflt) const {
     Param const* p = find(name);
     if (!p) return dflt;
     expect(*p, {ParamType::Int, ParamType::Float}, 1);
+    if (p->decl.type == ParamType::Int) return p->ints[0];
     float v = p->floats[0];
-    if (v != static_cast<float>(static_cast<int>(v)))
-        throw RibError(p->location, "parameter \"" + name + "\" must be a whole number, got " + std::to_string(v));
+    if (!isWholeInt(v))
+        throw RibError(p->location, "parameter \"" + name + "\" must be a whole number that fits an int, got " + std::to_string(v));
     return static_cast<int>(v);
 }
 

@@ -4,6 +4,7 @@
 // its values and where it was written, so that errors and warnings point at it.
 #pragma once
 
+#include <cmath>
 #include <map>
 #include <string>
 #include <vector>
@@ -13,6 +14,9 @@
 #include "core/Math.h"
 
 namespace bxdflab {
+
+/// A whole number an int can hold (converting any other value to int is undefined behaviour).
+inline bool isWholeInt(double d) { return d == std::floor(d) && d >= -2147483648.0 && d <= 2147483647.0; }
 
 enum class ParamType { Float, Int, Color, Point, Vector, Normal, HPoint, String };
 

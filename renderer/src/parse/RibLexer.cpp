@@ -1,6 +1,9 @@
 #include "parse/RibLexer.h"
 
 #include <cctype>
+#include <cfloat>
+#include <cmath>
+#include <cstdio>
 #include <cstdlib>
 
 namespace bxdflab {
@@ -120,6 +123,9 @@ RibToken RibLexer::scan() {
         token.number = std::strtod(token.text.c_str(), &end);
         if (end != token.text.c_str() + token.text.size())
             throw RibError(token.location, "malformed number '" + token.text + "'");
+        // RIB numbers are 32-bit floats: a larger one would silently become infinite.
+        if (!(std::fabs(token.number) <= FLT_MAX))
+            throw RibError(token.location, "number " + token.text + " is too large for a 32-bit float (at most about 3.4e38)");
         token.kind = RibToken::Kind::Number;
         return token;
     }
@@ -130,13 +136,15 @@ RibToken RibLexer::scan() {
         token.text = m_text.substr(start, m_pos - start);
         return token;
     }
-    if (static_cast<unsigned char>(c) >= 0x80)
-        throw RibError(token.location, "unexpected byte 0x" + [&] {
-            static const char* digits = "0123456789abcdef";
-            unsigned char u = static_cast<unsigned char>(c);
-            return std::string{digits[u >> 4], digits[u & 15]};
-        }() + " (binary RIB is not supported)");
-    throw RibError(token.location, std::string("unexpected character '") + c + "'");
+    // Anything else: shown as text when printable, else as a byte value (never raw to the terminal).
+    unsigned char const byte = static_cast<unsigned char>(c);
+    char shown[32];
+    if (std::isprint(byte))
+        std::snprintf(shown, sizeof shown, "character '%c'", c);
+    else
+        std::snprintf(shown, sizeof shown, "byte 0x%02x", byte);
+    throw RibError(token.location, std::string("unexpected ") + shown +
+                                       (byte >= 0x80 || !std::isprint(byte) ? " (binary RIB is not supported)" : ""));
 }
 
 }  // namespace bxdflab

@@ -1,5 +1,6 @@
 #include "parse/RibParser.h"
 
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -72,6 +73,9 @@ void parseRib(std::string const& text, std::string const& fileName, RequestHandl
 }
 
 void parseRibFile(std::string const& path, RequestHandler const& handler) {
+    // A folder opens like an empty file on Linux; say what it is instead of reading nothing.
+    std::error_code error;
+    if (std::filesystem::is_directory(path, error)) throw RenderError("\"" + path + "\" is a folder, not a RIB file");
     std::ifstream in(path, std::ios::binary);
     if (!in) throw RenderError("cannot open RIB file \"" + path + "\"");
     std::ostringstream text;

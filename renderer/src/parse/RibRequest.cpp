@@ -40,6 +40,15 @@ float RequestReader::number(const char* what) {
     fail(v.where, std::string("expected ") + what + " (a number), found " + v.describe());
 }
 
+int RequestReader::integer(const char* what) {
+    RibValue const& v = take(what, "a whole number");
+    if ((v.kind == RibValue::Kind::Number || v.kind == RibValue::Kind::NumberArray) && v.numbers.size() == 1) {
+        if (!isWholeInt(v.numbers[0])) fail(v.where, std::string(what) + " must be a whole number that fits an int");
+        return static_cast<int>(v.numbers[0]);
+    }
+    fail(v.where, std::string("expected ") + what + " (a whole number), found " + v.describe());
+}
+
 std::vector<float> RequestReader::numbers(size_t count, const char* what) {
     std::vector<float> out;
     if (!atEnd() && m_request.args[m_next].kind == RibValue::Kind::NumberArray) {
@@ -74,7 +83,7 @@ std::vector<int> RequestReader::intArray(const char* what) {
         fail(v.where, std::string("expected ") + what + " (an array of integers), found " + v.describe());
     std::vector<int> out;
     for (double d : v.numbers) {
-        if (d != std::floor(d) || std::fabs(d) > 2e9) fail(v.where, std::string(what) + " must be whole numbers");
+        if (!isWholeInt(d)) fail(v.where, std::string(what) + " must be whole numbers that fit an int");
         out.push_back(static_cast<int>(d));
     }
     return out;
@@ -112,7 +121,7 @@ ParamList RequestReader::params() {
             for (double d : value.numbers) {
                 if (!std::isfinite(d)) fail(value.where, "parameter \"" + param.name() + "\" has a non-finite value");
                 if (param.decl.type == ParamType::Int) {
-                    if (d != std::floor(d))
+                    if (!isWholeInt(d))
                         fail(value.where, "parameter \"" + param.name() + "\" is an int but has value " + std::to_string(d));
                     param.ints.push_back(static_cast<int>(d));
                 }

@@ -34,6 +34,8 @@ public:
         : m_request(request), m_declarations(declarations) {}
 
     float number(const char* what);
+    /// A whole number that fits an int (a count, a step).
+    int integer(const char* what);
     /// `count` numbers, given one by one or as one array.
     std::vector<float> numbers(size_t count, const char* what);
     /// One array of numbers of any length (a lone number counts as an array of one).

@@ -18,6 +18,7 @@ namespace fs = std::filesystem;
 namespace {
 constexpr int kMaxArchiveDepth = 32;
 constexpr int kMaxResolution = 16384;
+constexpr int kMaxSamplesPerPixel = 1 << 20;  // as rixrender --spp
 
 std::vector<std::string> splitPath(std::string const& list) {
     std::vector<std::string> parts;
@@ -98,6 +99,9 @@ void SceneBuilder::readFile(std::string const& path) {
                            " of the kinds warned about above " + (m_repeatedWarnings > 1 ? "were" : "was") + " skipped");
     if (m_fileStack.empty() && m_recording)
         m_diagnostics.warn(path + ": " + m_recordingEnd + " missing at the end of the file");
+    if (m_fileStack.empty() && !m_sawWorld)
+        throw RenderError(path + ": there is no WorldBegin, so the file describes nothing to render" +
+                          " (a file of shapes alone is an archive, read from a scene with ReadArchive)");
     if (m_fileStack.empty() && m_blocks.size() > 0)
         m_diagnostics.warn(path + ": " + std::to_string(m_blocks.size()) + " AttributeBegin/TransformBegin left open at end of file");
 }
@@ -204,7 +208,11 @@ void SceneBuilder::pixelSamples(RequestReader& in) {
     std::vector<float> v = in.numbers(2, "xsamples ysamples");
     in.finish();
     if (!(v[0] >= 1.0f && v[1] >= 1.0f)) in.fail(in.where(), "sample counts must be at least 1");
-    m_scene.spp = static_cast<int>(std::ceil(v[0] * v[1]));
+    double spp = std::ceil(static_cast<double>(v[0]) * v[1]);
+    if (spp > kMaxSamplesPerPixel)
+        in.fail(in.where(), "asks for " + std::to_string(spp) + " samples per pixel, more than the limit of " +
+                                std::to_string(kMaxSamplesPerPixel));
+    m_scene.spp = static_cast<int>(spp);
     m_sppFromPixelSamples = true;
 }
 
@@ -214,7 +222,9 @@ void SceneBuilder::hider(RequestReader& in) {
     if (type != "raytrace") warnOnce("hider " + type, in.where(), "Hider \"" + type + "\" treated as \"raytrace\"");
     if (Param const* p = params.find("maxsamples")) {
         int spp = params.getInt("maxsamples", 16);
-        if (spp < 1) throw RibError(p->location, "Hider: maxsamples must be at least 1, got " + std::to_string(spp));
+        if (spp < 1 || spp > kMaxSamplesPerPixel)
+            throw RibError(p->location, "Hider: maxsamples must be between 1 and " + std::to_string(kMaxSamplesPerPixel) +
+                                            ", got " + std::to_string(spp));
         m_scene.spp = spp;
     }
     params.find("minsamples");  // adaptive sampling is not implemented: every pixel gets maxsamples
@@ -332,19 +342,28 @@ void SceneBuilder::identity(RequestReader& in) {
 void SceneBuilder::transform(RequestReader& in) {
     std::vector<float> m = in.numbers(16, "a 4x4 matrix");
     in.finish();
-    state().transform = glm::make_mat4(m.data());
+    setTransform(in, glm::make_mat4(m.data()));
 }
 
 void SceneBuilder::concatTransform(RequestReader& in) {
     std::vector<float> m = in.numbers(16, "a 4x4 matrix");
     in.finish();
-    state().transform = state().transform * glm::make_mat4(m.data());
+    setTransform(in, state().transform * glm::make_mat4(m.data()));
+}
+
+void SceneBuilder::setTransform(RequestReader& in, Mat4 const& transform) {
+    // Each number is a valid float, yet products of large ones overflow; say where it happened.
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j)
+            if (!std::isfinite(transform[i][j]))
+                in.fail(in.where(), "the current transform is no longer finite (the numbers overflow a float)");
+    state().transform = transform;
 }
 
 void SceneBuilder::translate(RequestReader& in) {
     std::vector<float> v = in.numbers(3, "dx dy dz");
     in.finish();
-    state().transform = glm::translate(state().transform, Vec3(v[0], v[1], v[2]));
+    setTransform(in, glm::translate(state().transform, Vec3(v[0], v[1], v[2])));
 }
 
 void SceneBuilder::rotate(RequestReader& in) {
@@ -352,7 +371,7 @@ void SceneBuilder::rotate(RequestReader& in) {
     in.finish();
     Vec3 axis(v[1], v[2], v[3]);
     if (glm::length(axis) == 0.0f) in.fail(in.where(), "rotation axis is the zero vector");
-    state().transform = glm::rotate(state().transform, glm::radians(v[0]), glm::normalize(axis));
+    setTransform(in, glm::rotate(state().transform, glm::radians(v[0]), glm::normalize(axis)));
 }
 
 void SceneBuilder::scale(RequestReader& in) {
@@ -360,7 +379,7 @@ void SceneBuilder::scale(RequestReader& in) {
     in.finish();
     if (v[0] == 0.0f || v[1] == 0.0f || v[2] == 0.0f)
         m_diagnostics.warn(in.where(), "Scale by zero collapses everything that follows");
-    state().transform = glm::scale(state().transform, Vec3(v[0], v[1], v[2]));
+    setTransform(in, glm::scale(state().transform, Vec3(v[0], v[1], v[2])));
 }
 
 void SceneBuilder::attribute(RequestReader& in) {
@@ -447,7 +466,7 @@ void SceneBuilder::light(RequestReader& in) {
     std::string type = in.string("light type");
     std::string handle = in.string("light handle");
     ParamList params = in.params();
-    std::unique_ptr<Light> light = makeLight(type, params, state().transform, currentDirectory(), in.where());
+    std::unique_ptr<Light> light = makeLight(type, params, state().transform, currentDirectory(), in.where(), m_diagnostics);
     if (!light) {
         warnOnce("light " + type, in.where(), "unsupported light type \"" + type + "\" skipped");
         return;
@@ -469,6 +488,11 @@ void SceneBuilder::addShape(std::unique_ptr<Shape> shape, SourceLocation const& 
     for (int i = 0; i < 4; ++i)
         for (int j = 0; j < 4; ++j)
             if (!std::isfinite(state().transform[i][j])) throw RibError(where, "the current transform is not finite");
+    if (auto const* mesh = dynamic_cast<TriangleMesh const*>(shape.get()))
+        for (Vec3 const& p : mesh->data().P)
+            if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+                throw RibError(where, std::string("a point of this ") + shape->kind() +
+                                          " is not finite once transformed to world space (values near the float limit?)");
     shape->visibility = state().visibility;
     shape->name = state().name;
     shape->where = where;
@@ -661,9 +685,9 @@ void SceneBuilder::basis(RequestReader& in) {
             std::vector<float> m = in.numbers(16, what);
             for (int i = 0; i < 16; ++i) bases[k].matrix[i / 4][i % 4] = m[static_cast<size_t>(i)];
         }
-        float step = in.number(k == 0 ? "u step" : "v step");
-        if (step < 1.0f || step != std::floor(step)) in.fail(in.where(), "basis steps must be whole numbers of at least 1");
-        bases[k].step = static_cast<int>(step);
+        int step = in.integer(k == 0 ? "u step" : "v step");
+        if (step < 1) in.fail(in.where(), "basis steps must be whole numbers of at least 1");
+        bases[k].step = step;
     }
     in.finish();
     state().uBasis = bases[0];
@@ -673,9 +697,9 @@ void SceneBuilder::basis(RequestReader& in) {
 
 void SceneBuilder::patchMesh(RequestReader& in) {
     std::string type = in.string("patch type");
-    int nu = static_cast<int>(in.number("nu"));
+    int nu = in.integer("nu");
     std::string uwrap = in.string("uwrap");
-    int nv = static_cast<int>(in.number("nv"));
+    int nv = in.integer("nv");
     std::string vwrap = in.string("vwrap");
     ParamList params = in.params();
     std::vector<Vec3> points = pointsOf(params, in);

@@ -65,6 +65,8 @@ private:
     void translate(RequestReader& in);
     void rotate(RequestReader& in);
     void scale(RequestReader& in);
+    /// Makes `transform` current, or fails at the request if it overflowed.
+    void setTransform(RequestReader& in, Mat4 const& transform);
     void attribute(RequestReader& in);
     void color(RequestReader& in);
     void reverseOrientation(RequestReader& in);

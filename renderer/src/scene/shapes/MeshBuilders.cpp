@@ -332,7 +332,9 @@ MeshData buildBilinearPatchMesh(std::vector<Vec3> const& points, int nu, bool uP
 MeshData buildTorus(float majorRadius, float minorRadius, float phiMinDegrees, float phiMaxDegrees,
                     float thetaMaxDegrees, Mat4 const& toWorld, bool flip) {
     float thetaMax = glm::radians(std::clamp(thetaMaxDegrees, 0.0f, 360.0f));
-    float phiMin = glm::radians(phiMinDegrees), deltaPhi = glm::radians(phiMaxDegrees - phiMinDegrees);
+    // A sweep past a full turn covers nothing more (and would ask for a huge tessellation).
+    float phiMin = glm::radians(phiMinDegrees),
+          deltaPhi = glm::radians(std::clamp(phiMaxDegrees - phiMinDegrees, -360.0f, 360.0f));
     int nu = std::max(4, static_cast<int>(96.0f * thetaMax / (2.0f * kPi)));
     int nv = std::max(4, static_cast<int>(48.0f * std::fabs(deltaPhi) / (2.0f * kPi)));
     MeshData mesh;
