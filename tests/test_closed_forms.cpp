@@ -130,3 +130,23 @@ TEST_CASE("image dome light: a constant lat-long map is importance sampled witho
     // The camera sees the dome itself behind the sphere.
     CHECK(result.channel(0, 0, 1) == Approx(1.0f));
 }
+
+TEST_CASE("image dome light: NaN and negative pixels are taken as black, counted and warned about", "[closed-form][errors]") {
+    // A white sky with one row at -5 (64 pixels) and one NaN pixel: a bad export.
+    std::string path = test::outputDir() + "/damaged-sky.exr";
+    std::vector<float> pixels(64 * 32 * 3, 1.0f);
+    for (int x = 0; x < 64; ++x)
+        for (int c = 0; c < 3; ++c) pixels[(16 * 64 + x) * 3 + c] = -5.0f;
+    pixels[(3 * 64 + 3) * 3 + 1] = std::numeric_limits<float>::quiet_NaN();
+    writeImage(path, pixels, 64, 32, 3);
+    std::string dome = "  Light \"PxrDomeLight\" \"sky\" \"string lightColorMap\" [\"" + path + "\"]\n";
+    RenderSettings settings;
+    settings.spp = 64;
+    auto result = test::renderRib(sphereUnderDome(dome, "1 1 1"), settings);
+    CHECK(result.anyMessageContains("65 pixels of lightColorMap"));
+    for (float v : result.rgba) REQUIRE(std::isfinite(v));
+    CHECK(result.stats.nonFiniteSamples == 0u);
+    // One dark row of 32 costs a little light, no more (a negative one would subtract).
+    CHECK(coveredMean(result, 0) > 0.9);
+    CHECK(coveredMean(result, 0) <= 1.0);
+}

@@ -61,8 +61,40 @@ TEST_CASE("a missing plugin names itself and every folder searched", "[plugins][
 }
 
 TEST_CASE("broken plugins are refused with the reason", "[plugins][errors]") {
-    CHECK_THAT(renderError(withBxdf("Bxdf \"probe_no_create\" \"x\"")), Contains("does not export CreateRixBxdfFactory"));
-    CHECK_THAT(renderError(withBxdf("Bxdf \"probe_null_table\" \"x\"")), Contains("GetParamTable returned null"));
+    struct Case {
+        const char* plugin;
+        const char* reason;
+    };
+    auto c = GENERATE(values<Case>({
+        {"probe_no_create", "does not export CreateRixBxdfFactory"},
+        {"probe_null_table", "GetParamTable returned null"},
+        {"probe_unterminated_table", "has no end marker RixSCParamInfo() in its first 1024 entries"},
+        {"probe_bad_table_entry", "parameter table entry 1 has an empty name"},
+    }));
+    CAPTURE(c.plugin);
+    std::string message = renderError(withBxdf(std::string("Bxdf \"") + c.plugin + "\" \"x\""));
+    CHECK_THAT(message, Contains(c.plugin));
+    CHECK_THAT(message, Contains(c.reason));
+}
+
+TEST_CASE("a file that is not a shared object is refused with its path and the reason", "[plugins][errors]") {
+    namespace fs = std::filesystem;
+    fs::path dir = fs::path(test::outputDir()) / "corrupt-plugin";
+    fs::create_directories(dir);
+    {
+        std::ofstream garbled(dir / "garbled.so");
+        for (int line = 0; line < 100; ++line) garbled << "this text is not an ELF shared object\n";
+    }
+    RenderSettings settings;
+    settings.pluginPath = dir.string();
+    std::string message;
+    try {
+        test::renderRib(withBxdf("Bxdf \"garbled\" \"x\""), settings);
+    } catch (RenderError const& e) {
+        message = e.what();
+    }
+    CHECK_THAT(message, Contains((dir / "garbled.so").string()));
+    CHECK_THAT(message, Contains("invalid ELF header"));
 }
 
 TEST_CASE("parameters are checked against the plugin's table", "[plugins][errors]") {

@@ -73,6 +73,31 @@ TEST_CASE("non-finite Bxdf values are counted, reported and kept out of the imag
     CHECK(test::meanChannel(r, 0, [](int, int) { return true; }) > 0.0);
 }
 
+TEST_CASE("pdfs a Bxdf must not return are counted, reported and never used", "[nonfinite]") {
+    // probe_negative_pdf returns FPdf < 0 on odd points from GenerateSample and EvaluateSample.
+    std::string const scene =
+        "Format 16 16 1\nProjection \"perspective\" \"fov\" [30]\nINTEGRATOR\n"
+        "WorldBegin\n  AttributeBegin\n  Translate 0 2 4\n  Rotate -90 1 0 0\n"
+        "  Light \"PxrDiskLight\" \"key\" \"float intensity\" [20]\n  AttributeEnd\n"
+        "  Translate 0 0 5\n  Bxdf \"BXDF\" \"b\"\n  Sphere 1 -1 1 360\nWorldEnd\n";
+    auto rib = [&](std::string const& integrator, std::string const& bxdf) {
+        std::string text = scene;
+        text.replace(text.find("INTEGRATOR"), 10, integrator);
+        return text.replace(text.find("BXDF"), 4, bxdf);
+    };
+    for (std::string integrator : {"Integrator \"PxrDirectLighting\" \"d\"", "Integrator \"PxrPathTracer\" \"p\""}) {
+        CAPTURE(integrator);
+        auto broken = test::renderRib(rib(integrator, "probe_negative_pdf"));
+        auto sound = test::renderRib(rib(integrator, "probe"));
+        CHECK(broken.stats.invalidPdfSamples > 0u);
+        CHECK(sound.stats.invalidPdfSamples == 0u);
+        CHECK(broken.anyMessageContains("pdf a Bxdf must not return"));
+        for (float v : broken.rgba) REQUIRE(std::isfinite(v));
+        // The points whose pdfs were fine still reflect light.
+        CHECK(test::meanChannel(broken, 0, [](int, int) { return true; }) > 0.0);
+    }
+}
+
 TEST_CASE("the variance image estimates the variance of each pixel mean", "[film]") {
     std::string rib =
         "Format 16 16 1\nProjection \"perspective\" \"fov\" [30]\nIntegrator \"PxrDirectLighting\" \"d\"\n"

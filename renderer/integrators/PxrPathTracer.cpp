@@ -106,7 +106,7 @@ private:
         int rays = 0;
 
         for (int s = 0; s < m_numBxdfSamples; ++s) {
-            q.generate(bxdf, rng);
+            q.generate(bxdf, rng, ictx);
             for (int i = 0; i < n; ++i) {
                 if (!q.lobeSampled[i].GetValid() || !(q.FPdf[i] > 0.0f)) continue;
                 RtVector3 L = q.Ln[i];

@@ -47,9 +47,9 @@ public:
 
         for (int s = 0; s < m_numSamples; ++s) {
             // Red and green: the Bxdf's own samples, then the same directions re-evaluated.
-            generated.generate(bxdf, rng);
+            generated.generate(bxdf, rng, ictx);
             for (int i = 0; i < n; ++i) evaluated.Ln[i] = generated.Ln[i];
-            evaluated.evaluate(bxdf, rng);
+            evaluated.evaluate(bxdf, rng, ictx);
             for (int i = 0; i < n; ++i) {
                 if (!generated.lobeSampled[i].GetValid() || !(generated.FPdf[i] > 0.0f)) continue;
                 float w = generated.W.SumAtPoint(i).Luminance();
@@ -69,7 +69,7 @@ public:
                 RixCosDirectionalDistribution(xi[i], RixGetForwardFacingNormal(Vn[i], Nn[i]), evaluated.Ln[i], cosTheta);
                 cosinePdf[i] = cosTheta * F_INVPI;  // the integrator's pdf, not the Bxdf's
             }
-            evaluated.evaluate(bxdf, rng);
+            evaluated.evaluate(bxdf, rng, ictx);
             for (int i = 0; i < n; ++i) {
                 if (!(cosinePdf[i] > 0.0f)) continue;
                 float blue = evaluated.W.SumAtPoint(i).Luminance() / cosinePdf[i];

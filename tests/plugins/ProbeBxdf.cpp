@@ -4,9 +4,13 @@
 //   PROBE_TANGENTS   asks for Tn and dPdu (to test the on-demand tangent frames)
 //   PROBE_NULL_TABLE GetParamTable returns null
 //   PROBE_NO_CREATE  the create entry point is missing
+//   PROBE_NEGATIVE_PDF  GenerateSample and EvaluateSample return negative pdfs on odd points
+//   PROBE_UNTERMINATED_TABLE  GetParamTable's table has lost its end marker
+//   PROBE_BAD_TABLE_ENTRY     GetParamTable's table has an entry with no name
 #include <cmath>
 #include <limits>
 #include <new>
+#include <vector>
 
 #include "RixBxdf.h"
 #include "RixShadingUtils.h"
@@ -42,6 +46,7 @@ public:
             FPdf[i] = cosTheta * F_INVPI;
             RPdf[i] = FPdf[i];
             w[i] = RtColorRGB(poison(i, 0.5f * FPdf[i]));
+            FPdf[i] = negate(i, FPdf[i]);
             sampled[i] = g_lobe;
             sampled[i].SetValid(true);
         }
@@ -53,6 +58,7 @@ public:
             float cosTheta = RixMax(0.0f, RixGetForwardFacingNormal(m_Vn[i], m_Nn[i]).Dot(Ln[i]));
             FPdf[i] = RPdf[i] = cosTheta * F_INVPI;
             w[i] = RtColorRGB(poison(i, 0.5f * FPdf[i]));
+            FPdf[i] = negate(i, FPdf[i]);
             evaluated[i] = g_traits;
         }
     }
@@ -83,6 +89,14 @@ private:
 #endif
         return value;
     }
+    static float negate(int i, float pdf) {
+#ifdef PROBE_NEGATIVE_PDF
+        if (i % 2) return -pdf - 0.1f;
+#else
+        PIXAR_ARGUSED(i);
+#endif
+        return pdf;
+    }
     RtNormal3 const* m_Nn;
     RtVector3 const* m_Vn;
 #ifdef PROBE_TANGENTS
@@ -95,8 +109,17 @@ public:
     int Init(RixContext&, RtUString const) override { return 0; }
     void Finalize(RixContext&) override {}
     RixSCParamInfo const* GetParamTable() override {
-#ifdef PROBE_NULL_TABLE
+#if defined(PROBE_NULL_TABLE)
         return nullptr;
+#elif defined(PROBE_UNTERMINATED_TABLE)
+        // Far more entries than any plugin has, and no RixSCParamInfo() at the end.
+        static std::vector<RixSCParamInfo> table(5000, RixSCParamInfo(RtUString("gain"), k_RixSCFloat, k_RixSCScatterInput));
+        return table.data();
+#elif defined(PROBE_BAD_TABLE_ENTRY)
+        static RixSCParamInfo table[] = {RixSCParamInfo(RtUString("gain"), k_RixSCFloat, k_RixSCScatterInput),
+                                         RixSCParamInfo(RtUString(""), k_RixSCFloat, k_RixSCScatterInput),
+                                         RixSCParamInfo()};
+        return table;
 #else
         static RixSCParamInfo table[] = {RixSCParamInfo()};
         return table;

@@ -64,6 +64,10 @@ public:
 
     /// Reports a NaN or infinite contribution (a Bxdf bug): counted in the render stats, then dropped.
     virtual void CountNonFinite() = 0;
+    /// Reports a pdf a Bxdf should never return (a Bxdf bug): FPdf <= 0 or NaN for a sample it
+    /// marked valid, or a negative or NaN FPdf from EvaluateSample. Counted in the render stats;
+    /// the sample is dropped (its pdf taken as 0).
+    virtual void CountInvalidPdf() = 0;
 };
 
 /// Which effects a render simulates and which it skips, for the stats.
@@ -97,7 +101,7 @@ PRMAN_INLINE float RixPowerHeuristic(float nf, float pdfF, float ng, float pdfG)
 }
 
 /// Version of this API; the renderer refuses integrators built against another one.
-#define RIX_INTEGRATOR_API_VERSION 1
+#define RIX_INTEGRATOR_API_VERSION 2
 extern "C" PRMANEXPORT __attribute__((weak)) int RixIntegratorPluginApiVersion() { return RIX_INTEGRATOR_API_VERSION; }
 
 /// Create an integrator from the RIB's parameters. Return null (after saying

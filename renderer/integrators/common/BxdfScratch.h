@@ -8,6 +8,7 @@
 namespace bxdflab {
 
 struct BxdfScratch {
+    int numPts;
     RixBXLobeTraits* lobesWanted;     ///< all lobes, for every point
     RixBXLobeTraits* lobesEvaluated;
     RixBXLobeSampled* lobeSampled;
@@ -17,7 +18,8 @@ struct BxdfScratch {
     RixBXLobeWeights W;
 
     explicit BxdfScratch(RixShadingContext const& ctx)
-        : lobesWanted(RixShadingContext::Allocator(&ctx).AllocFor<RixBXLobeTraits>(ctx.numPts)),
+        : numPts(ctx.numPts),
+          lobesWanted(RixShadingContext::Allocator(&ctx).AllocFor<RixBXLobeTraits>(ctx.numPts)),
           lobesEvaluated(RixShadingContext::Allocator(&ctx).AllocFor<RixBXLobeTraits>(ctx.numPts)),
           lobeSampled(RixShadingContext::Allocator(&ctx).AllocFor<RixBXLobeSampled>(ctx.numPts)),
           Ln(RixShadingContext::Allocator(&ctx).AllocFor<RtVector3>(ctx.numPts)),
@@ -27,14 +29,29 @@ struct BxdfScratch {
         for (int i = 0; i < ctx.numPts; ++i) lobesWanted[i] = RixBXLobeTraits::All();
     }
 
-    void generate(RixBxdf& bxdf, RixRNG& rng) {
+    /// One sample per point. A sample the Bxdf marks valid must have FPdf > 0;
+    /// one that does not (zero, negative or NaN) is a Bxdf bug: it is reported
+    /// (counted in the render stats) and marked invalid, so no integrator uses it.
+    void generate(RixBxdf& bxdf, RixRNG& rng, RixIntegratorContext& ictx) {
         W.ClearActiveLobes();
         bxdf.GenerateSample(k_RixBXDirectLighting, lobesWanted, &rng, lobeSampled, Ln, W, FPdf, RPdf);
+        for (int i = 0; i < numPts; ++i)
+            if (lobeSampled[i].GetValid() && !(FPdf[i] > 0.0f)) {
+                ictx.CountInvalidPdf();
+                lobeSampled[i].SetValid(false);
+            }
     }
-    /// Evaluates the directions currently in Ln.
-    void evaluate(RixBxdf& bxdf, RixRNG& rng) {
+    /// Evaluates the directions currently in Ln. FPdf may be 0 (the Bxdf would
+    /// never choose Ln) but not negative or NaN: such a value is reported and
+    /// taken as 0.
+    void evaluate(RixBxdf& bxdf, RixRNG& rng, RixIntegratorContext& ictx) {
         W.ClearActiveLobes();
         bxdf.EvaluateSample(k_RixBXDirectLighting, lobesWanted, &rng, lobesEvaluated, Ln, W, FPdf, RPdf);
+        for (int i = 0; i < numPts; ++i)
+            if (!(FPdf[i] >= 0.0f)) {
+                ictx.CountInvalidPdf();
+                FPdf[i] = 0.0f;
+            }
     }
 };
 

@@ -56,7 +56,7 @@ void addLightSamples(RixShadingContext const& ctx, RixBxdf& bxdf, RixRNG& rng, R
                 lightSample[i] = ictx.SampleLight(light, P[i], xi[i]);
                 q.Ln[i] = lightSample[i].wi;
             }
-            q.evaluate(bxdf, rng);
+            q.evaluate(bxdf, rng, ictx);
             for (int i = 0; i < n; ++i) {
                 RixLightSample const& ls = lightSample[i];
                 if (!(ls.pdf > 0.0f) || ls.radiance.IsBlack()) continue;
@@ -115,7 +115,7 @@ void DirectLighting::Integrate(RixShadingContext const& ctx, RixBxdf& bxdf, RixR
     BxdfScratch q(ctx);
     float const nL = static_cast<float>(m_numLightSamples), nB = static_cast<float>(m_numBxdfSamples);
     for (int s = 0; s < m_numBxdfSamples; ++s) {
-        q.generate(bxdf, rng);
+        q.generate(bxdf, rng, ictx);
         for (int i = 0; i < n; ++i) {
             if (!q.lobeSampled[i].GetValid() || !(q.FPdf[i] > 0.0f)) continue;
             if (!isFinite(q.Ln[i]) || q.Ln[i].IsZero()) {

@@ -38,6 +38,7 @@ public:
                        bool const* shade, RixRNG::SampleCtx const* samples, RixLightHit* lightHits,
                        std::function<void(RixShadeBatch&)> const& visit) override;
     void CountNonFinite() override { ++m_nonFinite; }
+    void CountInvalidPdf() override { ++m_invalidPdf; }
 
     /// Shades hits as batches grouped by Bxdf (camera hits use this too).
     void shade(HitRecord const* hits, RixRNG::SampleCtx const* samples, int count, BatchShader::Visitor const& visit) {
@@ -45,6 +46,7 @@ public:
     }
     RayCounts& rayCounts() { return m_counts; }
     uint64_t takeNonFinite() { return std::exchange(m_nonFinite, 0); }
+    uint64_t takeInvalidPdf() { return std::exchange(m_invalidPdf, 0); }
 
 private:
     /// Where a ray from point i of ctx toward dir starts (pushed off the surface).
@@ -58,6 +60,7 @@ private:
     MemoryArena& m_arena;
     RayCounts m_counts;
     uint64_t m_nonFinite = 0;
+    uint64_t m_invalidPdf = 0;
 };
 
 }  // namespace bxdflab

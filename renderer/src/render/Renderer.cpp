@@ -82,6 +82,7 @@ struct Renderer::Impl {
     ShadingCounters counters;
     std::unique_ptr<BatchShader> shader;
     std::atomic<uint64_t> nonFinite{0};
+    std::atomic<uint64_t> invalidPdf{0};
 
     Impl(Scene& s, RenderSettings const& rs, Diagnostics& d)
         : scene(s),
@@ -238,6 +239,7 @@ void Renderer::Impl::shadeChunk(Worker& w, int count) {
     w.arena.reset();
     tracer->counters().add(services.rayCounts());
     nonFinite.fetch_add(services.takeNonFinite(), std::memory_order_relaxed);
+    invalidPdf.fetch_add(services.takeInvalidPdf(), std::memory_order_relaxed);
 }
 
 RayTracer& Renderer::tracer() { return *m_impl->tracer; }
@@ -271,6 +273,7 @@ Film Renderer::render() {
     m_stats.surfacePoints = r.counters.builtins.surfacePoints.load();
     m_stats.tangentPoints = r.counters.builtins.tangentPoints.load();
     m_stats.nonFiniteSamples = r.nonFinite.load();
+    m_stats.invalidPdfSamples = r.invalidPdf.load();
 
     // Effects decided while shading: tangent frames are computed only on request.
     auto& effects = m_stats.effects;
@@ -281,6 +284,10 @@ Film Renderer::render() {
     if (m_stats.nonFiniteSamples > 0)
         r.diagnostics.warn(std::to_string(m_stats.nonFiniteSamples) +
                            " non-finite (NaN or infinite) sample values were dropped; check the Bxdf for divisions by zero");
+    if (m_stats.invalidPdfSamples > 0)
+        r.diagnostics.warn(std::to_string(m_stats.invalidPdfSamples) +
+                           " samples came with a pdf a Bxdf must not return (FPdf <= 0 or NaN on a valid sample, or a "
+                           "negative or NaN FPdf from EvaluateSample) and were dropped; rixwarp and rixgrade show where");
     return film;
 }
 
@@ -304,6 +311,7 @@ nlohmann::json RenderStats::toJson(Diagnostics const& diagnostics) const {
         {"batches", batches},
         {"builtins", {{"surface_points", surfacePoints}, {"tangent_points", tangentPoints}}},
         {"nonfinite_samples", nonFiniteSamples},
+        {"invalid_pdf_samples", invalidPdfSamples},
         {"effects", {{"simulated", effects.simulated}, {"skipped", skipped}}},
         {"plugins", plugins},
         {"warnings", warnings},

@@ -35,6 +35,7 @@ struct RenderStats {
     uint64_t shadePoints = 0, batches = 0;
     uint64_t surfacePoints = 0, tangentPoints = 0;
     uint64_t nonFiniteSamples = 0;
+    uint64_t invalidPdfSamples = 0;  ///< pdfs a Bxdf must not return (see RixIntegratorContext::CountInvalidPdf)
     EffectReport effects;
     std::vector<std::string> plugins;
     std::string integrator;

@@ -69,9 +69,14 @@ DomeLight::DomeLight(Mat4 const& lightToWorld, std::string const& imagePath) {
         for (int x = 0; x < m_width; ++x) {
             float const* p = &row[static_cast<size_t>(x) * channels];
             Vec3 rgb = channels >= 3 ? Vec3(p[0], p[1], p[2]) : Vec3(p[0]);
-            if (!isFinite(rgb)) rgb = Vec3(0.0f);
+            // Light cannot be negative or undefined: such pixels (a bad export) become black,
+            // for lookups and for the sampling distribution alike, and are counted.
+            if (!isFinite(rgb) || rgb.x < 0.0f || rgb.y < 0.0f || rgb.z < 0.0f) {
+                rgb = isFinite(rgb) ? glm::max(rgb, Vec3(0.0f)) : Vec3(0.0f);
+                ++m_repairedPixels;
+            }
             size_t index = static_cast<size_t>(y) * m_width + x;
-            m_pixels[index] = glm::max(rgb, Vec3(0.0f));
+            m_pixels[index] = rgb;
             weights[index] = (0.2126f * rgb.x + 0.7152f * rgb.y + 0.0722f * rgb.z) * sinTheta;
         }
     }

@@ -34,6 +34,8 @@ class DomeLight final : public Light {
 public:
     /// Loads the image if `imagePath` is not empty (throws RenderError if it cannot).
     DomeLight(Mat4 const& lightToWorld, std::string const& imagePath);
+    /// Pixels of the image that were NaN, infinite or negative (taken as black).
+    long repairedPixels() const { return m_repairedPixels; }
     const char* kind() const override { return "PxrDomeLight"; }
     LightSample sample(Vec3 const& P, Vec2 const& xi) const override;
     bool intersect(Vec3 const& org, Vec3 const& dir, float& distance, RtColorRGB& radiance, float& pdf) const override;
@@ -48,6 +50,7 @@ private:
 
     Mat3 m_toWorld, m_toLight;
     int m_width = 0, m_height = 0;
+    long m_repairedPixels = 0;
     std::vector<Vec3> m_pixels;
     Distribution2D m_distribution;
 };

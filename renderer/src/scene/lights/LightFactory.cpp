@@ -9,7 +9,7 @@
 namespace bxdflab {
 
 std::unique_ptr<Light> makeLight(std::string const& type, ParamList const& params, Mat4 const& lightToWorld,
-                                 std::string const& baseDir, SourceLocation const& where) {
+                                 std::string const& baseDir, SourceLocation const& where, Diagnostics& diagnostics) {
     std::unique_ptr<Light> light;
     if (type == "PxrDiskLight") {
         light = std::make_unique<PlanarLight>(PlanarLight::Shape::Disk, lightToWorld);
@@ -28,7 +28,18 @@ std::unique_ptr<Light> makeLight(std::string const& type, ParamList const& param
             map = (std::filesystem::path(baseDir) / map).string();
         if (!map.empty() && !std::filesystem::exists(map))
             throw RibError(where, "PxrDomeLight: lightColorMap \"" + map + "\" does not exist");
-        light = std::make_unique<DomeLight>(lightToWorld, map);
+        std::unique_ptr<DomeLight> dome;
+        try {
+            dome = std::make_unique<DomeLight>(lightToWorld, map);
+        } catch (RibError const&) {
+            throw;
+        } catch (RenderError const& error) {
+            throw RibError(where, error.what());  // an unreadable image: say which statement named it
+        }
+        if (dome->repairedPixels() > 0)
+            diagnostics.warn(where, "PxrDomeLight: " + std::to_string(dome->repairedPixels()) + " pixels of lightColorMap \"" +
+                                        map + "\" are NaN, infinite or negative; they are taken as black");
+        light = std::move(dome);
     } else {
         return nullptr;
     }
