@@ -19,13 +19,33 @@ std::string Outcome::describe(Limits const& limits) const {
         const char* name = signal == SIGSEGV ? "SIGSEGV" : signal == SIGABRT ? "SIGABRT" : signal == SIGFPE ? "SIGFPE"
                            : signal == SIGKILL ? "SIGKILL (a resource limit?)" : signal == SIGXCPU ? "SIGXCPU (CPU limit)"
                            : signal == SIGBUS ? "SIGBUS" : "a signal";
+        if (signal == SIGSYS) return "was stopped (SIGSYS): it tried to start a process, which plugins may not do";
         return std::string("crashed with ") + name + " (signal " + std::to_string(signal) + ")";
     }
+    if (exitCode == 125) return "could not be confined to its scratch folder (exit status 125)";
     return "exited with status " + std::to_string(exitCode);
 }
 
 Outcome run(std::vector<std::string> const& argv, std::map<std::string, std::string> const& environment,
-            std::string const& workingDirectory, Limits const& limits) {
+            std::string const& workingDirectory, Limits const& limits, SandboxPolicy const& sandboxPolicy) {
+    // Everything that allocates happens before fork: between fork and exec the
+    // child of a multi-threaded grader may only make system calls.
+    Sandbox const sandbox(sandboxPolicy);
+    std::map<std::string, std::string> merged;
+    for (char** entry = environ; *entry; ++entry) {
+        std::string const text = *entry;
+        size_t const equals = text.find('=');
+        if (equals != std::string::npos) merged[text.substr(0, equals)] = text.substr(equals + 1);
+    }
+    for (auto const& [key, value] : environment) merged[key] = value;
+    std::vector<std::string> envStrings;
+    for (auto const& [key, value] : merged) envStrings.push_back(key + "=" + value);
+    std::vector<char*> envp, args;
+    for (auto& e : envStrings) envp.push_back(e.data());
+    envp.push_back(nullptr);
+    for (auto const& a : argv) args.push_back(const_cast<char*>(a.c_str()));
+    args.push_back(nullptr);
+
     int outPipe[2], errPipe[2];
     if (pipe(outPipe) != 0 || pipe(errPipe) != 0) throw std::runtime_error("cannot create pipes");
     auto start = std::chrono::steady_clock::now();
@@ -47,11 +67,8 @@ Outcome run(std::vector<std::string> const& argv, std::map<std::string, std::str
         int devnull = open("/dev/null", O_RDONLY);
         if (devnull >= 0) dup2(devnull, STDIN_FILENO);
         if (!workingDirectory.empty() && chdir(workingDirectory.c_str()) != 0) _exit(126);
-        for (auto const& [key, value] : environment) setenv(key.c_str(), value.c_str(), 1);
-        std::vector<char*> args;
-        for (auto const& a : argv) args.push_back(const_cast<char*>(a.c_str()));
-        args.push_back(nullptr);
-        execvp(args[0], args.data());
+        if (!sandbox.enter()) _exit(125);
+        execvpe(args[0], args.data(), envp.data());
         _exit(127);
     }
     setpgid(pid, pid);

@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "Sandbox.h"
+
 namespace rixgrade {
 
 struct Limits {
@@ -23,11 +25,14 @@ struct Outcome {
     std::string out, err;
     double seconds = 0.0;
     bool ok() const { return !timedOut && signal == 0 && exitCode == 0; }
-    /// "exited with status 2", "crashed with SIGSEGV", "did not finish within 120 s".
+    /// "exited with status 2", "crashed with SIGSEGV", "did not finish within 120 s",
+    /// "was stopped: it tried to start a process".
     std::string describe(Limits const& limits) const;
 };
 
+/// Runs argv (searched in PATH) with `environment` added to this process's,
+/// in `workingDirectory`, under `limits` and confined by `sandbox`.
 Outcome run(std::vector<std::string> const& argv, std::map<std::string, std::string> const& environment,
-            std::string const& workingDirectory, Limits const& limits);
+            std::string const& workingDirectory, Limits const& limits, SandboxPolicy const& sandbox = {});
 
 }  // namespace rixgrade

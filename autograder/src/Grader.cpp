@@ -45,13 +45,26 @@ std::string firstFailure(std::string const& junit) {
     return text.size() > 1500 ? text.substr(0, 1500) + " ..." : text;
 }
 
+/// Student code (checks and renders) may write only into the grading folder
+/// and may not start processes; a build may start processes (compilers).
+SandboxPolicy confined(GradeOptions const& options, bool allowNewProcesses = false) {
+    return {{options.out}, allowNewProcesses};
+}
+
+/// Children keep their temporary files in the grading folder too.
+std::map<std::string, std::string> childEnvironment(GradeOptions const& options, std::map<std::string, std::string> extra = {}) {
+    extra["TMPDIR"] = options.out + "/tmp";
+    return extra;
+}
+
 CheckResult runCheck(GradeOptions const& options, std::string const& pluginDir, std::string const& chapter,
                      std::string const& plugin, std::string const& check, double points) {
     CheckResult r{chapter, plugin, check, 0.0, points, false, "", 0.0};
     Limits limits;
     limits.seconds = options.rubric.value("check_timeout_s", 120.0);
     Outcome outcome = run({options.binDir + "/rixcheck", "[" + check + "]", "-r", "junit"},
-                          {{"RIXCHECK_PLUGIN", plugin}, {"RIXCHECK_PLUGIN_DIR", pluginDir}}, options.out, limits);
+                          childEnvironment(options, {{"RIXCHECK_PLUGIN", plugin}, {"RIXCHECK_PLUGIN_DIR", pluginDir}}),
+                          options.out, limits, confined(options));
     r.seconds = outcome.seconds;
     if (outcome.ok()) {
         r.passed = true;
@@ -80,7 +93,7 @@ CheckResult runRender(GradeOptions const& options, std::string const& pluginDir,
                                          "-o", dir + "/" + who + ".exr", "--variance", dir + "/" + who + "-variance.exr"};
         argv.insert(argv.end(), extra.begin(), extra.end());
         argv.push_back(scenePath);
-        return run(argv, {}, options.out, limits);
+        return run(argv, childEnvironment(options), options.out, limits, confined(options));
     };
     Outcome mine = render("student", "1", {"--plugin-path", pluginDir});
     Outcome theirs = render("solution", "2", {});
@@ -100,7 +113,7 @@ CheckResult runRender(GradeOptions const& options, std::string const& pluginDir,
     r.output = v.message;
     // Display versions for the HTML report.
     run({options.binDir + "/rixdiff", dir + "/student.exr", dir + "/solution.exr", "--heatmap", dir + "/difference.png"},
-        {}, options.out, limits);
+        childEnvironment(options), options.out, limits, confined(options));
     for (std::string who : {"student", "solution"}) toDisplayPng(dir + "/" + who + ".exr", dir + "/" + who + ".png");
     return r;
 }
@@ -112,6 +125,7 @@ Grade grade(GradeOptions const& options) {
     Grade g;
     g.submission = options.submission.empty() ? options.plugins : options.submission;
     fs::create_directories(options.out);
+    fs::create_directories(options.out + "/tmp");
 
     std::string pluginDir = options.plugins;
     if (pluginDir.empty()) {
@@ -121,8 +135,10 @@ Grade grade(GradeOptions const& options) {
         limits.seconds = 600;
         Outcome configure = run({"cmake", "-S", options.submission, "-B", build, "-DBXDFLAB_ROOT=" + options.root,
                                  "-DCMAKE_BUILD_TYPE=Release"},
-                                {}, options.out, limits);
-        Outcome compile = configure.ok() ? run({"cmake", "--build", build, "--parallel", "2"}, {}, options.out, limits) : configure;
+                                childEnvironment(options), options.out, limits, confined(options, true));
+        Outcome compile = configure.ok() ? run({"cmake", "--build", build, "--parallel", "2"}, childEnvironment(options),
+                                               options.out, limits, confined(options, true))
+                                         : configure;
         g.buildLog = configure.out + configure.err + (configure.ok() ? compile.out + compile.err : "");
         g.built = configure.ok() && compile.ok();
         std::regex warning("warning:");

@@ -5,17 +5,19 @@
 // Instructor, on a class (one sub-folder per student):
 //   rixgrade --class DIR --jobs N --out grades
 // Every check that runs student code runs in a child process with a timeout
-// and resource limits. Points come from autograder/rubric.json (or --rubric).
+// and resource limits, may write only inside the output folder, and may not
+// start processes (Sandbox.h). Points come from autograder/rubric.json (or --rubric).
 // Nothing is written inside a submission.
-#include <CLI/CLI.hpp>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <mutex>
 #include <thread>
 
+#include "CommandLine.h"
 #include "Grader.h"
 #include "Reports.h"
+#include "Sandbox.h"
 
 namespace fs = std::filesystem;
 using namespace rixgrade;
@@ -49,7 +51,7 @@ int main(int argc, char** argv) {
     app.add_option("--out", out, "where reports and scratch files go (default: grade, or grades for --class)");
     app.add_option("--jobs", jobs, "students graded at once (--class)")->check(CLI::Range(1, 64));
     app.add_option("--rubric", rubricPath, "points per check per plugin (JSON)");
-    CLI11_PARSE(app, argc, argv);
+    BXDFLAB_PARSE_COMMAND_LINE(app, argc, argv);
     if (submission.empty() && plugins.empty() && classDir.empty()) {
         std::cerr << "rixgrade: give --submission DIR, --plugins DIR or --class DIR\n";
         return 2;
@@ -62,6 +64,9 @@ int main(int argc, char** argv) {
         base.chapters = chapters;
         base.root = BXDFLAB_SOURCE_DIR;
         base.binDir = binDirectory();
+        if (!Sandbox::writeConfinementAvailable())
+            std::cerr << "rixgrade: warning: this kernel has no Landlock, so student code is not kept from writing "
+                         "outside the grading folder (Linux 5.13 or later confines it)\n";
 
         if (classDir.empty()) {
             base.submission = submission.empty() ? "" : fs::absolute(submission).string();

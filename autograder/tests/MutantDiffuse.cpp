@@ -21,9 +21,17 @@
 //   hostile (grading must survive and report):
 //     201 segfault in GenerateSample   202 abort   203 endless loop   204 huge allocation
 //     205 throws an exception           206 floods stdout (contained: output is capped)
+//     207 a fork bomb (bounded to 64 sleeping children, in case containment ever failed)
+//     208 tries to change files outside its scratch folder: the folder named by
+//         $RIXGRADE_TEST_OUTSIDE and its own plugin folder; then works correctly
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <string>
 #include <new>
 #include <stdexcept>
 #include <vector>
@@ -151,9 +159,44 @@ private:
             case 203: for (volatile int k = 0;; k = k + 1) {}
             case 204: { std::vector<char> huge(static_cast<size_t>(64) << 30); huge[0] = 1; std::printf("%d", huge[0]); break; }
             case 205: throw std::runtime_error("a student's exception");
-            case 206: for (int k = 0; k < 10000000; ++k) std::printf("spam spam spam spam\n");
+            case 206: for (int k = 0; k < 10000000; ++k) std::printf("spam spam spam spam\n"); break;
+            case 207:
+                for (int k = 0; k < 64; ++k) {
+                    pid_t child = fork();
+                    if (child == 0) {
+                        pause();
+                        _exit(0);
+                    }
+                    if (child < 0) break;
+                }
+                break;
+            case 208: {
+                static bool tried = false;
+                if (tried) break;
+                tried = true;
+                for (const char* variable : {"RIXGRADE_TEST_OUTSIDE", "RIXCHECK_PLUGIN_DIR"})
+                    if (const char* folder = std::getenv(variable)) vandalise(folder);
+                break;
+            }
             default: break;
         }
+    }
+    /// Every way of changing a folder's files a plugin might try (each should fail).
+    static void vandalise(std::string const& folder) {
+        std::string const canary = folder + "/canary.txt";
+        if (FILE* f = std::fopen(canary.c_str(), "w")) {  // truncate and overwrite
+            std::fputs("overwritten", f);
+            std::fclose(f);
+        }
+        if (FILE* f = std::fopen(canary.c_str(), "a")) std::fclose(f);
+        if (FILE* f = std::fopen((folder + "/planted.txt").c_str(), "w")) std::fclose(f);
+        if (truncate(canary.c_str(), 0) == 0) std::fputs("truncated\n", stderr);
+        if (unlink(canary.c_str()) == 0) std::fputs("removed\n", stderr);
+        if (rename(canary.c_str(), (folder + "/moved.txt").c_str()) == 0) std::fputs("renamed\n", stderr);
+        if (mkdir((folder + "/planted-folder").c_str(), 0755) == 0) std::fputs("made a folder\n", stderr);
+        if (symlink("/etc/passwd", (folder + "/planted-link").c_str()) == 0) std::fputs("linked\n", stderr);
+        if (chmod(canary.c_str(), 0777) == 0) std::fputs("changed a mode\n", stderr);
+        if (utimensat(AT_FDCWD, canary.c_str(), nullptr, 0) == 0) std::fputs("touched\n", stderr);
     }
     RtColorRGB const* m_albedo;
     RtNormal3 const* m_Nn;
