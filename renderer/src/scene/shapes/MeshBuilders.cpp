@@ -92,28 +92,55 @@ std::vector<int> triangulateLoop(std::vector<Vec3> const& corners) {
     return triangles;
 }
 
-/// Samples a parametric surface on an (nu+1) x (nv+1) grid into `mesh`.
 using SurfaceFunction = std::function<void(float u, float v, Vec3& P, Vec3& dPdu, Vec3& dPdv)>;
 
-void tessellate(MeshData& mesh, int nu, int nv, SurfaceFunction const& surface, Mat4 const& toWorld, bool flip) {
-    Mat3 linear(toWorld);
-    float sign = flip ? -1.0f : 1.0f;
-    unsigned base = static_cast<unsigned>(mesh.P.size());
+/// A parametric surface sampled on an (nu+1) x (nv+1) grid, in its own space.
+/// Sampling is the costly half of tessellation; a surface used again and again
+/// (the teapot's patches) keeps its grid and is only placed each time.
+struct SurfaceGrid {
+    int nu = 0, nv = 0;
+    std::vector<Vec3> P, dPdu, dPdv;
+    /// The derivatives a small step inside the patch, for the normal where an
+    /// edge collapses (the teapot's lid apex, a pole).
+    std::vector<Vec3> insideDu, insideDv;
+};
+
+SurfaceGrid sampleSurface(int nu, int nv, SurfaceFunction const& surface) {
+    SurfaceGrid grid;
+    grid.nu = nu;
+    grid.nv = nv;
+    size_t const count = static_cast<size_t>(nu + 1) * static_cast<size_t>(nv + 1);
+    for (auto* values : {&grid.P, &grid.dPdu, &grid.dPdv, &grid.insideDu, &grid.insideDv}) values->reserve(count);
     for (int j = 0; j <= nv; ++j)
         for (int i = 0; i <= nu; ++i) {
             float u = static_cast<float>(i) / nu, v = static_cast<float>(j) / nv;
-            Vec3 P, dPdu, dPdv;
+            Vec3 P, dPdu, dPdv, insideP, insideDu, insideDv;
             surface(u, v, P, dPdu, dPdv);
-            Vec3 worldDu = linear * dPdu, worldDv = linear * dPdv;
+            surface(u + (u < 0.5f ? 1e-3f : -1e-3f), v + (v < 0.5f ? 1e-3f : -1e-3f), insideP, insideDu, insideDv);
+            grid.P.push_back(P);
+            grid.dPdu.push_back(dPdu);
+            grid.dPdv.push_back(dPdv);
+            grid.insideDu.push_back(insideDu);
+            grid.insideDv.push_back(insideDv);
+        }
+    return grid;
+}
+
+/// Appends a sampled surface to `mesh`, transformed to world space.
+void placeGrid(MeshData& mesh, SurfaceGrid const& grid, Mat4 const& toWorld, bool flip) {
+    Mat3 linear(toWorld);
+    float sign = flip ? -1.0f : 1.0f;
+    unsigned base = static_cast<unsigned>(mesh.P.size());
+    int const nu = grid.nu, nv = grid.nv;
+    size_t k = 0;
+    for (int j = 0; j <= nv; ++j)
+        for (int i = 0; i <= nu; ++i, ++k) {
+            float u = static_cast<float>(i) / nu, v = static_cast<float>(j) / nv;
+            Vec3 worldDu = linear * grid.dPdu[k], worldDv = linear * grid.dPdv[k];
             Vec3 n = glm::cross(worldDu, worldDv);
-            if (glm::length(n) < 1e-6f * (glm::length(worldDu) + glm::length(worldDv) + 1e-12f)) {
-                // A collapsed edge (the teapot's lid apex, a pole): take the
-                // normal a small step inside the patch instead.
-                Vec3 P2, du2, dv2;
-                surface(u + (u < 0.5f ? 1e-3f : -1e-3f), v + (v < 0.5f ? 1e-3f : -1e-3f), P2, du2, dv2);
-                n = glm::cross(linear * du2, linear * dv2);
-            }
-            mesh.P.push_back(transformPoint(toWorld, P));
+            if (glm::length(n) < 1e-6f * (glm::length(worldDu) + glm::length(worldDv) + 1e-12f))
+                n = glm::cross(linear * grid.insideDu[k], linear * grid.insideDv[k]);  // a collapsed edge
+            mesh.P.push_back(transformPoint(toWorld, grid.P[k]));
             mesh.N.push_back(sign * safeNormalize(n));
             mesh.uv.emplace_back(u, v);
             mesh.dPdu.push_back(worldDu);
@@ -125,6 +152,11 @@ void tessellate(MeshData& mesh, int nu, int nv, SurfaceFunction const& surface, 
             unsigned b = a + 1, c = a + static_cast<unsigned>(nu + 1), d = c + 1;
             mesh.indices.insert(mesh.indices.end(), {a, b, d, a, d, c});
         }
+}
+
+/// Samples a parametric surface on an (nu+1) x (nv+1) grid into `mesh`.
+void tessellate(MeshData& mesh, int nu, int nv, SurfaceFunction const& surface, Mat4 const& toWorld, bool flip) {
+    placeGrid(mesh, sampleSurface(nu, nv, surface), toWorld, flip);
 }
 
 }  // namespace
@@ -268,6 +300,22 @@ void splineWeights(SplineBasis const& basis, float t, float w[4], float dw[4]) {
     }
 }
 
+/// One bicubic patch, control[row in v][column in u], sampled on a 13 x 13 grid.
+SurfaceGrid sampleBicubicPatch(Vec3 const (&control)[4][4], SplineBasis const& uBasis, SplineBasis const& vBasis) {
+    return sampleSurface(12, 12, [&](float u, float v, Vec3& P, Vec3& dPdu, Vec3& dPdv) {
+        float wu[4], dwu[4], wv[4], dwv[4];
+        splineWeights(uBasis, u, wu, dwu);
+        splineWeights(vBasis, v, wv, dwv);
+        P = dPdu = dPdv = Vec3(0.0f);
+        for (int j = 0; j < 4; ++j)
+            for (int i = 0; i < 4; ++i) {
+                P += wu[i] * wv[j] * control[j][i];
+                dPdu += dwu[i] * wv[j] * control[j][i];
+                dPdv += wu[i] * dwv[j] * control[j][i];
+            }
+    });
+}
+
 int patchCount(int points, bool periodic, int step, int order, SourceLocation const& where, const char* axis) {
     int count = periodic ? points / step : (points - order) / step + 1;
     bool fits = periodic ? points % step == 0 : points >= order && (points - order) % step == 0;
@@ -296,21 +344,7 @@ MeshData buildBicubicPatchMesh(std::vector<Vec3> const& points, int nu, bool uPe
                     int col = (pu * uBasis.step + i) % nu, row = (pv * vBasis.step + j) % nv;
                     control[j][i] = points[static_cast<size_t>(row) * static_cast<size_t>(nu) + static_cast<size_t>(col)];
                 }
-            tessellate(
-                mesh, 12, 12,
-                [&](float u, float v, Vec3& P, Vec3& dPdu, Vec3& dPdv) {
-                    float wu[4], dwu[4], wv[4], dwv[4];
-                    splineWeights(uBasis, u, wu, dwu);
-                    splineWeights(vBasis, v, wv, dwv);
-                    P = dPdu = dPdv = Vec3(0.0f);
-                    for (int j = 0; j < 4; ++j)
-                        for (int i = 0; i < 4; ++i) {
-                            P += wu[i] * wv[j] * control[j][i];
-                            dPdu += dwu[i] * wv[j] * control[j][i];
-                            dPdv += wu[i] * dwv[j] * control[j][i];
-                        }
-                },
-                toWorld, flip);
+            placeGrid(mesh, sampleBicubicPatch(control, uBasis, vBasis), toWorld, flip);
         }
     mesh.st = mesh.uv;
     return mesh;
@@ -354,16 +388,22 @@ MeshData buildTorus(float majorRadius, float minorRadius, float phiMinDegrees, f
 }
 
 MeshData buildTeapot(Mat4 const& toWorld, bool flip) {
-    MeshData mesh;
-    for (auto const& patch : teapot::kPatches) {
-        std::vector<Vec3> control;
-        for (int k = 0; k < 16; ++k) {
-            float const* p = teapot::kPoints[patch[k] - 1];
-            control.emplace_back(p[0], p[1], p[2]);
+    // The 32 Bezier patches are the same for every teapot: sampled once.
+    static std::vector<SurfaceGrid> const patches = [] {
+        std::vector<SurfaceGrid> grids;
+        for (auto const& patch : teapot::kPatches) {
+            Vec3 control[4][4];
+            for (int k = 0; k < 16; ++k) {
+                float const* p = teapot::kPoints[patch[k] - 1];
+                control[k / 4][k % 4] = Vec3(p[0], p[1], p[2]);
+            }
+            grids.push_back(sampleBicubicPatch(control, SplineBasis::bezier(), SplineBasis::bezier()));
         }
-        mesh.append(buildBicubicPatchMesh(control, 4, false, 4, false, SplineBasis::bezier(), SplineBasis::bezier(),
-                                          toWorld, flip, SourceLocation{}));
-    }
+        return grids;
+    }();
+    MeshData mesh;
+    for (SurfaceGrid const& grid : patches) placeGrid(mesh, grid, toWorld, flip);
+    mesh.st = mesh.uv;
     return mesh;
 }
 
