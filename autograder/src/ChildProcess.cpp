@@ -38,6 +38,15 @@ Outcome run(std::vector<std::string> const& argv, std::map<std::string, std::str
         if (equals != std::string::npos) merged[text.substr(0, equals)] = text.substr(equals + 1);
     }
     for (auto const& [key, value] : environment) merged[key] = value;
+#ifdef BXDFLAB_SANITIZE
+    // Children built with AddressSanitizer: ASan enforces the memory limit (it reserves terabytes of
+    // address space, so RLIMIT_AS cannot), and leak checking is off (LeakSanitizer inspects the
+    // process from a helper process, which the sandbox refuses).
+    merged["ASAN_OPTIONS"] += ":detect_leaks=0:max_allocation_size_mb=" + std::to_string(limits.memoryBytes >> 20);
+    bool const limitAddressSpace = false;
+#else
+    bool const limitAddressSpace = true;
+#endif
     std::vector<std::string> envStrings;
     for (auto const& [key, value] : merged) envStrings.push_back(key + "=" + value);
     std::vector<char*> envp, args;
@@ -57,7 +66,7 @@ Outcome run(std::vector<std::string> const& argv, std::map<std::string, std::str
         setpgid(0, 0);
         rlimit memory{limits.memoryBytes, limits.memoryBytes}, cpu{limits.cpuSeconds, limits.cpuSeconds + 5},
             core{0, 0};
-        setrlimit(RLIMIT_AS, &memory);
+        if (limitAddressSpace) setrlimit(RLIMIT_AS, &memory);
         setrlimit(RLIMIT_CPU, &cpu);
         setrlimit(RLIMIT_CORE, &core);
         dup2(outPipe[1], STDOUT_FILENO);
