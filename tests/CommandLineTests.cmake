@@ -4,10 +4,12 @@ set(CLI_OUT ${CMAKE_CURRENT_BINARY_DIR}/cli)
 file(MAKE_DIRECTORY ${CLI_OUT})
 set(BAD ${CMAKE_CURRENT_SOURCE_DIR}/bad-input)
 
+# Bad input exercises the error paths: they run in the sanitizer build too.
 function(add_cli_failure name expected)
   add_test(NAME cli.${name}
            COMMAND sh ${CMAKE_CURRENT_SOURCE_DIR}/expect-failure.sh "${expected}" $<TARGET_FILE:rixrender> --quiet ${ARGN}
            WORKING_DIRECTORY ${CLI_OUT})
+  set_tests_properties(cli.${name} PROPERTIES LABELS "cli;sanitize")
 endfunction()
 
 add_cli_failure(malformed_rib "bad-input/unterminated.rib:4:29: unterminated string" ${BAD}/unterminated.rib -o out.exr)
@@ -27,6 +29,7 @@ function(add_cli_usage_error name expected)
   add_test(NAME cli.${name}
            COMMAND env EXPECT_STATUS=2 sh ${CMAKE_CURRENT_SOURCE_DIR}/expect-failure.sh "${expected}" $<TARGET_FILE:rixrender> --quiet ${ARGN}
            WORKING_DIRECTORY ${CLI_OUT})
+  set_tests_properties(cli.${name} PROPERTIES LABELS "cli;sanitize")
 endfunction()
 add_cli_usage_error(zero_spp "--spp: Value 0 not in range" ${PROJECT_SOURCE_DIR}/scenes/ch06/diffuse.rib --spp 0 -o out.exr)
 add_cli_usage_error(zero_threads "--threads: Value 0 not in range" ${PROJECT_SOURCE_DIR}/scenes/ch06/diffuse.rib --threads 0 -o out.exr)
@@ -40,6 +43,14 @@ set_tests_properties(cli.renders_chapter6 PROPERTIES WORKING_DIRECTORY ${CLI_OUT
 add_test(NAME cli.stats_schema COMMAND ${CMAKE_COMMAND}
          -DSTATS=${CLI_OUT}/ch06.json -P ${CMAKE_CURRENT_SOURCE_DIR}/check-stats.cmake)
 set_tests_properties(cli.stats_schema PROPERTIES DEPENDS cli.renders_chapter6)
+
+# Determinism end to end (command line, film, image files): the same scene, seed
+# and spp give the same pixels and variances with 1 or 2 threads and on a second run.
+set(PLASTIC ${PROJECT_SOURCE_DIR}/scenes/ch06/plastic.rib)
+add_test(NAME cli.same_pixels_any_thread_count
+         COMMAND sh -c "for run in t1:1 t2:2 again:2; do name=\${run%%:*}; threads=\${run##*:}; $<TARGET_FILE:rixrender> --quiet --spp 2 --seed 5 --threads \$threads -o det-\$name.exr --variance det-\$name-var.exr ${PLASTIC} || exit 1; done; for other in t2 again; do $<TARGET_FILE:rixdiff> det-t1.exr det-\$other.exr --max-rmse 0 || exit 1; $<TARGET_FILE:rixdiff> det-t1-var.exr det-\$other-var.exr --max-rmse 0 || exit 1; done; echo same pixels"
+         WORKING_DIRECTORY ${CLI_OUT})
+set_tests_properties(cli.same_pixels_any_thread_count PROPERTIES PASS_REGULAR_EXPRESSION "same pixels" FAIL_REGULAR_EXPRESSION "FAIL")
 
 # A framebuffer display writes a file named after the display, and says where.
 add_test(NAME cli.framebuffer_display COMMAND rixrender --quiet --spp 1 ${CMAKE_CURRENT_SOURCE_DIR}/scenes/framebuffer.rib)
