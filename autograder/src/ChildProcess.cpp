@@ -26,29 +26,44 @@ std::string Outcome::describe(Limits const& limits) const {
     return "exited with status " + std::to_string(exitCode);
 }
 
-Outcome run(std::vector<std::string> const& argv, std::map<std::string, std::string> const& environment,
-            std::string const& workingDirectory, Limits const& limits, SandboxPolicy const& sandboxPolicy) {
-    // Everything that allocates happens before fork: between fork and exec the
-    // child of a multi-threaded grader may only make system calls.
-    Sandbox const sandbox(sandboxPolicy);
+namespace {
+
+/// This process's environment with `extra` added, as KEY=VALUE strings.
+std::vector<std::string> childEnvironment(std::map<std::string, std::string> const& extra, Limits const& limits) {
     std::map<std::string, std::string> merged;
     for (char** entry = environ; *entry; ++entry) {
         std::string const text = *entry;
         size_t const equals = text.find('=');
         if (equals != std::string::npos) merged[text.substr(0, equals)] = text.substr(equals + 1);
     }
-    for (auto const& [key, value] : environment) merged[key] = value;
+    for (auto const& [key, value] : extra) merged[key] = value;
 #ifdef BXDFLAB_SANITIZE
     // Children built with AddressSanitizer: ASan enforces the memory limit (it reserves terabytes of
     // address space, so RLIMIT_AS cannot), and leak checking is off (LeakSanitizer inspects the
     // process from a helper process, which the sandbox refuses).
     merged["ASAN_OPTIONS"] += ":detect_leaks=0:max_allocation_size_mb=" + std::to_string(limits.memoryBytes >> 20);
-    bool const limitAddressSpace = false;
 #else
-    bool const limitAddressSpace = true;
+    (void)limits;
 #endif
-    std::vector<std::string> envStrings;
-    for (auto const& [key, value] : merged) envStrings.push_back(key + "=" + value);
+    std::vector<std::string> strings;
+    for (auto const& [key, value] : merged) strings.push_back(key + "=" + value);
+    return strings;
+}
+
+#ifdef BXDFLAB_SANITIZE
+constexpr bool kLimitAddressSpace = false;  // see childEnvironment
+#else
+constexpr bool kLimitAddressSpace = true;
+#endif
+
+}  // namespace
+
+Outcome run(std::vector<std::string> const& argv, std::map<std::string, std::string> const& environment,
+            std::string const& workingDirectory, Limits const& limits, SandboxPolicy const& sandboxPolicy) {
+    // Everything that allocates happens before fork: between fork and exec the
+    // child of a multi-threaded grader may only make system calls.
+    Sandbox const sandbox(sandboxPolicy);
+    std::vector<std::string> envStrings = childEnvironment(environment, limits);
     std::vector<char*> envp, args;
     for (auto& e : envStrings) envp.push_back(e.data());
     envp.push_back(nullptr);
@@ -56,7 +71,8 @@ Outcome run(std::vector<std::string> const& argv, std::map<std::string, std::str
     args.push_back(nullptr);
 
     int outPipe[2], errPipe[2];
-    if (pipe(outPipe) != 0 || pipe(errPipe) != 0) throw std::runtime_error("cannot create pipes");
+    // Close-on-exec: another check started at the same moment (class mode) must not inherit them.
+    if (pipe2(outPipe, O_CLOEXEC) != 0 || pipe2(errPipe, O_CLOEXEC) != 0) throw std::runtime_error("cannot create pipes");
     auto start = std::chrono::steady_clock::now();
     pid_t pid = fork();
     if (pid < 0) throw std::runtime_error("cannot fork");
@@ -66,7 +82,7 @@ Outcome run(std::vector<std::string> const& argv, std::map<std::string, std::str
         setpgid(0, 0);
         rlimit memory{limits.memoryBytes, limits.memoryBytes}, cpu{limits.cpuSeconds, limits.cpuSeconds + 5},
             core{0, 0};
-        if (limitAddressSpace) setrlimit(RLIMIT_AS, &memory);
+        if (kLimitAddressSpace) setrlimit(RLIMIT_AS, &memory);
         setrlimit(RLIMIT_CPU, &cpu);
         setrlimit(RLIMIT_CORE, &core);
         dup2(outPipe[1], STDOUT_FILENO);

@@ -52,7 +52,7 @@ SandboxPolicy confined(GradeOptions const& options, bool allowNewProcesses = fal
 }
 
 /// Children keep their temporary files in the grading folder too.
-std::map<std::string, std::string> childEnvironment(GradeOptions const& options, std::map<std::string, std::string> extra = {}) {
+std::map<std::string, std::string> gradingEnvironment(GradeOptions const& options, std::map<std::string, std::string> extra = {}) {
     extra["TMPDIR"] = options.out + "/tmp";
     return extra;
 }
@@ -63,7 +63,7 @@ CheckResult runCheck(GradeOptions const& options, std::string const& pluginDir, 
     Limits limits;
     limits.seconds = options.rubric.value("check_timeout_s", 120.0);
     Outcome outcome = run({options.binDir + "/rixcheck", "[" + check + "]", "-r", "junit"},
-                          childEnvironment(options, {{"RIXCHECK_PLUGIN", plugin}, {"RIXCHECK_PLUGIN_DIR", pluginDir}}),
+                          gradingEnvironment(options, {{"RIXCHECK_PLUGIN", plugin}, {"RIXCHECK_PLUGIN_DIR", pluginDir}}),
                           options.out, limits, confined(options));
     r.seconds = outcome.seconds;
     if (outcome.ok()) {
@@ -93,7 +93,7 @@ CheckResult runRender(GradeOptions const& options, std::string const& pluginDir,
                                          "-o", dir + "/" + who + ".exr", "--variance", dir + "/" + who + "-variance.exr"};
         argv.insert(argv.end(), extra.begin(), extra.end());
         argv.push_back(scenePath);
-        return run(argv, childEnvironment(options), options.out, limits, confined(options));
+        return run(argv, gradingEnvironment(options), options.out, limits, confined(options));
     };
     Outcome mine = render("student", "1", {"--plugin-path", pluginDir});
     Outcome theirs = render("solution", "2", {});
@@ -113,7 +113,7 @@ CheckResult runRender(GradeOptions const& options, std::string const& pluginDir,
     r.output = v.message;
     // Display versions for the HTML report.
     run({options.binDir + "/rixdiff", dir + "/student.exr", dir + "/solution.exr", "--heatmap", dir + "/difference.png"},
-        childEnvironment(options), options.out, limits, confined(options));
+        gradingEnvironment(options), options.out, limits, confined(options));
     for (std::string who : {"student", "solution"}) toDisplayPng(dir + "/" + who + ".exr", dir + "/" + who + ".png");
     return r;
 }
@@ -135,8 +135,8 @@ Grade grade(GradeOptions const& options) {
         limits.seconds = 600;
         Outcome configure = run({"cmake", "-S", options.submission, "-B", build, "-DBXDFLAB_ROOT=" + options.root,
                                  "-DCMAKE_BUILD_TYPE=Release"},
-                                childEnvironment(options), options.out, limits, confined(options, true));
-        Outcome compile = configure.ok() ? run({"cmake", "--build", build, "--parallel", "2"}, childEnvironment(options),
+                                gradingEnvironment(options), options.out, limits, confined(options, true));
+        Outcome compile = configure.ok() ? run({"cmake", "--build", build, "--parallel", "2"}, gradingEnvironment(options),
                                                options.out, limits, confined(options, true))
                                          : configure;
         g.buildLog = configure.out + configure.err + (configure.ok() ? compile.out + compile.err : "");
