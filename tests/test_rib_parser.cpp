@@ -60,6 +60,7 @@ TEST_CASE("malformed RIB gives file:line:col and what was expected", "[rib][erro
         {"Projection \"perspective\" \"fov\" [0]", "bad.rib:1:26", "between 0 and 180"},
         {"Format 0 10 1", "bad.rib:1:1", "at least 1 pixel"},
         {"Format 100000 100 1", "bad.rib:1:1", "exceeds the limit"},
+        {"Format 3e32 100 1", "bad.rib:1:1", "resolution 3e+32 x 100 exceeds the limit"},
         {"PixelSamples 0 0", "bad.rib:1:1", "at least 1"},
         {"PixelSamples 1e20 1e20", "bad.rib:1:1", "more than the limit"},
         {"Hider \"raytrace\" \"int maxsamples\" [2000000000]", "bad.rib:1:18", "between 1 and 1048576"},

@@ -171,10 +171,12 @@ void SceneBuilder::format(RequestReader& in) {
     if (v[0] < 1 || v[1] < 1 || v[0] != std::floor(v[0]) || v[1] != std::floor(v[1]))
         in.fail(in.where(), "resolution must be whole numbers of at least 1 pixel, got " + std::to_string(v[0]) + " x " +
                                 std::to_string(v[1]));
-    if (v[0] > kMaxResolution || v[1] > kMaxResolution)
-        in.fail(in.where(), "resolution " + std::to_string(static_cast<long>(v[0])) + " x " +
-                                std::to_string(static_cast<long>(v[1])) + " exceeds the limit of " +
-                                std::to_string(kMaxResolution) + " pixels per side");
+    if (v[0] > kMaxResolution || v[1] > kMaxResolution) {
+        std::ostringstream size;  // the numbers as given: they may be far beyond any integer type
+        size << v[0] << " x " << v[1];
+        in.fail(in.where(), "resolution " + size.str() + " exceeds the limit of " + std::to_string(kMaxResolution) +
+                                " pixels per side");
+    }
     m_scene.xres = static_cast<int>(v[0]);
     m_scene.yres = static_cast<int>(v[1]);
     m_scene.pixelAspect = v[2] > 0.0f ? v[2] : 1.0f;
