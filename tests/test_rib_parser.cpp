@@ -182,4 +182,9 @@ TEST_CASE("ReadArchive resolves relative to the including file and reports what 
     CHECK_THAT(message, Catch::Matchers::StartsWith("bad.rib:2:1"));
     CHECK_THAT(message, Catch::Matchers::Contains("nowhere.rib"));
     CHECK_THAT(message, Catch::Matchers::Contains("tried"));
+    // A name the file system refuses outright (longer than any file name) is not found either.
+    std::string longName(5000, 'x');
+    CHECK_THAT(ribErrorOf("WorldBegin\nReadArchive \"" + longName + "\"\n"), Catch::Matchers::Contains("not found"));
+    CHECK_THAT(ribErrorOf("WorldBegin\nLight \"PxrDomeLight\" \"d\" \"string lightColorMap\" [\"" + longName + "\"]\n"),
+               Catch::Matchers::Contains("does not exist"));
 }

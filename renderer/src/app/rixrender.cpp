@@ -32,11 +32,12 @@ std::string outputFor(DisplayDesc const& display) {
 void checkWritable(std::string const& path) {
     fs::path parent = fs::path(path).parent_path();
     if (parent.empty()) parent = ".";
-    if (!fs::is_directory(parent))
+    std::error_code error;  // queries that fail (a name too long, ...) count as "not there"
+    if (!fs::is_directory(parent, error))
         throw RenderError("cannot write image \"" + path + "\": folder \"" + parent.string() + "\" does not exist");
     if (access(parent.c_str(), W_OK) != 0)
         throw RenderError("cannot write image \"" + path + "\": folder \"" + parent.string() + "\" is not writable");
-    if (fs::exists(path) && access(path.c_str(), W_OK) != 0)
+    if (fs::exists(path, error) && access(path.c_str(), W_OK) != 0)
         throw RenderError("cannot write image \"" + path + "\": the file is not writable");
 }
 

@@ -627,7 +627,8 @@ void SceneBuilder::readArchive(RequestReader& in) {
     for (std::string const& folder : folders) {
         fs::path candidate = folder.empty() ? fs::path(name) : fs::path(folder) / name;
         tried.push_back(candidate.string());
-        if (fs::is_regular_file(candidate)) {
+        std::error_code error;  // a name the file system rejects (too long, ...) is simply not found
+        if (fs::is_regular_file(candidate, error)) {
             readFile(candidate.string());
             return;
         }

@@ -94,7 +94,8 @@ std::string PluginLoader::find(std::string const& name, const char* kind, Source
         throw RenderError(prefix + "plugin names may not contain '/': \"" + name + "\"");
     for (std::string const& folder : m_searchPath) {
         std::filesystem::path candidate = std::filesystem::path(folder) / (name + ".so");
-        if (std::filesystem::is_regular_file(candidate)) return candidate.string();
+        std::error_code error;  // a name the file system rejects (too long, ...) is simply not found
+        if (std::filesystem::is_regular_file(candidate, error)) return candidate.string();
     }
     std::string searched;
     for (auto const& folder : m_searchPath) searched += "\n    " + folder;

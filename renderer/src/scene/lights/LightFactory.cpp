@@ -26,7 +26,8 @@ std::unique_ptr<Light> makeLight(std::string const& type, ParamList const& param
         std::string map = params.getString("lightColorMap", "");
         if (!map.empty() && std::filesystem::path(map).is_relative())
             map = (std::filesystem::path(baseDir) / map).string();
-        if (!map.empty() && !std::filesystem::exists(map))
+        std::error_code lookup;  // a name the file system rejects (too long, ...) does not exist either
+        if (!map.empty() && !std::filesystem::exists(map, lookup))
             throw RibError(where, "PxrDomeLight: lightColorMap \"" + map + "\" does not exist");
         std::unique_ptr<DomeLight> dome;
         try {
