@@ -151,6 +151,15 @@ TEST_CASE("typed inline declarations, Declare and option values", "[rib]") {
     CHECK(scene.integrator.params.getInt("numLightSamples", 0) == 4);
 }
 
+TEST_CASE("search paths: & is the path so far, and each folder appears once however often it is repeated", "[rib]") {
+    Diagnostics diagnostics(false);
+    std::string rib = "Option \"searchpath\" \"string rixplugin\" [\"/a:/b\"]\n";
+    for (int k = 0; k < 40; ++k)  // each line would double the path if & were copied blindly
+        rib += "Option \"searchpath\" \"string rixplugin\" [\"&:/c:&:@\"]\n";
+    Scene scene = parseRib(rib, diagnostics);
+    CHECK(scene.pluginSearchPath == std::vector<std::string>{"/a", "/b", "/c"});
+}
+
 TEST_CASE("attributes scope visibility, names and materials", "[rib]") {
     Diagnostics diagnostics(false);
     Scene scene = parseRib(

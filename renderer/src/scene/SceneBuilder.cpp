@@ -1,5 +1,6 @@
 #include "scene/SceneBuilder.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <filesystem>
@@ -254,14 +255,19 @@ void SceneBuilder::option(RequestReader& in) {
         std::string value = params.getString(key, "");
         std::vector<std::string> previous = list;
         list.clear();
+        // A folder is searched once, where it first appears: "&" twice (or repeated
+        // options) would otherwise double the path each time.
+        auto add = [&list](std::string const& folder) {
+            if (std::find(list.begin(), list.end(), folder) == list.end()) list.push_back(folder);
+        };
         for (std::string const& item : splitPath(value)) {
             if (item == "&") {
-                list.insert(list.end(), previous.begin(), previous.end());  // the path so far
+                for (std::string const& folder : previous) add(folder);  // the path so far
             } else if (item == "@") {
                 continue;  // the built-in default is always searched last
             } else {
                 fs::path path(item);
-                list.push_back(path.is_relative() ? (fs::path(currentDirectory()) / path).string() : item);
+                add(path.is_relative() ? (fs::path(currentDirectory()) / path).string() : item);
             }
         }
     };
