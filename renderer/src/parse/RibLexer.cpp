@@ -144,7 +144,7 @@ RibToken RibLexer::scan() {
     else
         std::snprintf(shown, sizeof shown, "byte 0x%02x", byte);
     throw RibError(token.location, std::string("unexpected ") + shown +
-                                       (byte >= 0x80 || !std::isprint(byte) ? " (binary RIB is not supported)" : ""));
+                                       (std::isprint(byte) ? "" : " (binary RIB is not supported)"));
 }
 
 }  // namespace bxdflab
