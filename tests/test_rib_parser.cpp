@@ -61,6 +61,10 @@ TEST_CASE("malformed RIB gives file:line:col and what was expected", "[rib][erro
         {"Format 0 10 1", "bad.rib:1:1", "at least 1 pixel"},
         {"Format 100000 100 1", "bad.rib:1:1", "exceeds the limit"},
         {"Format 3e32 100 1", "bad.rib:1:1", "resolution 3e+32 x 100 exceeds the limit"},
+        {"WorldBegin\nObjectBegin \"a\"\nObjectInstance \"a\"\nObjectEnd\nObjectInstance \"a\"", "bad.rib:3:1",
+         "object \"a\" is used inside its own definition"},
+        {"WorldBegin\nArchiveBegin \"x\"\nReadArchive \"y\"\nArchiveEnd\nArchiveBegin \"y\"\nReadArchive \"x\"\n"
+         "ArchiveEnd\nReadArchive \"x\"", "bad.rib:6:1", "archive \"x\" is used inside its own definition"},
         {"PixelSamples 0 0", "bad.rib:1:1", "at least 1"},
         {"PixelSamples 1e20 1e20", "bad.rib:1:1", "more than the limit"},
         {"Hider \"raytrace\" \"int maxsamples\" [2000000000]", "bad.rib:1:18", "between 1 and 1048576"},
@@ -149,6 +153,24 @@ TEST_CASE("typed inline declarations, Declare and option values", "[rib]") {
     CHECK(scene.display.name == "x.tif");
     CHECK(scene.integrator.name == "PxrDirectLighting");
     CHECK(scene.integrator.params.getInt("numLightSamples", 0) == 4);
+}
+
+TEST_CASE("instancing: a redefinition inside a replay is safe, and exponential expansion is refused", "[rib]") {
+    Diagnostics diagnostics(false);
+    // "a" holds [Sphere, ObjectBegin "a", Disk]: replaying it makes a sphere, then starts a new "a"
+    // (recording the Disk, ended by the ObjectEnd after the instance) while the old "a" is still
+    // being replayed. The replay must go on with the old list, not a cleared one.
+    Scene scene = parseRib("WorldBegin\nObjectBegin \"a\"\nSphere 1 -1 1 360\nObjectBegin \"a\"\nDisk 0 1 360\n"
+                           "ObjectEnd\nObjectInstance \"a\"\nObjectEnd\nObjectInstance \"a\"\nWorldEnd\n",
+                           diagnostics);
+    CHECK(scene.shapes.size() == 2);  // the sphere of the first "a", then the disk of the new one
+    // Each object instances the previous one twice: 2^30 spheres if nothing stopped it.
+    std::string rib = "WorldBegin\nObjectBegin \"o0\"\nSphere 1 -1 1 360\nObjectEnd\n";
+    for (int k = 1; k <= 30; ++k)
+        rib += "ObjectBegin \"o" + std::to_string(k) + "\"\nObjectInstance \"o" + std::to_string(k - 1) +
+               "\"\nObjectInstance \"o" + std::to_string(k - 1) + "\"\nObjectEnd\n";
+    rib += "ObjectInstance \"o30\"\n";
+    CHECK_THAT(ribErrorOf(rib), Catch::Matchers::Contains("instancing expands to more than"));
 }
 
 TEST_CASE("search paths: & is the path so far, and each folder appears once however often it is repeated", "[rib]") {

@@ -20,6 +20,7 @@ namespace {
 constexpr int kMaxArchiveDepth = 32;
 constexpr int kMaxResolution = 16384;
 constexpr int kMaxSamplesPerPixel = 1 << 20;  // as rixrender --spp
+constexpr long kMaxReplayedRequests = 4'000'000;  // what instancing may expand to
 
 std::vector<std::string> splitPath(std::string const& list) {
     std::vector<std::string> parts;
@@ -619,7 +620,7 @@ void SceneBuilder::readArchive(RequestReader& in) {
     in.params().warnUnused(m_diagnostics, "ReadArchive");
     auto inlineArchive = m_inlineArchives.find(name);
     if (inlineArchive != m_inlineArchives.end()) {
-        replay(inlineArchive->second);
+        replay("archive \"" + name + "\"", inlineArchive->second, in.where());
         return;
     }
     std::vector<std::string> tried;
@@ -730,9 +731,7 @@ void SceneBuilder::objectBegin(RequestReader& in) {
     // The handle may be a string (RenderMan 19+) or a number (older RIBs).
     std::string handle = in.nextIsString() ? in.string("object handle") : std::to_string(in.number("object handle"));
     in.finish();
-    m_recording = &m_objects[handle];
-    m_recording->clear();
-    m_recordingEnd = "ObjectEnd";
+    startRecording(m_objects[handle], "ObjectEnd");
 }
 
 void SceneBuilder::objectInstance(RequestReader& in) {
@@ -740,25 +739,36 @@ void SceneBuilder::objectInstance(RequestReader& in) {
     in.finish();
     auto found = m_objects.find(handle);
     if (found == m_objects.end()) in.fail(in.where(), "no object \"" + handle + "\" was defined with ObjectBegin");
-    replay(found->second);
+    replay("object \"" + handle + "\"", found->second, in.where());
 }
 
 void SceneBuilder::archiveBegin(RequestReader& in) {
     std::string name = in.string("archive name");
     in.params();
-    m_recording = &m_inlineArchives[name];
-    m_recording->clear();
-    m_recordingEnd = "ArchiveEnd";
+    startRecording(m_inlineArchives[name], "ArchiveEnd");
 }
 
-void SceneBuilder::replay(std::vector<RibRequest> const& requests) {
+void SceneBuilder::startRecording(Recording& slot, std::string const& end) {
+    slot = std::make_shared<std::vector<RibRequest>>();
+    m_recording = slot.get();
+    m_recordingEnd = end;
+}
+
+void SceneBuilder::replay(std::string const& what, Recording requests, SourceLocation const& where) {
+    if (!m_replaying.insert(what).second)
+        throw RibError(where, what + " is used inside its own definition (directly or through another one)");
+    m_replayedRequests += static_cast<long>(requests->size());
+    if (m_replayedRequests > kMaxReplayedRequests)
+        throw RibError(where, "instancing expands to more than " + std::to_string(kMaxReplayedRequests) +
+                                  " requests (objects that instance others many times over?)");
     // An instance sees the graphics state in effect where it is used, and
     // leaves it as it found it.
     m_attributes.push_back(state());
     size_t depth = m_blocks.size();
-    for (RibRequest const& request : requests) handle(request);
-    if (m_blocks.size() != depth) throw RibError(requests.back().where, "unbalanced blocks inside an object or archive");
+    for (RibRequest const& request : *requests) handle(request);
+    if (m_blocks.size() != depth) throw RibError(requests->back().where, "unbalanced blocks inside an object or archive");
     m_attributes.pop_back();
+    m_replaying.erase(what);
 }
 
 void SceneBuilder::clipping(RequestReader& in) {

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <map>
+#include <memory>
 #include <set>
 #include <string>
 #include <vector>
@@ -95,8 +96,13 @@ private:
     void archiveBegin(RequestReader& in);
     void clipping(RequestReader& in);
     void sides(RequestReader& in);
-    /// Replays recorded requests (an object instance or an inline archive).
-    void replay(std::vector<RibRequest> const& requests);
+    using Recording = std::shared_ptr<std::vector<RibRequest>>;
+    /// Starts recording requests into a new list (replacing any of that name) until `end`.
+    void startRecording(Recording& slot, std::string const& end);
+    /// Replays recorded requests (an object instance or an inline archive); `what` names
+    /// it in messages. The recording is held for the replay: a redefinition inside it
+    /// makes a new list instead of changing this one.
+    void replay(std::string const& what, Recording requests, SourceLocation const& where);
 
     void addShape(std::unique_ptr<Shape> shape, SourceLocation const& where);
     int defaultMaterial();
@@ -118,8 +124,10 @@ private:
     /// Requests being recorded into an object or inline archive (null when not recording).
     std::vector<RibRequest>* m_recording = nullptr;
     std::string m_recordingEnd;  ///< the request that stops the recording
-    std::map<std::string, std::vector<RibRequest>> m_objects;
-    std::map<std::string, std::vector<RibRequest>> m_inlineArchives;
+    std::map<std::string, Recording> m_objects;
+    std::map<std::string, Recording> m_inlineArchives;
+    std::set<std::string> m_replaying;  ///< objects and archives being replayed: entering one again is a cycle
+    long m_replayedRequests = 0;        ///< bounds what instancing may expand to
     bool m_inWorld = false;
     bool m_sawWorld = false;
     bool m_sppFromPixelSamples = false;
