@@ -40,8 +40,10 @@ std::vector<std::string> childEnvironment(std::map<std::string, std::string> con
 #ifdef BXDFLAB_SANITIZE
     // Children built with AddressSanitizer: ASan enforces the memory limit (it reserves terabytes of
     // address space, so RLIMIT_AS cannot), and leak checking is off (LeakSanitizer inspects the
-    // process from a helper process, which the sandbox refuses).
-    merged["ASAN_OPTIONS"] += ":detect_leaks=0:max_allocation_size_mb=" + std::to_string(limits.memoryBytes >> 20);
+    // process from a helper process, which the sandbox refuses). A segfault is left to kill the child,
+    // so it is reported as the same signal as in a regular build.
+    merged["ASAN_OPTIONS"] +=
+        ":detect_leaks=0:handle_segv=0:max_allocation_size_mb=" + std::to_string(limits.memoryBytes >> 20);
 #else
     (void)limits;
 #endif

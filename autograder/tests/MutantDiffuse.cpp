@@ -29,6 +29,7 @@
 #include <unistd.h>
 
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
@@ -154,9 +155,13 @@ private:
     }
     void hostile() const {
         switch (MUTATION) {
-            case 201: { volatile int* p = nullptr; *p = 1; break; }
+            case 201: {  // an invalid address that is not null, so UBSan's null check does not catch it first
+                volatile std::uintptr_t address = 16;  // volatile: the compiler cannot see it coming
+                *reinterpret_cast<volatile int*>(address) = 1;
+                break;
+            }
             case 202: std::abort();
-            case 203: for (volatile int k = 0;; k = k + 1) {}
+            case 203: for (volatile unsigned k = 0;; k = k + 1) {}  // unsigned: wrapping is defined
             case 204: { std::vector<char> huge(static_cast<size_t>(64) << 30); huge[0] = 1; std::printf("%d", huge[0]); break; }
             case 205: throw std::runtime_error("a student's exception");
             case 206: for (int k = 0; k < 10000000; ++k) std::printf("spam spam spam spam\n"); break;
