@@ -114,3 +114,10 @@ set_tests_properties(tools.rixconverge PROPERTIES
 # Every command the chapters show runs, and every figure they link exists.
 add_test(NAME chapters.commands_and_figures COMMAND /usr/bin/python3 ${CMAKE_CURRENT_SOURCE_DIR}/check_chapters.py ${PROJECT_SOURCE_DIR})
 set_tests_properties(chapters.commands_and_figures PROPERTIES PASS_REGULAR_EXPRESSION "command blocks run; 0 problems" RUN_SERIAL TRUE)
+
+# Memory stays bounded at any spp, for every integrator.
+add_test(NAME cli.memory_bounded_at_any_spp
+         COMMAND ${CMAKE_COMMAND} -DRIXRENDER=$<TARGET_FILE:rixrender> -DOUT=${CLI_OUT}/memory
+                 "-DINTEGRATORS=PxrDirectLighting;PxrPathTracer;PxrDefault;PxrValidateBxdf;PxrDebugShadingContext;PxrOcclusion"
+                 -P ${CMAKE_CURRENT_SOURCE_DIR}/check-bounded-memory.cmake)
+set_tests_properties(cli.memory_bounded_at_any_spp PROPERTIES LABELS cli)

@@ -1,6 +1,6 @@
 # Checks that a --stats-json file has the fields the design promises.
 file(READ ${STATS} json)
-foreach(key wall_s setup_s render_s threads spp width height shade_points nonfinite_samples invalid_pdf_samples)
+foreach(key wall_s setup_s render_s threads spp width height shade_points nonfinite_samples invalid_pdf_samples peak_memory_mb)
   string(JSON value ERROR_VARIABLE error GET "${json}" ${key})
   if(error)
     message(FATAL_ERROR "stats JSON lacks \"${key}\": ${error}")

@@ -16,6 +16,7 @@
 
 #include "RiTypesHelper.h"
 #include "RixInterfaces.h"
+#include "RixShading.h"
 
 static constexpr int k_RixBXMaxNumDiffuseLobes = 4;
 static constexpr int k_RixBXMaxNumSpecularLobes = 8;
@@ -126,15 +127,24 @@ PRMAN_INLINE RixBXLobeSampled RixBXLookupLobeByName(RixContext& ctx, bool discre
 /// active lobes.
 class RixBXLobeWeights {
 public:
-    /// Renderer side: `storage` must hold (4 + 8 + 12) arrays of `numPoints` colours.
-    RixBXLobeWeights(int numPoints, RtColorRGB* storage) : m_numPoints(numPoints), m_storage(storage) {}
+    /// Renderer side, with all the storage up front: `storage` holds
+    /// k_numSlots arrays of `numPoints` colours, one after the other.
+    RixBXLobeWeights(int numPoints, RtColorRGB* storage) : m_numPoints(numPoints) {
+        for (int slot = 0; slot < k_numSlots; ++slot)
+            m_slots[slot] = storage + static_cast<size_t>(slot) * static_cast<size_t>(numPoints);
+    }
+    /// Renderer side, with storage taken from a shading context's memory pool
+    /// one lobe at a time, when a Bxdf first activates that lobe (most Bxdfs
+    /// use one or two of the k_numSlots lobes).
+    RixBXLobeWeights(int numPoints, RixShadingContext const* pool) : m_numPoints(numPoints), m_pool(pool) {}
 
     int GetNumPoints() const { return m_numPoints; }
 
     /// The weight array of `lobe`, zeroed the first time it is requested.
     RtColorRGB* AddActiveLobe(RixBXLobeSampled lobe) {
         int slot = SlotOf(lobe);
-        RtColorRGB* weights = m_storage + static_cast<size_t>(slot) * static_cast<size_t>(m_numPoints);
+        RtColorRGB*& weights = m_slots[slot];
+        if (!weights) weights = RixShadingContext::Allocator(m_pool).AllocFor<RtColorRGB>(m_numPoints);
         if (!(m_activeMask & (1u << slot))) {
             m_activeMask |= 1u << slot;
             m_active[m_numActive++] = lobe;
@@ -144,9 +154,7 @@ public:
     }
     int GetNumActiveLobes() const { return m_numActive; }
     RixBXLobeSampled GetActiveLobe(int k) const { return m_active[k]; }
-    RtColorRGB const* GetActiveLobeWeights(int k) const {
-        return m_storage + static_cast<size_t>(SlotOf(m_active[k])) * static_cast<size_t>(m_numPoints);
-    }
+    RtColorRGB const* GetActiveLobeWeights(int k) const { return m_slots[SlotOf(m_active[k])]; }
     /// Sum of all active lobes at point i.
     RtColorRGB SumAtPoint(int i) const {
         RtColorRGB sum;
@@ -166,7 +174,8 @@ private:
         return id % k_RixBXMaxNumDiffuseLobes;
     }
     int m_numPoints;
-    RtColorRGB* m_storage;
+    RixShadingContext const* m_pool = nullptr;
+    RtColorRGB* m_slots[k_numSlots] = {};
     uint32_t m_activeMask = 0;
     int m_numActive = 0;
     RixBXLobeSampled m_active[k_numSlots];

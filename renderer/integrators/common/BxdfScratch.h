@@ -25,7 +25,7 @@ struct BxdfScratch {
           Ln(RixShadingContext::Allocator(&ctx).AllocFor<RtVector3>(ctx.numPts)),
           FPdf(RixShadingContext::Allocator(&ctx).AllocFor<float>(ctx.numPts)),
           RPdf(RixShadingContext::Allocator(&ctx).AllocFor<float>(ctx.numPts)),
-          W(ctx.numPts, RixShadingContext::Allocator(&ctx).AllocFor<RtColorRGB>(ctx.numPts * RixBXLobeWeights::k_numSlots)) {
+          W(ctx.numPts, &ctx) {
         for (int i = 0; i < ctx.numPts; ++i) lobesWanted[i] = RixBXLobeTraits::All();
     }
 

@@ -155,7 +155,7 @@ std::vector<ProbeResult> BxdfProbe::generateWith(std::vector<ProbePoint> const& 
             Ln[i] = RtVector3(0.0f, 0.0f, 0.0f);
             FPdf[i] = RPdf[i] = 0.0f;
         }
-        RixBXLobeWeights W(n, pool.AllocFor<RtColorRGB>(n * RixBXLobeWeights::k_numSlots));
+        RixBXLobeWeights W(n, &ctx);
         bxdf.GenerateSample(k_RixBXDirectLighting, wanted, &rng, sampled, Ln, W, FPdf, RPdf);
         for (int i = 0; i < n; ++i)
             out[static_cast<size_t>(i)] = {toVec3(Ln[i]), W.SumAtPoint(i), FPdf[i], RPdf[i], sampled[i].GetValid()};
@@ -182,7 +182,7 @@ std::vector<ProbeResult> BxdfProbe::evaluate(std::vector<ProbePoint> const& poin
             FPdf[i] = RPdf[i] = 0.0f;
         }
         RixRNG rng(samples, n);
-        RixBXLobeWeights W(n, pool.AllocFor<RtColorRGB>(n * RixBXLobeWeights::k_numSlots));
+        RixBXLobeWeights W(n, &ctx);
         bxdf.EvaluateSample(k_RixBXDirectLighting, wanted, &rng, evaluated, Ln, W, FPdf, RPdf);
         for (int i = 0; i < n; ++i)
             out[static_cast<size_t>(i)] = {L[static_cast<size_t>(i)], W.SumAtPoint(i), FPdf[i], RPdf[i],
@@ -207,7 +207,7 @@ std::vector<ProbeResult> BxdfProbe::evaluateAtIndex(ProbePoint const& point, std
             Ln[i] = toRt(L[static_cast<size_t>(i)]);
             FPdf[i] = RPdf[i] = 0.0f;
         }
-        RixBXLobeWeights W(n, pool.AllocFor<RtColorRGB>(n * RixBXLobeWeights::k_numSlots));
+        RixBXLobeWeights W(n, &ctx);
         bxdf.EvaluateSamplesAtIndex(k_RixBXDirectLighting, RixBXLobeTraits::All(), &rng, 0, n, evaluated, Ln, W, FPdf, RPdf);
         for (int i = 0; i < n; ++i)
             out[static_cast<size_t>(i)] = {L[static_cast<size_t>(i)], W.SumAtPoint(i), FPdf[i], RPdf[i],

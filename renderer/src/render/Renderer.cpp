@@ -4,6 +4,7 @@
 #include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
+#include <sys/resource.h>
 #include <unistd.h>
 
 #include <atomic>
@@ -27,8 +28,23 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
+/// Peak resident memory of this process so far, in MiB (Linux reports KiB).
+double peakResidentMB() {
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    return static_cast<double>(usage.ru_maxrss) / 1024.0;
+}
+
 /// At most this many shade points are in flight per tile (bounds memory at any spp).
 constexpr int kMaxPointsPerChunk = 4096;
+
+/// Tiles grow (up to 4x) at low spp so a chunk still holds about
+/// kMaxPointsPerChunk samples: the same batch sizes, and the same memory, at any spp.
+int tileSizeFor(int baseSize, int spp) {
+    int size = baseSize;
+    while (size < 4 * baseSize && size * size * spp < kMaxPointsPerChunk) size *= 2;
+    return size;
+}
 
 /// Per-worker state: memory, ray counts, shading-time counters.
 struct Worker {
@@ -161,7 +177,7 @@ Renderer::~Renderer() {
 }
 
 void Renderer::Impl::renderTile(int tileX, int tileY, int spp, Film& film, Worker& w) {
-    int const size = settings.tileSize;
+    int const size = tileSizeFor(settings.tileSize, spp);
     int x0 = tileX * size, y0 = tileY * size;
     int x1 = std::min(x0 + size, scene.xres), y1 = std::min(y0 + size, scene.yres);
     int pixels = (x1 - x0) * (y1 - y0);
@@ -249,7 +265,7 @@ Film Renderer::render() {
     auto start = Clock::now();
     int spp = m_stats.spp;
     Film film(r.scene.xres, r.scene.yres);
-    int size = r.settings.tileSize;
+    int size = tileSizeFor(r.settings.tileSize, spp);
     int tilesX = (r.scene.xres + size - 1) / size, tilesY = (r.scene.yres + size - 1) / size;
     int tiles = tilesX * tilesY;
     ProgressBar progress(r.settings.progress, tiles);
@@ -274,6 +290,7 @@ Film Renderer::render() {
     m_stats.tangentPoints = r.counters.builtins.tangentPoints.load();
     m_stats.nonFiniteSamples = r.nonFinite.load();
     m_stats.invalidPdfSamples = r.invalidPdf.load();
+    m_stats.peakMemoryMB = peakResidentMB();
 
     // Effects decided while shading: tangent frames are computed only on request.
     auto& effects = m_stats.effects;
@@ -312,6 +329,7 @@ nlohmann::json RenderStats::toJson(Diagnostics const& diagnostics) const {
         {"builtins", {{"surface_points", surfacePoints}, {"tangent_points", tangentPoints}}},
         {"nonfinite_samples", nonFiniteSamples},
         {"invalid_pdf_samples", invalidPdfSamples},
+        {"peak_memory_mb", peakMemoryMB},
         {"effects", {{"simulated", effects.simulated}, {"skipped", skipped}}},
         {"plugins", plugins},
         {"warnings", warnings},

@@ -36,6 +36,7 @@ struct RenderStats {
     uint64_t surfacePoints = 0, tangentPoints = 0;
     uint64_t nonFiniteSamples = 0;
     uint64_t invalidPdfSamples = 0;  ///< pdfs a Bxdf must not return (see RixIntegratorContext::CountInvalidPdf)
+    double peakMemoryMB = 0;         ///< the process's peak resident memory so far (MiB)
     EffectReport effects;
     std::vector<std::string> plugins;
     std::string integrator;

@@ -5,38 +5,43 @@
 
 namespace bxdflab {
 
+void* MemoryArena::alignWithin(Allocation const& a, size_t& offset, size_t bytes, size_t alignment) {
+    auto base = reinterpret_cast<std::uintptr_t>(a.memory.get());
+    std::uintptr_t aligned = (base + offset + alignment - 1) & ~(alignment - 1);
+    size_t end = static_cast<size_t>(aligned - base) + bytes;
+    if (end > a.size) return nullptr;
+    offset = end;
+    return reinterpret_cast<void*>(aligned);
+}
+
 void* MemoryArena::allocate(size_t bytes, size_t alignment) {
     alignment = std::max<size_t>(alignment, alignof(std::max_align_t));
     bytes = std::max<size_t>(bytes, 1);
+    if (bytes + alignment > m_blockSize) {
+        m_large.push_back({std::make_unique<std::byte[]>(bytes + alignment), bytes + alignment});
+        size_t offset = 0;
+        return alignWithin(m_large.back(), offset, bytes, alignment);
+    }
+    // Fill the current block; move on to the next (kept or new) when it is full.
+    // Every block is big enough for this request once it is empty.
     for (;;) {
-        if (m_current < m_blocks.size()) {
-            Block& block = m_blocks[m_current];
-            auto base = reinterpret_cast<std::uintptr_t>(block.memory.get());
-            std::uintptr_t aligned = (base + m_offset + alignment - 1) & ~(alignment - 1);
-            size_t end = static_cast<size_t>(aligned - base) + bytes;
-            if (end <= block.size) {
-                m_offset = end;
-                return reinterpret_cast<void*>(aligned);
-            }
-            ++m_current;
-            m_offset = 0;
-            continue;
-        }
-        size_t size = std::max(m_blockSize, bytes + alignment);
-        m_blocks.push_back({std::make_unique<std::byte[]>(size), size});
-        m_current = m_blocks.size() - 1;
+        if (m_current == m_blocks.size()) m_blocks.push_back({std::make_unique<std::byte[]>(m_blockSize), m_blockSize});
+        if (void* p = alignWithin(m_blocks[m_current], m_offset, bytes, alignment)) return p;
+        ++m_current;
         m_offset = 0;
     }
 }
 
-void MemoryArena::reset() {
-    // Keep the blocks of ordinary size for reuse; drop oversized ones.
-    std::vector<Block> kept;
-    for (auto& block : m_blocks)
-        if (block.size == m_blockSize) kept.push_back(std::move(block));
-    m_blocks = std::move(kept);
-    m_current = 0;
-    m_offset = 0;
+void MemoryArena::release(Mark const& m) {
+    m_current = m.block;
+    m_offset = m.offset;
+    if (m.large < m_large.size()) m_large.resize(m.large);
+}
+
+size_t MemoryArena::bytesHeld() const {
+    size_t total = m_blocks.size() * m_blockSize;
+    for (Allocation const& a : m_large) total += a.size;
+    return total;
 }
 
 }  // namespace bxdflab

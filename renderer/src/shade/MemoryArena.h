@@ -1,5 +1,11 @@
 // Bump allocator for per-batch memory (shading contexts, Bxdf objects, their
-// arrays). Everything is released at once by reset(): no per-point malloc.
+// arrays): no per-point malloc, everything freed at once.
+//
+// Requests that fit a block are carved from fixed-size blocks that are kept
+// and reused; larger requests (a batch's lobe-weight arrays can exceed a
+// block) get an allocation of their own that is freed as soon as the mark
+// before it is released. Either way, what a render holds is bounded by the
+// largest amount live at one time, never by how many batches it shaded.
 #pragma once
 
 #include <cstddef>
@@ -18,30 +24,33 @@ public:
     template <typename T> T* allocArray(size_t count) {
         return static_cast<T*>(allocate(sizeof(T) * count, alignof(T)));
     }
-    /// Frees everything allocated since the last reset (keeps the first block).
-    void reset();
 
     /// A position in the arena. release(mark) frees everything allocated
     /// after mark() was taken, so nested users (a path tracer's bounces) can
     /// free their own memory while an outer batch's stays valid.
     struct Mark {
-        size_t block = 0, offset = 0;
+        size_t block = 0, offset = 0, large = 0;
     };
-    Mark mark() const { return {m_current, m_offset}; }
-    void release(Mark const& m) {
-        m_current = m.block;
-        m_offset = m.offset;
-    }
+    Mark mark() const { return {m_current, m_offset, m_large.size()}; }
+    void release(Mark const& m);
+    /// Frees everything (keeps the blocks for reuse).
+    void reset() { release(Mark{}); }
+
+    /// Bytes currently held from the system (blocks and large allocations).
+    size_t bytesHeld() const;
 
 private:
-    struct Block {
+    struct Allocation {
         std::unique_ptr<std::byte[]> memory;
         size_t size;
     };
+    static void* alignWithin(Allocation const& a, size_t& offset, size_t bytes, size_t alignment);
+
     size_t m_blockSize;
-    std::vector<Block> m_blocks;
-    size_t m_current = 0;  ///< index of the block being filled
-    size_t m_offset = 0;   ///< bytes used in it
+    std::vector<Allocation> m_blocks;  ///< all m_blockSize bytes, reused after release
+    std::vector<Allocation> m_large;   ///< one per request too big for a block, in order
+    size_t m_current = 0;              ///< index of the block being filled
+    size_t m_offset = 0;               ///< bytes used in it
 };
 
 }  // namespace bxdflab
