@@ -14,6 +14,7 @@
 #include <functional>
 #include <sstream>
 
+#include "film/OiioImageFiles.h"
 #include "render/Renderer.h"
 #include "scene/SceneBuilder.h"
 
@@ -69,6 +70,7 @@ std::string meshScene(int triangles) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    bxdflab::useOpenImageIO();
     std::string sceneFile = argc > 1 ? argv[1] : std::string(BXDFLAB_SOURCE_DIR) + "/scenes/ch06/diffuse.rib";
     Diagnostics diagnostics(false);
     Scene scene = loadScene(sceneFile, diagnostics);

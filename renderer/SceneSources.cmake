@@ -4,6 +4,7 @@
 # clang and libFuzzer.
 set(RIX_SCENE_SOURCES
   core/Diagnostics.cpp
+  core/ImageFiles.cpp
   parse/RibLexer.cpp
   parse/RibParser.cpp
   parse/RibRequest.cpp

@@ -26,6 +26,7 @@
 #include <map>
 #include <sstream>
 
+#include "film/OiioImageFiles.h"
 #include "CommandLine.h"
 #include "film/Film.h"
 #include "render/Renderer.h"
@@ -106,6 +107,7 @@ double slope(std::vector<double> const& x, std::vector<double> const& y) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    bxdflab::useOpenImageIO();
     CLI::App app{"rixconverge: error against samples and time for several sampling strategies"};
     std::string sceneFile, sppList = "1,2,4,8,16,32", reference = "auto", outDir = "convergence", res;
     std::vector<std::string> variantArgs;

@@ -15,6 +15,7 @@
 #include <iostream>
 #include <sstream>
 
+#include "film/OiioImageFiles.h"
 #include "CommandLine.h"
 #include "ToolSupport.h"
 #include "film/Film.h"
@@ -119,6 +120,7 @@ void drawSphere(BxdfProbe& probe, float theta, float phi, std::string const& pat
 }  // namespace
 
 int main(int argc, char** argv) {
+    bxdflab::useOpenImageIO();
     CLI::App app{"rixlobe: plot a Bxdf plugin's lobe (a polar slice and a 3-D surface)"};
     std::string plugin, params, polar = "lobe-polar.png", sphere = "lobe-sphere.png", pluginPath;
     float theta = 45.0f, phi = 0.0f;

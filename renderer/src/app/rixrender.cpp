@@ -9,8 +9,10 @@
 #include <fstream>
 #include <iostream>
 
+#include "film/OiioImageFiles.h"
 #include "CommandLine.h"
 #include "core/Diagnostics.h"
+#include "film/RawImage.h"
 #include "render/Renderer.h"
 #include "scene/SceneBuilder.h"
 
@@ -44,8 +46,10 @@ void checkWritable(std::string const& path) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    bxdflab::useOpenImageIO();
     CLI::App app{"rixrender: render a RIB scene with Rix Bxdf plugins"};
     std::string sceneFile, output, statsJson, variance;
+    int rawFd = -1;
     RenderSettings settings;
     bool quiet = false;
     app.add_option("scene", sceneFile, "the RIB file to render")->required();
@@ -58,19 +62,23 @@ int main(int argc, char** argv) {
     app.add_option("--stats-json", statsJson, "write timing, ray counts and simulated/skipped effects here");
     app.add_option("--variance", variance, "also write each pixel's variance of the mean (an EXR image)");
     app.add_flag("--quiet", quiet, "no progress bar");
+    app.add_option("--raw-out-fd", rawFd, "write the pixels and their variances to this open descriptor instead of a file "
+                                          "(for programs that read them directly)")
+        ->check(CLI::Range(3, 1023));
     BXDFLAB_PARSE_COMMAND_LINE(app, argc, argv);
 
     Diagnostics diagnostics;
     try {
         Scene scene = loadScene(sceneFile, diagnostics);
-        std::string imagePath = output.empty() ? outputFor(scene.display) : output;
-        checkWritable(imagePath);
+        std::string imagePath = output.empty() && rawFd < 0 ? outputFor(scene.display) : output;
+        if (!imagePath.empty()) checkWritable(imagePath);
         if (!variance.empty()) checkWritable(variance);
 
         settings.progress = !quiet && isatty(STDERR_FILENO);
         Renderer renderer(scene, settings, diagnostics);
         Film film = renderer.render();
-        writeImage(imagePath, film.rgba(), film.width(), film.height(), 4);
+        if (rawFd >= 0 && !writeRawImage(rawFd, film)) throw RenderError("cannot write the raw image to descriptor " + std::to_string(rawFd));
+        if (!imagePath.empty()) writeImage(imagePath, film.rgba(), film.width(), film.height(), 4);
         if (!variance.empty()) writeImage(variance, film.varianceOfMean(), film.width(), film.height(), 3);
 
         RenderStats const& stats = renderer.stats();
@@ -85,7 +93,9 @@ int main(int argc, char** argv) {
                      stats.width, stats.height, stats.spp, stats.threads, stats.setupSeconds + stats.renderSeconds,
                      stats.setupSeconds, stats.renderSeconds, static_cast<unsigned long long>(stats.cameraRays),
                      static_cast<unsigned long long>(stats.shadowRays), static_cast<unsigned long long>(stats.indirectRays));
-        if (scene.display.type == "it" || scene.display.type == "framebuffer")
+        if (imagePath.empty())
+            std::fprintf(stderr, "rixrender: wrote the raw image to descriptor %d\n", rawFd);
+        else if (scene.display.type == "it" || scene.display.type == "framebuffer")
             std::fprintf(stderr, "rixrender: Display \"%s\" is a framebuffer; the image was written to %s\n",
                          scene.display.name.c_str(), imagePath.c_str());
         else

@@ -1,13 +1,14 @@
 #include "film/Film.h"
 
-#include <OpenImageIO/imagebuf.h>
-#include <OpenImageIO/imagebufalgo.h>
+#include <unistd.h>
+
+#include <cerrno>
+
 
 #include <algorithm>
-#include <cctype>
-#include <filesystem>
 
 #include "core/Error.h"
+#include "film/RawImage.h"
 
 namespace bxdflab {
 
@@ -50,30 +51,35 @@ std::vector<float> Film::varianceOfMean() const {
     return out;
 }
 
-void writeImage(std::string const& path, std::vector<float> const& pixels, int width, int height, int channels) {
-    std::string extension = std::filesystem::path(path).extension().string();
-    std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
-    bool eightBit = extension == ".png" || extension == ".jpg" || extension == ".jpeg";
-    if (!eightBit && extension != ".exr" && extension != ".tif" && extension != ".tiff")
-        throw RenderError("cannot write \"" + path + "\": unknown image format \"" + extension +
-                          "\" (use .exr, .tif, .png or .jpg)");
+}  // namespace bxdflab
 
-    OIIO::ImageSpec spec(width, height, channels, OIIO::TypeDesc::FLOAT);
-    OIIO::ImageBuf image(spec);
-    image.set_pixels(OIIO::ROI::All(), OIIO::TypeDesc::FLOAT, pixels.data());
-    OIIO::TypeDesc storage = OIIO::TypeDesc::FLOAT;
-    if (eightBit) {
-        // 8-bit images are for looking at: no alpha (viewers would show the
-        // empty background as white), colour through the sRGB transfer curve.
-        if (channels == 4) image = OIIO::ImageBufAlgo::channels(image, 3, {0, 1, 2});
-        OIIO::ImageBuf encoded;
-        if (!OIIO::ImageBufAlgo::colorconvert(encoded, image, "linear", "sRGB", false))
-            throw RenderError("cannot convert \"" + path + "\" to sRGB: " + encoded.geterror());
-        image = std::move(encoded);
-        storage = OIIO::TypeDesc::UINT8;
+namespace bxdflab {
+
+bool writeRawImage(int fd, Film const& film) {
+    RawImageHeader header;
+    header.width = static_cast<uint32_t>(film.width());
+    header.height = static_cast<uint32_t>(film.height());
+    std::vector<float> rgba = film.rgba(), variance = film.varianceOfMean();
+    size_t pixels = static_cast<size_t>(film.width()) * static_cast<size_t>(film.height());
+    std::vector<float> out;
+    out.reserve(pixels * RawImageHeader::kChannels);
+    for (size_t p = 0; p < pixels; ++p) {
+        out.insert(out.end(), rgba.begin() + static_cast<std::ptrdiff_t>(4 * p), rgba.begin() + static_cast<std::ptrdiff_t>(4 * p + 4));
+        out.insert(out.end(), variance.begin() + static_cast<std::ptrdiff_t>(3 * p),
+                   variance.begin() + static_cast<std::ptrdiff_t>(3 * p + 3));
     }
-    image.set_write_format(storage);
-    if (!image.write(path)) throw RenderError("cannot write image \"" + path + "\": " + image.geterror());
+    auto writeAll = [fd](void const* data, size_t bytes) {
+        char const* p = static_cast<char const*>(data);
+        while (bytes > 0) {
+            ssize_t n = ::write(fd, p, bytes);
+            if (n < 0 && errno == EINTR) continue;
+            if (n <= 0) return false;
+            p += n;
+            bytes -= static_cast<size_t>(n);
+        }
+        return true;
+    };
+    return writeAll(&header, sizeof header) && writeAll(out.data(), out.size() * sizeof(float));
 }
 
 }  // namespace bxdflab

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "RiTypesHelper.h"
+#include "core/ImageFiles.h"
 
 namespace bxdflab {
 
@@ -36,10 +37,5 @@ private:
     int m_width, m_height;
     std::vector<Pixel> m_pixels;
 };
-
-/// Writes RGBA or RGB floats with OpenImageIO. The format follows the file's
-/// extension: .exr and .tif/.tiff keep linear float values; .png and .jpg are
-/// converted to 8-bit sRGB without alpha. Throws RenderError with the reason on failure.
-void writeImage(std::string const& path, std::vector<float> const& pixels, int width, int height, int channels);
 
 }  // namespace bxdflab

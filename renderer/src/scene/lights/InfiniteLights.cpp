@@ -1,11 +1,9 @@
 #include "scene/lights/InfiniteLights.h"
 
-#include <OpenImageIO/imagebuf.h>
-#include <OpenImageIO/imagebufalgo.h>
-
 #include <cmath>
 
 #include "core/Error.h"
+#include "core/ImageFiles.h"
 
 namespace bxdflab {
 
@@ -52,22 +50,17 @@ DomeLight::DomeLight(Mat4 const& lightToWorld, std::string const& imagePath) {
     m_toLight = glm::transpose(linear);
     if (imagePath.empty()) return;
 
-    OIIO::ImageBuf image(imagePath);
-    if (!image.read(0, 0, true, OIIO::TypeDesc::FLOAT))
-        throw RenderError("PxrDomeLight: cannot read lightColorMap \"" + imagePath + "\": " + image.geterror());
-    OIIO::ROI roi = image.roi();
-    m_width = roi.width();
-    m_height = roi.height();
-    int channels = roi.nchannels();
+    ImagePixels image = imageFiles().read(imagePath, "PxrDomeLight: cannot read lightColorMap");
+    m_width = image.width;
+    m_height = image.height;
+    int channels = image.channels;
     m_pixels.resize(static_cast<size_t>(m_width) * m_height);
     std::vector<float> weights(m_pixels.size());
-    std::vector<float> row(static_cast<size_t>(m_width) * channels);
     for (int y = 0; y < m_height; ++y) {
-        image.get_pixels(OIIO::ROI(roi.xbegin, roi.xend, roi.ybegin + y, roi.ybegin + y + 1, 0, 1, 0, channels),
-                         OIIO::TypeDesc::FLOAT, row.data());
+        float const* row = &image.pixels[static_cast<size_t>(y) * m_width * channels];
         float sinTheta = std::sin(kPi * (y + 0.5f) / m_height);
         for (int x = 0; x < m_width; ++x) {
-            float const* p = &row[static_cast<size_t>(x) * channels];
+            float const* p = row + static_cast<size_t>(x) * channels;
             Vec3 rgb = channels >= 3 ? Vec3(p[0], p[1], p[2]) : Vec3(p[0]);
             // Light cannot be negative or undefined: such pixels (a bad export) become black,
             // for lookups and for the sampling distribution alike, and are counted.

@@ -1,0 +1,24 @@
+#include "core/ImageFiles.h"
+
+#include <atomic>
+
+#include "core/Error.h"
+
+namespace bxdflab {
+namespace {
+std::atomic<ImageFiles const*> g_files{nullptr};
+}  // namespace
+
+void installImageFiles(ImageFiles const* files) { g_files = files; }
+
+ImageFiles const& imageFiles() {
+    ImageFiles const* files = g_files;
+    if (!files) throw RenderError("this program does not read or write image files (it is built without OpenImageIO)");
+    return *files;
+}
+
+void writeImage(std::string const& path, std::vector<float> const& pixels, int width, int height, int channels) {
+    imageFiles().write(path, pixels, width, height, channels);
+}
+
+}  // namespace bxdflab

@@ -1,0 +1,76 @@
+#include "film/OiioImageFiles.h"
+
+#include <OpenImageIO/imagebuf.h>
+#include <OpenImageIO/imagebufalgo.h>
+#include <OpenImageIO/imageio.h>
+
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+
+#include "core/Error.h"
+
+namespace bxdflab {
+namespace {
+
+class OiioImageFiles final : public ImageFiles {
+public:
+    ImagePixels read(std::string const& path, std::string const& what) const override {
+        std::string prefix = what + " \"" + path + "\": ";
+        auto input = OIIO::ImageInput::open(path);
+        if (!input) throw RenderError(prefix + OIIO::geterror());
+        OIIO::ImageSpec const& spec = input->spec();
+        // The declared size is checked before any pixel is decoded: a small file
+        // can claim an image of many gigabytes.
+        long long pixels = static_cast<long long>(spec.width) * spec.height;
+        if (spec.width <= 0 || spec.height <= 0 || spec.width > kMaxImageSide || spec.height > kMaxImageSide ||
+            pixels > kMaxImagePixels || spec.nchannels <= 0 || spec.nchannels > 16 || spec.depth > 1)
+            throw RenderError(prefix + "it declares " + std::to_string(spec.width) + " x " + std::to_string(spec.height) +
+                              " pixels of " + std::to_string(spec.nchannels) + " channels; at most " +
+                              std::to_string(kMaxImageSide) + " on a side (and 16 channels) are read");
+        ImagePixels image;
+        image.width = spec.width;
+        image.height = spec.height;
+        image.channels = spec.nchannels;
+        image.pixels.resize(static_cast<size_t>(pixels) * static_cast<size_t>(spec.nchannels));
+        if (!input->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, image.pixels.data()))
+            throw RenderError(prefix + input->geterror());
+        return image;
+    }
+
+    void write(std::string const& path, std::vector<float> const& pixels, int width, int height,
+               int channels) const override {
+        std::string extension = std::filesystem::path(path).extension().string();
+        std::transform(extension.begin(), extension.end(), extension.begin(),
+                       [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+        bool eightBit = extension == ".png" || extension == ".jpg" || extension == ".jpeg";
+        if (!eightBit && extension != ".exr" && extension != ".tif" && extension != ".tiff")
+            throw RenderError("cannot write \"" + path + "\": unknown image format \"" + extension +
+                              "\" (use .exr, .tif, .png or .jpg)");
+        OIIO::ImageSpec spec(width, height, channels, OIIO::TypeDesc::FLOAT);
+        OIIO::ImageBuf image(spec);
+        image.set_pixels(OIIO::ROI::All(), OIIO::TypeDesc::FLOAT, pixels.data());
+        OIIO::TypeDesc storage = OIIO::TypeDesc::FLOAT;
+        if (eightBit) {
+            // 8-bit images are for looking at: no alpha (viewers would show the
+            // empty background as white), colour through the sRGB transfer curve.
+            if (channels == 4) image = OIIO::ImageBufAlgo::channels(image, 3, {0, 1, 2});
+            OIIO::ImageBuf encoded;
+            if (!OIIO::ImageBufAlgo::colorconvert(encoded, image, "linear", "sRGB", false))
+                throw RenderError("cannot convert \"" + path + "\" to sRGB: " + encoded.geterror());
+            image = std::move(encoded);
+            storage = OIIO::TypeDesc::UINT8;
+        }
+        image.set_write_format(storage);
+        if (!image.write(path)) throw RenderError("cannot write image \"" + path + "\": " + image.geterror());
+    }
+};
+
+}  // namespace
+
+void useOpenImageIO() {
+    static OiioImageFiles const files;
+    installImageFiles(&files);
+}
+
+}  // namespace bxdflab

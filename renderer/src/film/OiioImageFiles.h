@@ -1,0 +1,17 @@
+// The image files the renderer reads and writes, through OpenImageIO. A
+// program that needs them calls useOpenImageIO() once, at the top of main.
+#pragma once
+
+#include "core/ImageFiles.h"
+
+namespace bxdflab {
+
+/// Largest image read: 16384 pixels on a side and 2^28 pixels in all. An
+/// image declaring more is refused before anything is decoded.
+constexpr int kMaxImageSide = 16384;
+constexpr long long kMaxImagePixels = 1ll << 28;
+
+/// Installs the OpenImageIO implementation of ImageFiles.
+void useOpenImageIO();
+
+}  // namespace bxdflab
