@@ -52,24 +52,29 @@ bool FinishedWood::evaluate(int i, RtVector3 const& Ln, Weights& w, float& fpdf,
     RixFresnelDielectric(Vn, N, relativeEta, &fresnelV, nullptr, &refractedV);
     RtVector3 sIn = refractedL;    // the light's path in the wood
     RtVector3 sOut = -refractedV;  // the path that leaves toward the viewer
-    float ssFactor = RixMax(0.0f, -sIn.Dot(N)) * (1.0f - fresnelL) * (1.0f - fresnelV);
+    // What reaches the wood and comes back out: both transmittances, and the
+    // radiance compression by eta^2 entering the denser finish, undone leaving
+    // it (Marschner et al. 2005, section 4). The cosine that weights the
+    // reflectance equation stays the OUTSIDE one, cos(theta_L).
+    float eta = RixMax(m_params.eta[i], 1e-3f);
+    float underFinish = (1.0f - fresnelL) * (1.0f - fresnelV) / (eta * eta);
 
-    // 3. Subsurface diffuse.
-    w.subsurface = m_params.diffuseColor[i] * (F_INVPI * ssFactor);
+    // 3. Subsurface diffuse: f = rho_d / pi, under the finish.
+    w.subsurface = m_params.diffuseColor[i] * (F_INVPI * underFinish * cosL);
 
     // 4. Fibers: a highlight where the refracted paths make opposite angles with the fiber.
     RtVector3 TX, TY;
     RixComputeShadingBasis(N, m_Tn[i], TX, TY);
     RtVector3 const& axisLocal = m_params.fiberAxis[i];
     RtVector3 axis = Normalize(TX * axisLocal.x + TY * axisLocal.y + N * axisLocal.z);
-    if (!axis.IsZero()) {
+    if (!axis.IsZero() && !sIn.IsZero() && !sOut.IsZero()) {
         float psiI = safeAsin(-sIn.Dot(axis));
         float psiR = safeAsin(sOut.Dot(axis));
         float psiH = psiR + psiI, psiD = psiR - psiI;
         float beta = RixMax(m_params.beta[i], 1e-4f);
         float cosHalfD = std::cos(0.5f * psiD);
         float fiber = gaussian(beta, psiH) / RixMax(cosHalfD * cosHalfD, 1e-4f);
-        w.fiber = m_params.fiberColor[i] * (fiber * ssFactor);
+        w.fiber = m_params.fiberColor[i] * (fiber * underFinish * cosL);
     }
 
     // Every lobe is sampled by the cosine distribution.

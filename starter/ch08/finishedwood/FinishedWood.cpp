@@ -55,10 +55,15 @@ bool FinishedWood::evaluate(int i, RtVector3 const& Ln, Weights& w, float& fpdf,
     RixFresnelDielectric(Vn, N, relativeEta, &fresnelV, nullptr, &refractedV);
     RtVector3 sIn = refractedL;    // the light's path in the wood
     RtVector3 sOut = -refractedV;  // the path that leaves toward the viewer
-    float ssFactor = RixMax(0.0f, -sIn.Dot(N)) * (1.0f - fresnelL) * (1.0f - fresnelV);
+    // What reaches the wood and comes back out: both transmittances, and the
+    // radiance compression by eta^2 entering the denser finish, undone leaving
+    // it (Marschner et al. 2005, section 4). The cosine that weights the
+    // reflectance equation stays the OUTSIDE one, cos(theta_L).
+    float eta = RixMax(m_params.eta[i], 1e-3f);
+    float underFinish = (1.0f - fresnelL) * (1.0f - fresnelV) / (eta * eta);
 
-    // 3. Subsurface diffuse.
-    w.subsurface = m_params.diffuseColor[i] * (F_INVPI * ssFactor);
+    // 3. Subsurface diffuse: f = rho_d / pi, under the finish.
+    w.subsurface = m_params.diffuseColor[i] * (F_INVPI * underFinish * cosL);
 
     // 4. Fibers: a highlight where the refracted paths make opposite angles with the fiber.
     RtVector3 TX, TY;
@@ -69,7 +74,9 @@ bool FinishedWood::evaluate(int i, RtVector3 const& Ln, Weights& w, float& fpdf,
     //   psi_i = asin(-sIn.axis), psi_r = asin(sOut.axis)    (safeAsin clamps the argument)
     //   psi_h = psi_r + psi_i, psi_d = psi_r - psi_i
     //   fiber = gaussian(beta, psi_h) / cos^2(psi_d / 2)    (keep the denominator >= 1e-4)
-    //   w.fiber = m_params.fiberColor[i] * fiber * ssFactor
+    //   w.fiber = m_params.fiberColor[i] * fiber * underFinish * cosL
+    //   (skip it when the axis, sIn or sOut is zero: no fiber, or total internal reflection)
+    PIXAR_ARGUSED(sIn);
     PIXAR_ARGUSED(sOut);
     PIXAR_ARGUSED(axis);
     RIX_TODO(shadingCtx, "FinishedWood::evaluate (fiber)");

