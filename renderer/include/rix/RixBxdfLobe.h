@@ -85,6 +85,8 @@ public:
     bool HasSpecular() const { return (m_bits & k_specularMask) != 0; }
     bool HasUser() const { return (m_bits & k_userMask) != 0; }
     uint32_t GetBits() const { return m_bits; }
+    /// The set whose GetBits() is `bits` (for passing a set between processes).
+    static RixBXLobeTraits FromBits(uint32_t bits) { RixBXLobeTraits t; t.m_bits = bits; return t; }
 
     RixBXLobeTraits operator&(RixBXLobeTraits const& o) const { return FromBits(m_bits & o.m_bits); }
     RixBXLobeTraits operator|(RixBXLobeTraits const& o) const { return FromBits(m_bits | o.m_bits); }
@@ -94,7 +96,6 @@ public:
     bool operator!=(RixBXLobeTraits const& o) const { return m_bits != o.m_bits; }
 
 private:
-    static RixBXLobeTraits FromBits(uint32_t bits) { RixBXLobeTraits t; t.m_bits = bits; return t; }
     static constexpr int k_specularShift = k_RixBXMaxNumDiffuseLobes;                     // bits 4..11
     static constexpr int k_userShift = k_specularShift + k_RixBXMaxNumSpecularLobes;       // bits 12..23
     static constexpr uint32_t k_diffuseMask = (1u << k_specularShift) - 1u;
@@ -204,7 +205,7 @@ PRMAN_INLINE int RixBXChooseLobe(float xi, float const* weights, int numLobes,
     float w = weights[chosen];
     if (xiRemapped) {
         float r = (target - start) / w;
-        *xiRemapped = r < 0.0f ? 0.0f : (r < 0x1.fffffep-1f ? r : 0x1.fffffep-1f);
+        *xiRemapped = r < 0.0f ? 0.0f : (r < 0.99999994f ? r : 0.99999994f);
     }
     if (probability) *probability = w / total;
     return chosen;

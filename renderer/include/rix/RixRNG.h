@@ -104,5 +104,5 @@ private:
         return ReverseBits(LaineKarrasPermutation(ReverseBits(x), seed));
     }
     // Keeps the top 24 bits so the result is exactly representable and < 1.
-    static float ToUnitFloat(uint32_t bits) { return static_cast<float>(bits >> 8) * 0x1p-24f; }
+    static float ToUnitFloat(uint32_t bits) { return static_cast<float>(bits >> 8) * (1.0f / 16777216.0f); }
 };

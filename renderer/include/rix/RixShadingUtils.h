@@ -175,3 +175,27 @@ PRMAN_INLINE void RixUniformDirectionalDistribution(RtFloat2 const& xi, RtNormal
     RixComputeShadingBasis(N, RtVector3(0.0f, 0.0f, 0.0f), TX, TY);
     RixUniformDirectionalDistribution(xi, N, TX, TY, out, cosTheta);
 }
+
+/// The density of the normalised Phong lobe about an axis, for a direction at
+/// cosine cosAlpha from it: (n + 1) / (2 pi) cos^n(alpha), 0 behind the axis.
+/// (A course helper, not part of RenderMan's API: chapter 8 derives it.)
+PRMAN_INLINE float RixPhongLobePdf(float cosAlpha, float n) {
+    if (cosAlpha <= 0.0f) return 0.0f;
+    return (n + 1.0f) * F_INVTWOPI * std::pow(cosAlpha, n);
+}
+
+/// A direction distributed as the Phong lobe cos^n(alpha) about the unit axis
+/// A, with density RixPhongLobePdf: cos(alpha) = xi0^(1 / (n + 1)),
+/// phi = 2 pi xi1. xi0 = 0 is taken as 2^-24, so the direction returned
+/// always has a positive density. (A course helper: chapter 8 derives it.)
+PRMAN_INLINE void RixPhongLobeDirectionalDistribution(RtFloat2 const& xi, float n, RtVector3 const& A,
+                                                      RtVector3& out, float& cosAlpha) {
+    float c = std::pow(RixMax(xi[0], 5.9604645e-8f), 1.0f / (n + 1.0f));
+    float s = std::sqrt(RixMax(0.0f, 1.0f - c * c));
+    float sinPhi, cosPhi;
+    RixSinCos(F_TWOPI * xi[1], &sinPhi, &cosPhi);
+    RtVector3 TX, TY;
+    RixComputeShadingBasis(A, RtVector3(0.0f, 0.0f, 0.0f), TX, TY);
+    out = TX * (s * cosPhi) + TY * (s * sinPhi) + A * c;
+    cosAlpha = c;
+}

@@ -3,7 +3,6 @@
 #include <cmath>
 
 #include "RixShadingUtils.h"
-#include "Sampling.h"
 
 RixBXLobeSampled g_plasticDiffuseLobe;
 RixBXLobeSampled g_plasticSpecularLobe;
@@ -27,7 +26,7 @@ float Plastic::mixturePdf(int i, RtNormal3 const& N, RtVector3 const& from, RtVe
     if (cosTo <= 0.0f) return 0.0f;
     float pSpecular = specularProbability(i);
     RtVector3 R = RixReflect(-from, N);
-    float lobePdf = sampling::phongLobePdf(RtVector3(0.0f, 0.0f, RixClamp(R.Dot(to), -1.0f, 1.0f)), m_params.gloss[i]);
+    float lobePdf = RixPhongLobePdf(R.Dot(to), m_params.gloss[i]);
     return (1.0f - pSpecular) * cosTo * F_INVPI + pSpecular * lobePdf;
 }
 
@@ -72,13 +71,11 @@ void Plastic::GenerateSample(RixBXTransportTrait, RixBXLobeTraits const* lobesWa
         if (chosen < 0) continue;  // both lobes black: nothing to sample
 
         RtNormal3 N = RixGetForwardFacingNormal(m_Vn[i], m_Nn[i]);
-        RtNormal3 axis = chosen == 0 ? N : RtNormal3(RixReflect(-m_Vn[i], N));
-        RtVector3 TX, TY;
-        RixComputeShadingBasis(axis, RtVector3(0.0f, 0.0f, 0.0f), TX, TY);
-        float unusedPdf;
-        RtVector3 local = chosen == 0 ? sampling::sampleCosineHemisphere(xi[i], &unusedPdf)
-                                      : sampling::samplePhongLobe(xi[i], m_params.gloss[i], &unusedPdf);
-        Ln[i] = sampling::toWorld(local, TX, TY, axis);
+        float cosine;
+        if (chosen == 0)
+            RixCosDirectionalDistribution(xi[i], N, Ln[i], cosine);
+        else
+            RixPhongLobeDirectionalDistribution(xi[i], m_params.gloss[i], RixReflect(-m_Vn[i], N), Ln[i], cosine);
         if (!evaluate(i, Ln[i], diffuseW[i], specularW[i], FPdf[i], RPdf[i]) || !(FPdf[i] > 0.0f)) continue;
         lobeSampled[i] = chosen == 0 ? g_plasticDiffuseLobe : g_plasticSpecularLobe;
         lobeSampled[i].SetValid(true);

@@ -4,7 +4,6 @@
 #include <cmath>
 
 #include "RixShadingUtils.h"
-#include "Sampling.h"
 
 RixBXLobeSampled g_plasticDiffuseLobe;
 RixBXLobeSampled g_plasticSpecularLobe;
@@ -28,7 +27,7 @@ float Plastic::mixturePdf(int i, RtNormal3 const& N, RtVector3 const& from, RtVe
     if (cosTo <= 0.0f) return 0.0f;
     // TODO: the mixture pdf p_d * cos/pi + p_s * (n + 1)/(2 pi) max(0, R.to)^n,
     // with p_s = specularProbability(i), p_d = 1 - p_s, R the mirror direction of
-    // `from` (RixReflect(-from, N)). sampling::phongLobePdf computes the Phong part.
+    // `from` (RixReflect(-from, N)). RixPhongLobePdf computes the Phong part.
     PIXAR_ARGUSED(i);
     PIXAR_ARGUSED(from);
     RIX_TODO(shadingCtx, "Plastic::mixturePdf");
@@ -73,13 +72,11 @@ void Plastic::GenerateSample(RixBXTransportTrait, RixBXLobeTraits const* lobesWa
         if (chosen < 0) continue;  // both lobes black: nothing to sample
 
         RtNormal3 N = RixGetForwardFacingNormal(m_Vn[i], m_Nn[i]);
-        RtNormal3 axis = chosen == 0 ? N : RtNormal3(RixReflect(-m_Vn[i], N));
-        RtVector3 TX, TY;
-        RixComputeShadingBasis(axis, RtVector3(0.0f, 0.0f, 0.0f), TX, TY);
-        float unusedPdf;
-        RtVector3 local = chosen == 0 ? sampling::sampleCosineHemisphere(xi[i], &unusedPdf)
-                                      : sampling::samplePhongLobe(xi[i], m_params.gloss[i], &unusedPdf);
-        Ln[i] = sampling::toWorld(local, TX, TY, axis);
+        float cosine;
+        if (chosen == 0)
+            RixCosDirectionalDistribution(xi[i], N, Ln[i], cosine);
+        else
+            RixPhongLobeDirectionalDistribution(xi[i], m_params.gloss[i], RixReflect(-m_Vn[i], N), Ln[i], cosine);
         if (!evaluate(i, Ln[i], diffuseW[i], specularW[i], FPdf[i], RPdf[i]) || !(FPdf[i] > 0.0f)) continue;
         lobeSampled[i] = chosen == 0 ? g_plasticDiffuseLobe : g_plasticSpecularLobe;
         lobeSampled[i].SetValid(true);

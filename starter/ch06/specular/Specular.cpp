@@ -4,7 +4,6 @@
 #include <cmath>
 
 #include "RixShadingUtils.h"
-#include "Sampling.h"
 
 RixBXLobeSampled g_specularLobe;
 RixBXLobeTraits g_specularTraits;
@@ -21,7 +20,7 @@ float Specular::pdf(int i, RtNormal3 const& N, RtVector3 const& from, RtVector3 
     if (cosTo <= 0.0f) return 0.0f;
     if (m_params.samplingMode == 0) return cosTo * F_INVPI;
     RtVector3 R = RixReflect(-from, N);  // the lobe's axis: the mirror direction of `from`
-    return sampling::phongLobePdf(RtVector3(0.0f, 0.0f, RixClamp(R.Dot(to), -1.0f, 1.0f)), m_params.gloss[i]);
+    return RixPhongLobePdf(R.Dot(to), m_params.gloss[i]);
 }
 
 bool Specular::evaluate(int i, RtVector3 const& Ln, RtColorRGB& weight, float& fpdf, float& rpdf) const {
@@ -56,16 +55,11 @@ void Specular::GenerateSample(RixBXTransportTrait, RixBXLobeTraits const* lobesW
         FPdf[i] = RPdf[i] = 0.0f;
         if (!(all & lobesWanted[i] & g_specularTraits).HasAny()) continue;
         RtNormal3 N = RixGetForwardFacingNormal(m_Vn[i], m_Nn[i]);
-        RtVector3 TX, TY;
-        float unusedPdf;
-        if (m_params.samplingMode == 0) {
-            RixComputeShadingBasis(N, RtVector3(0.0f, 0.0f, 0.0f), TX, TY);
-            Ln[i] = sampling::toWorld(sampling::sampleCosineHemisphere(xi[i], &unusedPdf), TX, TY, N);
-        } else {
-            RtNormal3 R = RixReflect(-m_Vn[i], N);
-            RixComputeShadingBasis(R, RtVector3(0.0f, 0.0f, 0.0f), TX, TY);
-            Ln[i] = sampling::toWorld(sampling::samplePhongLobe(xi[i], m_params.gloss[i], &unusedPdf), TX, TY, R);
-        }
+        float cosine;
+        if (m_params.samplingMode == 0)
+            RixCosDirectionalDistribution(xi[i], N, Ln[i], cosine);
+        else
+            RixPhongLobeDirectionalDistribution(xi[i], m_params.gloss[i], RixReflect(-m_Vn[i], N), Ln[i], cosine);
         // A lobe direction below the surface reflects nothing: the sample is invalid.
         if (!evaluate(i, Ln[i], weights[i], FPdf[i], RPdf[i]) || !(FPdf[i] > 0.0f)) continue;
         lobeSampled[i] = g_specularLobe;
