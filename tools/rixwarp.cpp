@@ -13,13 +13,16 @@
 #include <cstdio>
 #include <iostream>
 
+#include "film/OiioImageFiles.h"
 #include "CommandLine.h"
 #include "ToolSupport.h"
-#include "probe/SamplingHistogram.h"
+#include "measure/BxdfMeasurer.h"
+#include "stats/DirectionTest.h"
 
 using namespace bxdflab;
 
 int main(int argc, char** argv) {
+    bxdflab::useOpenImageIO();
     CLI::App app{"rixwarp: a plugin's sampled directions beside its declared pdf, with a chi-squared verdict"};
     std::string plugin, params, out = "warp.png", pluginPath;
     float theta = 45.0f, phi = 0.0f;
@@ -36,27 +39,46 @@ int main(int argc, char** argv) {
     try {
         Diagnostics diagnostics;
         BxdfProbe probe(plugin, params, splitSearchPath(pluginPath), diagnostics);
-        SamplingHistogram h = sampleHistogram(probe, tools::viewPoint(theta, phi), samples, 32, 64, 8);
-        ChiSquaredResult chi = h.test();
+        ProbePoint point = tools::viewPoint(theta, phi);
+        DirectionCells cells;
+        cells.cosCells = 32;
+        cells.phiCells = 64;
+        DirectionCounts counts(cells);
+        for (auto const& g : probe.generate(std::vector<ProbePoint>(static_cast<size_t>(samples), point),
+                                            independentSamples(static_cast<size_t>(samples), 7u)))
+            counts.add(g.valid, g.L, g.FPdf);
+        auto mass = integrateCells(cells, [&](std::vector<Vec3> const& L) {
+            std::vector<double> pdf;
+            for (auto const& r : probe.evaluate(std::vector<ProbePoint>(L.size(), point), L)) pdf.push_back(r.FPdf);
+            return pdf;
+        }, toleranceForSamples(samples));
+        DirectionTestResult t = testDirections(counts, mass);
+        ChiSquaredResult const& chi = t.chi;
+        std::vector<double> observed = counts.observed, expected;
+        for (double m : mass) expected.push_back(m * samples);
+        long valid = counts.total - counts.invalid - counts.nonFinite;
 
         double top = 0.0;
-        for (size_t i = 0; i < h.observed.size(); ++i) top = std::max({top, h.observed[i], h.expected[i]});
+        for (size_t i = 0; i < observed.size(); ++i) top = std::max({top, observed[i], expected[i]});
         const int cell = 6, gap = 12;
-        OIIO::ImageBuf left = tools::heatmap(h.observed, h.phiCells, h.cosCells, top, cell);
-        OIIO::ImageBuf right = tools::heatmap(h.expected, h.phiCells, h.cosCells, top, cell);
-        int w = h.phiCells * cell, ht = h.cosCells * cell;
+        OIIO::ImageBuf left = tools::heatmap(observed, cells.phiCells, cells.cosCells, top, cell);
+        OIIO::ImageBuf right = tools::heatmap(expected, cells.phiCells, cells.cosCells, top, cell);
+        int w = cells.phiCells * cell, ht = cells.cosCells * cell;
         OIIO::ImageBuf canvas(OIIO::ImageSpec(2 * w + gap, ht, 3, OIIO::TypeDesc::FLOAT));
         OIIO::ImageBufAlgo::fill(canvas, {1.0f, 1.0f, 1.0f});
         OIIO::ImageBufAlgo::paste(canvas, 0, 0, 0, 0, left);
         OIIO::ImageBufAlgo::paste(canvas, w + gap, 0, 0, 0, right);
         tools::writeDisplayImage(canvas, out);
 
-        bool pass = chi.pValue > 0.01 && chi.impossibleSamples == 0 && h.nonFiniteSamples == 0;
-        std::printf("%s at theta %.1f phi %.1f: %ld of %ld samples valid, pdf integral %.4f\n", plugin.c_str(), theta,
-                    phi, h.validSamples, h.samples, h.pdfIntegral);
+        // No valid sample at all proves nothing: that is a failure, not a pass.
+        bool pass = valid > 0 && chi.pValue > 0.01 && t.impossible == 0 && counts.nonFinite == 0;
+        std::printf("%s at theta %.1f phi %.1f: %ld of %ld samples valid, FPdf integrates to %.4f over the hemisphere\n",
+                    plugin.c_str(), theta, phi, valid, counts.total, t.pdfMass);
+        if (valid == 0) std::printf("no sample was valid: GenerateSample never called SetValid(true)\n");
+        if (counts.nonFinite) std::printf("%ld valid samples had a NaN or infinite direction or pdf\n", counts.nonFinite);
         std::printf("chi-squared %.2f with %d degrees of freedom: p = %.4g -> %s\n", chi.statistic,
                     chi.degreesOfFreedom, chi.pValue, pass ? "PASS" : "FAIL");
-        if (chi.impossibleSamples) std::printf("%ld samples fell where the pdf is zero\n", chi.impossibleSamples);
+        if (t.impossible) std::printf("%ld samples fell where the pdf is zero (or below the surface)\n", t.impossible);
         std::printf("left: sampled directions, right: FPdf (cos(theta) upward, phi across) -> %s\n", out.c_str());
         return pass ? 0 : 1;
     } catch (std::exception const& e) {

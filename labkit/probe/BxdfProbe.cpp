@@ -72,6 +72,7 @@ private:
 }  // namespace
 
 struct BxdfProbe::Impl {
+    CallObserver observer = nullptr;
     Diagnostics& diagnostics;
     PluginLoader loader;
     Scene scene;
@@ -94,51 +95,46 @@ struct BxdfProbe::Impl {
         arena.reset();
         ProbeShadingContext ctx(*instance, points, arena, &instance->plugin().messages());
         RixBxdfFactory* factory = instance->plugin().factory();
+        announce("BeginScatter");
         RixBxdf* bxdf = factory->BeginScatter(&ctx, RixBXLobeTraits::All(), k_RixSCScatterQuery, nullptr,
                                               instance->instanceData());
         if (!bxdf) throw RenderError("plugin \"" + instance->plugin().name() + "\": BeginScatter returned null");
         body(ctx, *bxdf);
+        announce("EndScatter");
         factory->EndScatter(bxdf);
+    }
+    void announce(char const* call) const {
+        if (observer) observer(call);
     }
 };
 
 BxdfProbe::BxdfProbe(std::string const& plugin, std::string const& ribParams, std::vector<std::string> const& searchPath,
-                     Diagnostics& diagnostics, bool searchBuiltins)
+                     Diagnostics& diagnostics, bool searchBuiltins, CallObserver observer)
     : m_impl(std::make_unique<Impl>(searchPath, diagnostics, searchBuiltins)) {
+    m_impl->observer = observer;
     SceneBuilder builder(m_impl->scene, diagnostics);
     builder.readText("Bxdf \"" + plugin + "\" \"probe\" " + ribParams + "\n", "<probe parameters>");
+    m_impl->announce("loading the plugin (its static initialisers, CreateRixBxdfFactory, Init, GetParamTable)");
     BxdfPlugin& loaded = m_impl->loader.bxdf(plugin);
+    m_impl->announce("CreateInstanceData");
     m_impl->instance = std::make_unique<BxdfInstance>(m_impl->scene.materials.at(0), loaded, diagnostics);
+    m_impl->announce("Synchronize");
     loaded.factory()->Synchronize(loaded.context(), k_RixSCRenderBegin, nullptr);
 }
 
 BxdfProbe::~BxdfProbe() {
     if (m_impl && m_impl->instance) {
         BxdfPlugin& plugin = m_impl->instance->plugin();
+        m_impl->announce("Synchronize");
         plugin.factory()->Synchronize(plugin.context(), k_RixSCRenderEnd, nullptr);
         m_impl->instance.reset();
     }
 }
 
-std::vector<ProbeResult> BxdfProbe::generate(std::vector<ProbePoint> const& points, uint32_t firstSample, uint32_t seed,
-                                             float fixedXi, Sequence sequence) {
-    std::vector<RixRNG::SampleCtx> samples(points.size());
-    for (size_t i = 0; i < points.size(); ++i) {
-        uint32_t index = firstSample + static_cast<uint32_t>(i);
-        // An independently scrambled sequence per point makes its first sample uniform random.
-        samples[i] = sequence == Sequence::Stratified
-                         ? RixRNG::SampleCtx{RixRNG::Hash(seed ^ 0x3c6ef372u), index, 0, fixedXi}
-                         : RixRNG::SampleCtx{RixRNG::Hash(seed ^ RixRNG::Hash(index + 0x9e3779b9u)), 0, 0, fixedXi};
-    }
-    return generateWith(points, samples);
-}
+void BxdfProbe::setCallObserver(CallObserver observer) { m_impl->observer = observer; }
 
-ProbeResult BxdfProbe::generateAt(ProbePoint const& point, RtFloat2 const& xi) {
-    return generateWith({point}, {RixRNG::SampleCtx{0u, 0u, 0u, xi.x, xi.y}})[0];
-}
-
-std::vector<ProbeResult> BxdfProbe::generateWith(std::vector<ProbePoint> const& points,
-                                                 std::vector<RixRNG::SampleCtx> samples) {
+std::vector<ProbeResult> BxdfProbe::generate(std::vector<ProbePoint> const& points,
+                                             std::vector<RixRNG::SampleCtx> samples) {
     std::vector<ProbeResult> out(points.size());
     int n = static_cast<int>(points.size());
     m_impl->withBxdf(points, [&](RixShadingContext const& ctx, RixBxdf& bxdf) {
@@ -156,6 +152,7 @@ std::vector<ProbeResult> BxdfProbe::generateWith(std::vector<ProbePoint> const& 
             FPdf[i] = RPdf[i] = 0.0f;
         }
         RixBXLobeWeights W(n, &ctx);
+        m_impl->announce("GenerateSample");
         bxdf.GenerateSample(k_RixBXDirectLighting, wanted, &rng, sampled, Ln, W, FPdf, RPdf);
         for (int i = 0; i < n; ++i)
             out[static_cast<size_t>(i)] = {toVec3(Ln[i]), W.SumAtPoint(i), FPdf[i], RPdf[i], sampled[i].GetValid()};
@@ -183,6 +180,7 @@ std::vector<ProbeResult> BxdfProbe::evaluate(std::vector<ProbePoint> const& poin
         }
         RixRNG rng(samples, n);
         RixBXLobeWeights W(n, &ctx);
+        m_impl->announce("EvaluateSample");
         bxdf.EvaluateSample(k_RixBXDirectLighting, wanted, &rng, evaluated, Ln, W, FPdf, RPdf);
         for (int i = 0; i < n; ++i)
             out[static_cast<size_t>(i)] = {L[static_cast<size_t>(i)], W.SumAtPoint(i), FPdf[i], RPdf[i],
@@ -208,6 +206,7 @@ std::vector<ProbeResult> BxdfProbe::evaluateAtIndex(ProbePoint const& point, std
             FPdf[i] = RPdf[i] = 0.0f;
         }
         RixBXLobeWeights W(n, &ctx);
+        m_impl->announce("EvaluateSamplesAtIndex");
         bxdf.EvaluateSamplesAtIndex(k_RixBXDirectLighting, RixBXLobeTraits::All(), &rng, 0, n, evaluated, Ln, W, FPdf, RPdf);
         for (int i = 0; i < n; ++i)
             out[static_cast<size_t>(i)] = {L[static_cast<size_t>(i)], W.SumAtPoint(i), FPdf[i], RPdf[i],
@@ -219,6 +218,7 @@ std::vector<ProbeResult> BxdfProbe::evaluateAtIndex(ProbePoint const& point, std
 std::vector<RtColorRGB> BxdfProbe::emission(std::vector<ProbePoint> const& points) {
     std::vector<RtColorRGB> out(points.size(), RtColorRGB(0.0f));
     m_impl->withBxdf(points, [&](RixShadingContext const&, RixBxdf& bxdf) {
+        m_impl->announce("EmitLocal");
         if (!bxdf.EmitLocal(out.data())) std::fill(out.begin(), out.end(), RtColorRGB(0.0f));
     });
     return out;
@@ -226,7 +226,10 @@ std::vector<RtColorRGB> BxdfProbe::emission(std::vector<ProbePoint> const& point
 
 RixBXLobeTraits BxdfProbe::lobes() {
     RixBXLobeTraits traits;
-    m_impl->withBxdf({ProbePoint{}}, [&](RixShadingContext const&, RixBxdf& bxdf) { traits = bxdf.GetAllLobeTraits(); });
+    m_impl->withBxdf({ProbePoint{}}, [&](RixShadingContext const&, RixBxdf& bxdf) {
+        m_impl->announce("GetAggregateLobeTraits");
+        traits = bxdf.GetAllLobeTraits();
+    });
     return traits;
 }
 

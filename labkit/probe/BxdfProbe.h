@@ -33,29 +33,20 @@ struct ProbeResult {
 
 class BxdfProbe {
 public:
+    using CallObserver = void (*)(char const* call);
     /// Loads `plugin` (searching `searchPath`, then, when searchBuiltins is
     /// set, the usual plugin search path with the built-in folders) and makes
     /// one instance with `ribParams`, written as in a RIB Bxdf line, e.g.
     /// "\"color diffuseColor\" [1 1 1]". Throws RenderError/RibError.
     BxdfProbe(std::string const& plugin, std::string const& ribParams, std::vector<std::string> const& searchPath,
-              Diagnostics& diagnostics, bool searchBuiltins = true);
+              Diagnostics& diagnostics, bool searchBuiltins = true, CallObserver observer = nullptr);
     ~BxdfProbe();
     BxdfProbe(BxdfProbe const&) = delete;
     BxdfProbe& operator=(BxdfProbe const&) = delete;
 
-    /// How the random numbers of a generate() batch relate to each other.
-    enum class Sequence {
-        Stratified,   ///< point i takes sample firstSample + i of one low-discrepancy sequence (as in a pixel)
-        Independent,  ///< every point gets independent uniform numbers (what statistical tests assume)
-    };
-    /// GenerateSample for a batch. With fixedXi >= 0, every random number the
-    /// Bxdf draws is fixedXi instead (for the xi = 0 / xi -> 1 cases).
-    std::vector<ProbeResult> generate(std::vector<ProbePoint> const& points, uint32_t firstSample = 0,
-                                      uint32_t seed = 0, float fixedXi = -1.0f,
-                                      Sequence sequence = Sequence::Stratified);
-    /// GenerateSample at one point with every 2-D draw returning exactly xi
-    /// (and 1-D draws xi.x): the sampling mapping itself, for Jacobian checks.
-    ProbeResult generateAt(ProbePoint const& point, RtFloat2 const& xi);
+    /// GenerateSample for a batch, point i drawing from samples[i] (see
+    /// labkit/measure/BxdfMeasurer.h for the usual ways to fill them).
+    std::vector<ProbeResult> generate(std::vector<ProbePoint> const& points, std::vector<RixRNG::SampleCtx> samples);
     /// EvaluateSample for a batch: direction L[i] at points[i].
     std::vector<ProbeResult> evaluate(std::vector<ProbePoint> const& points, std::vector<Vec3> const& L);
     /// EvaluateSamplesAtIndex: many directions at one point.
@@ -65,10 +56,13 @@ public:
     /// The Bxdf's aggregate lobes (asked on a one-point batch).
     RixBXLobeTraits lobes();
 
+    /// Called with the name of each plugin function just before it runs
+    /// ("BeginScatter", "GenerateSample", ...), so that a crash can be blamed
+    /// on the right one. The constructor's calls (loading, CreateInstanceData,
+    /// Synchronize) are announced through the same hook when it is given there.
+    void setCallObserver(CallObserver observer);
+
 private:
-    /// GenerateSample for a batch, point i drawing from samples[i].
-    std::vector<ProbeResult> generateWith(std::vector<ProbePoint> const& points,
-                                          std::vector<RixRNG::SampleCtx> samples);
     struct Impl;
     std::unique_ptr<Impl> m_impl;
 };

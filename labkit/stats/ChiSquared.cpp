@@ -1,6 +1,8 @@
-#include "probe/ChiSquared.h"
+#include "stats/ChiSquared.h"
 
+#include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace bxdflab {
 namespace {
@@ -45,8 +47,10 @@ double chiSquaredSurvival(double x, double dof) {
 
 ChiSquaredResult chiSquaredTest(std::vector<double> const& observed, std::vector<double> const& expected) {
     ChiSquaredResult result;
+    // Cells expecting fewer than 5 are pooled; a pool that still expects fewer
+    // than 5 joins the smallest regular cell, so no term has a tiny denominator.
     double pooledObserved = 0.0, pooledExpected = 0.0;
-    int cells = 0;
+    std::vector<std::pair<double, double>> terms;  // (observed, expected)
     for (size_t i = 0; i < observed.size(); ++i) {
         if (expected[i] <= 0.0) {
             result.impossibleSamples += static_cast<long>(observed[i]);
@@ -57,16 +61,20 @@ ChiSquaredResult chiSquaredTest(std::vector<double> const& observed, std::vector
             pooledExpected += expected[i];
             continue;
         }
-        double d = observed[i] - expected[i];
-        result.statistic += d * d / expected[i];
-        ++cells;
+        terms.emplace_back(observed[i], expected[i]);
     }
     if (pooledExpected > 0.0) {
-        double d = pooledObserved - pooledExpected;
-        result.statistic += d * d / pooledExpected;
-        ++cells;
+        if (pooledExpected >= 5.0 || terms.empty()) {
+            terms.emplace_back(pooledObserved, pooledExpected);
+        } else {
+            auto smallest = std::min_element(terms.begin(), terms.end(),
+                                             [](auto const& a, auto const& b) { return a.second < b.second; });
+            smallest->first += pooledObserved;
+            smallest->second += pooledExpected;
+        }
     }
-    result.degreesOfFreedom = cells - 1;
+    for (auto const& [o, e] : terms) result.statistic += (o - e) * (o - e) / e;
+    result.degreesOfFreedom = static_cast<int>(terms.size()) - 1;
     result.pValue = result.degreesOfFreedom > 0 ? chiSquaredSurvival(result.statistic, result.degreesOfFreedom) : 1.0;
     return result;
 }

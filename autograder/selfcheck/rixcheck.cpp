@@ -1,0 +1,65 @@
+// rixcheck: the autograder's checks on your own plugin, on your own machine.
+//
+//   rixcheck --plugin diffuse --plugin-dir my-bxdflab/build/plugins [--check chi2]
+//
+// Runs the checks of the exercise's manifest (or one of them) on the plugin
+// in --plugin-dir, against the course's reference solution, and prints each
+// verdict with its numbers. `ctest` in your exercise build runs it once per
+// check. Exit status 0 when every check passed (or does not apply), 1 when
+// one failed, 2 for a command-line mistake. The grader runs the same checks,
+// with your plugin in a sandbox (rixgrade), plus the renders.
+#include <iostream>
+
+#include "CommandLine.h"
+#include "checks/Check.h"
+#include "measure/ProbeMeasurer.h"
+
+using namespace bxdflab;
+
+int main(int argc, char** argv) {
+    CLI::App app{"rixcheck: the autograder's checks on your own plugin"};
+    std::string plugin, pluginDir, only;
+    uint32_t seed = 0;
+    app.add_option("--plugin", plugin, "the exercise's plugin name (e.g. diffuse)")->required();
+    app.add_option("--plugin-dir", pluginDir, "the folder holding your plugin (e.g. my-bxdflab/build/plugins)")
+        ->required()
+        ->check(CLI::ExistingDirectory);
+    app.add_option("--check", only, "run only this check (loads, values, chi2, jacobian, consistency, ...)");
+    app.add_option("--seed", seed, "seed of the checker's own random draws");
+    BXDFLAB_PARSE_COMMAND_LINE(app, argc, argv);
+
+    try {
+        std::vector<Exercise> exercises = loadExercises(BXDFLAB_SOURCE_DIR);
+        Exercise const* exercise = findExercise(exercises, plugin);
+        if (!exercise) throw std::runtime_error("no exercise has a plugin named \"" + plugin + "\"");
+        Diagnostics diagnostics;
+        ProbeMeasurer mine(plugin, {pluginDir}, diagnostics);
+        Diagnostics quiet(false);
+        ProbeMeasurer reference(plugin, {BXDFLAB_SOLUTION_PLUGINS}, quiet);
+        CheckContext context{*exercise, mine, reference, seed};
+        bool allPassed = true;
+        for (auto const& [check, points] : exercise->checks) {
+            if (check == "renders" || (!only.empty() && check != only)) continue;
+            CheckOutcome outcome;
+            try {
+                outcome = runCheck(check, context);
+            } catch (MeasurementError const& e) {
+                outcome = CheckOutcome::fail("while running " + e.call() + ": " + e.what());
+            }
+            char const* verdict = outcome.status == CheckOutcome::Status::Passed   ? "PASS"
+                                  : outcome.status == CheckOutcome::Status::Failed ? "FAIL"
+                                                                                   : "N/A ";
+            std::cout << verdict << " " << plugin << " " << check << ": " << outcome.summary << "\n";
+            if (!outcome.passed()) {
+                if (!outcome.details.empty()) std::cout << outcome.details;
+                std::cout << "  hint: " << checkHint(check) << "\n";
+                allPassed = false;
+            }
+            (void)points;
+        }
+        return allPassed ? 0 : 1;
+    } catch (std::exception const& e) {
+        std::cerr << "rixcheck: " << e.what() << '\n';
+        return 1;
+    }
+}

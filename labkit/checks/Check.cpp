@@ -1,0 +1,47 @@
+#include "checks/Check.h"
+
+#include <map>
+#include <stdexcept>
+
+namespace bxdflab {
+
+std::vector<std::string> const& checkNames() {
+    static std::vector<std::string> const names = {"loads",       "values", "chi2",   "jacobian", "consistency",
+                                                   "reciprocity", "energy", "hardcases"};
+    return names;
+}
+
+std::string const& checkHint(std::string const& check) {
+    static std::map<std::string, std::string> const hints = {
+        {"loads", "Does the plugin build, export its create/destroy pair, return a parameter table and declare its lobes?"},
+        {"values", "Compare your W = f cos(theta_L) and pdfs with the chapter's formulas; rixlobe plots your lobe."},
+        {"chi2", "Your samples do not go where your FPdf says: look at rixwarp's picture for this plugin and sampling mode."},
+        {"jacobian", "At fixed random numbers, your FPdf is not the density your mapping produces: recheck its derivation."},
+        {"consistency", "GenerateSample and EvaluateSample disagree: render ch07/validate.rib with your plugin."},
+        {"reciprocity", "f(V, L) should equal f(L, V), and RPdf should be the pdf of sampling V from L."},
+        {"energy", "The surface reflects more (or less) light than the reference: check the normalisation constants."},
+        {"hardcases", "Guard grazing angles, zero tangents, extreme parameters and xi = 0 against NaN, infinity and "
+                      "negative pdfs; mark a sample invalid instead of returning garbage."},
+        {"renders", "Diff your render with the solution's (rixdiff --heatmap); the heatmap shows where they disagree."},
+    };
+    static std::string const none;
+    auto found = hints.find(check);
+    return found == hints.end() ? none : found->second;
+}
+
+CheckOutcome runCheck(std::string const& check, CheckContext& context) {
+    std::string const reason = context.exercise.notApplicableReason(check);
+    if (!reason.empty()) return CheckOutcome::notApplicable("not applicable: " + reason);
+    if (context.exercise.kind == "sampling") return checkSamplingFunctions(check, context);
+    if (check == "loads") return checkLoads(context);
+    if (check == "values") return checkValues(context);
+    if (check == "chi2") return checkChiSquared(context);
+    if (check == "jacobian") return checkJacobian(context);
+    if (check == "consistency") return checkConsistency(context);
+    if (check == "reciprocity") return checkReciprocity(context);
+    if (check == "energy") return checkEnergy(context);
+    if (check == "hardcases") return checkHardCases(context);
+    throw std::invalid_argument("no check named \"" + check + "\"");
+}
+
+}  // namespace bxdflab

@@ -1,0 +1,54 @@
+// reciprocity: f(V, L) = f(L, V) (W divided by its own cosine) and
+// RPdf(V, L) = FPdf(L, V), to 0.1%, for every sampling mode.
+#include <cmath>
+
+#include "checks/CheckSupport.h"
+
+namespace bxdflab {
+
+using namespace checks;
+
+CheckOutcome checkReciprocity(CheckContext& c) {
+    Exercise const& e = c.exercise;
+    if (!e.reciprocal) return CheckOutcome::notApplicable("not applicable: this model is not reciprocal");
+    if (std::string why = notAttempted(c); !why.empty()) return CheckOutcome::fail(why);
+    Frame const& f = frame();
+    double const tolerance = 1e-3;
+    int compared = 0;
+    for (SamplingMode const& mode : e.samplingModes) {
+        std::string const params = e.withMode(e.params, mode);
+        std::vector<ProbePoint> forwardPoints, backwardPoints;
+        std::vector<Vec3> forwardL, backwardL, localVs, localLs;
+        for (double thetaV : {10.0, 45.0, 75.0})
+            for (double thetaL : {20.0, 55.0, 80.0})
+                for (double phiL : {150.0, 260.0}) {
+                    Vec3 V = direction(thetaV, 20), L = direction(thetaL, phiL);
+                    forwardPoints.push_back(f.point(V));
+                    forwardL.push_back(f.toWorld(L));
+                    backwardPoints.push_back(f.point(L));
+                    backwardL.push_back(f.toWorld(V));
+                    localVs.push_back(V);
+                    localLs.push_back(L);
+                }
+        auto forward = c.plugin.evaluate(params, forwardPoints, forwardL);
+        auto backward = c.plugin.evaluate(params, backwardPoints, backwardL);
+        for (size_t i = 0; i < forward.size(); ++i) {
+            ++compared;
+            Vec3 V = localVs[i], L = localLs[i];
+            std::string where = "with sampling mode \"" + mode.name + "\", V = " + describeDirection(V) + " and L = " +
+                                describeDirection(L);
+            for (int k = 0; k < 3; ++k) {
+                double fVL = forward[i].W[k] / L.z, fLV = backward[i].W[k] / V.z;
+                if (!close(fVL, fLV, tolerance, 1e-7))
+                    return CheckOutcome::fail(where + ": f(V, L) = W / cos(theta_L) = " + number(fVL) +
+                                              " but f(L, V) = " + number(fLV) + " (channel " + std::to_string(k) + ")");
+            }
+            if (!close(forward[i].RPdf, backward[i].FPdf, tolerance, 1e-7))
+                return CheckOutcome::fail(where + ": RPdf(V, L) = " + number(forward[i].RPdf) +
+                                          " but the pdf of sampling V from L, FPdf(L, V), is " + number(backward[i].FPdf));
+        }
+    }
+    return CheckOutcome::pass("f and the pdfs are reciprocal at " + std::to_string(compared) + " direction pairs");
+}
+
+}  // namespace bxdflab

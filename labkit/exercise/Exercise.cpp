@@ -1,0 +1,105 @@
+#include "exercise/Exercise.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <stdexcept>
+
+namespace fs = std::filesystem;
+
+namespace bxdflab {
+
+std::string Exercise::notApplicableReason(std::string const& check) const {
+    for (auto const& n : notApplicable)
+        if (n.check == check) return n.because;
+    return "";
+}
+
+std::string Exercise::withMode(std::string const& base, SamplingMode const& mode) const {
+    if (mode.params.empty()) return base;
+    return base.empty() ? mode.params : base + " " + mode.params;
+}
+
+Exercise loadExercise(std::string const& courseRoot, std::string const& manifestPath) {
+    std::ifstream in(manifestPath);
+    if (!in) throw std::runtime_error("cannot read the exercise manifest " + manifestPath);
+    nlohmann::json j;
+    try {
+        j = nlohmann::json::parse(in);
+    } catch (std::exception const& e) {
+        throw std::runtime_error(manifestPath + ": " + e.what());
+    }
+    auto field = [&](char const* name) -> nlohmann::json const& {
+        if (!j.contains(name)) throw std::runtime_error(manifestPath + ": the manifest has no \"" + name + "\"");
+        return j.at(name);
+    };
+    Exercise e;
+    try {
+        e.plugin = field("plugin").get<std::string>();
+        e.chapter = field("chapter").get<std::string>();
+        e.title = j.value("title", e.plugin);
+        e.order = j.value("order", 0);
+        e.kind = j.value("kind", std::string("bxdf"));
+        e.folder = fs::relative(fs::path(manifestPath).parent_path(), courseRoot).generic_string();
+        e.solutionFolder = j.value("solution", "solutions/" + fs::path(e.folder).lexically_relative("starter").generic_string());
+        e.sources = field("sources").get<std::vector<std::string>>();
+        e.identicalToSolution = j.value("identicalToSolution", std::vector<std::string>{});
+        e.scene = j.value("scene", std::string());
+        e.params = j.value("params", std::string());
+        e.colorParams = j.value("colorParams", e.params);
+        e.hardCaseParams = j.value("hardCaseParams", std::vector<std::string>{});
+        for (auto const& m : j.value("samplingModes", nlohmann::json::array()))
+            e.samplingModes.push_back({m.at("name").get<std::string>(), m.value("params", std::string()),
+                                       m.value("singleDraw", true)});
+        if (e.samplingModes.empty()) e.samplingModes.push_back({"default", "", j.value("singleDraw", true)});
+        std::string sides = j.value("sides", std::string("two"));
+        if (sides == "two")
+            e.sides = Sidedness::TwoSided;
+        else if (sides == "one")
+            e.sides = Sidedness::OneSided;
+        else if (sides == "either")
+            e.sides = Sidedness::Either;
+        else
+            throw std::runtime_error("\"sides\" must be \"one\", \"two\" or \"either\"");
+        e.emitsOnly = j.value("emitsOnly", false);
+        e.anisotropic = j.value("anisotropic", false);
+        e.reciprocal = j.value("reciprocal", true);
+        e.conservesEnergy = j.value("conservesEnergy", true);
+        nlohmann::json const notApplicable = j.value("notApplicable", nlohmann::json::object());
+        for (auto const& [check, because] : notApplicable.items()) e.notApplicable.push_back({check, because.get<std::string>()});
+        for (auto const& c : field("checks")) e.checks.emplace_back(c.at(0).get<std::string>(), c.at(1).get<double>());
+    } catch (nlohmann::json::exception const& error) {
+        throw std::runtime_error(manifestPath + ": " + error.what());
+    }
+    return e;
+}
+
+std::vector<Exercise> loadExercises(std::string const& courseRoot) {
+    std::vector<std::string> manifests;
+    std::error_code error;
+    for (auto const& chapter : fs::directory_iterator(fs::path(courseRoot) / "starter", error)) {
+        if (!chapter.is_directory()) continue;
+        for (auto const& folder : fs::directory_iterator(chapter.path(), error)) {
+            fs::path manifest = folder.path() / "exercise.json";
+            if (fs::is_regular_file(manifest, error)) manifests.push_back(manifest.string());
+        }
+    }
+    if (manifests.empty()) throw std::runtime_error("no exercise manifests under " + courseRoot + "/starter");
+    std::vector<Exercise> exercises;
+    for (auto const& m : manifests) exercises.push_back(loadExercise(courseRoot, m));
+    std::sort(exercises.begin(), exercises.end(), [](Exercise const& a, Exercise const& b) {
+        int ca = std::atoi(a.chapter.c_str()), cb = std::atoi(b.chapter.c_str());
+        if (ca != cb) return ca < cb;
+        return a.order != b.order ? a.order < b.order : a.plugin < b.plugin;
+    });
+    return exercises;
+}
+
+Exercise const* findExercise(std::vector<Exercise> const& exercises, std::string const& plugin) {
+    for (auto const& e : exercises)
+        if (e.plugin == plugin) return &e;
+    return nullptr;
+}
+
+}  // namespace bxdflab

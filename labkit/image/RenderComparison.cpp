@@ -1,0 +1,104 @@
+#include "image/RenderComparison.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace bxdflab {
+namespace {
+
+/// The z beyond which a two-sided normal test rejects at level alpha (bisection on erfc).
+double criticalZ(double alpha) {
+    double lo = 0.0, hi = 40.0;
+    for (int i = 0; i < 200; ++i) {
+        double mid = 0.5 * (lo + hi);
+        (std::erfc(mid / std::sqrt(2.0)) > alpha ? lo : hi) = mid;
+    }
+    return hi;
+}
+
+}  // namespace
+
+double relativeMse(std::vector<float> const& a, std::vector<float> const& b) {
+    double sum = 0.0;
+    size_t n = std::min(a.size(), b.size());
+    for (size_t i = 0; i < n; ++i) {
+        double d = static_cast<double>(a[i]) - b[i];
+        sum += d * d / (static_cast<double>(b[i]) * b[i] + 0.01);
+    }
+    return n ? sum / static_cast<double>(n) : 0.0;
+}
+
+RenderVerdict compareRenders(RenderImage const& a, RenderImage const& b, double varianceCap) {
+    RenderVerdict v;
+    size_t const pixels = static_cast<size_t>(a.width) * static_cast<size_t>(a.height);
+    if (a.width != b.width || a.height != b.height || a.rgb.size() != 3 * pixels || b.rgb.size() != 3 * pixels ||
+        a.variance.size() != 3 * pixels || b.variance.size() != 3 * pixels) {
+        v.message = "the renders have different sizes";
+        return v;
+    }
+    double const alpha = 1.0 - std::pow(1.0 - 0.01, 1.0 / static_cast<double>(pixels));  // Sidak over pixels
+    v.zCritical = criticalZ(alpha);
+    v.zMap.assign(pixels, 0.0f);
+    size_t passing = 0;
+    double sumDiff[3] = {0, 0, 0}, sumVariance[3] = {0, 0, 0}, sumA = 0, sumB = 0;
+    for (size_t p = 0; p < pixels; ++p) {
+        bool pass = true;
+        double worst = 0.0;
+        for (int c = 0; c < 3; ++c) {
+            size_t i = 3 * p + static_cast<size_t>(c);
+            double va = std::isfinite(a.variance[i]) ? std::max(0.0f, a.variance[i]) : 0.0;
+            double vb = std::max(0.0f, b.variance[i]);
+            va = std::min(va, varianceCap * vb + 1e-12);
+            double d = std::isfinite(a.rgb[i]) ? static_cast<double>(a.rgb[i]) - b.rgb[i] : 1e30;
+            sumDiff[c] += d;
+            sumVariance[c] += va + vb;
+            double sigma = std::sqrt(va + vb);
+            // Noise-free pixels must agree to float precision; noisy ones within zCritical sigmas.
+            double z = sigma > 0.0 ? d / sigma : (std::fabs(d) <= 1e-4 * (std::fabs(b.rgb[i]) + 1e-3) ? 0.0 : (d > 0 ? 1e9 : -1e9));
+            pass = pass && std::fabs(z) <= v.zCritical;
+            if (std::fabs(z) > std::fabs(worst)) worst = z;
+            sumA += std::isfinite(a.rgb[i]) ? a.rgb[i] : 0.0;
+            sumB += b.rgb[i];
+        }
+        v.zMap[p] = static_cast<float>(std::max(-50.0, std::min(50.0, worst)));
+        passing += pass;
+    }
+    std::vector<float> finiteA(a.rgb);
+    for (float& x : finiteA)
+        if (!std::isfinite(x)) x = 0.0f;
+    v.relMse = relativeMse(finiteA, b.rgb);
+    v.passFraction = static_cast<double>(passing) / static_cast<double>(pixels);
+    v.meanTested = sumA / static_cast<double>(3 * pixels);
+    v.meanReference = sumB / static_cast<double>(3 * pixels);
+    for (int c = 0; c < 3; ++c) {
+        double sigma = std::sqrt(sumVariance[c]);
+        double z = sigma > 0 ? sumDiff[c] / sigma : (std::fabs(sumDiff[c]) > 1e-6 * static_cast<double>(pixels) ? 1e9 : 0.0);
+        if (std::fabs(z) > std::fabs(v.meanZ)) v.meanZ = z;
+    }
+    v.pixelsAgree = v.passFraction >= 0.9975;
+    v.meansAgree = std::fabs(v.meanZ) <= criticalZ(0.01 / 3.0);
+    char text[512];
+    if (!v.pixelsAgree) {
+        std::snprintf(text, sizeof text,
+                      "%.2f%% of the pixels differ from the solution's by more than the noise allows (at most 0.25%% may); "
+                      "image means %.4g (yours) and %.4g; relMSE %.3g",
+                      100.0 * (1.0 - v.passFraction), v.meanTested, v.meanReference, v.relMse);
+    } else if (!v.meansAgree) {
+        double percent = v.meanReference != 0 ? 100.0 * (v.meanTested - v.meanReference) / v.meanReference : 0.0;
+        std::snprintf(text, sizeof text,
+                      "your image is %.2f%% %s than the solution's on average (means %.5g and %.5g, z = %.1f): a bias "
+                      "too spread out for single pixels to show; every pixel is within its noise; relMSE %.3g",
+                      std::fabs(percent), v.meanTested > v.meanReference ? "brighter" : "darker", v.meanTested,
+                      v.meanReference, std::min(std::fabs(v.meanZ), 1e6), v.relMse);
+    } else {
+        std::snprintf(text, sizeof text,
+                      "%.2f%% of the pixels agree with the solution's within their noise (99.75%% needed), and the "
+                      "image means agree (%.5g and %.5g, z = %.1f); relMSE %.3g",
+                      100.0 * v.passFraction, v.meanTested, v.meanReference, v.meanZ, v.relMse);
+    }
+    v.message = text;
+    return v;
+}
+
+}  // namespace bxdflab

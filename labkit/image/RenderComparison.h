@@ -1,0 +1,43 @@
+// Are two renders of one scene the same image up to Monte Carlo noise?
+// For each pixel a two-sample z test on the difference of the means, with
+// each render's per-pixel variance of the mean, at alpha = 0.01 with Sidak's
+// correction over the pixels; the renders agree when at least 99.75% of the
+// pixels pass (the render-regression rule of Mitsuba's test suite) and the
+// image means agree (a z test on the sums, which catches a bias spread too
+// thinly for any one pixel to show).
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace bxdflab {
+
+/// A render as the comparison sees it: RGB means and variances of the mean.
+struct RenderImage {
+    int width = 0, height = 0;
+    std::vector<float> rgb;       ///< 3 per pixel
+    std::vector<float> variance;  ///< 3 per pixel
+};
+
+struct RenderVerdict {
+    double passFraction = 0.0;  ///< of pixels
+    double relMse = 0.0;        ///< mean of (a - b)^2 / (b^2 + 0.01)
+    double meanTested = 0.0, meanReference = 0.0;
+    double meanZ = 0.0;         ///< the worst channel's z of the image means
+    bool pixelsAgree = false, meansAgree = false;
+    bool passed() const { return pixelsAgree && meansAgree; }
+    std::string message;        ///< what was measured and what was needed, in words
+    /// Per pixel: the z of the difference, signed (tested brighter > 0), clamped to +-50.
+    std::vector<float> zMap;
+    double zCritical = 0.0;     ///< the per-pixel z beyond which a pixel fails
+};
+
+/// `tested` is judged against `reference`. A tested variance larger than
+/// `varianceCap` times the reference's (plus a little) is not believed: it
+/// is taken at that cap, so claiming a huge variance gains nothing.
+RenderVerdict compareRenders(RenderImage const& tested, RenderImage const& reference, double varianceCap = 16.0);
+
+/// Relative mean squared error, mean((a - b)^2 / (b^2 + 0.01)), over every value.
+double relativeMse(std::vector<float> const& a, std::vector<float> const& b);
+
+}  // namespace bxdflab

@@ -1,0 +1,26 @@
+#include "measure/BxdfMeasurer.h"
+
+namespace bxdflab {
+
+std::vector<SampleSpec> stratifiedSamples(size_t count, uint32_t seed, uint32_t first) {
+    std::vector<SampleSpec> samples(count);
+    for (size_t i = 0; i < count; ++i)
+        samples[i] = {RixRNG::Hash(seed ^ 0x3c6ef372u), first + static_cast<uint32_t>(i), 0, -1.0f, -1.0f};
+    return samples;
+}
+
+std::vector<SampleSpec> independentSamples(size_t count, uint32_t seed, uint32_t first) {
+    // An independently scrambled sequence per point makes its first sample uniform random.
+    std::vector<SampleSpec> samples(count);
+    for (size_t i = 0; i < count; ++i) {
+        uint32_t index = first + static_cast<uint32_t>(i);
+        samples[i] = {RixRNG::Hash(seed ^ RixRNG::Hash(index + 0x9e3779b9u)), 0, 0, -1.0f, -1.0f};
+    }
+    return samples;
+}
+
+std::vector<SampleSpec> fixedSamples(size_t count, RtFloat2 xi) {
+    return std::vector<SampleSpec>(count, SampleSpec{0u, 0u, 0u, xi.x, xi.y});
+}
+
+}  // namespace bxdflab

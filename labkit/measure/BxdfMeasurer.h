@@ -1,0 +1,80 @@
+// What the checks ask of a Bxdf plugin: values, pdfs and samples at shade
+// points and with random numbers the asker chooses. Two implementations:
+//   ProbeMeasurer   loads the plugin into this process (the course's own
+//                   tests, a student's self-check, the reference solutions);
+//   RemoteMeasurer  (autograder) asks a sandboxed rixmeasure process, so the
+//                   grader never loads student code.
+// The checks (labkit/checks) judge the answers; a measurer only measures.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "probe/BxdfProbe.h"
+
+namespace bxdflab {
+
+/// A measurement that could not be made. `call` names the plugin function
+/// that was running ("GenerateSample", "loading the plugin", ...).
+class MeasurementError : public std::runtime_error {
+public:
+    enum class Kind {
+        PluginError,  ///< the plugin could not be loaded or refused the parameters (message says why)
+        Crashed,      ///< the process running the plugin died (signal or exit)
+        Hung,         ///< no answer within the time allowed
+        BadReply,     ///< an answer that does not have the promised form
+    };
+    MeasurementError(Kind kind, std::string call, std::string const& what)
+        : std::runtime_error(what), m_kind(kind), m_call(std::move(call)) {}
+    Kind kind() const { return m_kind; }
+    std::string const& call() const { return m_call; }
+
+private:
+    Kind m_kind;
+    std::string m_call;
+};
+
+/// Random numbers for one GenerateSample point: a sequence position, or a
+/// fixed value every draw returns (the sampling mapping itself).
+using SampleSpec = RixRNG::SampleCtx;
+
+/// The ch08 sampling exercise's functions, by number.
+enum class SamplingFunction : int { UniformHemisphere = 0, CosineHemisphere = 1, PhongLobe = 2 };
+
+struct DirectionSample {
+    Vec3 w{0.0f};
+    float pdf = 0.0f;
+};
+
+class BxdfMeasurer {
+public:
+    virtual ~BxdfMeasurer() = default;
+
+    /// `params` are written as on a RIB Bxdf line ("\"float gloss\" [30]");
+    /// every call may use a different set.
+    virtual RixBXLobeTraits lobes(std::string const& params) = 0;
+    virtual std::vector<ProbeResult> evaluate(std::string const& params, std::vector<ProbePoint> const& points,
+                                              std::vector<Vec3> const& L) = 0;
+    virtual std::vector<ProbeResult> generate(std::string const& params, std::vector<ProbePoint> const& points,
+                                              std::vector<SampleSpec> const& samples) = 0;
+    virtual std::vector<ProbeResult> evaluateAtIndex(std::string const& params, ProbePoint const& point,
+                                                     std::vector<Vec3> const& L) = 0;
+    virtual std::vector<RtColorRGB> emission(std::string const& params, std::vector<ProbePoint> const& points) = 0;
+
+    /// The ch08 sampling exercise (a plugin exporting the three samplers).
+    virtual std::vector<DirectionSample> sampleDirections(SamplingFunction f, float exponent,
+                                                          std::vector<RtFloat2> const& xi) = 0;
+    virtual std::vector<float> directionPdfs(SamplingFunction f, float exponent, std::vector<Vec3> const& w) = 0;
+};
+
+// Common ways of drawing random numbers, built on generate().
+
+/// Point i takes sample `first + i` of one scrambled low-discrepancy sequence.
+std::vector<SampleSpec> stratifiedSamples(size_t count, uint32_t seed, uint32_t first = 0);
+/// Every point gets independent uniform numbers (what statistical tests assume).
+std::vector<SampleSpec> independentSamples(size_t count, uint32_t seed, uint32_t first = 0);
+/// Every draw of every point returns xi (1-D draws return xi[0]).
+std::vector<SampleSpec> fixedSamples(size_t count, RtFloat2 xi);
+
+}  // namespace bxdflab

@@ -1,0 +1,110 @@
+#include "measure/ProbeMeasurer.h"
+
+#include <filesystem>
+
+#include "core/Error.h"
+
+namespace bxdflab {
+
+ProbeMeasurer::ProbeMeasurer(std::string plugin, std::vector<std::string> searchPath, Diagnostics& diagnostics,
+                             BxdfProbe::CallObserver observer)
+    : m_plugin(std::move(plugin)), m_searchPath(std::move(searchPath)), m_diagnostics(diagnostics), m_observer(observer) {}
+
+ProbeMeasurer::~ProbeMeasurer() = default;
+
+BxdfProbe& ProbeMeasurer::probe(std::string const& params) {
+    auto& slot = m_probes[params];
+    if (!slot) {
+        try {
+            slot = std::make_unique<BxdfProbe>(m_plugin, params, m_searchPath, m_diagnostics, false, m_observer);
+        } catch (std::exception const& e) {
+            m_probes.erase(params);
+            throw MeasurementError(MeasurementError::Kind::PluginError, "loading the plugin", e.what());
+        }
+    }
+    return *slot;
+}
+
+RixBXLobeTraits ProbeMeasurer::lobes(std::string const& params) {
+    std::lock_guard<std::mutex> guard(m_lock);
+    return probe(params).lobes();
+}
+
+std::vector<ProbeResult> ProbeMeasurer::evaluate(std::string const& params, std::vector<ProbePoint> const& points,
+                                                 std::vector<Vec3> const& L) {
+    std::lock_guard<std::mutex> guard(m_lock);
+    return probe(params).evaluate(points, L);
+}
+
+std::vector<ProbeResult> ProbeMeasurer::generate(std::string const& params, std::vector<ProbePoint> const& points,
+                                                 std::vector<SampleSpec> const& samples) {
+    std::lock_guard<std::mutex> guard(m_lock);
+    return probe(params).generate(points, samples);
+}
+
+std::vector<ProbeResult> ProbeMeasurer::evaluateAtIndex(std::string const& params, ProbePoint const& point,
+                                                        std::vector<Vec3> const& L) {
+    std::lock_guard<std::mutex> guard(m_lock);
+    return probe(params).evaluateAtIndex(point, L);
+}
+
+std::vector<RtColorRGB> ProbeMeasurer::emission(std::string const& params, std::vector<ProbePoint> const& points) {
+    std::lock_guard<std::mutex> guard(m_lock);
+    return probe(params).emission(points);
+}
+
+void ProbeMeasurer::loadSampling() {
+    if (m_sampling) return;
+    std::string found;
+    for (auto const& folder : m_searchPath) {
+        std::error_code error;
+        auto candidate = std::filesystem::path(folder) / (m_plugin + ".so");
+        if (std::filesystem::is_regular_file(candidate, error)) {
+            found = candidate.string();
+            break;
+        }
+    }
+    if (found.empty())
+        throw MeasurementError(MeasurementError::Kind::PluginError, "loading the plugin",
+                               m_plugin + ".so was not built (is it in your CMakeLists.txt?)");
+    if (m_observer) m_observer("loading the plugin (its static initialisers)");
+    try {
+        m_sampling = std::make_unique<SharedObject>(found, "the sampling exercise (" + found + ")");
+    } catch (std::exception const& e) {
+        throw MeasurementError(MeasurementError::Kind::PluginError, "loading the plugin", e.what());
+    }
+    m_sample = reinterpret_cast<SampleFn>(m_sampling->symbol("RixSamplingExerciseSample"));
+    m_pdf = reinterpret_cast<PdfFn>(m_sampling->symbol("RixSamplingExercisePdf"));
+    if (!m_sample || !m_pdf)
+        throw MeasurementError(MeasurementError::Kind::PluginError, "loading the plugin",
+                               found + " does not export RixSamplingExerciseSample and RixSamplingExercisePdf "
+                                       "(keep SamplingExport.cpp in the build)");
+}
+
+std::vector<DirectionSample> ProbeMeasurer::sampleDirections(SamplingFunction f, float exponent,
+                                                             std::vector<RtFloat2> const& xi) {
+    std::lock_guard<std::mutex> guard(m_lock);
+    loadSampling();
+    std::vector<DirectionSample> out(xi.size());
+    if (m_observer) m_observer("your sampling function");
+    for (size_t i = 0; i < xi.size(); ++i) {
+        float w[3] = {0, 0, 0}, pdf = 0;
+        m_sample(static_cast<int>(f), exponent, xi[i].x, xi[i].y, w, &pdf);
+        out[i] = {Vec3(w[0], w[1], w[2]), pdf};
+    }
+    return out;
+}
+
+std::vector<float> ProbeMeasurer::directionPdfs(SamplingFunction f, float exponent, std::vector<Vec3> const& w) {
+    std::lock_guard<std::mutex> guard(m_lock);
+    loadSampling();
+    std::vector<float> out(w.size());
+    if (m_observer) m_observer("your pdf function");
+    for (size_t i = 0; i < w.size(); ++i) {
+        float v[3] = {w[i].x, w[i].y, w[i].z};
+        out[i] = m_pdf(static_cast<int>(f), exponent, v);
+    }
+    return out;
+}
+
+}  // namespace bxdflab

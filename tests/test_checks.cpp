@@ -1,0 +1,98 @@
+// The autograder's statistics, against closed forms: the adaptive cell
+// integration, the chi-squared test's pooling, and the render comparison.
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <random>
+
+#include "image/RenderComparison.h"
+#include "stats/DirectionTest.h"
+
+using namespace bxdflab;
+
+TEST_CASE("cell integration matches closed forms for the cosine and Phong densities", "[checks][stats]") {
+    DirectionCells cells;
+    SECTION("cosine: the integral over z0..z1, phi0..phi1 is (z1^2 - z0^2) (phi1 - phi0) / (2 pi)") {
+        auto mass = integrateCells(cells, [](std::vector<Vec3> const& w) {
+            std::vector<double> p;
+            for (auto const& d : w) p.push_back(d.z > 0 ? d.z / M_PI : 0.0);
+            return p;
+        }, toleranceForSamples(1e6));
+        double total = 0.0;
+        for (int c = 0; c < cells.count(); ++c) {
+            double z0, z1, p0, p1;
+            cells.bounds(c, z0, z1, p0, p1);
+            double exact = (z1 * z1 - z0 * z0) * (p1 - p0) / (2 * M_PI);
+            CHECK(mass[static_cast<size_t>(c)] == Approx(exact).epsilon(1e-6));
+            total += mass[static_cast<size_t>(c)];
+        }
+        CHECK(total == Approx(1.0).epsilon(1e-6));
+    }
+    SECTION("a sharp Phong lobe about the normal (n = 300): (z1^(n+1) - z0^(n+1)) (phi1 - phi0) / (2 pi)") {
+        double const n = 300;
+        auto mass = integrateCells(cells, [&](std::vector<Vec3> const& w) {
+            std::vector<double> p;
+            for (auto const& d : w) p.push_back(d.z > 0 ? (n + 1) / (2 * M_PI) * std::pow(double(d.z), n) : 0.0);
+            return p;
+        }, toleranceForSamples(1e6));
+        for (int c = 0; c < cells.count(); ++c) {
+            double z0, z1, p0, p1;
+            cells.bounds(c, z0, z1, p0, p1);
+            double exact = (std::pow(z1, n + 1) - std::pow(z0, n + 1)) * (p1 - p0) / (2 * M_PI);
+            // Accurate to far better than the noise of a million samples (sqrt(mass / 1e6)).
+            CHECK(std::fabs(mass[static_cast<size_t>(c)] - exact) <= 0.06 * std::sqrt(std::max(exact, 1e-6) / 1e6));
+        }
+    }
+}
+
+TEST_CASE("chi-squared: uniform draws pass, a 3% tilt of a million fails, rare cells do not decide", "[checks][stats]") {
+    DirectionCells cells;
+    std::mt19937 random(5);
+    std::uniform_real_distribution<float> u(0.0f, 1.0f);
+    auto draw = [&](double tilt) {
+        DirectionCounts counts(cells);
+        for (int i = 0; i < 1000000; ++i) {
+            // z from the density proportional to 1 + tilt (2z - 1) on [0, 1], phi uniform.
+            float z;
+            do z = u(random);
+            while (u(random) * (1 + std::fabs(tilt)) > 1 + tilt * (2 * z - 1));
+            counts.add(true, directionAt(z, 2 * M_PI * u(random)), 1.0f);
+        }
+        return counts;
+    };
+    auto uniformMass = integrateCells(cells, [](std::vector<Vec3> const& w) {
+        return std::vector<double>(w.size(), 1.0 / (2 * M_PI));
+    }, toleranceForSamples(1e6));
+    CHECK(testDirections(draw(0.0), uniformMass).chi.pValue > 1e-4);
+    CHECK(testDirections(draw(0.03), uniformMass).chi.pValue < 1e-6);
+    // One draw in a cell that expects 1e-3 must not fail a test on its own.
+    std::vector<double> observed(100, 50.0), expected(100, 50.0);
+    observed.push_back(1.0);
+    expected.push_back(1e-3);
+    CHECK(chiSquaredTest(observed, expected).pValue > 0.01);
+}
+
+TEST_CASE("render comparison: noise passes, a thin bias fails on the mean, a claimed huge variance gains nothing",
+          "[checks][render]") {
+    int const w = 64, h = 64;
+    std::mt19937 random(3);
+    std::normal_distribution<float> noise(0.0f, 1.0f);
+    auto render = [&](float level, float sigma) {
+        RenderImage image;
+        image.width = w;
+        image.height = h;
+        for (int i = 0; i < 3 * w * h; ++i) {
+            image.rgb.push_back(level + sigma * noise(random));
+            image.variance.push_back(sigma * sigma);
+        }
+        return image;
+    };
+    RenderImage reference = render(0.5f, 0.02f);
+    CHECK(compareRenders(render(0.5f, 0.02f), reference).passed());
+    RenderVerdict biased = compareRenders(render(0.51f, 0.02f), reference);  // 2%: inside every pixel's noise
+    CHECK(biased.pixelsAgree);
+    CHECK_FALSE(biased.meansAgree);
+    CHECK(biased.message.find("brighter") != std::string::npos);
+    RenderImage wrong = render(0.8f, 0.02f);
+    for (float& v : wrong.variance) v = 1e6f;  // "my noise is enormous, so anything agrees"
+    CHECK_FALSE(compareRenders(wrong, reference).passed());
+}
