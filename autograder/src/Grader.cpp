@@ -1,15 +1,23 @@
 #include "Grader.h"
 
-#include <chrono>
-#include <filesystem>
+#include <sys/stat.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include <cmath>
+#include <cstring>
 #include <regex>
+#include <sstream>
 
-#include "ChildProcess.h"
-#include "RenderComparison.h"
-
-namespace fs = std::filesystem;
+#include "OutputFolder.h"
+#include "RemoteMeasurer.h"
+#include "Scratch.h"
+#include "film/RawImage.h"
+#include "measure/ProbeMeasurer.h"
 
 namespace rixgrade {
+
+using namespace bxdflab;
 
 double Grade::score() const {
     double s = 0;
@@ -25,152 +33,372 @@ double Grade::maxScore() const {
 
 namespace {
 
-/// The first failure Catch2 reported in its JUnit output, in a readable form.
-std::string firstFailure(std::string const& junit) {
-    // <failure message="expression" type="REQUIRE">details (INFO lines, file:line)</failure>
-    std::smatch match;
-    std::regex failure("<failure(?: message=\"([^\"]*)\")?[^>]*>([\\s\\S]*?)</failure>");
-    std::string text;
-    if (std::regex_search(junit, match, failure)) {
-        text = match[1].matched ? match[1].str() + "\n" : "";
-        std::string body = match[2].str();
-        if (body.rfind("\nFAILED:\n", 0) == 0 || body.rfind("FAILED:\n", 0) == 0) body = body.substr(body.find(":\n") + 2);
-        text += body;
+std::chrono::milliseconds ms(double seconds) { return std::chrono::milliseconds(static_cast<long long>(seconds * 1000)); }
+
+/// The last `lines` lines of a text (what a crashed program said last).
+std::string tail(std::string const& text, size_t maxBytes = 800) {
+    if (text.size() <= maxBytes) return text;
+    return "..." + text.substr(text.size() - maxBytes);
+}
+
+bool isRegularFile(std::string const& path) {
+    struct stat st;
+    return lstat(path.c_str(), &st) == 0 && S_ISREG(st.st_mode);
+}
+
+/// The compiler's error lines about one exercise's folder.
+std::string errorsAbout(std::string const& log, std::string const& folder) {
+    std::istringstream in(log);
+    std::string line, out;
+    int kept = 0;
+    while (std::getline(in, line))
+        if (line.find("/scratch/submission/" + folder + "/") != std::string::npos && line.find("error") != std::string::npos &&
+            kept++ < 8)
+            out += line + "\n";
+    return out;
+}
+
+}  // namespace
+
+RenderImage parseRawImage(std::string const& bytes, int expectWidth, int expectHeight) {
+    RawImageHeader header;
+    if (bytes.size() < sizeof header) throw std::runtime_error("no image came back");
+    std::memcpy(&header, bytes.data(), sizeof header);
+    if (header.magic != RawImageHeader::kMagic || header.channels != RawImageHeader::kChannels)
+        throw std::runtime_error("what came back is not a rixrender raw image");
+    // The size is checked before anything is allocated for it.
+    if (expectWidth >= 0 && (static_cast<int>(header.width) != expectWidth || static_cast<int>(header.height) != expectHeight))
+        throw std::runtime_error("the image is " + std::to_string(header.width) + " x " + std::to_string(header.height) +
+                                 " pixels; the scene's is " + std::to_string(expectWidth) + " x " +
+                                 std::to_string(expectHeight));
+    if (header.width == 0 || header.height == 0 || header.width > 16384 || header.height > 16384)
+        throw std::runtime_error("the image has an impossible size");
+    size_t pixels = static_cast<size_t>(header.width) * header.height;
+    if (bytes.size() != sizeof header + pixels * RawImageHeader::kChannels * sizeof(float))
+        throw std::runtime_error("the image has " + std::to_string(bytes.size()) + " bytes, not the size it declares");
+    RenderImage image;
+    image.width = static_cast<int>(header.width);
+    image.height = static_cast<int>(header.height);
+    image.rgb.resize(3 * pixels);
+    image.variance.resize(3 * pixels);
+    char const* data = bytes.data() + sizeof header;
+    for (size_t p = 0; p < pixels; ++p) {
+        float values[RawImageHeader::kChannels];
+        std::memcpy(values, data + p * sizeof values, sizeof values);
+        for (int c = 0; c < 3; ++c) {
+            image.rgb[3 * p + static_cast<size_t>(c)] = values[c];
+            image.variance[3 * p + static_cast<size_t>(c)] = values[4 + c];
+        }
     }
-    for (auto const& [entity, plain] : {std::pair<std::string, std::string>{"&quot;", "\""}, {"&lt;", "<"}, {"&gt;", ">"},
-                                        {"&#10;", "\n"}, {"&apos;", "'"}, {"&amp;", "&"}}) {
-        for (size_t at; (at = text.find(entity)) != std::string::npos;) text.replace(at, entity.size(), plain);
+    return image;
+}
+
+Course::Course(std::string root, std::string binDir, Confinement confinement)
+    : m_root(std::move(root)), m_binDir(std::move(binDir)), m_confinement(confinement),
+      m_exercises(loadExercises(m_root)) {}
+
+SandboxLayout Course::layout(std::string const& scratch) const {
+    SandboxLayout l;
+    l.scratch = scratch;
+    l.jail = m_binDir + "/rixjail";
+    l.confinement = m_confinement;
+    std::string plugins = m_binDir + "/../plugins";
+    // What student code may see of the course: the API and build helpers, the
+    // scenes, the measuring and rendering programs, integrators and stock
+    // plugins -- never a reference solution.
+    l.courseMounts = {{m_root + "/cmake", "cmake"},
+                      {m_root + "/renderer/include", "renderer/include"},
+                      {m_root + "/scenes", "scenes"},
+                      {m_binDir + "/rixmeasure", "bin/rixmeasure"},
+                      {m_binDir + "/rixrender", "bin/rixrender"},
+                      {plugins + "/integrators", "plugins/integrators"},
+                      {plugins + "/stock", "plugins/stock"}};
+    return l;
+}
+
+BxdfMeasurer& Course::reference(std::string const& plugin) {
+    std::lock_guard<std::mutex> guard(m_lock);
+    auto& slot = m_references[plugin];
+    if (!slot) {
+        static Diagnostics quiet(false);
+        slot = std::make_unique<ProbeMeasurer>(plugin, std::vector<std::string>{m_binDir + "/../plugins/solutions"}, quiet);
     }
-    while (!text.empty() && (text.back() == '\n' || text.back() == ' ')) text.pop_back();
-    return text.size() > 1500 ? text.substr(0, 1500) + " ..." : text;
+    return *slot;
 }
 
-/// Student code (checks and renders) may write only into the grading folder
-/// and may not start processes; a build may start processes (compilers).
-SandboxPolicy confined(GradeOptions const& options, bool allowNewProcesses = false) {
-    return {{options.out}, allowNewProcesses};
-}
-
-/// Children keep their temporary files in the grading folder too.
-std::map<std::string, std::string> gradingEnvironment(GradeOptions const& options, std::map<std::string, std::string> extra = {}) {
-    extra["TMPDIR"] = options.out + "/tmp";
-    return extra;
-}
-
-CheckResult runCheck(GradeOptions const& options, std::string const& pluginDir, std::string const& chapter,
-                     std::string const& plugin, std::string const& check, double points) {
-    CheckResult r{chapter, plugin, check, 0.0, points, false, "", 0.0};
-    Limits limits;
-    limits.seconds = options.rubric.value("check_timeout_s", 120.0);
-    Outcome outcome = run({options.binDir + "/rixcheck", "[" + check + "]", "-r", "junit"},
-                          gradingEnvironment(options, {{"RIXCHECK_PLUGIN", plugin}, {"RIXCHECK_PLUGIN_DIR", pluginDir}}),
-                          options.out, limits, confined(options));
-    r.seconds = outcome.seconds;
-    if (outcome.ok()) {
-        r.passed = true;
-        r.score = points;
-        r.output = "passed";
-    } else if (outcome.timedOut || outcome.signal) {
-        r.output = "the " + check + " check " + outcome.describe(limits) + " while running your plugin";
-    } else {
-        std::string why = firstFailure(outcome.out);
-        r.output = why.empty() ? "failed (" + outcome.describe(limits) + "): " + outcome.err.substr(0, 800) : why;
+RenderImage const& Course::referenceRender(std::string const& scene, int spp, double seconds) {
+    std::string key = scene + "@" + std::to_string(spp);
+    std::mutex* lock;
+    {
+        std::lock_guard<std::mutex> guard(m_lock);
+        auto& l = m_renderLocks[key];
+        if (!l) l = std::make_unique<std::mutex>();
+        lock = l.get();
     }
-    return r;
+    std::lock_guard<std::mutex> guard(*lock);  // one student renders it, the others wait and share it
+    {
+        std::lock_guard<std::mutex> g(m_lock);
+        if (m_renders.count(key)) return *m_renders[key];
+    }
+    SandboxLayout trusted;
+    trusted.confinement = Confinement::Trusted;
+    Launch launch;
+    launch.argv = {m_binDir + "/rixrender", "--quiet", "--spp", std::to_string(spp), "--seed", "2", "--raw-out-fd", "3",
+                   "--plugin-path", m_binDir + "/../plugins/solutions", m_root + "/scenes/" + scene};
+    launch.workdir = m_root;
+    launch.outputs = {3};
+    launch.limits.wallSeconds = seconds;
+    launch.limits.memoryBytes = 0;
+    Child child(trusted, launch);
+    std::string bytes;
+    auto deadline = Clock::now() + ms(seconds);
+    child.readAll(3, bytes, 1u << 30, deadline);
+    ExitStatus status = child.wait(deadline);
+    if (!status.ok())
+        throw std::runtime_error("the reference render of " + scene + " " + status.describe(launch.limits) + ": " +
+                                 tail(child.err()));
+    auto image = std::make_unique<RenderImage>(parseRawImage(bytes));
+    std::lock_guard<std::mutex> g(m_lock);
+    return *(m_renders[key] = std::move(image));
 }
 
-CheckResult runRender(GradeOptions const& options, std::string const& pluginDir, std::string const& chapter,
-                      std::string const& plugin, std::string const& scene, double points) {
-    CheckResult r{chapter, plugin, "renders", 0.0, points, false, "", 0.0};
-    std::string dir = options.out + "/renders/" + plugin;
-    fs::create_directories(dir);
-    std::string spp = std::to_string(options.rubric.value("render_spp", 8));
-    std::string scenePath = options.root + "/scenes/" + scene;
-    Limits limits;
-    limits.seconds = options.rubric.value("render_timeout_s", 300.0);
-    auto render = [&](std::string const& who, std::string const& seed, std::vector<std::string> extra) {
-        std::vector<std::string> argv = {options.binDir + "/rixrender", "--quiet", "--spp", spp, "--seed", seed,
-                                         "-o", dir + "/" + who + ".exr", "--variance", dir + "/" + who + "-variance.exr"};
-        argv.insert(argv.end(), extra.begin(), extra.end());
-        argv.push_back(scenePath);
-        return run(argv, gradingEnvironment(options), options.out, limits, confined(options));
-    };
-    Outcome mine = render("student", "1", {"--plugin-path", pluginDir});
-    Outcome theirs = render("solution", "2", {});
-    r.seconds = mine.seconds + theirs.seconds;
-    if (!mine.ok()) {
-        r.output = "rendering " + scene + " with your plugin " + mine.describe(limits) + ": " + mine.err.substr(0, 800);
+std::vector<std::pair<std::string, double>> Course::pointsFor(Exercise const& e, nlohmann::json const& rubric) const {
+    nlohmann::json const chapters = rubric.value("chapters", nlohmann::json::object());
+    if (chapters.contains(e.chapter) && chapters[e.chapter].contains(e.plugin)) {
+        nlohmann::json const checks = chapters[e.chapter][e.plugin].value("checks", nlohmann::json::object());
+        // The manifest's order first, then any check only the rubric names.
+        std::vector<std::pair<std::string, double>> points;
+        for (auto const& [check, value] : e.checks)
+            if (checks.contains(check)) points.emplace_back(check, checks[check].get<double>());
+        for (auto const& [check, value] : checks.items())
+            if (std::none_of(points.begin(), points.end(), [&](auto const& p) { return p.first == check; }))
+                points.emplace_back(check, value.get<double>());
+        return points;
+    }
+    return e.checks;
+}
+
+namespace {
+
+/// The images a report shows for a render check.
+void writeRenderImages(OutputFolder const& out, std::string const& plugin, RenderImage const& mine,
+                       RenderImage const& theirs, RenderVerdict const& v) {
+    std::string dir = "renders/" + plugin + "/";
+    out.writePng(dir + "student.png", mine.rgb, mine.width, mine.height);
+    out.writePng(dir + "solution.png", theirs.rgb, theirs.width, theirs.height);
+    std::vector<float> difference(mine.rgb.size()), failing(mine.rgb.size());
+    for (size_t i = 0; i < mine.rgb.size(); ++i)
+        difference[i] = std::isfinite(mine.rgb[i]) ? std::min(1.0f, std::fabs(mine.rgb[i] - theirs.rgb[i])) : 1.0f;
+    // Failing pixels: red where yours is brighter, blue where darker; grey shows how close to failing the rest are.
+    for (size_t p = 0; p < v.zMap.size(); ++p) {
+        float z = v.zMap[p], a = std::fabs(z) / static_cast<float>(v.zCritical);
+        float grey = 0.25f * std::min(1.0f, a);
+        float rgb[3] = {grey, grey, grey};
+        if (a > 1.0f) {
+            rgb[0] = z > 0 ? 1.0f : 0.0f;
+            rgb[1] = 0.0f;
+            rgb[2] = z > 0 ? 0.0f : 1.0f;
+        }
+        for (int c = 0; c < 3; ++c) failing[3 * p + static_cast<size_t>(c)] = rgb[c];
+    }
+    out.writePng(dir + "difference.png", difference, mine.width, mine.height);
+    out.writePng(dir + "failing-pixels.png", failing, mine.width, mine.height);
+}
+
+CheckResult renderCheck(Exercise const& e, double points, Course& course, SandboxLayout const& layout,
+                        nlohmann::json const& rubric, OutputFolder const& out) {
+    CheckResult r = CheckResult::start(e, "renders", points);
+    int spp = rubric.value("render_spp", 8);
+    double seconds = rubric.value("render_timeout_s", 300.0);
+    auto start = Clock::now();
+    RenderImage const* theirs;
+    try {
+        theirs = &course.referenceRender(e.scene, spp, seconds);
+    } catch (std::exception const& error) {
+        r.summary = std::string("could not be graded: ") + error.what();
         return r;
     }
-    if (!theirs.ok()) {
-        r.output = "the solution's render failed: " + theirs.err.substr(0, 400);
+    Launch launch;
+    launch.argv = {"/course/bin/rixrender", "--quiet", "--spp", std::to_string(spp), "--seed", "1", "--raw-out-fd", "3",
+                   "--plugin-path", "/course/plugins/integrators:/course/plugins/stock:/scratch/build/plugins",
+                   "/course/scenes/" + e.scene};
+    launch.outputs = {3};
+    launch.limits.wallSeconds = seconds;
+    launch.limits.processes = 256;
+    Child child(layout, launch);
+    std::string bytes;
+    auto deadline = Clock::now() + ms(seconds);
+    size_t expected = sizeof(RawImageHeader) + static_cast<size_t>(theirs->width) * theirs->height * RawImageHeader::kChannels * 4;
+    child.readAll(3, bytes, expected + 1, deadline);
+    ExitStatus status = child.wait(deadline);
+    r.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    r.details = tail(child.err(), 2000);
+    if (!status.ok()) {
+        r.summary = "rendering " + e.scene + " with your plugin " + status.describe(launch.limits) +
+                    (child.err().empty() ? "" : "; the renderer said: " + tail(child.err(), 400));
         return r;
     }
-    RenderVerdict v = compareRenders(dir + "/student.exr", dir + "/student-variance.exr", dir + "/solution.exr",
-                                     dir + "/solution-variance.exr", dir + "/failing-pixels.png");
-    r.passed = v.passed;
-    r.score = v.passed ? points : 0.0;
-    r.output = v.message;
-    // Display versions for the HTML report.
-    run({options.binDir + "/rixdiff", dir + "/student.exr", dir + "/solution.exr", "--heatmap", dir + "/difference.png"},
-        gradingEnvironment(options), options.out, limits, confined(options));
-    for (std::string who : {"student", "solution"}) toDisplayPng(dir + "/" + who + ".exr", dir + "/" + who + ".png");
+    RenderImage mine;
+    try {
+        mine = parseRawImage(bytes, theirs->width, theirs->height);
+    } catch (std::exception const& error) {
+        r.summary = std::string("your render did not come back as an image: ") + error.what();
+        return r;
+    }
+    RenderVerdict v = compareRenders(mine, *theirs);
+    writeRenderImages(out, e.plugin, mine, *theirs, v);
+    r.hasImages = true;
+    r.status = v.passed() ? CheckOutcome::Status::Passed : CheckOutcome::Status::Failed;
+    r.score = v.passed() ? points : 0.0;
+    r.summary = v.message;
     return r;
 }
 
 }  // namespace
 
-Grade grade(GradeOptions const& options) {
-    auto start = std::chrono::steady_clock::now();
+bool selected(Exercise const& e, GradeOptions const& options) {
+    auto has = [](std::vector<std::string> const& list, std::string const& x) {
+        return list.empty() || std::find(list.begin(), list.end(), x) != list.end();
+    };
+    return has(options.chapters, e.chapter) && has(options.only, e.plugin);
+}
+
+Grade grade(GradeOptions const& options, Course& course, OutputFolder const& out) {
+    auto start = Clock::now();
     Grade g;
-    g.submission = options.submission.empty() ? options.plugins : options.submission;
-    fs::create_directories(options.out);
-    fs::create_directories(options.out + "/tmp");
+    g.name = options.name;
+    g.confinement = course.confinement() == Confinement::Sandbox
+                        ? "Student code ran in a bubblewrap sandbox: no network, nothing of this machine but the "
+                          "system and the course's API visible, only its scratch folder writable, Landlock, seccomp "
+                          "and resource limits inside."
+                        : "WARNING: graded with --unsafe-no-sandbox. Student code ran without namespaces: it could "
+                          "read this machine's files and signal the grader; only Landlock, seccomp and resource "
+                          "limits confined it.";
+    Scratch scratch(options.scratchParent);
+    if (options.keepScratch) scratch.keep();
+    SandboxLayout const layout = course.layout(scratch.path());
+    nlohmann::json const& rubric = options.rubric;
 
-    std::string pluginDir = options.plugins;
-    if (pluginDir.empty()) {
-        // Build the submission against the course's API, in scratch space.
-        std::string build = options.out + "/build";
-        Limits limits;
-        limits.seconds = 600;
-        Outcome configure = run({"cmake", "-S", options.submission, "-B", build, "-DBXDFLAB_ROOT=" + options.root,
-                                 "-DCMAKE_BUILD_TYPE=Release"},
-                                gradingEnvironment(options), options.out, limits, confined(options, true));
-        Outcome compile = configure.ok() ? run({"cmake", "--build", build, "--parallel", "2"}, gradingEnvironment(options),
-                                               options.out, limits, confined(options, true))
-                                         : configure;
-        g.buildLog = configure.out + configure.err + (configure.ok() ? compile.out + compile.err : "");
-        g.built = configure.ok() && compile.ok();
-        std::regex warning("warning:");
-        g.buildWarnings = static_cast<int>(std::distance(std::sregex_iterator(g.buildLog.begin(), g.buildLog.end(), warning),
-                                                         std::sregex_iterator()));
-        pluginDir = build + "/plugins";
+    std::string pluginFolder = scratch.path() + "/build/plugins";
+    bool configured = false;
+    if (!options.plugins.empty()) {
+        scratch.copyPlugins(options.plugins, "build/plugins");
+        scratch.handOver();
+        configured = g.built = true;
     } else {
-        g.built = fs::is_directory(pluginDir);
+        Scratch::CopyReport copied = scratch.copySubmission(options.submission, "submission");
+        std::string log;
+        for (auto const& s : copied.skipped) log += "left out of the build: " + s + "\n";
+        scratch.handOver();
+        Launch configure;
+        configure.argv = {"cmake", "-S", "/scratch/submission", "-B", "/scratch/build", "-DBXDFLAB_ROOT=/course",
+                          "-DCMAKE_BUILD_TYPE=Release"};
+        configure.allowProcesses = true;
+        configure.limits.wallSeconds = rubric.value("configure_timeout_s", 120.0);
+        configure.limits.fileBytes = 512ull << 20;
+        configure.limits.processes = 512;
+        configure.limits.scratchBytes = 2ull << 30;
+        configure.limits.outputBytes = 256 * 1024;
+        Finished c = runToEnd(layout, configure);
+        log += c.out + c.err;
+        configured = c.status.ok();
+        if (!configured) {
+            log += "\nCMake could not configure the submission: it " + c.status.describe(configure.limits) + "\n";
+        } else {
+            Launch build = configure;
+            // -k: a plugin that does not compile costs only its own checks.
+            build.argv = {"cmake", "--build", "/scratch/build", "--parallel", "2", "--", "-k"};
+            build.limits.wallSeconds = rubric.value("build_timeout_s", 600.0);
+            Finished b = runToEnd(layout, build);
+            log += b.out + b.err;
+            if (!b.status.ok()) log += "\nThe build " + b.status.describe(build.limits) + "\n";
+        }
+        g.built = configured;
+        g.buildLog = log;
+        std::regex warning("warning:");
+        g.buildWarnings = static_cast<int>(
+            std::distance(std::sregex_iterator(log.begin(), log.end(), warning), std::sregex_iterator()));
     }
 
-    for (auto const& [chapter, plugins] : options.rubric["chapters"].items()) {
-        if (!options.chapters.empty() &&
-            std::find(options.chapters.begin(), options.chapters.end(), chapter) == options.chapters.end())
-            continue;
-        for (auto const& [plugin, spec] : plugins.items()) {
-            bool present = fs::is_regular_file(pluginDir + "/" + plugin + ".so");
-            for (auto const& [check, points] : spec["checks"].items()) {
-                double max = points.get<double>();
-                if (!g.built || !present) {
-                    g.checks.push_back({chapter, plugin, check, 0.0, max, false,
-                                        !g.built ? "the submission did not build (see the build log)"
-                                                 : plugin + ".so was not built (is it in your CMakeLists.txt?)",
-                                        0.0});
-                } else if (check == "renders") {
-                    g.checks.push_back(runRender(options, pluginDir, chapter, plugin, spec.value("scene", ""), max));
-                } else {
-                    g.checks.push_back(runCheck(options, pluginDir, chapter, plugin, check, max));
-                }
+    Limits checkLimits;
+    checkLimits.wallSeconds = rubric.value("check_timeout_s", 60.0);
+    checkLimits.processes = 64;
+    std::vector<Exercise const*> graded;
+    for (Exercise const& e : course.exercises())
+        if (selected(e, options)) graded.push_back(&e);
+    // Plugins are graded side by side (each has its own sandboxed processes);
+    // their results are gathered in the course's order.
+    std::vector<std::vector<CheckResult>> results(graded.size());
+    std::vector<std::string> printed(graded.size());
+    auto gradePlugin = [&](size_t k) {
+        Exercise const& e = *graded[k];
+        auto points = course.pointsFor(e, rubric);
+        bool present = isRegularFile(pluginFolder + "/" + e.plugin + ".so");
+        if (!present) {
+            std::string why;
+            if (!options.plugins.empty())
+                why = e.plugin + ".so is not in the plugin folder";
+            else if (!configured)
+                why = "the submission did not configure with CMake (see the build log)";
+            else {
+                std::string errors = errorsAbout(g.buildLog, e.folder.substr(std::strlen("starter/")));
+                why = e.plugin + ".so was not built" +
+                      (errors.empty() ? " (is it in your CMakeLists.txt? see the build log)" : "; the compiler said:\n" + errors);
             }
+            for (auto const& [check, max] : points) {
+                results[k].push_back(CheckResult::start(e, check, max));
+                results[k].back().summary = why;
+            }
+            return;
         }
+        RemoteMeasurer student(layout, e.plugin, "/scratch/build/plugins", checkLimits);
+        std::string stopped;  // why the remaining checks are not run (a plugin that hung once)
+        for (auto const& [check, max] : points) {
+            CheckResult r = CheckResult::start(e, check, max);
+            auto checkStart = Clock::now();
+            if (!stopped.empty()) {
+                r.summary = "not run: " + stopped;
+            } else if (check == "renders") {
+                r = renderCheck(e, max, course, layout, rubric, out);
+            } else {
+                try {
+                    CheckContext context{e, student, course.reference(e.plugin), options.seed};
+                    CheckOutcome outcome = runCheck(check, context);
+                    r.status = outcome.status;
+                    r.summary = outcome.summary;
+                    r.details = outcome.details;
+                } catch (MeasurementError const& m) {
+                    using Kind = MeasurementError::Kind;
+                    if (m.kind() == Kind::Hung) {
+                        r.summary = "your plugin " + std::string(m.what()) + " in " + m.call() + " (an endless loop?)";
+                        stopped = "your plugin hung in " + m.call() + " during the " + check +
+                                  " check, so its remaining checks are skipped";
+                    } else if (m.kind() == Kind::Crashed) {
+                        r.summary = "your plugin " + std::string(m.what()) + ", in " + m.call();
+                    } else if (m.kind() == Kind::PluginError && m.call().rfind("loading", 0) == 0) {
+                        r.summary = "your plugin could not be loaded: " + std::string(m.what());
+                    } else if (m.kind() == Kind::PluginError) {
+                        r.summary = "your plugin threw an exception in " + m.call() + ": " + m.what();
+                    } else {
+                        r.summary = "the measuring process " + std::string(m.what());
+                    }
+                } catch (std::invalid_argument const& unknown) {
+                    r.summary = std::string("the rubric names an unknown check: ") + unknown.what();
+                }
+                r.seconds = std::chrono::duration<double>(Clock::now() - checkStart).count();
+            }
+            if (r.passed()) r.score = max;
+            results[k].push_back(r);
+        }
+        printed[k] = student.printed();
+    };
+    tbb::task_arena arena(rubric.value("plugins_at_once", 2));
+    arena.execute([&] { tbb::parallel_for(size_t(0), graded.size(), size_t(1), gradePlugin); });
+    for (size_t k = 0; k < graded.size(); ++k) {
+        g.checks.insert(g.checks.end(), results[k].begin(), results[k].end());
+        if (!printed[k].empty()) g.pluginOutput[graded[k]->plugin] = printed[k];
     }
-    g.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    g.seconds = std::chrono::duration<double>(Clock::now() - start).count();
     return g;
 }
 

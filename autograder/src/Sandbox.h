@@ -1,47 +1,136 @@
-// Confines a child process that runs student code, beyond the resource limits:
-//   - files: it may write only beneath the folders it is given (and to
-//     /dev/null); anything else fails with EACCES. Linux Landlock, which needs
-//     no privileges (kernel 5.13 or later; Debian 12's kernel has it).
-//   - processes: it may start threads but no process (fork, vfork, clone
-//     without CLONE_THREAD); trying kills it with SIGSYS, so a fork bomb ends
-//     at its first fork. Nor may it change any file's mode, owner, times or
-//     extended attributes (EPERM). A seccomp filter (libseccomp).
-// Both are prepared in the parent (they allocate); the child only applies them
-// between fork and exec, where nothing but system calls is safe.
+// Runs student code (the build, every check, every render of a student
+// plugin) in one kind of sandbox, and trusted reference code beside it.
+//
+// The sandbox is bubblewrap: new user, PID, IPC, UTS, cgroup and network
+// namespaces (no network at all), no capabilities, --die-with-parent and
+// --new-session; it sees the system read-only, the course parts it needs
+// read-only under /course, its scratch folder read-write at /scratch and a
+// small private /tmp -- nothing else of the machine (no home folders, no
+// other submission, no reference solution). Its environment is built from
+// scratch. Inside, rixjail adds the second wall (Landlock, seccomp) and the
+// limits (CPU, address space, file size, processes). When the wall-clock
+// limit passes, the whole sandbox is killed: its PID namespace ends with it,
+// so no process of the submission survives. A grader running as root runs
+// sandboxes as "nobody".
 #pragma once
 
-#include <linux/filter.h>
+#include <sys/types.h>
 
+#include <chrono>
+#include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace rixgrade {
 
-struct SandboxPolicy {
-    std::vector<std::string> writableFolders;  ///< empty: no write confinement
-    bool allowNewProcesses = true;             ///< false: the seccomp filter (no processes, no metadata changes)
+using Clock = std::chrono::steady_clock;
+
+struct Limits {
+    double wallSeconds = 120.0;
+    unsigned long long cpuSeconds = 300;
+    unsigned long long memoryBytes = 4ull << 30;   ///< address space (0: unlimited)
+    unsigned long long fileBytes = 64ull << 20;    ///< largest file it may write
+    unsigned long long processes = 256;            ///< processes and threads
+    unsigned long long scratchBytes = 1ull << 30;  ///< what its scratch folder may hold (checked while it runs)
+    size_t outputBytes = 64 * 1024;                ///< kept of stdout and of stderr each
 };
 
-class Sandbox {
+enum class Confinement {
+    Sandbox,     ///< bubblewrap + rixjail: for student code
+    JailOnly,    ///< rixjail alone (rixgrade --unsafe-no-sandbox, where namespaces are unavailable)
+    Trusted,     ///< no confinement: the course's reference code
+};
+
+/// The folders a sandbox sees. Paths in a Launch are written as the sandbox
+/// sees them (/scratch/..., /course/...); outside a sandbox they are mapped
+/// back to the real folders.
+struct SandboxLayout {
+    std::string scratch;  ///< real folder, seen read-write as /scratch
+    std::vector<std::pair<std::string, std::string>> courseMounts;  ///< real path -> path under /course, read-only
+    std::string jail;     ///< the real rixjail binary
+    Confinement confinement = Confinement::Sandbox;
+    /// The real path for a path as the sandbox sees it.
+    std::string realPath(std::string const& inside) const;
+};
+
+struct Launch {
+    std::vector<std::string> argv;
+    std::string workdir = "/scratch";
+    std::map<std::string, std::string> env;  ///< added to PATH, HOME, TMPDIR, LANG
+    bool allowProcesses = false;             ///< builds start compilers; checks and renders may not
+    Limits limits;
+    std::vector<int> inputs;   ///< descriptors the child reads (the parent writes them)
+    std::vector<int> outputs;  ///< descriptors the child writes (the parent reads them)
+};
+
+struct ExitStatus {
+    int code = -1;        ///< when it exited
+    int signal = 0;       ///< when a signal ended it (also reported by bubblewrap as 128 + signal)
+    bool timedOut = false;
+    bool scratchFull = false;  ///< stopped because its scratch folder grew past the limit
+    /// "exited with status 2", "crashed with SIGSEGV", "did not finish within 120 s", ...
+    std::string describe(Limits const& limits) const;
+    bool ok() const { return !timedOut && !scratchFull && signal == 0 && code == 0; }
+};
+
+/// A started child. Reading from and writing to it never blocks past a
+/// deadline, and keeps draining its stdout and stderr (capped) meanwhile.
+class Child {
 public:
-    explicit Sandbox(SandboxPolicy const& policy);
-    ~Sandbox();
-    Sandbox(Sandbox const&) = delete;
-    Sandbox& operator=(Sandbox const&) = delete;
+    Child(SandboxLayout const& layout, Launch const& launch);
+    ~Child();  ///< kills the child (and its sandbox) if it still runs
+    Child(Child const&) = delete;
+    Child& operator=(Child const&) = delete;
 
-    /// In the child, after fork and before exec. Returns false if a restriction
-    /// that was prepared could not be applied (the child must then not run).
-    bool enter() const noexcept;
+    enum class Io { Done, Ended, TimedOut };
+    /// Writes all of `bytes` to the child's descriptor `fd`.
+    Io write(int fd, void const* bytes, size_t size, Clock::time_point deadline);
+    /// Reads exactly `size` bytes from the child's descriptor `fd`.
+    Io read(int fd, void* bytes, size_t size, Clock::time_point deadline);
+    /// Reads what the child writes to `fd` until it closes it, keeping at most `cap` bytes.
+    Io readAll(int fd, std::string& sink, size_t cap, Clock::time_point deadline);
+    /// Closes the parent's end of one of the child's input descriptors (it sees end of file).
+    void closeInput(int fd);
 
-    /// Whether writes are confined (false when the kernel lacks Landlock).
-    bool confinesWrites() const { return m_ruleset >= 0; }
-
-    /// Whether this kernel offers Landlock at all.
-    static bool writeConfinementAvailable();
+    /// Waits for the child to end (killing it at the deadline).
+    ExitStatus wait(Clock::time_point deadline);
+    void kill();
+    std::string const& out() const { return m_out; }
+    std::string const& err() const { return m_err; }
+    Limits const& limits() const { return m_limits; }
+    double seconds() const;
 
 private:
-    int m_ruleset = -1;                   ///< Landlock ruleset, or -1
-    std::vector<sock_filter> m_filter;    ///< seccomp program, empty when processes are allowed
+    int parentEnd(int childFd) const;
+    /// One round of waiting: drains stdout/stderr, watches the scratch size;
+    /// returns when `fd` is ready for `events` or the timeout passes.
+    bool pump(int fd, short events, int timeoutMs);
+    void reap(bool block);
+
+    pid_t m_pid = -1;
+    std::map<int, int> m_fds;  ///< child descriptor -> parent end
+    int m_stdout = -1, m_stderr = -1;
+    std::string m_out, m_err;
+    Limits m_limits;
+    std::string m_scratch;
+    Clock::time_point m_start, m_lastScratchCheck;
+    bool m_exited = false, m_scratchFull = false;
+    int m_status = 0;
 };
+
+/// Runs a launch to completion (no extra descriptors): builds, renders.
+struct Finished {
+    ExitStatus status;
+    std::string out, err;
+    double seconds = 0.0;
+};
+Finished runToEnd(SandboxLayout const& layout, Launch const& launch);
+
+/// Whether bubblewrap can create its namespaces here; `why` says what failed.
+bool sandboxAvailable(std::string& why);
+
+/// Bytes held by a folder's files (symbolic links not followed).
+unsigned long long folderBytes(std::string const& folder);
 
 }  // namespace rixgrade

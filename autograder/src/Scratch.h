@@ -1,0 +1,42 @@
+// The scratch folder of one grading: a private temporary folder holding a
+// copy of the submission and everything its build and checks write; the
+// only folder a sandbox may write. Removed when the grading ends.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace rixgrade {
+
+class Scratch {
+public:
+    /// A new folder under `parent` (the system's temporary folder when empty).
+    explicit Scratch(std::string const& parent = {});
+    ~Scratch();  ///< removes the folder and everything in it (unless kept)
+    Scratch(Scratch const&) = delete;
+    Scratch& operator=(Scratch const&) = delete;
+
+    std::string const& path() const { return m_path; }
+    void keep() { m_keep = true; }
+
+    struct CopyReport {
+        std::vector<std::string> skipped;  ///< what was left out, and why
+        unsigned long long bytes = 0;
+        int files = 0;
+    };
+    /// Copies a submission folder into `name` under the scratch folder without
+    /// following symbolic links (links are copied as links: inside the sandbox
+    /// they can only point at what it sees), leaving out special files, build
+    /// and version-control folders, and anything past the size limits.
+    CopyReport copySubmission(std::string const& source, std::string const& name) const;
+    /// Copies the *.so files of a folder of built plugins into `name`.
+    CopyReport copyPlugins(std::string const& source, std::string const& name) const;
+    /// Hands the folder to the user the sandboxes run as (when grading as root).
+    void handOver() const;
+
+private:
+    std::string m_path;
+    bool m_keep = false;
+};
+
+}  // namespace rixgrade

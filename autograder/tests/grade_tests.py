@@ -1,0 +1,448 @@
+#!/usr/bin/env python3
+"""The autograder's own tests: rixgrade on mutants, correct variants, hostile
+plugins, attacking submissions and whole classes, each checked from outside.
+
+    grade_tests.py --rixgrade BIN --root COURSE --build BUILD --out OUT [--port P] KIND [NAME]
+
+KIND is variant, hostile, attack, solutions, starter, repeat or class. Prints
+what it checked; exits 1 with lines starting PROBLEM when something is wrong.
+"""
+import argparse
+import csv
+import hashlib
+import io
+import json
+import os
+import shutil
+import socket
+import subprocess
+import sys
+import threading
+import time
+
+# Short limits: the tests grade many small things.
+TEST_RUBRIC = {"check_timeout_s": 20, "render_spp": 4, "render_timeout_s": 120,
+               "configure_timeout_s": 60, "build_timeout_s": 180}
+
+problems = []
+
+
+def problem(text):
+    problems.append(text)
+    print("PROBLEM:", text)
+
+
+def expect(condition, text):
+    if not condition:
+        problem(text)
+    return condition
+
+
+class Context:
+    def __init__(self, args):
+        self.rixgrade = args.rixgrade
+        self.root = args.root
+        self.build = args.build
+        self.out = args.out
+        self.port = args.port
+
+    def rubric(self, name, **changes):
+        rubric = dict(TEST_RUBRIC, **changes)
+        path = os.path.join(self.out, name + "-rubric.json")
+        with open(path, "w") as f:
+            json.dump(rubric, f)
+        return path
+
+    def grade(self, name, *arguments, rubric=None, env=None, timeout=900):
+        """Runs rixgrade; returns (exit status, output, seconds). Reports go to OUT/name."""
+        folder = os.path.join(self.out, name)
+        shutil.rmtree(folder, ignore_errors=True)
+        command = [self.rixgrade, *arguments, "--out", folder, "--rubric", rubric or self.rubric(name)]
+        start = time.time()
+        run = subprocess.run(command, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, errors="replace",
+                             env=env, timeout=timeout)
+        seconds = time.time() - start
+        with open(folder + ".log", "w") as f:
+            f.write(run.stdout)
+        return run.returncode, run.stdout, seconds
+
+    def results(self, name):
+        with open(os.path.join(self.out, name, "results.json")) as f:
+            return json.load(f)
+
+
+def checks_of(results):
+    """check name -> test entry (a single plugin was graded)."""
+    return {t["name"].split(": ")[-1]: t for t in results["tests"]}
+
+
+def snapshot(folder):
+    """Every entry below folder: kind, size, mode, modification time and contents' hash."""
+    state = {}
+    for base, dirs, files in os.walk(folder):
+        for entry in dirs + files:
+            path = os.path.join(base, entry)
+            st = os.lstat(path)
+            digest = ""
+            if os.path.isfile(path) and not os.path.islink(path):
+                with open(path, "rb") as f:
+                    digest = hashlib.sha256(f.read()).hexdigest()
+            state[os.path.relpath(path, folder)] = (st.st_mode, st.st_size, st.st_mtime_ns, st.st_uid, digest)
+    return state
+
+
+def make_canary(folder):
+    shutil.rmtree(folder, ignore_errors=True)
+    os.makedirs(folder)
+    with open(os.path.join(folder, "canary.txt"), "w") as f:
+        f.write("precious canary\n")
+    return snapshot(folder)
+
+
+def all_text(folder):
+    """Everything the grader wrote, as one string."""
+    text = ""
+    for base, _, files in os.walk(folder):
+        for leaf in files:
+            with open(os.path.join(base, leaf), "rb") as f:
+                text += f.read().decode("utf-8", "replace")
+    return text
+
+
+def no_leftover_processes(marker):
+    """No process of the submission outlives the grading."""
+    time.sleep(0.5)
+    found = subprocess.run(["pgrep", "-af", marker], stdout=subprocess.PIPE, text=True).stdout.strip()
+    found = "\n".join(line for line in found.splitlines() if "pgrep" not in line and "grade_tests.py" not in line)
+    expect(not found, "processes survived the grading:\n" + found)
+
+
+# --- variants ---------------------------------------------------------------
+
+def test_variant(ctx, name):
+    variants = json.load(open(os.path.join(ctx.root, "autograder/tests/variants.json")))["variants"]
+    v = next(v for v in variants if v["name"] == name)
+    status, output, _ = ctx.grade("variant-" + name, "--plugins", os.path.join(ctx.build, "plugins/variants", name),
+                                  "--only", v["plugin"])
+    if not expect(status == 0, f"rixgrade exited with {status}:\n{output[-2000:]}"):
+        return
+    checks = checks_of(ctx.results("variant-" + name))
+    print(f"{name} ({v['kind']}: {v['bug']})")
+    for check, t in checks.items():
+        print(f"  {t['status']:6} {check}: {t['output'].splitlines()[0][:200]}")
+    if v["kind"] == "correct":
+        for check, t in checks.items():
+            expect(t["status"] == "passed", f"the correct variant fails {check}: {t['output'][:400]}")
+    else:
+        for check in v["fail"]:
+            expect(check in checks, f"{check} was not graded")
+            expect(checks.get(check, {}).get("status") == "failed", f"the mutant ({v['bug']}) passes {check}")
+
+
+# --- hostile plugins ----------------------------------------------------------
+
+def listen(port, received):
+    server = socket.socket(socket.AF_INET, socket.SOCK_STREAM)
+    server.setsockopt(socket.SOL_SOCKET, socket.SO_REUSEADDR, 1)
+    server.bind(("127.0.0.1", port))
+    server.listen(5)
+    server.settimeout(0.5)
+    while not received.get("stop"):
+        try:
+            connection, _ = server.accept()
+        except socket.timeout:
+            continue
+        received.setdefault("data", b"")
+        received["data"] += connection.recv(65536)
+        connection.close()
+    server.close()
+
+
+def test_hostile(ctx, act):
+    canary = os.path.join(ctx.out, "canary-" + act)
+    before = make_canary(canary)
+    secret = "s3cret-" + hashlib.sha256(os.urandom(8)).hexdigest()[:12]
+    env = dict(os.environ, RIXGRADE_TEST_SECRET=secret)
+    received = {}
+    listener = threading.Thread(target=listen, args=(ctx.port, received))
+    listener.start()
+    try:
+        rubric = ctx.rubric("hostile-" + act, check_timeout_s=8)
+        status, output, seconds = ctx.grade("hostile-" + act, "--plugins", os.path.join(ctx.build, "plugins/hostile", act),
+                                            "--only", "diffuse", rubric=rubric, env=env)
+    finally:
+        received["stop"] = True
+        listener.join()
+    print(output[-3000:])
+    if not expect(status == 0, f"rixgrade exited with {status}"):
+        return
+    results = ctx.results("hostile-" + act)
+    checks = checks_of(results)
+    written = all_text(os.path.join(ctx.out, "hostile-" + act))
+    expect(snapshot(canary) == before, "the canary folder outside the sandbox changed")
+    expect(secret not in written, "a report contains the grader's secret environment variable")
+    expect("precious canary" not in written, "a report contains a file from outside the sandbox")
+    expect("root:x:0" not in written, "a report contains the machine's /etc/passwd")
+    expect(not received.get("data"), f"the plugin reached the network: {received.get('data', b'')[:200]!r}")
+    no_leftover_processes("plugins/hostile/" + act)
+    mentions = lambda text: any(text in t["output"] for t in results["tests"])
+    failed = lambda check: checks[check]["status"] == "failed"
+    passed = lambda check: checks[check]["status"] == "passed"
+    generating = ["chi2", "consistency", "jacobian", "hardcases", "renders"]
+    if act in ("segfault", "abort", "throws", "huge_allocation", "fork_bomb"):
+        for check in generating:
+            expect(failed(check), f"{check} passes although GenerateSample never answers")
+        expect(passed("values"), "values (EvaluateSample, which works) should pass: " + checks["values"]["output"])
+        expect(mentions("GenerateSample"), "no message names GenerateSample as the function that failed")
+    if act == "segfault":
+        expect(mentions("SIGSEGV"), "no message says SIGSEGV")
+    if act == "abort":
+        expect(mentions("SIGABRT"), "no message says SIGABRT")
+    if act == "throws":
+        expect(mentions("threw an exception in GenerateSample"), "no message says GenerateSample threw")
+    if act == "fork_bomb":
+        expect(mentions("tried to start a process"), "no message says it tried to start a process")
+    if act == "endless_loop":
+        expect(mentions("did not answer within"), "no message says the plugin did not answer")
+        expect(mentions("remaining checks are skipped"), "the remaining checks were run after a hang")
+        expect(seconds < 8 * 2 + 60, f"a hanging plugin cost {seconds:.0f} s: more than one timeout")
+    if act == "exit_zero":
+        expect(results["score"] == 0, f"a plugin that exits at once scored {results['score']}")
+    if act in ("writes_outside", "steals", "phones_home", "floods_stdout", "kills_grader"):
+        for check, t in checks.items():
+            expect(t["status"] == "passed", f"{check} should pass (the plugin is otherwise correct): {t['output'][:300]}")
+    if act == "floods_stdout":
+        size = os.path.getsize(os.path.join(ctx.out, "hostile-" + act, "report.html"))
+        expect(size < 300000, f"the report grew to {size} bytes: a plugin's output is not capped")
+    if act == "fake_image":
+        expect(failed("renders"), "a fake image passed the render check")
+        expect("image" in checks["renders"]["output"], "the render check does not say the image was not valid")
+
+
+# --- whole submissions ---------------------------------------------------------
+
+MINIMAL_CMAKE = """cmake_minimum_required(VERSION 3.22)
+project(Submission LANGUAGES CXX)
+set(CMAKE_CXX_STANDARD 17)
+include(${BXDFLAB_ROOT}/cmake/RixPlugin.cmake)
+set(RIX_PLUGIN_OUTPUT_DIR ${CMAKE_BINARY_DIR}/plugins)
+add_rix_plugin(diffuse ch06/diffuse/DiffuseFactory.cpp ch06/diffuse/Diffuse.cpp)
+target_include_directories(diffuse PRIVATE ch06/diffuse common)
+"""
+
+
+def make_submission(ctx, folder, solved=True, cmake_extra="", whole=False):
+    """A submission folder: the starter's diffuse (solved or not), or the whole starter."""
+    shutil.rmtree(folder, ignore_errors=True)
+    shutil.copytree(os.path.join(ctx.root, "starter"), folder, symlinks=True)
+    if solved:
+        for leaf in ("Diffuse.cpp", "Diffuse.h", "DiffuseFactory.cpp", "DiffuseFactory.h"):
+            shutil.copy(os.path.join(ctx.root, "solutions/ch06/diffuse", leaf), os.path.join(folder, "ch06/diffuse", leaf))
+    if not whole:
+        with open(os.path.join(folder, "CMakeLists.txt"), "w") as f:
+            f.write(MINIMAL_CMAKE + cmake_extra)
+    return folder
+
+
+def diffuse_points(results):
+    return sum(t["score"] for t in results["tests"]), sum(t["max_score"] for t in results["tests"])
+
+
+def test_attack(ctx, name):
+    work = os.path.join(ctx.out, "attack-" + name + "-work")
+    shutil.rmtree(work, ignore_errors=True)
+    os.makedirs(work)
+    canary = os.path.join(work, "canary")
+    before = make_canary(canary)
+    course_file = os.path.join(ctx.root, "scenes/ch06/diffuse.rib")
+    course_before = snapshot(os.path.dirname(course_file))
+    tmp = os.path.join(work, "tmp")
+    os.makedirs(tmp)
+    env = dict(os.environ, TMPDIR=tmp)
+    report = os.path.join(ctx.out, "attack-" + name)
+    if name == "odd_names" or name == "classmate_source":
+        return test_class_attack(ctx, name, work, env)
+
+    extra = ""
+    rubric = None
+    if name == "daemon":
+        # A detached process that outlives the build and rewrites the results later.
+        extra = ('execute_process(COMMAND sh -c "setsid sh -c \'sleep 4; echo HACKED > ' + report +
+                 '/results.json; echo HACKED > /scratch/pwned\' > /dev/null 2>&1 &")\n')
+    elif name == "writes_outside_build":
+        # Every write a shell can try, each allowed to fail quietly so the rest of the build goes on.
+        script = (f"echo defaced > {canary}/canary.txt; touch {canary}/planted; chmod 777 {canary}/canary.txt; "
+                  f"touch -d 2000-01-01 {canary}/canary.txt; ln -s /etc/passwd {report}/report.html; "
+                  f"ln -s {canary}/canary.txt {report}/results.json; : > {course_file}; "
+                  f"echo x > /scratch/../escaped; echo x > {work}/escaped; true")
+        extra = f'execute_process(COMMAND sh -c "{script}")\n'
+    elif name == "huge_file":
+        extra = ('execute_process(COMMAND dd if=/dev/zero of=big bs=1M count=2048 RESULT_VARIABLE r ERROR_VARIABLE e)\n'
+                 'message(STATUS "dd: ${r}")\n')
+    elif name == "sleeping_configure":
+        extra = 'execute_process(COMMAND sleep 1000)\n'
+        rubric = ctx.rubric("attack-" + name, configure_timeout_s=5)
+    elif name == "kills_grader_build":
+        extra = 'execute_process(COMMAND sh -c "kill -9 $PPID; kill -9 -1")\n'
+    submission = make_submission(ctx, os.path.join(work, "submission"), cmake_extra=extra, whole=(name == "broken_plugin"))
+    if name == "broken_plugin":
+        # Every exercise solved, but the specular plugin does not compile.
+        for chapter, plugin in (("ch06", "emissive"), ("ch06", "specular"), ("ch06", "plastic")):
+            for leaf in os.listdir(os.path.join(ctx.root, "solutions", chapter, plugin)):
+                shutil.copy(os.path.join(ctx.root, "solutions", chapter, plugin, leaf),
+                            os.path.join(submission, chapter, plugin, leaf))
+        with open(os.path.join(submission, "ch06/specular/Specular.cpp"), "a") as f:
+            f.write("\nthis is not C++;\n")
+    arguments = ["--submission", submission]
+    arguments += ["--chapter", "6"] if name == "broken_plugin" else ["--only", "diffuse"]
+    status, output, seconds = ctx.grade("attack-" + name, *arguments, rubric=rubric, env=env)
+    print(output[-3000:])
+    if not expect(status == 0, f"rixgrade exited with {status}"):
+        return
+    results = ctx.results("attack-" + name)
+    checks = {t["name"]: t for t in results["tests"]}
+    expect(snapshot(canary) == before, "the canary folder outside the sandbox changed")
+    expect(snapshot(os.path.dirname(course_file)) == course_before, "a file of the course changed")
+    expect(not os.path.exists(os.path.join(work, "escaped")), "the build wrote outside its scratch folder")
+    for leaf in ("report.html", "results.json"):
+        path = os.path.join(report, leaf)
+        expect(os.path.isfile(path) and not os.path.islink(path), f"{leaf} is not a regular file the grader wrote")
+    expect(os.listdir(tmp) == [], f"the scratch folder was left behind: {os.listdir(tmp)}")
+    no_leftover_processes("sleep 4")
+    if name in ("daemon", "writes_outside_build", "huge_file"):
+        score, maximum = diffuse_points(results)
+        expect(score == maximum, f"an otherwise correct diffuse scored {score} of {maximum}")
+    if name == "daemon":
+        before_hash = hashlib.sha256(open(os.path.join(report, "results.json"), "rb").read()).hexdigest()
+        time.sleep(6)
+        after_hash = hashlib.sha256(open(os.path.join(report, "results.json"), "rb").read()).hexdigest()
+        expect(before_hash == after_hash, "results.json changed after rixgrade returned")
+    if name == "huge_file":
+        log = open(os.path.join(report, "report.html")).read()
+        expect("dd: SIGXFSZ" in log or "dd: File size limit exceeded" in log, "the build log does not show the 2 GiB write stopped by the file size limit")
+    if name == "sleeping_configure":
+        expect(seconds < 90, f"a sleeping configure step held grading for {seconds:.0f} s")
+        expect("did not finish within 5 s" in json.dumps(results) + open(report + "/report.html").read(),
+               "the report does not say the configure step timed out")
+    if name == "broken_plugin":
+        diffuse = [t for n, t in checks.items() if " diffuse:" in n]
+        specular = [t for n, t in checks.items() if " specular:" in n]
+        expect(all(t["status"] == "passed" for t in diffuse), "a broken specular cost diffuse its points")
+        expect(all(t["score"] == 0 for t in specular), "a specular that does not compile earned points")
+        expect(any("Specular.cpp" in t["output"] for t in specular), "the compiler's error is not quoted for specular")
+
+
+def test_class_attack(ctx, name, work, env):
+    klass = os.path.join(work, "class")
+    os.makedirs(klass)
+    if name == "classmate_source":
+        make_submission(ctx, os.path.join(klass, "alice"))
+        alice_source = os.path.join(klass, "alice/ch06/diffuse/Diffuse.cpp")
+        # mallory compiles alice's file by its absolute path; trudy links to it.
+        make_submission(ctx, os.path.join(klass, "mallory"), solved=False,
+                        cmake_extra=f"target_sources(diffuse PRIVATE {alice_source})\n"
+                                    "set_source_files_properties(ch06/diffuse/Diffuse.cpp PROPERTIES HEADER_FILE_ONLY ON)\n")
+        trudy = make_submission(ctx, os.path.join(klass, "trudy"), solved=False)
+        os.remove(os.path.join(trudy, "ch06/diffuse/Diffuse.cpp"))
+        os.symlink(alice_source, os.path.join(trudy, "ch06/diffuse/Diffuse.cpp"))
+        os.symlink("../../../alice/ch06/diffuse/Diffuse.h", os.path.join(trudy, "ch06/diffuse/Extra.h"))
+        # carol copies alice's code and renames things: the similarity report must flag it.
+        carol = make_submission(ctx, os.path.join(klass, "carol"), solved=False)
+        text = open(alice_source).read().replace("NdL", "cosLight").replace("weight", "w")
+        with open(os.path.join(carol, "ch06/diffuse/Diffuse.cpp"), "w") as f:
+            f.write(text)
+    else:
+        names = ["gradebook.csv", "a,b", 'quote"name', '=HYPERLINK("http://x")', "new\nline", "+1", "@sum", "ok"]
+        for n in names:
+            make_submission(ctx, os.path.join(klass, n), solved=(n == "ok"))
+        with open(os.path.join(klass, "not-a-folder.txt"), "w") as f:
+            f.write("stray file")
+    status, output, _ = ctx.grade("attack-" + name, "--class", klass, "--jobs", "2", "--only", "diffuse", env=env)
+    print(output[-3000:])
+    if not expect(status == 0, f"rixgrade exited with {status}"):
+        return
+    out = os.path.join(ctx.out, "attack-" + name)
+    raw = open(os.path.join(out, "gradebook.csv"), newline="").read()
+    rows = list(csv.reader(io.StringIO(raw)))
+    header, body = rows[0], rows[1:]
+    expect(all(len(r) == len(header) for r in body), "gradebook rows do not all have the header's number of fields")
+    by_name = {r[0]: r for r in body}
+    students = sorted(os.listdir(klass))
+    submissions = [s for s in students if os.path.isdir(os.path.join(klass, s))]
+    expect(len(body) == len(submissions), f"the gradebook has {len(body)} rows for {len(submissions)} students")
+    score = lambda n: float(by_name[n][1]) if n in by_name else -1
+    if name == "classmate_source":
+        expect(score("alice") == float(by_name["alice"][2]), "alice did not get full marks")
+        for thief in ("mallory", "trudy"):
+            expect(score(thief) <= 1, f"{thief} earned {score(thief)} by compiling a classmate's file")
+        similar = list(csv.reader(open(os.path.join(out, "similarity.csv"), newline="")))
+        flagged = [r for r in similar[1:] if {r[0], r[1]} == {"alice", "carol"} and int(r[4]) >= 60]
+        expect(flagged, "the similarity report does not flag carol's copy of alice's code")
+        expect("carol" in open(os.path.join(out, "report.html")).read(), "the class report does not show the copy")
+    else:
+        for n in ("gradebook.csv", "a,b", 'quote"name', "'+1", "'@sum", "ok"):
+            expect(n in by_name, f"no gradebook row for {n!r}")
+        formula = [r[0] for r in body if r[0][:1] in ("=", "+", "-", "@")]
+        expect(not formula, f"cells a spreadsheet would run as formulas: {formula}")
+        expect("'=HYPERLINK" in raw, "the formula-like name is not neutralised")
+        expect(score("ok") == float(by_name["ok"][2]), "the honest student 'ok' did not get full marks")
+        expect(os.path.isfile(os.path.join(out, "gradebook.csv")), "no gradebook")
+
+
+def test_solutions(ctx):
+    status, output, seconds = ctx.grade("solutions", "--plugins", os.path.join(ctx.build, "plugins/solutions"))
+    print(output[-4000:])
+    if expect(status == 0, f"rixgrade exited with {status}"):
+        results = ctx.results("solutions")
+        for t in results["tests"]:
+            expect(t["status"] == "passed", f"the reference solution fails {t['name']}: {t['output'][:300]}")
+        print(f"solutions: {results['score']} / {results['max_score']} in {seconds:.1f} s")
+
+
+def test_starter(ctx):
+    status, output, _ = ctx.grade("starter", "--plugins", os.path.join(ctx.build, "plugins/starter"), "--chapter", "6")
+    print(output[-4000:])
+    if expect(status == 0, f"rixgrade exited with {status}"):
+        results = ctx.results("starter")
+        checks = {t["name"]: t for t in results["tests"]}
+        expect(checks["ch6 diffuse: loads"]["status"] == "passed", "the untouched starter does not load")
+        expect(checks["ch6 diffuse: values"]["status"] == "failed", "the untouched starter passes values")
+        expect(any("TODO bodies" in t["output"] for t in results["tests"]), "no message points at the TODO bodies")
+
+
+def test_repeat(ctx):
+    plugins = os.path.join(ctx.build, "plugins/variants/diffuse_pdf_doubled")
+    runs = []
+    for run in ("a", "b"):
+        status, _, _ = ctx.grade("repeat-" + run, "--plugins", plugins, "--only", "diffuse")
+        expect(status == 0, "rixgrade failed")
+        results = ctx.results("repeat-" + run)
+        runs.append([(t["name"], t["status"], t["score"], t["output"]) for t in results["tests"]])
+    expect(runs[0] == runs[1], "two gradings of the same submission differ")
+    print("the same submission graded twice: identical results, numbers included")
+
+
+def main():
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--rixgrade", required=True)
+    parser.add_argument("--root", required=True)
+    parser.add_argument("--build", required=True)
+    parser.add_argument("--out", required=True)
+    parser.add_argument("--port", type=int, default=47613)
+    parser.add_argument("kind")
+    parser.add_argument("name", nargs="?")
+    args = parser.parse_args()
+    ctx = Context(args)
+    os.makedirs(ctx.out, exist_ok=True)
+    tests = {"variant": lambda: test_variant(ctx, args.name), "hostile": lambda: test_hostile(ctx, args.name),
+             "attack": lambda: test_attack(ctx, args.name), "solutions": lambda: test_solutions(ctx),
+             "starter": lambda: test_starter(ctx), "repeat": lambda: test_repeat(ctx)}
+    tests[args.kind]()
+    if problems:
+        return 1
+    print("OK")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
