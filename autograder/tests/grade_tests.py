@@ -422,6 +422,40 @@ def test_repeat(ctx):
     print("the same submission graded twice: identical results, numbers included")
 
 
+def test_gradescope(ctx):
+    """The Gradescope bundle on a simulated /autograder: setup.sh builds the course, run_autograder grades."""
+    root = os.path.join(ctx.out, "gradescope")
+    shutil.rmtree(root, ignore_errors=True)
+    for folder in ("source", "submission", "results"):
+        os.makedirs(os.path.join(root, folder))
+    bundle = os.path.join(ctx.out, "autograder.zip")
+    run = subprocess.run([os.path.join(ctx.root, "scripts/gradescope-bundle.sh"), bundle], stdout=subprocess.PIPE,
+                         stderr=subprocess.STDOUT, text=True)
+    if not expect(run.returncode == 0, "the bundle was not built:\n" + run.stdout):
+        return
+    subprocess.run(["python3", "-m", "zipfile", "-e", bundle, os.path.join(root, "source")], check=True)
+    for leaf in ("setup.sh", "run_autograder"):
+        os.chmod(os.path.join(root, "source", leaf), 0o755)
+    env = dict(os.environ, AUTOGRADER_ROOT=root)
+    setup = subprocess.run([os.path.join(root, "source/setup.sh")], env=env, stdout=subprocess.PIPE,
+                           stderr=subprocess.STDOUT, text=True)
+    if not expect(setup.returncode == 0, "setup.sh failed:\n" + setup.stdout[-3000:]):
+        return
+    submission = make_submission(ctx, os.path.join(root, "submission-work"), whole=True)
+    for item in os.listdir(submission):
+        shutil.move(os.path.join(submission, item), os.path.join(root, "submission", item))
+    graded = subprocess.run([os.path.join(root, "source/run_autograder")], env=env, stdout=subprocess.PIPE,
+                            stderr=subprocess.STDOUT, text=True)
+    expect(graded.returncode == 0, "run_autograder failed:\n" + graded.stdout[-3000:])
+    results = json.load(open(os.path.join(root, "results/results.json")))
+    checks = {t["name"]: t for t in results["tests"]}
+    expect(all(t["status"] == "passed" for n, t in checks.items() if " diffuse:" in n), "diffuse was not graded as solved")
+    expect(any(t["status"] == "failed" for n, t in checks.items() if " specular:" in n),
+           "the untouched specular exercise was graded as solved")
+    expect(set(results) >= {"score", "tests", "execution_time"}, "results.json lacks Gradescope's fields")
+    print(f"Gradescope layout: {results['score']} / {results.get('max_score')}")
+
+
 def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("--rixgrade", required=True)
@@ -436,7 +470,8 @@ def main():
     os.makedirs(ctx.out, exist_ok=True)
     tests = {"variant": lambda: test_variant(ctx, args.name), "hostile": lambda: test_hostile(ctx, args.name),
              "attack": lambda: test_attack(ctx, args.name), "solutions": lambda: test_solutions(ctx),
-             "starter": lambda: test_starter(ctx), "repeat": lambda: test_repeat(ctx)}
+             "starter": lambda: test_starter(ctx), "repeat": lambda: test_repeat(ctx),
+             "gradescope": lambda: test_gradescope(ctx)}
     tests[args.kind]()
     if problems:
         return 1
