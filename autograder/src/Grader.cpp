@@ -101,6 +101,7 @@ SandboxLayout Course::layout(std::string const& scratch) const {
     SandboxLayout l;
     l.scratch = scratch;
     l.jail = m_binDir + "/rixjail";
+    l.courseRoot = m_root;
     l.confinement = m_confinement;
     std::string plugins = m_binDir + "/../plugins";
     // What student code may see of the course: the API and build helpers, the

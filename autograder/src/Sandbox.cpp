@@ -70,6 +70,7 @@ std::string SandboxLayout::realPath(std::string const& inside) const {
         if (startsWith(inside, mounted)) return real + inside.substr(mounted.size());
     }
     if (inside == std::string(kCourse) + "/bin/rixjail") return jail;
+    if (inside == kCourse) return courseRoot;
     return inside;
 }
 
@@ -93,11 +94,6 @@ Child::Child(SandboxLayout const& layout, Launch const& launch) : m_limits(launc
     bool const sandboxed = layout.confinement == Confinement::Sandbox;
     std::string const scratchInside = sandboxed ? kScratch : layout.scratch;
     std::string const tmpInside = sandboxed ? "/tmp" : layout.scratch + "/tmp";
-    if (!sandboxed && !layout.scratch.empty()) {
-        std::error_code error;
-        fs::create_directories(layout.scratch + "/tmp", error);
-        fs::create_directories(layout.scratch + "/home", error);
-    }
 
     // Everything that allocates happens before fork: a multi-threaded parent's
     // child may only make system calls until it execs.

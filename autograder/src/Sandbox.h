@@ -49,6 +49,7 @@ struct SandboxLayout {
     std::string scratch;  ///< real folder, seen read-write as /scratch
     std::vector<std::pair<std::string, std::string>> courseMounts;  ///< real path -> path under /course, read-only
     std::string jail;     ///< the real rixjail binary
+    std::string courseRoot;  ///< the real course folder ("/course" itself, outside a sandbox)
     Confinement confinement = Confinement::Sandbox;
     /// The real path for a path as the sandbox sees it.
     std::string realPath(std::string const& inside) const;

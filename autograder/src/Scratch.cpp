@@ -59,6 +59,9 @@ Scratch::Scratch(std::string const& parent) {
     std::string pattern = base + "/rixgrade-XXXXXX";
     if (!mkdtemp(pattern.data())) throw std::runtime_error("cannot create a scratch folder in " + base);
     m_path = pattern;
+    // The sandbox's home and (outside a sandbox) temporary folders.
+    fs::create_directories(m_path + "/home");
+    fs::create_directories(m_path + "/tmp");
 }
 
 Scratch::~Scratch() {

@@ -410,6 +410,18 @@ def test_starter(ctx):
         expect(any("TODO bodies" in t["output"] for t in results["tests"]), "no message points at the TODO bodies")
 
 
+def test_unsafe(ctx):
+    """Where namespaces are missing an instructor may grade without the sandbox; every report says so."""
+    status, output, _ = ctx.grade("unsafe", "--plugins", os.path.join(ctx.build, "plugins/solutions"), "--only", "diffuse",
+                                  "--unsafe-no-sandbox")
+    if expect(status == 0, f"rixgrade exited with {status}:\n{output[-2000:]}"):
+        results = ctx.results("unsafe")
+        expect(all(t["status"] == "passed" for t in results["tests"]), "the solution fails without the sandbox")
+        expect("--unsafe-no-sandbox" in results["output"], "results.json does not say the sandbox was off")
+        expect("--unsafe-no-sandbox" in open(os.path.join(ctx.out, "unsafe", "report.html")).read(),
+               "the report does not say the sandbox was off")
+
+
 def test_repeat(ctx):
     plugins = os.path.join(ctx.build, "plugins/variants/diffuse_pdf_doubled")
     runs = []
@@ -471,7 +483,7 @@ def main():
     tests = {"variant": lambda: test_variant(ctx, args.name), "hostile": lambda: test_hostile(ctx, args.name),
              "attack": lambda: test_attack(ctx, args.name), "solutions": lambda: test_solutions(ctx),
              "starter": lambda: test_starter(ctx), "repeat": lambda: test_repeat(ctx),
-             "gradescope": lambda: test_gradescope(ctx)}
+             "gradescope": lambda: test_gradescope(ctx), "unsafe": lambda: test_unsafe(ctx)}
     tests[args.kind]()
     if problems:
         return 1
