@@ -9,6 +9,7 @@ set(RIX_SCENE_SOURCES
   parse/RibParser.cpp
   parse/RibRequest.cpp
   parse/ParamList.cpp
+  parse/StandardDeclarations.cpp
   scene/SceneBuilder.cpp
   scene/shapes/Quadric.cpp
   scene/shapes/TriangleMesh.cpp

@@ -25,6 +25,42 @@ std::string ribErrorOf(std::string const& rib) {
 }
 }  // namespace
 
+TEST_CASE("lexer: the binary encoding -- numbers, strings, float arrays, defined requests and strings", "[rib]") {
+    // version 3.05 (float32), request 5 defined as "Sphere", a 1-byte integer,
+    // a 2-byte fixed point with one fraction byte (1.5), a float array of two,
+    // a string defined as code 1 and then used, and request 5 used.
+    std::string bytes = std::string("version") + '\xa4' + std::string("\x40\x43\x33\x33", 4) +
+                        std::string("\xcc\x05\x96", 3) + "Sphere" + std::string("\xa6\x05", 2) + '\x80' + '\x02' +
+                        std::string("\x85\x01\x80", 3) + std::string("\xc8\x02", 2) +
+                        std::string("\x3f\x80\x00\x00\x40\x00\x00\x00", 8) + std::string("\xcd\x01\x91", 3) + "P" +
+                        std::string("\xcf\x01", 2);
+    RibLexer lexer(bytes, "b.rib");
+    CHECK(lexer.next().text == "version");
+    CHECK(lexer.next().number == Approx(3.05f));
+    RibToken request = lexer.next();
+    CHECK(request.kind == RibToken::Kind::Request);
+    CHECK(request.text == "Sphere");
+    CHECK(lexer.next().number == 2.0);
+    CHECK(lexer.next().number == 1.5);
+    CHECK(lexer.next().kind == RibToken::Kind::ArrayBegin);
+    CHECK(lexer.next().number == 1.0);
+    CHECK(lexer.next().number == 2.0);
+    CHECK(lexer.next().kind == RibToken::Kind::ArrayEnd);
+    RibToken defined = lexer.next();
+    CHECK(defined.kind == RibToken::Kind::String);
+    CHECK(defined.text == "P");
+    CHECK(lexer.next().kind == RibToken::Kind::End);
+    CHECK_THROWS_WITH(RibLexer(std::string("\xa6\x09", 2), "c.rib").next(), Catch::Matchers::Contains("before defining it"));
+    CHECK_THROWS_WITH(RibLexer(std::string("\xa4\x40", 2), "c.rib").next(), Catch::Matchers::Contains("cut short"));
+}
+
+TEST_CASE("lexer: single-quoted strings and strings that span lines", "[rib]") {
+    RibLexer lexer("Display 'out.tif' \"a\nb\"", "t.rib");
+    lexer.next();
+    CHECK(lexer.next().text == "out.tif");
+    CHECK(lexer.next().text == "a\nb");
+}
+
 TEST_CASE("lexer: requests, numbers, strings, arrays and comments with positions", "[rib]") {
     RibLexer lexer("Sphere 1 -2.5e1 \"a \\\"q\\\"\" # comment\n[ 3 ]", "t.rib");
     RibToken t = lexer.next();
@@ -73,7 +109,7 @@ TEST_CASE("malformed RIB gives file:line:col and what was expected", "[rib][erro
         {"Hider \"raytrace\" \"int maxsamples\" [0]", "bad.rib:1:18", "between 1 and"},
         {"WorldBegin\nSphere -1 -1 1 360", "bad.rib:2:1", "radius must be positive"},
         {"Light \"PxrDiskLight\" \"l\" \"blah intensity\" [1]", "bad.rib:1:26", "unknown parameter type"},
-        {"Light \"PxrDiskLight\" \"l\" \"strength\" [1]", "bad.rib:1:26", "has no type"},
+        {"Light \"PxrDiskLight\" \"l\" \"exposure\" [1]", "bad.rib:1:26", "has no type"},
         {"Light \"PxrDiskLight\" \"l\" \"float intensity\" \"x\"", "bad.rib:1:44", "declared float"},
         {"Translate 1e999 0 0", "bad.rib:1:11", "too large for a 32-bit float"},
         {"WorldBegin\nTranslate 3e38 0 0\nPolygon \"P\" [0 0 0 3e38 0 0 0 1 0]", "bad.rib:3:1", "not finite once transformed"},
@@ -91,6 +127,22 @@ TEST_CASE("malformed RIB gives file:line:col and what was expected", "[rib][erro
     std::string message = ribErrorOf(c.rib);
     CHECK_THAT(message, Catch::Matchers::StartsWith(c.location));
     CHECK_THAT(message, Catch::Matchers::Contains(c.mentions));
+}
+
+TEST_CASE("standard names need no type; an unknown untyped name in a skipped request is only a warning", "[rib]") {
+    Diagnostics diagnostics(false);
+    Scene scene = parseRib("Option \"limits\" \"bucketsize\" [16 16] \"gridsize\" 256\n"
+                           "Option \"statistics\" \"endofframe\" 1\nHider \"hidden\" \"jitter\" 1\n"
+                           "Option \"mystery\" \"whatever\" [3]\n"
+                           "WorldBegin\nAttribute \"bound\" \"displacement\" [0.1]\nAttribute \"trace\" \"bias\" 0.01\n"
+                           "Light \"PxrDiskLight\" \"l\" \"strength\" [1]\nSphere 1 -1 1 360\nWorldEnd\n",
+                           diagnostics);
+    CHECK(scene.shapes.size() == 1);
+    bool warnedStrength = false;
+    for (auto const& e : diagnostics.entries())
+        warnedStrength = warnedStrength || (e.text.find("\"strength\" has no type") != std::string::npos &&
+                                            e.text.find("test.rib:8:") == 0);
+    CHECK(warnedStrength);
 }
 
 TEST_CASE("unknown requests are warned about once with their location, then skipped", "[rib]") {

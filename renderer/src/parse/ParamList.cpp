@@ -2,6 +2,8 @@
 
 #include <sstream>
 
+#include "parse/StandardDeclarations.h"
+
 namespace bxdflab {
 
 int componentsOf(ParamType type) {
@@ -11,6 +13,7 @@ int componentsOf(ParamType type) {
         case ParamType::Vector:
         case ParamType::Normal: return 3;
         case ParamType::HPoint: return 4;
+        case ParamType::Matrix: return 16;
         default: return 1;
     }
 }
@@ -25,26 +28,18 @@ const char* paramTypeName(ParamType type) {
         case ParamType::Normal: return "normal";
         case ParamType::HPoint: return "hpoint";
         case ParamType::String: return "string";
+        case ParamType::Matrix: return "matrix";
+        case ParamType::Unknown: return "untyped";
     }
     return "?";
 }
 
 Declarations::Declarations() {
-    // The predefined declarations of the RenderMan Interface that scenes use
-    // without declaring them.
-    const char* standard[][2] = {
-        {"fov", "float"},          {"P", "vertex point"},       {"N", "varying normal"},
-        {"Pw", "vertex hpoint"},   {"Cs", "varying color"},     {"Os", "varying color"},
-        {"st", "varying float[2]"}, {"s", "varying float"},     {"t", "varying float"},
-        {"width", "varying float"}, {"constantwidth", "constant float"},
-        {"intensity", "float"},    {"lightcolor", "color"},     {"from", "point"},
-        {"to", "point"},           {"name", "string"},          {"maxsamples", "int"},
-    };
-    for (auto const& entry : standard) {
+    for (auto const& [name, declaration] : standardDeclarations()) {
         ParamDecl decl;
         std::string error;
-        parseDeclaration(std::string(entry[1]) + " " + entry[0], decl, error);
-        m_known[entry[0]] = decl;
+        parseDeclaration(std::string(declaration) + " " + name, decl, error);
+        m_known[name] = decl;
     }
 }
 
@@ -60,6 +55,10 @@ bool Declarations::parseDeclaration(std::string const& text, ParamDecl& out, std
     out.name = parts.back();
     parts.pop_back();
     size_t i = 0;
+    if (i < parts.size() && parts[i] == "reference") {
+        out.reference = true;
+        ++i;
+    }
     static const char* classes[] = {"constant", "uniform", "varying", "vertex", "facevarying", "facevertex"};
     if (i < parts.size())
         for (const char* cls : classes)
@@ -68,7 +67,7 @@ bool Declarations::parseDeclaration(std::string const& text, ParamDecl& out, std
                 break;
             }
     if (i >= parts.size()) {
-        if (!parts.empty() || !out.storageClass.empty()) {
+        if (!parts.empty() || !out.storageClass.empty() || out.reference) {
             error = "declaration '" + text + "' has a storage class but no type";
             return false;
         }
@@ -99,10 +98,13 @@ bool Declarations::parseDeclaration(std::string const& text, ParamDecl& out, std
         {"float", ParamType::Float},   {"int", ParamType::Int},       {"integer", ParamType::Int},
         {"color", ParamType::Color},   {"point", ParamType::Point},   {"vector", ParamType::Vector},
         {"normal", ParamType::Normal}, {"hpoint", ParamType::HPoint}, {"string", ParamType::String},
+        {"matrix", ParamType::Matrix}, {"bool", ParamType::Int},
+        // RenderMan's structs (layered materials) are passed whole to plugins this renderer does not have.
+        {"struct", ParamType::Unknown},
     };
     auto found = types.find(type);
     if (found == types.end()) {
-        error = "unknown parameter type '" + type + "' (expected float, int, color, point, vector, normal, string)";
+        error = "unknown parameter type '" + type + "' (expected float, int, color, point, vector, normal, hpoint, matrix, string)";
         return false;
     }
     out.type = found->second;
@@ -127,10 +129,12 @@ ParamDecl Declarations::resolve(std::string const& token, SourceLocation const& 
     if (parseDeclaration(token, decl, error)) return decl;
     if (!error.empty()) throw RibError(where, error);
     auto found = m_known.find(token);
-    if (found == m_known.end())
-        throw RibError(where, "parameter \"" + token +
-                                  "\" has no type: write it as \"<type> " + token + "\", e.g. \"float " + token + "\"");
-    return found->second;
+    if (found != m_known.end()) return found->second;
+    ParamDecl untyped;
+    untyped.name = token;
+    untyped.type = ParamType::Unknown;
+    untyped.untyped = true;
+    return untyped;
 }
 
 size_t Param::count() const {
@@ -152,6 +156,9 @@ Param const* ParamList::find(std::string const& name) const {
     for (auto const& p : m_params)
         if (p.name() == name) {
             p.used = true;
+            if (p.decl.untyped)
+                throw RibError(p.location, "parameter \"" + name + "\" has no type: write it as \"<type> " + name +
+                                               "\", e.g. \"float " + name + "\", or declare it with Declare");
             return &p;
         }
     return nullptr;
@@ -230,8 +237,14 @@ std::vector<int> const* ParamList::getInts(std::string const& name) const {
 }
 
 void ParamList::warnUnused(Diagnostics& diagnostics, std::string const& owner) const {
-    for (auto const& p : m_params)
-        if (!p.used) diagnostics.warn(p.location, owner + ": parameter \"" + p.name() + "\" is not used; ignored");
+    for (auto const& p : m_params) {
+        if (p.used) continue;
+        if (p.decl.untyped)
+            diagnostics.warn(p.location, owner + ": parameter \"" + p.name() +
+                                             "\" has no type and is not a standard name; ignored");
+        else
+            diagnostics.warn(p.location, owner + ": parameter \"" + p.name() + "\" is not used; ignored");
+    }
 }
 
 }  // namespace bxdflab

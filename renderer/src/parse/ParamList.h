@@ -18,7 +18,10 @@ namespace bxdflab {
 /// A whole number an int can hold (converting any other value to int is undefined behaviour).
 inline bool isWholeInt(double d) { return d == std::floor(d) && d >= -2147483648.0 && d <= 2147483647.0; }
 
-enum class ParamType { Float, Int, Color, Point, Vector, Normal, HPoint, String };
+/// Unknown: a name written without a type that is not a standard one (its
+/// values are kept as they were written; using it is an error, skipping it a
+/// warning), or a type this renderer does not model ("struct").
+enum class ParamType { Float, Int, Color, Point, Vector, Normal, HPoint, String, Matrix, Unknown };
 
 /// How many floats one element of a type takes (1 for float/int/string).
 int componentsOf(ParamType type);
@@ -30,15 +33,19 @@ struct ParamDecl {
     ParamType type = ParamType::Float;
     std::string storageClass;  ///< constant, uniform, varying, vertex, facevarying (or empty)
     int arraySize = 1;         ///< elements per item, e.g. 2 for float[2]
+    bool reference = false;    ///< "reference color x" ["node:output"]: connected to a pattern's output
+    bool untyped = false;      ///< written without a type (and not a standard name)
 };
 
-/// Declarations known without a Declare request (the RI standard ones), plus
-/// whatever the RIB declared. Parses "type name" strings.
+/// Declarations known without a Declare request (parse/StandardDeclarations),
+/// plus whatever the RIB declared. Parses "class type name" strings.
 class Declarations {
 public:
     Declarations();
     void declare(std::string const& name, std::string const& declaration, SourceLocation const& where);
-    /// Parses a parameter token like "float fov" or "fov". Throws on a bad type.
+    /// Parses a parameter token like "float fov" or "fov". A name that is
+    /// neither typed, declared nor standard comes back untyped (type Unknown);
+    /// a malformed declaration throws.
     ParamDecl resolve(std::string const& token, SourceLocation const& where) const;
 
 private:
@@ -63,6 +70,9 @@ class ParamList {
 public:
     void add(Param param);
     bool has(std::string const& name) const { return find(name) != nullptr; }
+    /// The parameter, marked used; nullptr when absent. Throws a located
+    /// RibError when it was written without a type and is not standard:
+    /// whoever asks for a value needs its type.
     Param const* find(std::string const& name) const;
     std::vector<Param> const& all() const { return m_params; }
     bool empty() const { return m_params.empty(); }
@@ -78,7 +88,8 @@ public:
     std::vector<float> const* getFloats(std::string const& name, ParamType type) const;
     std::vector<int> const* getInts(std::string const& name) const;
 
-    /// Warns once for each parameter that no one read (typos, unsupported options).
+    /// Warns once for each parameter that no one read (typos, unsupported
+    /// options), and for each untyped one that is not a standard name.
     void warnUnused(Diagnostics& diagnostics, std::string const& owner) const;
 
 private:

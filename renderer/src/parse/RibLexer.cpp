@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 
 namespace bxdflab {
 
@@ -24,7 +25,20 @@ std::string RibToken::describe() const {
     switch (kind) {
         case Kind::Request: return "request " + text;
         case Kind::Number: return "number " + text;
-        case Kind::String: return "string \"" + text + "\"";
+        case Kind::String: {
+            // Never raw bytes to a terminal: control and non-ASCII bytes as \xNN, long strings cut.
+            std::string shown;
+            for (unsigned char c : text.substr(0, 60)) {
+                if (c >= 32 && c < 127) {
+                    shown += static_cast<char>(c);
+                } else {
+                    char hex[8];
+                    std::snprintf(hex, sizeof hex, "\\x%02x", c);
+                    shown += hex;
+                }
+            }
+            return "string \"" + shown + (text.size() > 60 ? "...\"" : "\"");
+        }
         default: return kindName(kind);
     }
 }
@@ -71,13 +85,137 @@ RibToken RibLexer::next() {
     return scan();
 }
 
+uint32_t RibLexer::takeUnsigned(int count, SourceLocation const& where) {
+    if (m_pos + static_cast<size_t>(count) > m_text.size()) throw RibError(where, "binary RIB token cut short by the end of the file");
+    uint32_t value = 0;
+    for (int i = 0; i < count; ++i) {
+        value = (value << 8) | static_cast<unsigned char>(current());
+        advance();
+    }
+    return value;
+}
+
+std::string RibLexer::takeBytes(size_t count, SourceLocation const& where) {
+    if (count > m_text.size() - m_pos) throw RibError(where, "binary RIB string cut short by the end of the file");
+    std::string out = m_text.substr(m_pos, count);
+    for (size_t i = 0; i < count; ++i) advance();
+    return out;
+}
+
+bool RibLexer::scanBinary(unsigned char code, RibToken& token) {
+    SourceLocation where = token.location;
+    auto number = [&](double value) {
+        token.kind = RibToken::Kind::Number;
+        token.number = value;
+        token.text = std::to_string(value);
+        return true;
+    };
+    auto string = [&](std::string value) {
+        token.kind = RibToken::Kind::String;
+        token.text = std::move(value);
+        return true;
+    };
+    auto float32 = [&] {
+        uint32_t bits = takeUnsigned(4, where);
+        float f;
+        std::memcpy(&f, &bits, sizeof f);
+        return f;
+    };
+    if (code <= 0203) {  // integer of 1-4 bytes, most significant first
+        int bytes = code - 0200 + 1;
+        uint32_t raw = takeUnsigned(bytes, where);
+        return number(bytes == 4 ? static_cast<double>(static_cast<int32_t>(raw)) : static_cast<double>(raw));
+    }
+    if (code <= 0217) {  // fixed point: w+1 bytes, the radix point d bytes from the right
+        int bytes = ((code - 0200) & 3) + 1, radix = ((code - 0200) >> 2) & 3;
+        uint32_t whole = takeUnsigned(std::max(0, bytes - radix), where);
+        uint32_t fraction = takeUnsigned(std::min(radix, bytes), where);
+        return number(whole + static_cast<double>(fraction) / static_cast<double>(1u << (8 * radix)));
+    }
+    if (code <= 0237) return string(takeBytes(code - 0220u, where));  // a string shorter than 16 bytes
+    if (code <= 0243) return string(takeBytes(takeUnsigned(code - 0240 + 1, where), where));
+    if (code == 0244) return number(float32());
+    if (code == 0245) {
+        uint64_t bits = (static_cast<uint64_t>(takeUnsigned(4, where)) << 32) | takeUnsigned(4, where);
+        double d;
+        std::memcpy(&d, &bits, sizeof d);
+        if (!(std::fabs(d) <= FLT_MAX)) throw RibError(where, "binary number too large for a 32-bit float");
+        return number(d);
+    }
+    if (code == 0246) {  // an encoded request, defined before
+        int id = static_cast<int>(takeUnsigned(1, where));
+        auto found = m_encodedRequests.find(id);
+        if (found == m_encodedRequests.end())
+            throw RibError(where, "binary RIB uses request code " + std::to_string(id) + " before defining it");
+        token.kind = RibToken::Kind::Request;
+        token.text = found->second;
+        return true;
+    }
+    if (code >= 0310 && code <= 0313) {  // an array of 32-bit floats
+        uint32_t count = takeUnsigned(code - 0310 + 1, where);
+        if (count > (m_text.size() - m_pos) / 4) throw RibError(where, "binary float array longer than the file");
+        m_pendingFloats.clear();
+        for (uint32_t i = 0; i < count; ++i) m_pendingFloats.push_back(float32());
+        m_pendingIndex = 0;
+        m_inBinaryArray = true;
+        token.kind = RibToken::Kind::ArrayBegin;
+        token.text = "[";
+        return true;
+    }
+    if (code == 0314) {  // define a request code: the code, then the request's name as a string
+        int id = static_cast<int>(takeUnsigned(1, where));
+        RibToken name = scan();
+        if (name.kind != RibToken::Kind::String || name.text.empty())
+            throw RibError(where, "binary RIB request definition without a name");
+        m_encodedRequests[id] = name.text;
+        return false;
+    }
+    if (code == 0315 || code == 0316) {  // define a string code
+        uint32_t id = takeUnsigned(code - 0315 + 1, where);
+        RibToken text = scan();
+        if (text.kind != RibToken::Kind::String) throw RibError(where, "binary RIB string definition without a string");
+        m_encodedStrings[id] = text.text;
+        return false;
+    }
+    if (code == 0317 || code == 0320) {
+        uint32_t id = takeUnsigned(code - 0317 + 1, where);
+        auto found = m_encodedStrings.find(id);
+        if (found == m_encodedStrings.end())
+            throw RibError(where, "binary RIB uses string code " + std::to_string(id) + " before defining it");
+        return string(found->second);
+    }
+    char shown[16];
+    std::snprintf(shown, sizeof shown, "0x%02x", code);
+    throw RibError(where, std::string("unexpected byte ") + shown + " (a code the binary RIB encoding reserves)");
+}
+
 RibToken RibLexer::scan() {
-    skipSpaceAndComments();
     RibToken token;
-    token.location = here();
+    if (m_inBinaryArray) {
+        token.location = here();
+        if (m_pendingIndex < m_pendingFloats.size()) {
+            token.kind = RibToken::Kind::Number;
+            token.number = m_pendingFloats[m_pendingIndex++];
+            token.text = std::to_string(token.number);
+            if (!std::isfinite(token.number)) throw RibError(token.location, "binary float array holds a non-finite value");
+        } else {
+            m_inBinaryArray = false;
+            token.kind = RibToken::Kind::ArrayEnd;
+            token.text = "]";
+        }
+        return token;
+    }
+    for (;;) {
+        skipSpaceAndComments();
+        token.location = here();
+        unsigned char byte = static_cast<unsigned char>(current());
+        if (byte < 0200 || m_pos >= m_text.size()) break;
+        advance();
+        if (scanBinary(byte, token)) return token;
+    }
     char c = current();
     if (c == '\0') {
-        if (m_pos < m_text.size()) throw RibError(token.location, "unexpected NUL byte (binary RIB is not supported)");
+        if (m_pos < m_text.size()) throw RibError(token.location, "unexpected NUL byte (this is not a RIB file)");
         token.kind = RibToken::Kind::End;
         return token;
     }
@@ -87,29 +225,30 @@ RibToken RibLexer::scan() {
         advance();
         return token;
     }
-    if (c == '"') {
+    if (c == '"' || c == '\'') {
+        // Double quotes are RIB's; some hand-written files use single quotes.
+        char quote = c;
         token.kind = RibToken::Kind::String;
         advance();
         for (;;) {
             char s = current();
             if (s == '\0' && m_pos >= m_text.size())
-                throw RibError(token.location, "unterminated string (missing closing \")");
-            if (s == '\n') throw RibError(token.location, "unterminated string (a string may not span lines)");
+                throw RibError(token.location, std::string("unterminated string (missing closing ") + quote + ")");
             advance();
-            if (s == '"') break;
+            if (s == quote) break;
             if (s == '\\') {
                 char e = current();
                 advance();
                 switch (e) {
                     case 'n': token.text += '\n'; break;
                     case 't': token.text += '\t'; break;
-                    case '\\': token.text += '\\'; break;
-                    case '"': token.text += '"'; break;
+                    case 'r': token.text += '\r'; break;
+                    case '\n': break;  // an escaped line break continues the string
                     default: token.text += e; break;
                 }
                 continue;
             }
-            token.text += s;
+            token.text += s;  // a string may span lines
         }
         return token;
     }
@@ -143,8 +282,7 @@ RibToken RibLexer::scan() {
         std::snprintf(shown, sizeof shown, "character '%c'", c);
     else
         std::snprintf(shown, sizeof shown, "byte 0x%02x", byte);
-    throw RibError(token.location, std::string("unexpected ") + shown +
-                                       (std::isprint(byte) ? "" : " (binary RIB is not supported)"));
+    throw RibError(token.location, std::string("unexpected ") + shown);
 }
 
 }  // namespace bxdflab

@@ -1,7 +1,13 @@
-// Splits RIB text into tokens: request names, numbers, strings and brackets.
+// Splits RIB into tokens: request names, numbers, strings and brackets. Both
+// of RIB's encodings: ASCII text, and the binary encoding of the RenderMan
+// Interface Specification (appendix C.2), which exporters mix freely into the
+// same file -- numbers, strings and float arrays as tagged bytes, requests and
+// strings defined once and then referred to by a code.
 #pragma once
 
+#include <map>
 #include <string>
+#include <vector>
 
 #include "core/Error.h"
 
@@ -24,15 +30,23 @@ public:
     RibLexer(std::string text, std::string fileName);
 
     /// The next token (Kind::End at the end of the text). Throws RibError on
-    /// characters that cannot start a token and on unterminated strings.
+    /// bytes that cannot start a token, unterminated strings and malformed
+    /// binary tokens.
     RibToken next();
     RibToken const& peek();
 
 private:
     RibToken scan();
+    /// A token of the binary encoding, starting with byte `code` (>= 0200).
+    /// Returns false for a definition (of a request or string code), which
+    /// makes no token of its own.
+    bool scanBinary(unsigned char code, RibToken& token);
     void skipSpaceAndComments();
     char current() const { return m_pos < m_text.size() ? m_text[m_pos] : '\0'; }
     void advance();
+    /// The next `count` bytes as an unsigned big-endian number (count <= 4).
+    uint32_t takeUnsigned(int count, SourceLocation const& where);
+    std::string takeBytes(size_t count, SourceLocation const& where);
     SourceLocation here() const { return {m_file, m_line, m_column}; }
 
     std::string m_text;
@@ -42,6 +56,11 @@ private:
     int m_column = 1;
     bool m_hasPeeked = false;
     RibToken m_peeked;
+    std::map<int, std::string> m_encodedRequests;  ///< binary request codes defined so far
+    std::map<uint32_t, std::string> m_encodedStrings;
+    std::vector<float> m_pendingFloats;  ///< the rest of a binary float array
+    size_t m_pendingIndex = 0;
+    bool m_inBinaryArray = false;
 };
 
 }  // namespace bxdflab

@@ -1,5 +1,8 @@
 #include "parse/RibParser.h"
 
+#include <sys/stat.h>
+#include <zlib.h>
+
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -72,16 +75,62 @@ void parseRib(std::string const& text, std::string const& fileName, RequestHandl
     }
 }
 
-void parseRibFile(std::string const& path, RequestHandler const& handler) {
-    // A folder opens like an empty file on Linux; say what it is instead of reading nothing.
-    std::error_code error;
-    if (std::filesystem::is_directory(path, error)) throw RenderError("\"" + path + "\" is a folder, not a RIB file");
+namespace {
+
+constexpr size_t kMaxRibBytes = size_t(1) << 31;  // 2 GiB, compressed or not
+
+/// The text of a gzip-compressed RIB file (RenderMan reads .rib.gz directly).
+std::string gunzip(std::string const& compressed, std::string const& path) {
+    z_stream stream{};
+    if (inflateInit2(&stream, 16 + MAX_WBITS) != Z_OK) throw RenderError("cannot start decompressing \"" + path + "\"");
+    stream.next_in = reinterpret_cast<Bytef*>(const_cast<char*>(compressed.data()));
+    stream.avail_in = static_cast<uInt>(compressed.size());
+    std::string out;
+    char buffer[1 << 16];
+    int status = Z_OK;
+    while (status != Z_STREAM_END) {
+        stream.next_out = reinterpret_cast<Bytef*>(buffer);
+        stream.avail_out = sizeof buffer;
+        status = inflate(&stream, Z_NO_FLUSH);
+        if (status != Z_OK && status != Z_STREAM_END) {
+            inflateEnd(&stream);
+            throw RenderError("\"" + path + "\" is not valid gzip data (" + (stream.msg ? stream.msg : "corrupt") + ")");
+        }
+        out.append(buffer, sizeof buffer - stream.avail_out);
+        if (out.size() > kMaxRibBytes) {
+            inflateEnd(&stream);
+            throw RenderError("\"" + path + "\" decompresses to more than 2 GiB");
+        }
+        if (status == Z_OK && stream.avail_in == 0 && stream.avail_out != 0) {
+            inflateEnd(&stream);
+            throw RenderError("\"" + path + "\" ends in the middle of its gzip data");
+        }
+    }
+    inflateEnd(&stream);
+    return out;
+}
+
+}  // namespace
+
+std::string readRibFile(std::string const& path) {
+    // A folder, a FIFO or a device would make the read misbehave (empty, block
+    // forever, never end): only regular files are RIB files.
+    struct stat st;
+    if (stat(path.c_str(), &st) != 0) throw RenderError("cannot open RIB file \"" + path + "\"");
+    if (S_ISDIR(st.st_mode)) throw RenderError("\"" + path + "\" is a folder, not a RIB file");
+    if (!S_ISREG(st.st_mode)) throw RenderError("\"" + path + "\" is not a regular file (a pipe or a device?)");
+    if (static_cast<unsigned long long>(st.st_size) > kMaxRibBytes) throw RenderError("\"" + path + "\" is larger than 2 GiB");
     std::ifstream in(path, std::ios::binary);
     if (!in) throw RenderError("cannot open RIB file \"" + path + "\"");
     std::ostringstream text;
     text << in.rdbuf();
     if (in.bad()) throw RenderError("cannot read RIB file \"" + path + "\"");
-    parseRib(text.str(), path, handler);
+    std::string bytes = text.str();
+    if (bytes.size() >= 2 && static_cast<unsigned char>(bytes[0]) == 0x1f && static_cast<unsigned char>(bytes[1]) == 0x8b)
+        return gunzip(bytes, path);
+    return bytes;
 }
+
+void parseRibFile(std::string const& path, RequestHandler const& handler) { parseRib(readRibFile(path), path, handler); }
 
 }  // namespace bxdflab

@@ -14,6 +14,10 @@ using RequestHandler = std::function<void(RibRequest const&)>;
 /// Parses all requests of `text` (named `fileName` in messages).
 void parseRib(std::string const& text, std::string const& fileName, RequestHandler const& handler);
 
+/// The bytes of a RIB file (gzip-compressed files are decompressed); throws
+/// RenderError for what cannot be read, or is not a regular file.
+std::string readRibFile(std::string const& path);
+
 /// Reads a file and parses it; throws RenderError if it cannot be read.
 void parseRibFile(std::string const& path, RequestHandler const& handler);
 

@@ -108,6 +108,15 @@ ParamList RequestReader::params() {
         param.decl = m_declarations.resolve(nameValue.strings[0], nameValue.where);
         param.location = nameValue.where;
         bool isString = value.kind == RibValue::Kind::String || value.kind == RibValue::Kind::StringArray;
+        if (param.decl.type == ParamType::Unknown || param.decl.reference) {
+            // Kept as written: an untyped name (used only if someone asks), or a connection ("node:output").
+            param.strings = value.strings;
+            for (double d : value.numbers) param.floats.push_back(static_cast<float>(d));
+            if (param.decl.reference && !isString)
+                fail(value.where, "parameter \"" + param.name() + "\" is a reference: its value is \"node:output\"");
+            list.add(std::move(param));
+            continue;
+        }
         if ((param.decl.type == ParamType::String) != isString)
             fail(value.where, "parameter \"" + param.name() + "\" is declared " + paramTypeName(param.decl.type) +
                                   " but its value is " + value.describe());
