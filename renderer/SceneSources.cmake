@@ -11,10 +11,22 @@ set(RIX_SCENE_SOURCES
   parse/ParamList.cpp
   parse/StandardDeclarations.cpp
   scene/SceneBuilder.cpp
+  scene/requests/OptionRequests.cpp
+  scene/requests/StateRequests.cpp
+  scene/requests/ShadingRequests.cpp
+  scene/requests/ShapeRequests.cpp
+  scene/requests/InstanceRequests.cpp
+  scene/requests/FreeformRequests.cpp
   scene/shapes/Quadric.cpp
   scene/shapes/TriangleMesh.cpp
   scene/shapes/MeshBuilders.cpp
+  scene/shapes/SubdivisionSurface.cpp
+  scene/shapes/Curves.cpp
+  scene/shapes/NurbsSurface.cpp
+  scene/shapes/BlobbySurface.cpp
   scene/lights/AreaLights.cpp
   scene/lights/InfiniteLights.cpp
   scene/lights/LightFactory.cpp
+  scene/lights/PointLights.cpp
+  scene/lights/Blackbody.cpp
 )

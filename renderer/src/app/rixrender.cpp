@@ -14,6 +14,7 @@
 #include "core/Diagnostics.h"
 #include "film/RawImage.h"
 #include "render/Renderer.h"
+#include "parse/RibParser.h"
 #include "scene/SceneBuilder.h"
 
 namespace fs = std::filesystem;
@@ -29,6 +30,22 @@ std::string outputFor(DisplayDesc const& display) {
     std::string type = display.type;
     std::string extension = type == "tiff" ? ".tif" : type == "png" ? ".png" : ".exr";
     return name.string() + extension;
+}
+
+/// "out.exr" for frame 7 is "out.0007.exr": a file of several frames writes one image each.
+std::string numbered(std::string const& path, int frame) {
+    if (frame < 0 || path.empty()) return path;
+    fs::path p(path);
+    char number[16];
+    std::snprintf(number, sizeof number, ".%04d", frame);
+    return (p.parent_path() / (p.stem().string() + number + p.extension().string())).string();
+}
+
+/// How many worlds (frames to render) the top-level file holds; archives are not opened.
+int countWorlds(std::string const& path) {
+    int worlds = 0;
+    parseRibFile(path, [&worlds](RibRequest const& request) { worlds += request.name == "WorldBegin"; });
+    return worlds;
 }
 
 void checkWritable(std::string const& path) {
@@ -51,9 +68,12 @@ int main(int argc, char** argv) {
     std::string sceneFile, output, statsJson, variance;
     int rawFd = -1;
     RenderSettings settings;
+    LoadOptions load;
+    float resolutionScale = 1.0f;
     bool quiet = false;
     app.add_option("scene", sceneFile, "the RIB file to render")->required();
-    app.add_option("-o", output, "write the image here (overrides Display; format from the extension: .exr .png .tif)");
+    app.add_option("-o", output, "write the image here (overrides Display; format from the extension: .exr .png .tif); "
+                                 "a file of several frames writes NAME.0001.EXT, ... (the FrameBegin numbers)");
     app.add_option("--spp", settings.spp, "samples per pixel (overrides PixelSamples / Hider maxsamples)")
         ->check(CLI::Range(1, 1 << 20));
     app.add_option("--threads", settings.threads, "worker threads (default: all cores)")->check(CLI::Range(1, 1024));
@@ -61,6 +81,11 @@ int main(int argc, char** argv) {
     app.add_option("--plugin-path", settings.pluginPath, "colon-separated plugin folders, searched first");
     app.add_option("--stats-json", statsJson, "write timing, ray counts and simulated/skipped effects here");
     app.add_option("--variance", variance, "also write each pixel's variance of the mean (an EXR image)");
+    app.add_option("--frame", load.frame, "render only the frame with this FrameBegin number")->check(CLI::Range(0, 1 << 30));
+    app.add_option("--resolution-scale", resolutionScale, "scale the Format resolution (e.g. 0.25 for a quick look)")
+        ->check(CLI::Range(0.01f, 8.0f));
+    app.add_flag("--strict", load.strict, "a file the scene names that is missing (archive, texture, sky image) is an "
+                                          "error instead of a warning");
     app.add_flag("--quiet", quiet, "no progress bar");
     app.add_option("--raw-out-fd", rawFd, "write the pixels and their variances to this open descriptor instead of a file "
                                           "(for programs that read them directly)")
@@ -69,37 +94,60 @@ int main(int argc, char** argv) {
 
     Diagnostics diagnostics;
     try {
-        Scene scene = loadScene(sceneFile, diagnostics);
-        std::string imagePath = output.empty() && rawFd < 0 ? outputFor(scene.display) : output;
-        if (!imagePath.empty()) checkWritable(imagePath);
-        if (!variance.empty()) checkWritable(variance);
+        // Files named on the command line are checked before anything renders.
+        for (std::string const& path : {output, statsJson, variance})
+            if (!path.empty()) checkWritable(path);
+        bool const severalFrames = load.frame < 0 && countWorlds(sceneFile) > 1;
+        if (severalFrames && rawFd >= 0) throw RenderError(sceneFile + " holds several frames: choose one with --frame");
+        int rendered = 0;
+        auto renderFrame = [&](Scene& scene) {
+            if (resolutionScale != 1.0f) {
+                scene.xres = std::max(1, static_cast<int>(std::lround(scene.xres * resolutionScale)));
+                scene.yres = std::max(1, static_cast<int>(std::lround(scene.yres * resolutionScale)));
+            }
+            int const number = severalFrames ? (scene.frame >= 0 ? scene.frame : rendered + 1) : -1;
+            std::string imagePath = output.empty() && rawFd < 0 ? outputFor(scene.display) : numbered(output, number);
+            if (!imagePath.empty()) checkWritable(imagePath);
+            if (number >= 0) std::fprintf(stderr, "rixrender: frame %d\n", number);
 
-        settings.progress = !quiet && isatty(STDERR_FILENO);
-        Renderer renderer(scene, settings, diagnostics);
-        Film film = renderer.render();
-        if (rawFd >= 0 && !writeRawImage(rawFd, film)) throw RenderError("cannot write the raw image to descriptor " + std::to_string(rawFd));
-        if (!imagePath.empty()) writeImage(imagePath, film.rgba(), film.width(), film.height(), 4);
-        if (!variance.empty()) writeImage(variance, film.varianceOfMean(), film.width(), film.height(), 3);
+            settings.progress = !quiet && isatty(STDERR_FILENO);
+            Renderer renderer(scene, settings, diagnostics);
+            Film film = renderer.render();
+            if (rawFd >= 0 && !writeRawImage(rawFd, film))
+                throw RenderError("cannot write the raw image to descriptor " + std::to_string(rawFd));
+            if (!imagePath.empty()) writeImage(imagePath, film.rgba(), film.width(), film.height(), 4);
+            if (!variance.empty())
+                writeImage(numbered(variance, number), film.varianceOfMean(), film.width(), film.height(), 3);
 
-        RenderStats const& stats = renderer.stats();
-        if (!statsJson.empty()) {
-            std::ofstream out(statsJson);
-            out << stats.toJson(diagnostics).dump(2) << '\n';
-            if (!out) throw RenderError("cannot write stats to \"" + statsJson + "\"");
-        }
-        std::fprintf(stderr,
-                     "rixrender: %dx%d, %d spp, %d threads: %.2f s (setup %.2f s, render %.2f s); rays: %llu camera, "
-                     "%llu shadow, %llu indirect\n",
-                     stats.width, stats.height, stats.spp, stats.threads, stats.setupSeconds + stats.renderSeconds,
-                     stats.setupSeconds, stats.renderSeconds, static_cast<unsigned long long>(stats.cameraRays),
-                     static_cast<unsigned long long>(stats.shadowRays), static_cast<unsigned long long>(stats.indirectRays));
-        if (imagePath.empty())
-            std::fprintf(stderr, "rixrender: wrote the raw image to descriptor %d\n", rawFd);
-        else if (scene.display.type == "it" || scene.display.type == "framebuffer")
-            std::fprintf(stderr, "rixrender: Display \"%s\" is a framebuffer; the image was written to %s\n",
-                         scene.display.name.c_str(), imagePath.c_str());
-        else
-            std::fprintf(stderr, "rixrender: wrote %s\n", imagePath.c_str());
+            RenderStats const& stats = renderer.stats();
+            if (!statsJson.empty()) {
+                std::ofstream out(numbered(statsJson, number));
+                out << stats.toJson(diagnostics).dump(2) << '\n';
+                if (!out) throw RenderError("cannot write stats to \"" + numbered(statsJson, number) + "\"");
+            }
+            std::fprintf(stderr,
+                         "rixrender: %dx%d, %d spp, %d threads: %.2f s (setup %.2f s, render %.2f s); rays: %llu camera, "
+                         "%llu shadow, %llu indirect\n",
+                         stats.width, stats.height, stats.spp, stats.threads, stats.setupSeconds + stats.renderSeconds,
+                         stats.setupSeconds, stats.renderSeconds, static_cast<unsigned long long>(stats.cameraRays),
+                         static_cast<unsigned long long>(stats.shadowRays),
+                         static_cast<unsigned long long>(stats.indirectRays));
+            if (imagePath.empty())
+                std::fprintf(stderr, "rixrender: wrote the raw image to descriptor %d\n", rawFd);
+            else if (scene.display.type == "it" || scene.display.type == "framebuffer")
+                std::fprintf(stderr, "rixrender: Display \"%s\" is a framebuffer; the image was written to %s\n",
+                             scene.display.name.c_str(), imagePath.c_str());
+            else
+                std::fprintf(stderr, "rixrender: wrote %s\n", imagePath.c_str());
+            ++rendered;
+        };
+        Scene scene;
+        SceneBuilder builder(scene, diagnostics, load);
+        builder.setFrameSink(renderFrame);
+        builder.readFile(sceneFile);
+        if (load.frame >= 0 && rendered == 0)
+            throw RenderError(sceneFile + ": there is no frame " + std::to_string(load.frame) + " (FrameBegin " +
+                              std::to_string(load.frame) + ")");
     } catch (std::exception const& error) {
         std::cerr << "rixrender: error: " << error.what() << '\n';
         return 1;

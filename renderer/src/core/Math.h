@@ -14,6 +14,7 @@ using Vec2 = glm::vec2;
 using Vec3 = glm::vec3;
 using Mat3 = glm::mat3;
 using Mat4 = glm::mat4;
+using Vec4 = glm::vec4;
 using DVec3 = glm::dvec3;
 
 constexpr float kPi = 3.14159265358979323846f;

@@ -143,6 +143,22 @@ size_t Param::count() const {
     return floats.size() / static_cast<size_t>(componentsOf(decl.type));
 }
 
+Param colorParam(std::string const& name, Vec3 const& value) {
+    Param p;
+    p.decl.name = name;
+    p.decl.type = ParamType::Color;
+    p.floats = {value.x, value.y, value.z};
+    return p;
+}
+
+Param stringParam(std::string const& name, std::string const& value) {
+    Param p;
+    p.decl.name = name;
+    p.decl.type = ParamType::String;
+    p.strings = {value};
+    return p;
+}
+
 void ParamList::add(Param param) {
     for (auto& existing : m_params)
         if (existing.name() == param.name()) {

@@ -66,6 +66,11 @@ struct Param {
     size_t count() const;
 };
 
+/// A "color <name>" parameter made by the renderer itself (no source location).
+Param colorParam(std::string const& name, Vec3 const& value);
+/// A "string <name>" parameter made by the renderer itself.
+Param stringParam(std::string const& name, std::string const& value);
+
 class ParamList {
 public:
     void add(Param param);

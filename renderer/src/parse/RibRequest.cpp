@@ -96,6 +96,19 @@ std::string RequestReader::string(const char* what) {
     fail(v.where, std::string("expected ") + what + " (a string), found " + v.describe());
 }
 
+bool RequestReader::nextIsArray() const {
+    if (atEnd()) return false;
+    RibValue::Kind kind = m_request.args[m_next].kind;
+    return kind == RibValue::Kind::StringArray || kind == RibValue::Kind::NumberArray;
+}
+
+std::vector<std::string> RequestReader::stringArray(const char* what) {
+    RibValue const& v = take(what, "an array of strings");
+    if (v.kind == RibValue::Kind::String || v.kind == RibValue::Kind::StringArray) return v.strings;
+    if (v.kind == RibValue::Kind::NumberArray && v.numbers.empty()) return {};
+    fail(v.where, std::string("expected ") + what + " (an array of strings), found " + v.describe());
+}
+
 ParamList RequestReader::params() {
     ParamList list;
     while (!atEnd()) {
@@ -124,10 +137,18 @@ ParamList RequestReader::params() {
             param.strings = value.strings;
         } else {
             size_t group = static_cast<size_t>(componentsOf(param.decl.type) * param.decl.arraySize);
-            if (value.numbers.empty() || value.numbers.size() % group != 0)
+            std::vector<double> numbers = value.numbers;
+            if (param.decl.type == ParamType::Color && param.decl.arraySize == 1 && numbers.size() == 1) {
+                // Older files write a grey as one number ("color Cs" .5); RenderMan reads it as that grey.
+                numbers.assign(3, numbers[0]);
+                if (m_diagnostics)
+                    m_diagnostics->warn(value.where, "parameter \"" + param.name() + "\" is a color given one number; "
+                                                     "taken as the grey [" + std::to_string(value.numbers[0]) + " x3]");
+            }
+            if (numbers.size() % group != 0)  // [] is allowed: an empty mesh's "P" [] is
                 fail(value.where, "parameter \"" + param.name() + "\" (" + paramTypeName(param.decl.type) + ") needs a multiple of " +
-                                      std::to_string(group) + " numbers, found " + std::to_string(value.numbers.size()));
-            for (double d : value.numbers) {
+                                      std::to_string(group) + " numbers, found " + std::to_string(numbers.size()));
+            for (double d : numbers) {
                 if (!std::isfinite(d)) fail(value.where, "parameter \"" + param.name() + "\" has a non-finite value");
                 if (param.decl.type == ParamType::Int) {
                     if (!isWholeInt(d))

@@ -30,8 +30,9 @@ struct RibRequest {
 
 class RequestReader {
 public:
-    RequestReader(RibRequest const& request, Declarations const& declarations)
-        : m_request(request), m_declarations(declarations) {}
+    /// `diagnostics`, when given, hears about values read leniently (a colour given one number).
+    RequestReader(RibRequest const& request, Declarations const& declarations, Diagnostics* diagnostics = nullptr)
+        : m_request(request), m_declarations(declarations), m_diagnostics(diagnostics) {}
 
     float number(const char* what);
     /// A whole number that fits an int (a count, a step).
@@ -42,12 +43,18 @@ public:
     std::vector<float> numberArray(const char* what);
     std::vector<int> intArray(const char* what);
     std::string string(const char* what);
+    /// One array of strings (a lone string, or [] for none).
+    std::vector<std::string> stringArray(const char* what);
     bool atEnd() const { return m_next >= m_request.args.size(); }
     bool nextIsString() const;
+    /// Whether the next argument is written as an array ([...]), not a lone value.
+    bool nextIsArray() const;
     /// The remaining arguments as "type name" value pairs.
     ParamList params();
     /// Throws if arguments are left over.
     void finish();
+    /// Leaves the remaining arguments unread (a request whose content is not used).
+    void skipRemaining() { m_next = m_request.args.size(); }
     [[noreturn]] void fail(SourceLocation const& where, std::string const& message) const;
     SourceLocation const& where() const { return m_request.where; }
 
@@ -55,6 +62,7 @@ private:
     RibValue const& take(const char* what, const char* expected);
     RibRequest const& m_request;
     Declarations const& m_declarations;
+    Diagnostics* m_diagnostics;
     size_t m_next = 0;
 };
 

@@ -16,7 +16,7 @@ namespace bxdflab {
 
 struct CameraDesc {
     Mat4 worldToCamera{1.0f};  ///< the transform in effect at WorldBegin
-    std::string projection = "perspective";
+    std::string projection = "orthographic";  ///< the RenderMan Interface's default
     float fov = 90.0f;  ///< degrees, across the shorter image axis
     bool hasScreenWindow = false;
     float screenWindow[4] = {-1.0f, 1.0f, -1.0f, 1.0f};  ///< left right bottom top
@@ -45,7 +45,20 @@ struct MaterialDesc {
     SourceLocation where;
 };
 
-struct Scene {
+/// An area light given by geometry: AreaLightSource (RenderMan 20 and the
+/// classic arealight shaders) or Light "PxrMeshLight" (RenderMan 21+); the
+/// shapes in its attribute block emit its light.
+struct AreaLightDesc {
+    std::string shader;  ///< e.g. "PxrStdAreaLight", "PxrMeshLight", "arealight"
+    std::string handle;
+    ParamList params;
+    SourceLocation where;
+    Vec3 radiance{1.0f};  ///< what the shapes emit
+    bool environment = false;  ///< PxrStdEnvMapLight: the light at infinity
+};
+
+/// What a frame's options say: image, camera, display, integrator.
+struct SceneOptions {
     std::string file;  ///< the top-level RIB file
     int xres = 640, yres = 480;
     float pixelAspect = 1.0f;
@@ -54,6 +67,10 @@ struct Scene {
     DisplayDesc display;
     IntegratorDesc integrator;
     std::vector<std::string> pluginSearchPath;  ///< from Option "searchpath" "rixplugin"
+    int frame = -1;  ///< the FrameBegin number (-1: the file has no frames)
+};
+
+struct Scene : SceneOptions {
     std::vector<MaterialDesc> materials;
     std::vector<std::unique_ptr<Shape>> shapes;
     std::vector<std::unique_ptr<Light>> lights;

@@ -1,7 +1,12 @@
 // Interprets RIB requests: keeps the graphics state (transform and attribute
-// stacks) and fills a Scene with the camera, materials, lights and shapes.
+// stacks, frames, named coordinate systems) and fills a Scene with the
+// camera, materials, lights and shapes. The requests are handled by family,
+// one file each under scene/requests/: options and frames, the graphics
+// state, shading (Bxdfs, patterns, classic shaders, lights), shapes, and
+// instancing (objects and archives).
 #pragma once
 
+#include <functional>
 #include <map>
 #include <memory>
 #include <set>
@@ -16,25 +21,54 @@
 
 namespace bxdflab {
 
+struct LoadOptions {
+    bool strict = false;  ///< a missing archive, texture or sky image is an error (else a warning, as in RenderMan)
+    int frame = -1;       ///< render only the frame with this FrameBegin number (-1: every frame)
+};
+
+/// Receives each frame as soon as its world is complete (at WorldEnd).
+using FrameSink = std::function<void(Scene& frame)>;
+
 class SceneBuilder {
 public:
-    SceneBuilder(Scene& scene, Diagnostics& diagnostics);
+    SceneBuilder(Scene& scene, Diagnostics& diagnostics, LoadOptions options = {});
 
+    /// Frames go to `sink` one by one, each scene emptied of its world after;
+    /// without a sink the first frame (or the one asked for) stays in the scene.
+    void setFrameSink(FrameSink sink) { m_sink = std::move(sink); }
     /// Reads a RIB file (and every archive it includes) into the scene.
     void readFile(std::string const& path);
     /// Reads RIB text; `fileName` is used in messages and to resolve relative paths.
+    /// A world left open at the end is complete (no WorldEnd needed); text
+    /// without a world (options alone) is fine too.
     void readText(std::string const& text, std::string const& fileName);
 
 private:
+    /// What AttributeBegin saves and AttributeEnd restores.
     struct Attributes {
         Mat4 transform{1.0f};
         int material = -1;
         Visibility visibility;
         std::string name;
         Vec3 color{1.0f};
+        Vec3 opacity{1.0f};
         bool reverseOrientation = false;
         bool colorSet = false;
+        bool volume = false;  ///< the Bxdf in effect is a volume's (PxrVolume): its shapes are not rendered
+        std::set<std::string> lightsOff;  ///< handles turned off with Illuminate for the shapes that follow
         SplineBasis uBasis = SplineBasis::bezier(), vBasis = SplineBasis::bezier();
+        std::map<std::string, Mat4> scopedSpaces;  ///< ScopedCoordinateSystem
+        /// A classic Surface shader in effect (when no Bxdf is): its name and parameters.
+        std::shared_ptr<MaterialDesc> surface;
+        /// An AreaLightSource (or PxrMeshLight) in effect: the shapes that follow emit its light.
+        std::shared_ptr<AreaLightDesc> areaLight;
+    };
+    /// A light defined before WorldBegin: placed in camera space, made at each WorldBegin.
+    struct CameraLight {
+        std::string request, type, handle;
+        ParamList params;
+        Mat4 toCamera;
+        SourceLocation where;
     };
     enum class Block { Attribute, Transform };
 
@@ -42,7 +76,7 @@ private:
     using Handler = void (SceneBuilder::*)(RequestReader&);
     static std::map<std::string, Handler> const& handlers();
 
-    // Options and camera (before WorldBegin).
+    // Options, camera and frames (scene/requests/OptionRequests.cpp).
     void display(RequestReader& in);
     void format(RequestReader& in);
     void projection(RequestReader& in);
@@ -52,10 +86,13 @@ private:
     void integrator(RequestReader& in);
     void option(RequestReader& in);
     void declare(RequestReader& in);
+    void frameBegin(RequestReader& in);
+    void frameEnd(RequestReader& in);
     void worldBegin(RequestReader& in);
     void worldEnd(RequestReader& in);
+    void clipping(RequestReader& in);
     void ignore(RequestReader& in);
-    // Graphics state.
+    // The graphics state (scene/requests/StateRequests.cpp).
     void attributeBegin(RequestReader& in);
     void attributeEnd(RequestReader& in);
     void transformBegin(RequestReader& in);
@@ -68,34 +105,69 @@ private:
     void scale(RequestReader& in);
     /// Makes `transform` current, or fails at the request if it overflowed.
     void setTransform(RequestReader& in, Mat4 const& transform);
+    void coordinateSystem(RequestReader& in);
+    void scopedCoordinateSystem(RequestReader& in);
+    void coordSysTransform(RequestReader& in);
+    void motionBegin(RequestReader& in);
+    void motionEnd(RequestReader& in);
     void attribute(RequestReader& in);
     void color(RequestReader& in);
+    void opacity(RequestReader& in);
     void reverseOrientation(RequestReader& in);
     void orientation(RequestReader& in);
-    // Materials and lights.
+    void sides(RequestReader& in);
+    void basis(RequestReader& in);
+    // Shading: Bxdfs, classic shaders, lights (scene/requests/ShadingRequests.cpp).
     void bxdf(RequestReader& in);
+    void surface(RequestReader& in);
     void light(RequestReader& in);
-    // Geometry.
+    void lightSource(RequestReader& in);
+    void areaLightSource(RequestReader& in);
+    /// Makes the shapes in the current attribute block emit the light `shader` describes.
+    void startAreaLight(std::string const& shader, std::string const& handle, ParamList const& params,
+                        SourceLocation const& where);
+    void illuminate(RequestReader& in);
+    int defaultMaterial();
+    /// The material of the classic Surface shader in effect, with the current Color.
+    int classicMaterial();
+    /// With an area light in effect, a shape that has a light of its own kind (a
+    /// full sphere, disk or rectangle) becomes that light: true when it did.
+    bool shapeAsLight(char const* lightType, Mat4 const& lightToWorld);
+    /// The emissive material of the area light in effect (for shapes with no light of their own kind).
+    int emissiveMaterial(SourceLocation const& where);
+    /// Makes a light of either request (Light or LightSource) at lightToWorld.
+    void makeLightFrom(std::string const& request, std::string const& type, std::string const& handle,
+                       ParamList const& params, Mat4 const& lightToWorld, SourceLocation const& where);
+    // Shapes (scene/requests/ShapeRequests.cpp).
     void sphere(RequestReader& in);
     void cylinder(RequestReader& in);
     void disk(RequestReader& in);
-    void polygon(RequestReader& in);
-    void pointsPolygons(RequestReader& in);
-    void pointsGeneralPolygons(RequestReader& in);
-    void patch(RequestReader& in);
-    void geometry(RequestReader& in);
-    void readArchive(RequestReader& in);
     void cone(RequestReader& in);
     void paraboloid(RequestReader& in);
     void hyperboloid(RequestReader& in);
     void torus(RequestReader& in);
-    void basis(RequestReader& in);
+    void polygon(RequestReader& in);
+    void generalPolygon(RequestReader& in);
+    void pointsPolygons(RequestReader& in);
+    void pointsGeneralPolygons(RequestReader& in);
+    void patch(RequestReader& in);
     void patchMesh(RequestReader& in);
+    void geometry(RequestReader& in);
+    void addShape(std::unique_ptr<Shape> shape, SourceLocation const& where);
+    // Free-form shapes (scene/requests/FreeformRequests.cpp).
+    void subdivisionMesh(RequestReader& in);
+    void hierarchicalSubdivisionMesh(RequestReader& in);
+    void readSubdivisionMesh(RequestReader& in, bool hierarchical);
+    void nuPatch(RequestReader& in);
+    void trimCurve(RequestReader& in);
+    void blobby(RequestReader& in);
+    void points(RequestReader& in);
+    void curves(RequestReader& in);
+    // Instancing: objects and archives (scene/requests/InstanceRequests.cpp).
+    void readArchive(RequestReader& in);
     void objectBegin(RequestReader& in);
     void objectInstance(RequestReader& in);
     void archiveBegin(RequestReader& in);
-    void clipping(RequestReader& in);
-    void sides(RequestReader& in);
     using Recording = std::shared_ptr<std::vector<RibRequest>>;
     /// Starts recording requests into a new list (replacing any of that name) until `end`.
     void startRecording(Recording& slot, std::string const& end);
@@ -104,21 +176,31 @@ private:
     /// makes a new list instead of changing this one.
     void replay(std::string const& what, Recording requests, SourceLocation const& where);
 
-    void addShape(std::unique_ptr<Shape> shape, SourceLocation const& where);
-    int defaultMaterial();
+    /// A file the scene names that is not there: an error with --strict, else a warning.
+    void missingFile(SourceLocation const& where, std::string const& message);
     std::string currentDirectory() const;
     /// Warns once per request (or parameter) kind, counting the rest.
     void warnOnce(std::string const& kind, SourceLocation const& where, std::string const& message);
     Attributes& state() { return m_attributes.back(); }
+    /// Whether the world being read is kept (a frame not asked for is read, not built).
+    bool building() const { return !m_skipWorld; }
+    /// The world is complete: hand the frame over (or keep it), clear it for the next.
+    void finishFrame();
+    /// The end of the top-level file or text: close what is open, restore a kept frame's options.
+    void finishInput(std::string const& name);
 
     Scene& m_scene;
     Diagnostics& m_diagnostics;
+    LoadOptions m_options;
+    FrameSink m_sink;
     Declarations m_declarations;
     std::vector<Attributes> m_attributes{Attributes{}};
     std::vector<Block> m_blocks;
     std::vector<std::string> m_fileStack;
     std::vector<std::string> m_archiveSearchPath;
     std::map<std::string, int> m_defaultMaterials;
+    std::map<std::shared_ptr<AreaLightDesc>, int> m_emissiveMaterials;
+    std::map<std::string, Mat4> m_namedSpaces;  ///< CoordinateSystem
     std::set<std::string> m_warnedKinds;
     int m_repeatedWarnings = 0;
     /// Requests being recorded into an object or inline archive (null when not recording).
@@ -129,11 +211,32 @@ private:
     std::set<std::string> m_replaying;  ///< objects and archives being replayed: entering one again is a cycle
     long m_replayedRequests = 0;        ///< bounds what instancing may expand to
     bool m_inWorld = false;
-    bool m_sawWorld = false;
-    bool m_sppFromPixelSamples = false;
+    int m_framesDone = 0;       ///< worlds completed so far
+    bool m_skipWorld = false;   ///< this world's frame is not wanted
+    bool m_keptFrame = false;   ///< without a sink: the frame asked for is in the scene already
+    SceneOptions m_keptOptions; ///< ...and its options, which later frames' options must not change
+    int m_frameNumber = -1;     ///< of the FrameBegin in effect
+    /// Options and state saved by FrameBegin, restored by FrameEnd.
+    struct SavedFrame {
+        SceneOptions options;
+        std::vector<Attributes> attributes;
+    };
+    std::vector<SavedFrame> m_frames;
+    int m_motionSamples = 0;  ///< inside MotionBegin: how many requests the block holds per sample
+    int m_motionSeen = 0;
+    /// The standard light shaders' ambientlight: light the classic shaders add as Ka * ambient.
+    Vec3 m_ambient{0.0f};
+    std::vector<CameraLight> m_cameraLights;
+    std::map<std::string, size_t> m_lightHandles;  ///< handle -> index in the scene's lights
+    /// For each light handle named by Illuminate: how many shapes it is on and off for.
+    struct LightUse {
+        int shapesOn = 0, shapesOff = 0;
+    };
+    std::map<std::string, LightUse> m_lightUse;
 };
 
-/// Parses a RIB file into a new Scene (a convenience for tools and tests).
-Scene loadScene(std::string const& path, Diagnostics& diagnostics);
+/// Parses a RIB file into a new Scene (a convenience for tools and tests):
+/// its first frame, or the one LoadOptions::frame names.
+Scene loadScene(std::string const& path, Diagnostics& diagnostics, LoadOptions options = {});
 
 }  // namespace bxdflab

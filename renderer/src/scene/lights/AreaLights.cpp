@@ -8,7 +8,7 @@ PlanarLight::PlanarLight(Shape shape, Mat4 const& lightToWorld) : m_shape(shape)
     m_center = transformPoint(lightToWorld, Vec3(0.0f));
     m_axisX = transformVector(lightToWorld, Vec3(0.5f, 0.0f, 0.0f));
     m_axisY = transformVector(lightToWorld, Vec3(0.0f, 0.5f, 0.0f));
-    m_emitNormal = safeNormalize(transformNormal(glm::inverse(lightToWorld), Vec3(0.0f, 0.0f, -1.0f)));
+    m_emitNormal = safeNormalize(transformNormal(glm::inverse(lightToWorld), Vec3(0.0f, 0.0f, 1.0f)));
     m_planeNormal = safeNormalize(glm::cross(m_axisX, m_axisY));
     float parallelogram = glm::length(glm::cross(m_axisX, m_axisY));
     m_area = shape == Shape::Disk ? kPi * parallelogram : 4.0f * parallelogram;

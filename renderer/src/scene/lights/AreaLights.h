@@ -1,7 +1,8 @@
 // Lights with a shape: PxrDiskLight, PxrRectLight, PxrSphereLight.
 // Disk and rect lights lie in their local xy plane (unit diameter / unit
-// square) and emit toward their local -z only; sphere lights (unit diameter)
-// emit outward everywhere.
+// square) and emit toward their local +z only, as in RenderMan (a light under
+// a ceiling is placed with Rotate 90 1 0 0, which turns +z down); sphere
+// lights (unit diameter) emit outward everywhere.
 #pragma once
 
 #include "scene/lights/Light.h"

@@ -7,8 +7,14 @@
 
 namespace bxdflab {
 
+float distantLightIrradianceScale(float angleExtentDegrees, bool areaNormalize) {
+    float extent = areaNormalize || !(angleExtentDegrees > 0.0f) ? kSunAngleExtent : std::min(angleExtentDegrees, 180.0f);
+    float sinHalf = std::sin(0.5f * extent * kPi / 180.0f);
+    return kPi * sinHalf * sinHalf;
+}
+
 DistantLight::DistantLight(Mat4 const& lightToWorld, float angleExtentDegrees) {
-    m_towardLight = safeNormalize(transformVector(lightToWorld, Vec3(0.0f, 0.0f, 1.0f)));
+    m_towardLight = safeNormalize(transformVector(lightToWorld, Vec3(0.0f, 0.0f, -1.0f)));
     orthonormalBasis(m_towardLight, m_b1, m_b2);
     float halfAngle = 0.5f * std::clamp(angleExtentDegrees, 0.0f, 180.0f) * kPi / 180.0f;
     m_cosHalfAngle = halfAngle > 0.0f ? std::cos(halfAngle) : 1.0f;

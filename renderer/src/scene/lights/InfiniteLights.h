@@ -8,10 +8,24 @@
 
 namespace bxdflab {
 
-/// Light arriving from one direction (its local +z; it travels along -z).
+/// The sun's apparent diameter in degrees: PxrDistantLight's default angleExtent.
+constexpr float kSunAngleExtent = 0.53f;
+
+/// The irradiance a PxrDistantLight of radiance 1 gives a surface facing it:
+/// the projected solid angle pi sin^2(angleExtent / 2) of its disk. As in
+/// RenderMan, a distant light's intensity is the radiance of its disk, so its
+/// default of 50000 over the sun's 0.53 degrees gives an irradiance of 3.4.
+/// With areaNormalize, or an angleExtent of 0 (a delta light), the disk is
+/// taken as the sun's whatever its size: the irradiance no longer depends on it.
+float distantLightIrradianceScale(float angleExtentDegrees, bool areaNormalize);
+
+/// Light arriving from one direction: it travels along its local +z, as
+/// RenderMan's PxrDistantLight and the classic distantlight shader's default
+/// (from 0 0 0 to 0 0 1), so it comes from local -z.
 /// With angleExtent > 0 (degrees, the apparent diameter) it is a small cone of
 /// directions; with 0 it is a delta light. Either way, `color` is the
-/// irradiance on a surface facing the light.
+/// irradiance on a surface facing the light (the factory converts RenderMan's
+/// radiance with distantLightIrradianceScale).
 class DistantLight final : public Light {
 public:
     DistantLight(Mat4 const& lightToWorld, float angleExtentDegrees);

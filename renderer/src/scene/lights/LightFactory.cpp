@@ -4,12 +4,15 @@
 #include <filesystem>
 
 #include "scene/lights/AreaLights.h"
+#include "scene/lights/Blackbody.h"
 #include "scene/lights/InfiniteLights.h"
+#include "scene/lights/PointLights.h"
 
 namespace bxdflab {
 
 std::unique_ptr<Light> makeLight(std::string const& type, ParamList const& params, Mat4 const& lightToWorld,
-                                 std::string const& baseDir, SourceLocation const& where, Diagnostics& diagnostics) {
+                                 std::string const& baseDir, SourceLocation const& where, Diagnostics& diagnostics,
+                                 MissingFileReport const& missing) {
     std::unique_ptr<Light> light;
     if (type == "PxrDiskLight") {
         light = std::make_unique<PlanarLight>(PlanarLight::Shape::Disk, lightToWorld);
@@ -18,7 +21,7 @@ std::unique_ptr<Light> makeLight(std::string const& type, ParamList const& param
     } else if (type == "PxrSphereLight") {
         light = std::make_unique<SphereLight>(lightToWorld);
     } else if (type == "PxrDistantLight") {
-        float extent = params.getFloat("angleExtent", 0.53f);  // RenderMan's default: the sun's diameter
+        float extent = params.getFloat("angleExtent", kSunAngleExtent);
         if (extent < 0.0f || extent > 180.0f)
             throw RibError(where, "PxrDistantLight: angleExtent must be between 0 and 180 degrees");
         light = std::make_unique<DistantLight>(lightToWorld, extent);
@@ -27,8 +30,12 @@ std::unique_ptr<Light> makeLight(std::string const& type, ParamList const& param
         if (!map.empty() && std::filesystem::path(map).is_relative())
             map = (std::filesystem::path(baseDir) / map).string();
         std::error_code lookup;  // a name the file system rejects (too long, ...) does not exist either
-        if (!map.empty() && !std::filesystem::exists(map, lookup))
-            throw RibError(where, "PxrDomeLight: lightColorMap \"" + map + "\" does not exist");
+        if (!map.empty() && !std::filesystem::exists(map, lookup)) {
+            missing(where, "PxrDomeLight: lightColorMap \"" + map + "\" does not exist (tried " + map + ")");
+            map.clear();  // RenderMan lights the scene with the plain colour then
+        }
+        if (!map.empty() && !std::filesystem::is_regular_file(map, lookup))
+            throw RibError(where, "PxrDomeLight: lightColorMap \"" + map + "\" is not a regular file");
         std::unique_ptr<DomeLight> dome;
         try {
             dome = std::make_unique<DomeLight>(lightToWorld, map);
@@ -44,14 +51,75 @@ std::unique_ptr<Light> makeLight(std::string const& type, ParamList const& param
     } else {
         return nullptr;
     }
+    Vec3 radiance = risLightRadiance(type, params, where);
+    // areaNormalize: the light's power stays the same whatever its size (radiance / area).
+    bool const areaNormalize = params.getFloat("areaNormalize", 0.0f) != 0.0f;
+    if (auto const* planar = dynamic_cast<PlanarLight const*>(light.get()); planar && areaNormalize)
+        radiance /= std::max(planar->area(), 1e-12f);
+    if (auto const* sphere = dynamic_cast<SphereLight const*>(light.get()); sphere && areaNormalize)
+        radiance /= std::max(4.0f * kPi * sphere->radius() * sphere->radius(), 1e-12f);
+    if (type == "PxrDistantLight")
+        radiance *= distantLightIrradianceScale(params.getFloat("angleExtent", kSunAngleExtent), areaNormalize);
+    light->color = RtColorRGB(radiance.x, radiance.y, radiance.z);
+    return light;
+}
+
+Vec3 risLightRadiance(std::string const& type, ParamList const& params, SourceLocation const& where) {
     float intensity = params.getFloat("intensity", 1.0f);
     float exposure = params.getFloat("exposure", 0.0f);
     Vec3 color = params.getColor("lightColor", Vec3(1.0f));
     if (intensity < 0.0f) throw RibError(where, type + ": intensity must not be negative");
     if (color.x < 0.0f || color.y < 0.0f || color.z < 0.0f)
         throw RibError(where, type + ": lightColor must not be negative");
-    float scale = intensity * std::exp2(exposure);
-    light->color = RtColorRGB(scale * color.x, scale * color.y, scale * color.z);
+    // RenderMan's plausible colour temperature tints the light (at the same luminance).
+    if (params.getFloat("enableTemperature", 0.0f) != 0.0f) color *= blackbodyColor(params.getFloat("temperature", 6500.0f));
+    return intensity * std::exp2(exposure) * color;
+}
+
+std::unique_ptr<Light> makeClassicLight(std::string const& shader, ParamList const& params, Mat4 const& lightToWorld,
+                                        SourceLocation const& where, Vec3& ambient, bool& guessed) {
+    guessed = false;
+    float intensity = params.getFloat("intensity", 1.0f);
+    Vec3 lightColor = params.getColor("lightcolor", Vec3(1.0f));
+    if (intensity < 0.0f) throw RibError(where, "LightSource \"" + shader + "\": intensity must not be negative");
+    if (shader == "ambientlight") {
+        ambient += intensity * lightColor;
+        return nullptr;
+    }
+    Vec3 from = params.getVector("from", Vec3(0.0f)), to = params.getVector("to", Vec3(0.0f, 0.0f, 1.0f));
+    std::string kind = shader;
+    if (kind != "pointlight" && kind != "spotlight" && kind != "distantlight") {
+        guessed = true;
+        if (params.all().empty()) return nullptr;
+        bool hasFrom = false, hasTo = false, hasCone = false;
+        for (auto const& p : params.all()) {
+            hasFrom = hasFrom || p.name() == "from";
+            hasTo = hasTo || p.name() == "to";
+            hasCone = hasCone || p.name() == "coneangle";
+        }
+        kind = hasCone ? "spotlight" : hasFrom ? "pointlight" : hasTo ? "distantlight" : "";
+        if (kind.empty()) return nullptr;
+    }
+    Vec3 worldFrom = transformPoint(lightToWorld, from), worldTo = transformPoint(lightToWorld, to);
+    std::unique_ptr<Light> light;
+    if (kind == "pointlight") {
+        light = std::make_unique<PointLight>(worldFrom);
+    } else if (kind == "spotlight") {
+        float cone = params.getFloat("coneangle", glm::radians(30.0f));
+        float delta = params.getFloat("conedeltaangle", glm::radians(5.0f));
+        float beam = params.getFloat("beamdistribution", 2.0f);
+        light = std::make_unique<PointLight>(worldFrom, worldTo - worldFrom, cone, delta, beam);
+    } else {
+        Vec3 travel = safeNormalize(worldTo - worldFrom);
+        if (glm::length(travel) == 0.0f) throw RibError(where, "distantlight: \"from\" and \"to\" are the same point");
+        Vec3 x, y;
+        orthonormalBasis(travel, x, y);
+        Mat4 frame(Vec4(x, 0.0f), Vec4(y, 0.0f), Vec4(travel, 0.0f), Vec4(0.0f, 0.0f, 0.0f, 1.0f));
+        light = std::make_unique<DistantLight>(frame, 0.0f);
+    }
+    Vec3 c = kPi * intensity * lightColor;
+    light->color = RtColorRGB(c.x, c.y, c.z);
+    for (auto const& p : params.all()) p.used = true;  // shadow maps, samples and other shader options: not modelled
     return light;
 }
 

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <string>
 
@@ -8,10 +9,31 @@
 
 namespace bxdflab {
 
+/// Reports a file a light names that is not there (an error or a warning, as the caller decides).
+using MissingFileReport = std::function<void(SourceLocation const& where, std::string const& message)>;
+
 /// The light a `Light "<type>" ...` statement describes, or nullptr when the
-/// type is not one this renderer knows. `baseDir` resolves relative image paths;
-/// problems with the light's image that do not stop the render are warned about.
+/// type is not one this renderer knows. `baseDir` resolves relative image
+/// paths; a missing image goes to `missing` (the light then has its plain
+/// colour), other problems with it that do not stop the render are warned about.
 std::unique_ptr<Light> makeLight(std::string const& type, ParamList const& params, Mat4 const& lightToWorld,
-                                 std::string const& baseDir, SourceLocation const& where, Diagnostics& diagnostics);
+                                 std::string const& baseDir, SourceLocation const& where, Diagnostics& diagnostics,
+                                 MissingFileReport const& missing);
+
+/// What a RenderMan (RIS) light's parameters make of its radiance:
+/// intensity * 2^exposure * lightColor, tinted by a black body's colour when
+/// enableTemperature is on.
+Vec3 risLightRadiance(std::string const& type, ParamList const& params, SourceLocation const& where);
+
+/// The classic light shaders of a LightSource request: "pointlight",
+/// "spotlight" and "distantlight" become lights; "ambientlight" adds its
+/// colour to `ambient` (the classic surface shaders' Ka term) and makes no
+/// light. Another shader name is placed by its parameters when they say
+/// enough (a cone: a spot; "from": a point; "to": a distant light); else
+/// nullptr. `guessed` tells the caller that it was placed that way.
+/// Intensities are scaled by pi: the classic shaders' diffuse() has no 1/pi,
+/// the physically based Bxdfs do, so this keeps their images as bright.
+std::unique_ptr<Light> makeClassicLight(std::string const& shader, ParamList const& params, Mat4 const& lightToWorld,
+                                        SourceLocation const& where, Vec3& ambient, bool& guessed);
 
 }  // namespace bxdflab

@@ -34,6 +34,7 @@ struct HitRecord {
     unsigned primID = 0;
     float u = 0.0f;  ///< barycentric (triangles) or surface parameter (quadrics)
     float v = 0.0f;
+    Vec3 Ng{0.0f};   ///< Embree's geometric normal, not normalized (used by curves and points)
     bool hit() const { return geomID != RTC_INVALID_GEOMETRY_ID; }
 };
 

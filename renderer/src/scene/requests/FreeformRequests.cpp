@@ -1,0 +1,287 @@
+// Free-form shapes: subdivision meshes, NURBS patches, blobby implicit
+// surfaces, curves and points.
+#include <cmath>
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "scene/SceneBuilder.h"
+#include "scene/shapes/BlobbySurface.h"
+#include "scene/shapes/Curves.h"
+#include "scene/shapes/NurbsSurface.h"
+#include "scene/shapes/SubdivisionSurface.h"
+
+namespace bxdflab {
+namespace {
+
+bool mirrors(Mat4 const& m) { return glm::determinant(Mat3(m)) < 0.0f; }
+
+/// How much a transform scales lengths (on average): widths of curves and points follow it.
+float lengthScale(Mat4 const& m) { return std::cbrt(std::fabs(glm::determinant(Mat3(m)))); }
+
+std::vector<Vec3> worldPoints(ParamList const& params, Mat4 const& toWorld, RequestReader& in) {
+    std::vector<float> const* P = params.getFloats("P", ParamType::Point);
+    if (!P) in.fail(in.where(), "needs a \"P\" parameter with the vertex positions");
+    std::vector<Vec3> points;
+    points.reserve(P->size() / 3);
+    for (size_t i = 0; i + 2 < P->size(); i += 3) points.push_back(transformPoint(toWorld, Vec3((*P)[i], (*P)[i + 1], (*P)[i + 2])));
+    return points;
+}
+
+/// A 4x4 matrix written row by row, as the RI specification writes bases.
+using Rows = std::array<std::array<float, 4>, 4>;
+
+Rows rowsOf(SplineBasis const& basis) {
+    Rows r;
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j) r[static_cast<size_t>(i)][static_cast<size_t>(j)] = basis.matrix[i][j];
+    return r;
+}
+
+/// The matrix that turns a segment's control points in `basis` into Bezier
+/// control points: inverse(Bezier) * basis (both act on the control points).
+Rows toBezier(SplineBasis const& basis) {
+    Rows bezier = rowsOf(SplineBasis::bezier()), given = rowsOf(basis);
+    glm::mat4 b;
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j) b[j][i] = bezier[static_cast<size_t>(i)][static_cast<size_t>(j)];
+    glm::mat4 inverse = glm::inverse(b);
+    Rows out{};
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j) {
+            float sum = 0.0f;
+            for (int k = 0; k < 4; ++k) sum += inverse[k][i] * given[static_cast<size_t>(k)][static_cast<size_t>(j)];
+            out[static_cast<size_t>(i)][static_cast<size_t>(j)] = sum;
+        }
+    return out;
+}
+
+}  // namespace
+
+void SceneBuilder::subdivisionMesh(RequestReader& in) { readSubdivisionMesh(in, false); }
+void SceneBuilder::hierarchicalSubdivisionMesh(RequestReader& in) { readSubdivisionMesh(in, true); }
+
+void SceneBuilder::readSubdivisionMesh(RequestReader& in, bool hierarchical) {
+    char const* request = hierarchical ? "HierarchicalSubdivisionMesh" : "SubdivisionMesh";
+    std::string scheme = in.string("subdivision scheme");
+    std::vector<int> nverts = in.intArray("nvertices (vertex count per face)");
+    std::vector<int> verts = in.intArray("vertices (point indices)");
+    // The tags and their arguments are optional: they are arrays, parameter names are not.
+    std::vector<std::string> tags;
+    std::vector<int> nargs, intargs;
+    std::vector<float> floatargs;
+    if (in.nextIsArray()) {
+        tags = in.stringArray("tags");
+        nargs = in.intArray("nargs (counts per tag)");
+        intargs = in.intArray("intargs");
+        floatargs = in.numberArray("floatargs");
+        if (hierarchical) in.stringArray("stringargs");
+    }
+    ParamList params = in.params();
+    if (nverts.empty()) {
+        warnOnce("empty mesh", in.where(), std::string(request) + " with no faces; skipped");
+        return;
+    }
+    std::vector<Vec3> P = worldPoints(params, state().transform, in);
+    params.find("N");  // the limit surface has its own normals
+    params.find("Cs");
+    params.find("st");
+    params.warnUnused(m_diagnostics, request);
+    if (scheme == "bilinear") {
+        // Flat faces: the polygons themselves.
+        std::vector<int> loops(nverts.size(), 1);
+        MeshData mesh = buildPolygonMesh(loops, nverts, verts, params, state().transform, in.where(), m_diagnostics);
+        addShape(std::make_unique<TriangleMesh>(std::move(mesh), request, state().reverseOrientation), in.where());
+        return;
+    }
+    if (scheme != "catmull-clark")
+        warnOnce("subdivision " + scheme, in.where(),
+                 std::string(request) + " \"" + scheme + "\" is rendered with Catmull-Clark rules (the only scheme here)");
+
+    SubdivisionData data;
+    data.P = std::move(P);
+    size_t total = 0;
+    for (int n : nverts) {
+        if (n < 3) in.fail(in.where(), "every face needs at least 3 vertices, got " + std::to_string(n));
+        data.faceSizes.push_back(static_cast<unsigned>(n));
+        total += static_cast<size_t>(n);
+    }
+    if (verts.size() != total)
+        in.fail(in.where(), "the faces' vertex counts add up to " + std::to_string(total) + " but " +
+                                std::to_string(verts.size()) + " vertex indices are given");
+    for (int v : verts) {
+        if (v < 0 || static_cast<size_t>(v) >= data.P.size())
+            in.fail(in.where(), "vertex index " + std::to_string(v) + " is outside \"P\" (" + std::to_string(data.P.size()) +
+                                    " points)");
+        data.indices.push_back(static_cast<unsigned>(v));
+    }
+    // Tags: each has two counts in nargs (integers, floats) and takes them in turn.
+    if (nargs.size() < 2 * tags.size()) in.fail(in.where(), "nargs needs two counts per tag");
+    size_t ints = 0, floats = 0;
+    for (size_t t = 0; t < tags.size(); ++t) {
+        size_t ni = static_cast<size_t>(std::max(0, nargs[2 * t])), nf = static_cast<size_t>(std::max(0, nargs[2 * t + 1]));
+        if (ints + ni > intargs.size() || floats + nf > floatargs.size())
+            in.fail(in.where(), "tag \"" + tags[t] + "\" asks for more arguments than intargs/floatargs hold");
+        auto vertex = [&](size_t k) {
+            int v = intargs[ints + k];
+            if (v < 0 || static_cast<size_t>(v) >= data.P.size()) in.fail(in.where(), "tag \"" + tags[t] + "\": vertex index out of range");
+            return static_cast<unsigned>(v);
+        };
+        std::string const& tag = tags[t];
+        if (tag == "crease" && ni >= 2 && nf >= 1) {
+            for (size_t k = 0; k + 1 < ni; ++k) {
+                data.creaseEdges.insert(data.creaseEdges.end(), {vertex(k), vertex(k + 1)});
+                data.creaseWeights.push_back(floatargs[floats]);
+            }
+        } else if (tag == "corner") {
+            for (size_t k = 0; k < ni; ++k) {
+                data.corners.push_back(vertex(k));
+                data.cornerWeights.push_back(floatargs[floats + std::min(k, nf > 0 ? nf - 1 : 0)]);
+            }
+        } else if (tag == "hole") {
+            for (size_t k = 0; k < ni; ++k) data.holes.push_back(static_cast<unsigned>(std::max(0, intargs[ints + k])));
+        } else if (tag == "interpolateboundary") {
+            int mode = ni > 0 ? intargs[ints] : 1;
+            data.boundary = mode == 2 ? SubdivisionData::Boundary::Edges
+                            : mode == 0 ? SubdivisionData::Boundary::None
+                                        : SubdivisionData::Boundary::EdgesAndCorners;
+        } else {
+            warnOnce("subdivision tag " + tag, in.where(), std::string(request) + " tag \"" + tag + "\" is not used; skipped");
+        }
+        ints += ni;
+        floats += nf;
+    }
+    bool flip = state().reverseOrientation != mirrors(state().transform);
+    addShape(std::make_unique<SubdivisionSurface>(std::move(data), flip), in.where());
+}
+
+void SceneBuilder::nuPatch(RequestReader& in) {
+    NurbsDesc d;
+    d.nu = in.integer("nu");
+    d.uorder = in.integer("uorder");
+    d.uknot = in.numberArray("uknot");
+    d.umin = in.number("umin");
+    d.umax = in.number("umax");
+    d.nv = in.integer("nv");
+    d.vorder = in.integer("vorder");
+    d.vknot = in.numberArray("vknot");
+    d.vmin = in.number("vmin");
+    d.vmax = in.number("vmax");
+    ParamList params = in.params();
+    if (d.nu < 1 || d.nv < 1 || static_cast<long>(d.nu) * d.nv > 16'000'000L)
+        in.fail(in.where(), "nu and nv must be positive (and their product reasonable)");
+    if (std::vector<float> const* Pw = params.getFloats("Pw", ParamType::HPoint)) {
+        for (size_t i = 0; i + 3 < Pw->size(); i += 4) d.Pw.emplace_back((*Pw)[i], (*Pw)[i + 1], (*Pw)[i + 2], (*Pw)[i + 3]);
+    } else if (std::vector<float> const* P = params.getFloats("P", ParamType::Point)) {
+        for (size_t i = 0; i + 2 < P->size(); i += 3) d.Pw.emplace_back((*P)[i], (*P)[i + 1], (*P)[i + 2], 1.0f);
+    } else {
+        in.fail(in.where(), "needs \"P\" or \"Pw\" control points");
+    }
+    params.find("Cs");
+    params.find("st");
+    params.warnUnused(m_diagnostics, "NuPatch");
+    bool flip = state().reverseOrientation != mirrors(state().transform);
+    addShape(std::make_unique<TriangleMesh>(buildNurbsPatch(d, state().transform, flip, in.where()), "NuPatch", false),
+             in.where());
+}
+
+void SceneBuilder::trimCurve(RequestReader& in) {
+    in.skipRemaining();
+    warnOnce("trim curves", in.where(), "TrimCurve is not applied: NuPatch surfaces are drawn untrimmed");
+}
+
+void SceneBuilder::blobby(RequestReader& in) {
+    int leaves = in.integer("nleaf");
+    std::vector<int> code = in.intArray("code");
+    std::vector<float> floats = in.numberArray("floats");
+    std::vector<std::string> strings = in.stringArray("strings");
+    ParamList params = in.params();
+    params.find("Cs");
+    params.warnUnused(m_diagnostics, "Blobby");
+    bool flip = state().reverseOrientation != mirrors(state().transform);
+    std::string skipped;
+    MeshData mesh = buildBlobby(leaves, code, floats, state().transform, flip, in.where(), skipped);
+    if (!skipped.empty()) warnOnce("blobby " + skipped, in.where(), "Blobby: " + skipped + " count as a field of 0");
+    if (mesh.indices.empty()) {
+        warnOnce("empty blobby", in.where(), "Blobby: the field never reaches the surface threshold; nothing to draw");
+        return;
+    }
+    addShape(std::make_unique<TriangleMesh>(std::move(mesh), "Blobby", false), in.where());
+}
+
+void SceneBuilder::points(RequestReader& in) {
+    ParamList params = in.params();
+    std::vector<Vec3> P = worldPoints(params, state().transform, in);
+    std::vector<float> const* widths = params.getFloats("width", ParamType::Float);
+    float constantWidth = params.getFloat("constantwidth", 1.0f);
+    if (widths && widths->size() != P.size())
+        in.fail(in.where(), "\"width\" needs one value per point (" + std::to_string(P.size()) + "), got " +
+                                std::to_string(widths->size()));
+    params.find("Cs");
+    params.find("N");
+    params.warnUnused(m_diagnostics, "Points");
+    if (P.empty()) return;
+    float scale = lengthScale(state().transform);
+    std::vector<Vec4> spheres;
+    spheres.reserve(P.size());
+    for (size_t i = 0; i < P.size(); ++i)
+        spheres.emplace_back(P[i], 0.5f * scale * std::fabs(widths ? (*widths)[i] : constantWidth));
+    addShape(std::make_unique<Points>(std::move(spheres)), in.where());
+}
+
+void SceneBuilder::curves(RequestReader& in) {
+    std::string type = in.string("curve type (linear or cubic)");
+    std::vector<int> nverts = in.intArray("nvertices (vertex count per curve)");
+    std::string wrap = in.string("wrap (periodic or nonperiodic)");
+    ParamList params = in.params();
+    if (type != "linear" && type != "cubic") in.fail(in.where(), "curve type must be \"linear\" or \"cubic\", not \"" + type + "\"");
+    if (wrap != "periodic" && wrap != "nonperiodic") in.fail(in.where(), "wrap must be \"periodic\" or \"nonperiodic\"");
+    bool const cubic = type == "cubic", periodic = wrap == "periodic";
+    std::vector<Vec3> P = worldPoints(params, state().transform, in);
+    std::vector<float> const* widths = params.getFloats("width", ParamType::Float);
+    float constantWidth = params.getFloat("constantwidth", 1.0f);
+    params.find("Cs");
+    params.find("N");  // ribbons facing N are drawn as round tubes
+    params.warnUnused(m_diagnostics, "Curves");
+    float const scale = lengthScale(state().transform);
+    int const step = cubic ? state().vBasis.step : 1;
+    Rows const convert = toBezier(state().vBasis);
+
+    CurveData data;
+    data.cubic = cubic;
+    size_t first = 0, widthIndex = 0;
+    for (int n : nverts) {
+        int const minimum = cubic ? 4 : 2;
+        if (n < minimum) in.fail(in.where(), "a " + type + " curve needs at least " + std::to_string(minimum) + " vertices");
+        if (first + static_cast<size_t>(n) > P.size()) in.fail(in.where(), "the curves' vertex counts exceed \"P\"");
+        int segments = cubic ? (periodic ? n / step : (n - 4) / step + 1) : (periodic ? n : n - 1);
+        int varying = periodic ? segments : segments + 1;  // widths per curve
+        auto width = [&](int k) {
+            if (!widths) return constantWidth;
+            size_t at = widthIndex + static_cast<size_t>(periodic ? k % varying : k);
+            if (at >= widths->size()) in.fail(in.where(), "\"width\" has too few values for the curves");
+            return (*widths)[at];
+        };
+        auto point = [&](int k) { return P[first + static_cast<size_t>(periodic ? k % n : k)]; };
+        for (int s = 0; s < segments; ++s) {
+            float r0 = 0.5f * scale * std::fabs(width(s)), r1 = 0.5f * scale * std::fabs(width(s + 1));
+            data.segments.push_back(static_cast<unsigned>(data.points.size()));
+            if (!cubic) {
+                data.points.emplace_back(point(s), r0);
+                data.points.emplace_back(point(s + 1), r1);
+                continue;
+            }
+            Vec3 G[4];
+            for (int m = 0; m < 4; ++m) G[m] = point(s * step + m);
+            for (int i = 0; i < 4; ++i) {
+                Vec3 c(0.0f);
+                for (int m = 0; m < 4; ++m) c += convert[static_cast<size_t>(i)][static_cast<size_t>(m)] * G[m];
+                data.points.emplace_back(c, r0 + (r1 - r0) * static_cast<float>(i) / 3.0f);
+            }
+        }
+        first += static_cast<size_t>(n);
+        widthIndex += static_cast<size_t>(varying);
+    }
+    if (data.segments.empty()) return;
+    addShape(std::make_unique<Curves>(std::move(data)), in.where());
+}
+
+}  // namespace bxdflab

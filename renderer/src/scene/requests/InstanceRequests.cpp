@@ -1,0 +1,115 @@
+// Instancing: archives read from files (ReadArchive), inline archives
+// (ArchiveBegin) and retained objects (ObjectBegin / ObjectInstance). Inline
+// archives and objects are recorded as requests and replayed where used.
+#include <filesystem>
+
+#include "scene/SceneBuilder.h"
+
+namespace bxdflab {
+namespace fs = std::filesystem;
+
+namespace {
+constexpr long kMaxReplayedRequests = 4'000'000;  // what instancing may expand to
+}  // namespace
+
+void SceneBuilder::readArchive(RequestReader& in) {
+    std::string name = in.string("archive file name");
+    in.params().warnUnused(m_diagnostics, "ReadArchive");
+    auto inlineArchive = m_inlineArchives.find(name);
+    if (inlineArchive != m_inlineArchives.end()) {
+        replay("archive \"" + name + "\"", inlineArchive->second, in.where());
+        return;
+    }
+    // A relative name is looked for beside the file that names it, in the
+    // folder the renderer runs in (as RenderMan does), then on the search path.
+    std::vector<fs::path> candidates;
+    fs::path const path(name);
+    if (path.is_absolute()) {
+        candidates.push_back(path);
+    } else {
+        candidates.push_back(fs::path(currentDirectory()) / path);
+        candidates.push_back(path);
+        for (std::string const& folder : m_archiveSearchPath) candidates.push_back(fs::path(folder) / path);
+    }
+    std::string tried;
+    auto exists = [](fs::path const& candidate) {
+        std::error_code error;  // a name the file system rejects (too long, ...) is simply not found
+        return fs::is_regular_file(candidate, error);
+    };
+    for (fs::path const& candidate : candidates) {
+        tried += "\n    " + candidate.string();
+        if (exists(candidate)) {
+            readFile(candidate.string());
+            return;
+        }
+    }
+    if (path.is_absolute()) {
+        // Exporters write absolute paths of the machine they ran on: the same
+        // files are often beside the scene, under the end of that path.
+        std::vector<fs::path> parts(path.begin(), path.end());
+        fs::path scene = fs::path(m_fileStack.front()).parent_path();
+        std::vector<fs::path> roots = {fs::path(currentDirectory()), scene.empty() ? fs::path(".") : scene};
+        for (size_t first = 1; first < parts.size(); ++first) {
+            fs::path tail;
+            for (size_t k = first; k < parts.size(); ++k) tail /= parts[k];
+            for (fs::path const& root : roots) {
+                fs::path candidate = root / tail;
+                if (!exists(candidate)) continue;
+                warnOnce("archive by tail", in.where(),
+                         "archive \"" + name + "\" not found; reading \"" + candidate.string() +
+                             "\", the end of its path found beside the scene (and so for the other absolute paths)");
+                readFile(candidate.string());
+                return;
+            }
+        }
+        tried += "\n    (and every end of that path under " + roots[0].string() + " and " + roots[1].string() + ")";
+    }
+    // RenderMan renders on without a missing archive; so does this renderer, unless --strict.
+    missingFile(in.where(), "archive \"" + name + "\" not found; tried:" + tried);
+}
+
+void SceneBuilder::objectBegin(RequestReader& in) {
+    // The handle may be a string (RenderMan 19+) or a number (older RIBs).
+    std::string handle = in.nextIsString() ? in.string("object handle") : std::to_string(in.number("object handle"));
+    in.finish();
+    startRecording(m_objects[handle], "ObjectEnd");
+}
+
+void SceneBuilder::objectInstance(RequestReader& in) {
+    std::string handle = in.nextIsString() ? in.string("object handle") : std::to_string(in.number("object handle"));
+    in.finish();
+    auto found = m_objects.find(handle);
+    if (found == m_objects.end()) in.fail(in.where(), "no object \"" + handle + "\" was defined with ObjectBegin");
+    replay("object \"" + handle + "\"", found->second, in.where());
+}
+
+void SceneBuilder::archiveBegin(RequestReader& in) {
+    std::string name = in.string("archive name");
+    in.params();
+    startRecording(m_inlineArchives[name], "ArchiveEnd");
+}
+
+void SceneBuilder::startRecording(Recording& slot, std::string const& end) {
+    slot = std::make_shared<std::vector<RibRequest>>();
+    m_recording = slot.get();
+    m_recordingEnd = end;
+}
+
+void SceneBuilder::replay(std::string const& what, Recording requests, SourceLocation const& where) {
+    if (!m_replaying.insert(what).second)
+        throw RibError(where, what + " is used inside its own definition (directly or through another one)");
+    m_replayedRequests += static_cast<long>(requests->size());
+    if (m_replayedRequests > kMaxReplayedRequests)
+        throw RibError(where, "instancing expands to more than " + std::to_string(kMaxReplayedRequests) +
+                                  " requests (objects that instance others many times over?)");
+    // An instance sees the graphics state in effect where it is used, and
+    // leaves it as it found it.
+    m_attributes.push_back(state());
+    size_t depth = m_blocks.size();
+    for (RibRequest const& request : *requests) handle(request);
+    if (m_blocks.size() != depth) throw RibError(requests->back().where, "unbalanced blocks inside an object or archive");
+    m_attributes.pop_back();
+    m_replaying.erase(what);
+}
+
+}  // namespace bxdflab

@@ -1,0 +1,224 @@
+// Options, the camera and frames: what comes before WorldBegin, and the
+// blocks that make frames.
+#include <cmath>
+#include <filesystem>
+#include <sstream>
+
+#include "scene/SceneBuilder.h"
+
+namespace bxdflab {
+namespace fs = std::filesystem;
+
+namespace {
+constexpr int kMaxResolution = 16384;
+constexpr int kMaxSamplesPerPixel = 1 << 20;  // as rixrender --spp
+
+std::vector<std::string> splitPath(std::string const& list) {
+    std::vector<std::string> parts;
+    std::stringstream in(list);
+    for (std::string item; std::getline(in, item, ':');)
+        if (!item.empty()) parts.push_back(item);
+    return parts;
+}
+}  // namespace
+
+void SceneBuilder::display(RequestReader& in) {
+    std::string name = in.string("image name");
+    std::string type = in.string("display type");
+    std::string mode = in.string("display mode");
+    ParamList params = in.params();
+    if (!name.empty() && name[0] == '+') {
+        warnOnce("secondary Display", in.where(), "secondary Display \"" + name + "\" (AOV output) is not supported; skipped");
+        return;
+    }
+    m_scene.display = {name, type, mode, in.where()};
+}
+
+void SceneBuilder::format(RequestReader& in) {
+    std::vector<float> v = in.numbers(3, "xresolution yresolution pixelaspectratio");
+    in.finish();
+    if (v[0] < 1 || v[1] < 1 || v[0] != std::floor(v[0]) || v[1] != std::floor(v[1]))
+        in.fail(in.where(), "resolution must be whole numbers of at least 1 pixel, got " + std::to_string(v[0]) + " x " +
+                                std::to_string(v[1]));
+    if (v[0] > kMaxResolution || v[1] > kMaxResolution) {
+        std::ostringstream size;  // the numbers as given: they may be far beyond any integer type
+        size << v[0] << " x " << v[1];
+        in.fail(in.where(), "resolution " + size.str() + " exceeds the limit of " + std::to_string(kMaxResolution) +
+                                " pixels per side");
+    }
+    m_scene.xres = static_cast<int>(v[0]);
+    m_scene.yres = static_cast<int>(v[1]);
+    // A pixel aspect ratio of 0 or less means "square pixels" (RI specification).
+    m_scene.pixelAspect = v[2] > 0.0f ? v[2] : 1.0f;
+}
+
+void SceneBuilder::projection(RequestReader& in) {
+    std::string type = in.string("projection type");
+    ParamList params = in.params();
+    // RenderMan's camera plugins: PxrCamera and PxrPerspective are perspective cameras with a fov.
+    if (type == "PxrCamera" || type == "PxrPerspective") {
+        warnOnce("projection " + type, in.where(),
+                 "Projection \"" + type + "\" is rendered as a plain perspective camera (its lens effects are not)");
+        type = "perspective";
+    }
+    if (type != "perspective" && type != "orthographic")
+        in.fail(in.where(), "unsupported projection \"" + type + "\" (use \"perspective\" or \"orthographic\")");
+    m_scene.camera.projection = type;
+    if (Param const* fov = params.find("fov")) {
+        float value = params.getFloat("fov", 90.0f);
+        if (!(value > 0.0f && value < 180.0f))
+            throw RibError(fov->location, "Projection: fov must be between 0 and 180 degrees (exclusive), got " +
+                                              std::to_string(value));
+        m_scene.camera.fov = value;
+    } else if (type == "perspective") {
+        m_scene.camera.fov = 90.0f;  // the RI specification's default
+    }
+    params.warnUnused(m_diagnostics, "Projection");
+}
+
+void SceneBuilder::screenWindow(RequestReader& in) {
+    std::vector<float> v = in.numbers(4, "left right bottom top");
+    in.finish();
+    if (v[0] == v[1] || v[2] == v[3]) in.fail(in.where(), "screen window has zero width or height");
+    m_scene.camera.hasScreenWindow = true;
+    std::copy(v.begin(), v.end(), m_scene.camera.screenWindow);
+}
+
+void SceneBuilder::pixelSamples(RequestReader& in) {
+    std::vector<float> v = in.numbers(2, "xsamples ysamples");
+    in.finish();
+    if (!(v[0] >= 1.0f && v[1] >= 1.0f)) in.fail(in.where(), "sample counts must be at least 1");
+    double spp = std::ceil(static_cast<double>(v[0]) * v[1]);
+    if (spp > kMaxSamplesPerPixel)
+        in.fail(in.where(), "asks for " + std::to_string(spp) + " samples per pixel, more than the limit of " +
+                                std::to_string(kMaxSamplesPerPixel));
+    m_scene.spp = static_cast<int>(spp);
+}
+
+void SceneBuilder::hider(RequestReader& in) {
+    std::string type = in.string("hider type");
+    ParamList params = in.params();
+    if (type != "raytrace") warnOnce("hider " + type, in.where(), "Hider \"" + type + "\" treated as \"raytrace\"");
+    if (type == "raytrace")
+        if (Param const* p = params.find("maxsamples")) {
+            int spp = params.getInt("maxsamples", 16);
+            if (spp < 1 || spp > kMaxSamplesPerPixel)
+                throw RibError(p->location, "Hider: maxsamples must be between 1 and " +
+                                                std::to_string(kMaxSamplesPerPixel) + ", got " + std::to_string(spp));
+            m_scene.spp = spp;
+        }
+    for (auto const& p : params.all()) p.used = true;  // adaptive sampling, jitter, photon emission: not modelled
+}
+
+void SceneBuilder::integrator(RequestReader& in) {
+    // The last Integrator line wins, as in RenderMan.
+    m_scene.integrator.name = in.string("integrator name");
+    m_scene.integrator.handle = in.string("integrator handle");
+    m_scene.integrator.params = in.params();
+    m_scene.integrator.where = in.where();
+    m_scene.integrator.given = true;
+}
+
+void SceneBuilder::option(RequestReader& in) {
+    std::string category = in.string("option name");
+    ParamList params = in.params();
+    if (category != "searchpath") {
+        warnOnce("option " + category, in.where(), "Option \"" + category + "\" is not used by this renderer; skipped");
+        return;
+    }
+    auto update = [&](std::vector<std::string>& list, std::string const& key) {
+        Param const* p = params.find(key);
+        if (!p) return;
+        std::string value = params.getString(key, "");
+        std::vector<std::string> previous = list;
+        list.clear();
+        // A folder is searched once, where it first appears: "&" twice (or repeated
+        // options) would otherwise double the path each time.
+        auto add = [&list](std::string const& folder) {
+            if (std::find(list.begin(), list.end(), folder) == list.end()) list.push_back(folder);
+        };
+        for (std::string const& item : splitPath(value)) {
+            if (item == "&") {
+                for (std::string const& folder : previous) add(folder);  // the path so far
+            } else if (item == "@") {
+                continue;  // the built-in default is always searched last
+            } else {
+                fs::path path(item);
+                add(path.is_relative() ? (fs::path(currentDirectory()) / path).string() : item);
+            }
+        }
+    };
+    update(m_scene.pluginSearchPath, "rixplugin");
+    update(m_archiveSearchPath, "archive");
+    for (auto const& p : params.all())
+        if (!p.used) warnOnce("searchpath " + p.name(), p.location, "Option \"searchpath\" \"" + p.name() + "\" is not used; skipped");
+}
+
+void SceneBuilder::declare(RequestReader& in) {
+    std::string name = in.string("parameter name");
+    std::string decl = in.string("declaration");
+    in.finish();
+    m_declarations.declare(name, decl, in.where());
+}
+
+void SceneBuilder::frameBegin(RequestReader& in) {
+    int number = in.atEnd() ? static_cast<int>(m_frames.size()) : in.integer("frame number");
+    in.finish();
+    // A frame's options and state are its own: FrameEnd restores those before it.
+    m_frames.push_back({static_cast<SceneOptions const&>(m_scene), m_attributes});
+    m_frameNumber = number;
+}
+
+void SceneBuilder::frameEnd(RequestReader& in) {
+    in.finish();
+    if (m_frames.empty()) in.fail(in.where(), "FrameEnd without a matching FrameBegin");
+    if (m_inWorld) {
+        m_diagnostics.warn(in.where(), "FrameEnd inside a world block (WorldEnd missing)");
+        m_inWorld = false;
+        finishFrame();
+    }
+    static_cast<SceneOptions&>(m_scene) = m_frames.back().options;
+    m_attributes = m_frames.back().attributes;
+    m_frames.pop_back();
+    m_frameNumber = m_frames.empty() ? -1 : m_frameNumber;
+}
+
+void SceneBuilder::worldBegin(RequestReader& in) {
+    in.finish();
+    if (m_inWorld) in.fail(in.where(), "WorldBegin inside a world block");
+    m_scene.camera.worldToCamera = state().transform;
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j)
+            if (!std::isfinite(m_scene.camera.worldToCamera[i][j])) in.fail(in.where(), "the camera transform is not finite");
+    if (std::fabs(glm::determinant(m_scene.camera.worldToCamera)) < 1e-12f)
+        in.fail(in.where(), "the camera transform is singular (a zero scale?)");
+    m_namedSpaces["camera"] = glm::inverse(m_scene.camera.worldToCamera);
+    m_namedSpaces["world"] = Mat4(1.0f);
+    state().transform = Mat4(1.0f);
+    m_inWorld = true;
+    // Worlds that are not wanted are read (for their errors and state) but not built.
+    m_skipWorld = (!m_sink && m_keptFrame) || (m_options.frame >= 0 && m_frameNumber != m_options.frame);
+    m_ambient = Vec3(0.0f);
+    m_lightHandles.clear();
+    m_lightUse.clear();
+    // Lights given before WorldBegin were placed in camera space; the world now knows where that is.
+    if (building())
+        for (CameraLight const& light : m_cameraLights)
+            makeLightFrom(light.request, light.type, light.handle, light.params,
+                          m_namedSpaces["camera"] * light.toCamera, light.where);
+}
+
+void SceneBuilder::worldEnd(RequestReader& in) {
+    in.finish();
+    if (!m_inWorld) in.fail(in.where(), "WorldEnd without WorldBegin");
+    m_inWorld = false;
+    finishFrame();
+}
+
+void SceneBuilder::clipping(RequestReader& in) {
+    // Ray tracing needs no near and far planes; accepted for compatibility.
+    in.numbers(2, "near far");
+    in.finish();
+}
+
+}  // namespace bxdflab

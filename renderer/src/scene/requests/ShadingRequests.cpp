@@ -1,0 +1,237 @@
+// Shading and lights: RIS Bxdfs and lights (Bxdf, Light), the classic
+// shaders of older RIB files (Surface, LightSource, Illuminate), and the
+// material a surface gets when it names none.
+#include <cmath>
+
+#include "scene/SceneBuilder.h"
+#include "scene/lights/LightFactory.h"
+
+namespace bxdflab {
+namespace {
+
+/// The classic surface shaders this renderer gives their meaning (stock plugin ClassicSurface).
+bool isClassicSurface(std::string const& name) {
+    for (char const* known : {"constant", "matte", "plastic", "metal", "shinymetal", "paintedplastic"})
+        if (name == known) return true;
+    return false;
+}
+
+}  // namespace
+
+void SceneBuilder::bxdf(RequestReader& in) {
+    MaterialDesc material;
+    material.plugin = in.string("Bxdf plugin name");
+    material.handle = in.string("Bxdf handle");
+    material.params = in.params();
+    material.where = in.where();
+    if (material.plugin.empty()) in.fail(in.where(), "the plugin name is empty");
+    // RenderMan's volume Bxdf fills the inside of its shapes with a medium; there are no volumes here.
+    state().volume = material.plugin == "PxrVolume";
+    if (state().volume) {
+        warnOnce("volume", in.where(), "Bxdf \"PxrVolume\": volumes are not rendered; its shapes are left out");
+        return;
+    }
+    if (!building()) return;
+    state().material = static_cast<int>(m_scene.materials.size());
+    m_scene.materials.push_back(std::move(material));
+}
+
+void SceneBuilder::surface(RequestReader& in) {
+    std::string name = in.string("surface shader name");
+    ParamList params = in.params();
+    if (!isClassicSurface(name)) {
+        warnOnce("surface " + name, in.where(),
+                 "Surface \"" + name + "\" is a shader this renderer does not have: its surfaces get the default "
+                 "material (PxrDiffuse in the current Color)");
+        state().surface.reset();
+        return;
+    }
+    auto shader = std::make_shared<MaterialDesc>();
+    shader->plugin = "ClassicSurface";
+    shader->handle = name;
+    shader->where = in.where();
+    shader->params.add(stringParam("shader", name));
+    for (auto const& p : params.all()) shader->params.add(p);
+    state().surface = shader;
+}
+
+int SceneBuilder::classicMaterial() {
+    // One material per shader and colour: the classic shaders read Cs and Os.
+    MaterialDesc material = *state().surface;
+    material.params.add(colorParam("surfaceColor", state().color));
+    material.params.add(colorParam("surfaceOpacity", state().opacity));
+    material.params.add(colorParam("ambient", m_ambient));
+    material.handle += " (Color " + std::to_string(state().color.x) + " " + std::to_string(state().color.y) + " " +
+                       std::to_string(state().color.z) + ")";
+    std::string key = "classic " + material.handle + " at " + material.where.str();
+    auto found = m_defaultMaterials.find(key);
+    if (found != m_defaultMaterials.end()) return found->second;
+    int index = static_cast<int>(m_scene.materials.size());
+    m_scene.materials.push_back(std::move(material));
+    m_defaultMaterials[key] = index;
+    return index;
+}
+
+int SceneBuilder::defaultMaterial() {
+    // RenderMan shades surfaces without a Bxdf with the stock PxrDiffuse; the
+    // legacy `Color` attribute, when set, is its colour.
+    Vec3 c = state().color;
+    bool colored = state().colorSet;
+    std::string key = colored ? std::to_string(c.x) + " " + std::to_string(c.y) + " " + std::to_string(c.z) : "";
+    auto found = m_defaultMaterials.find(key);
+    if (found != m_defaultMaterials.end()) return found->second;
+    MaterialDesc material;
+    material.plugin = "PxrDiffuse";
+    material.handle = colored ? "default material (Color " + key + ")" : "default material";
+    if (colored) material.params.add(colorParam("diffuseColor", c));
+    int index = static_cast<int>(m_scene.materials.size());
+    m_scene.materials.push_back(std::move(material));
+    m_defaultMaterials[key] = index;
+    return index;
+}
+
+void SceneBuilder::makeLightFrom(std::string const& request, std::string const& type, std::string const& handle,
+                                 ParamList const& params, Mat4 const& lightToWorld, SourceLocation const& where) {
+    std::unique_ptr<Light> light;
+    if (request == "Light") {
+        light = makeLight(type, params, lightToWorld, currentDirectory(), where, m_diagnostics,
+                          [this](SourceLocation const& at, std::string const& message) { missingFile(at, message); });
+        if (!light) {
+            warnOnce("light " + type, where, "unsupported light type \"" + type + "\" skipped");
+            return;
+        }
+        params.warnUnused(m_diagnostics, type + " \"" + handle + "\"");
+    } else {
+        bool guessed = false;
+        light = makeClassicLight(type, params, lightToWorld, where, m_ambient, guessed);
+        if (guessed)
+            warnOnce("light shader " + type, where,
+                     "LightSource \"" + type + "\" is a shader this renderer does not have; " +
+                         (light ? std::string("it is rendered as the ") + light->kind() + " its parameters describe"
+                                : std::string("skipped")));
+        if (!light) return;
+    }
+    light->handle = handle;
+    light->visibility = state().visibility;
+    if (light->color.IsBlack()) {
+        m_scene.dropped.push_back("light \"" + handle + "\" (" + type + ") has zero intensity");
+        return;
+    }
+    m_lightHandles[handle] = m_scene.lights.size();
+    m_scene.lights.push_back(std::move(light));
+}
+
+void SceneBuilder::light(RequestReader& in) {
+    std::string type = in.string("light type");
+    std::string handle = in.string("light handle");
+    ParamList params = in.params();
+    if (type == "PxrMeshLight") {  // RenderMan 21+: the geometry in this attribute block is the light
+        startAreaLight(type, handle, params, in.where());
+        return;
+    }
+    if (!m_inWorld) {
+        m_cameraLights.push_back({"Light", type, handle, params, state().transform, in.where()});
+        return;
+    }
+    if (building()) makeLightFrom("Light", type, handle, params, state().transform, in.where());
+}
+
+void SceneBuilder::lightSource(RequestReader& in) {
+    std::string type = in.string("light shader name");
+    // The handle: a sequence number in older files, a string in newer ones.
+    std::string handle = in.nextIsString() ? in.string("light handle") : std::to_string(in.integer("light handle"));
+    ParamList params = in.params();
+    if (!m_inWorld) {
+        m_cameraLights.push_back({"LightSource", type, handle, params, state().transform, in.where()});
+        return;
+    }
+    if (building()) makeLightFrom("LightSource", type, handle, params, state().transform, in.where());
+}
+
+void SceneBuilder::areaLightSource(RequestReader& in) {
+    std::string type = in.string("area light shader name");
+    std::string handle = in.nextIsString() ? in.string("light handle") : std::to_string(in.integer("light handle"));
+    ParamList params = in.params();
+    startAreaLight(type, handle, params, in.where());
+}
+
+void SceneBuilder::startAreaLight(std::string const& shader, std::string const& handle, ParamList const& params,
+                                  SourceLocation const& where) {
+    auto area = std::make_shared<AreaLightDesc>();
+    area->shader = shader;
+    area->handle = handle;
+    area->params = params;
+    area->where = where;
+    if (shader.rfind("Pxr", 0) == 0) {
+        area->radiance = risLightRadiance(shader, params, where);
+        area->environment = shader == "PxrStdEnvMapLight";
+    } else {
+        // The classic area light shaders: intensity * lightcolor.
+        area->radiance = params.getFloat("intensity", 1.0f) * params.getColor("lightcolor", Vec3(1.0f));
+    }
+    // The shape is given by the geometry that follows; maps and shadow controls are not modelled.
+    for (auto const& p : area->params.all())
+        if (p.name() != "rman__EnvMap" && p.name() != "rman__EmissionMap") p.used = true;
+    state().areaLight = area;
+}
+
+bool SceneBuilder::shapeAsLight(char const* lightType, Mat4 const& lightToWorld) {
+    if (!state().areaLight) return false;
+    if (!building()) return true;
+    AreaLightDesc const& area = *state().areaLight;
+    std::string type = area.environment ? "PxrDomeLight" : lightType;
+    ParamList params;
+    if (type == "PxrDomeLight") {
+        // An environment light's image; RenderMan 20 named it by the light shader's parameter.
+        for (char const* name : {"rman__EnvMap", "rman__EmissionMap"})
+            if (Param const* map = area.params.find(name))
+                if (!map->strings.empty() && !map->strings[0].empty()) params.add(stringParam("lightColorMap", map->strings[0]));
+    }
+    std::unique_ptr<Light> light =
+        makeLight(type, params, lightToWorld, currentDirectory(), area.where, m_diagnostics,
+                  [this](SourceLocation const& at, std::string const& message) { missingFile(at, message); });
+    if (!light) return false;
+    light->color = RtColorRGB(area.radiance.x, area.radiance.y, area.radiance.z);
+    light->handle = area.handle;
+    light->visibility = state().visibility;
+    if (light->color.IsBlack()) {
+        m_scene.dropped.push_back("area light \"" + area.handle + "\" (" + area.shader + ") has zero intensity");
+        return true;
+    }
+    m_lightHandles[area.handle] = m_scene.lights.size();
+    m_scene.lights.push_back(std::move(light));
+    return true;
+}
+
+int SceneBuilder::emissiveMaterial(SourceLocation const& where) {
+    std::shared_ptr<AreaLightDesc> const& area = state().areaLight;
+    auto found = m_emissiveMaterials.find(area);
+    if (found != m_emissiveMaterials.end()) return found->second;
+    warnOnce("glowing area light", where,
+             area->shader + " \"" + area->handle + "\" on this shape: it glows, but only a sphere, a disk or a "
+             "Geometry \"rectlight\" becomes a light the integrators sample, so it lights the scene through "
+             "indirect paths only");
+    MaterialDesc material;
+    material.plugin = "PxrConstant";
+    material.handle = "area light \"" + area->handle + "\"";
+    material.where = area->where;
+    material.params.add(colorParam("emitColor", area->radiance));
+    int index = static_cast<int>(m_scene.materials.size());
+    m_scene.materials.push_back(std::move(material));
+    m_emissiveMaterials[area] = index;
+    return index;
+}
+
+void SceneBuilder::illuminate(RequestReader& in) {
+    std::string handle = in.nextIsString() ? in.string("light handle") : std::to_string(in.integer("light handle"));
+    int on = in.integer("on or off");
+    in.finish();
+    // An attribute: it holds for the shapes in the rest of the block.
+    if (on)
+        state().lightsOff.erase(handle);
+    else
+        state().lightsOff.insert(handle);
+    m_lightUse[handle];  // this light's use by shapes is counted from now on
+}
+
+}  // namespace bxdflab

@@ -1,0 +1,274 @@
+// Shapes: the quadrics (intersected exactly), polygons and meshes, patches,
+// and the Geometry request. Each becomes a Shape in world space with the
+// material and visibility in effect.
+#include <cmath>
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "scene/SceneBuilder.h"
+#include "scene/shapes/MeshBuilders.h"
+#include "scene/shapes/Quadric.h"
+
+namespace bxdflab {
+namespace {
+
+bool mirrors(Mat4 const& m) { return glm::determinant(Mat3(m)) < 0.0f; }
+
+std::vector<Vec3> pointsOf(ParamList const& params, RequestReader& in) {
+    std::vector<float> const* P = params.getFloats("P", ParamType::Point);
+    if (!P || P->empty() || P->size() % 3 != 0) in.fail(in.where(), "needs a \"P\" parameter with control points");
+    std::vector<Vec3> points;
+    for (size_t i = 0; i + 2 < P->size(); i += 3) points.emplace_back((*P)[i], (*P)[i + 1], (*P)[i + 2]);
+    return points;
+}
+
+/// A quadric's radius may be negative: the RI specification turns the surface
+/// inside out then, which is the positive radius with the normals reversed.
+float radiusOf(float value, bool& reverse) {
+    if (value < 0.0f) reverse = !reverse;
+    return std::fabs(value);
+}
+
+}  // namespace
+
+void SceneBuilder::addShape(std::unique_ptr<Shape> shape, SourceLocation const& where) {
+    if (!m_inWorld)
+        throw RibError(where, m_framesDone == 0
+                                  ? "geometry before any WorldBegin: a file of shapes without a world is an archive "
+                                    "(read it from a scene with ReadArchive)"
+                                  : "geometry after WorldEnd: shapes must come between WorldBegin and WorldEnd");
+    if (!building()) return;
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j)
+            if (!std::isfinite(state().transform[i][j])) throw RibError(where, "the current transform is not finite");
+    if (auto const* mesh = dynamic_cast<TriangleMesh const*>(shape.get()))
+        for (Vec3 const& p : mesh->data().P)
+            if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+                throw RibError(where, std::string("a point of this ") + shape->kind() +
+                                          " is not finite once transformed to world space (values near the float limit?)");
+    shape->visibility = state().visibility;
+    shape->name = state().name;
+    shape->where = where;
+    if (state().volume) {
+        m_scene.dropped.push_back(std::string(shape->kind()) + " at " + where.str() + " holds a volume (PxrVolume)");
+        return;
+    }
+    if (!shape->visibility.any()) {
+        m_scene.dropped.push_back(std::string(shape->kind()) + " at " + where.str() + " is invisible to every ray type");
+        return;
+    }
+    for (auto& [handle, use] : m_lightUse) ++(state().lightsOff.count(handle) ? use.shapesOff : use.shapesOn);
+    // Under an area light the shape glows; else a Bxdf wins over a classic
+    // Surface shader (RenderMan's RIS ignores Surface).
+    if (state().areaLight)
+        shape->material = emissiveMaterial(where);
+    else
+        shape->material = state().material >= 0 ? state().material : state().surface ? classicMaterial() : defaultMaterial();
+    m_scene.shapes.push_back(std::move(shape));
+}
+
+void SceneBuilder::sphere(RequestReader& in) {
+    std::vector<float> v = in.numbers(4, "radius zmin zmax thetamax");
+    in.params().warnUnused(m_diagnostics, "Sphere");
+    bool reverse = state().reverseOrientation;
+    float radius = radiusOf(v[0], reverse);
+    if (!(radius > 0.0f)) in.fail(in.where(), "radius must not be zero, got " + std::to_string(v[0]));
+    bool whole = v[1] <= -radius && v[2] >= radius && v[3] >= 360.0f;
+    if (whole && shapeAsLight("PxrSphereLight", glm::scale(state().transform, Vec3(2.0f * radius)))) return;
+    addShape(std::make_unique<Sphere>(radius, v[1], v[2], v[3], state().transform, reverse), in.where());
+}
+
+void SceneBuilder::cylinder(RequestReader& in) {
+    std::vector<float> v = in.numbers(4, "radius zmin zmax thetamax");
+    in.params().warnUnused(m_diagnostics, "Cylinder");
+    bool reverse = state().reverseOrientation;
+    float radius = radiusOf(v[0], reverse);
+    if (!(radius > 0.0f)) in.fail(in.where(), "radius must not be zero, got " + std::to_string(v[0]));
+    addShape(std::make_unique<Cylinder>(radius, v[1], v[2], v[3], state().transform, reverse), in.where());
+}
+
+void SceneBuilder::disk(RequestReader& in) {
+    std::vector<float> v = in.numbers(3, "height radius thetamax");
+    in.params().warnUnused(m_diagnostics, "Disk");
+    bool reverse = state().reverseOrientation;
+    float radius = radiusOf(v[1], reverse);
+    if (!(radius > 0.0f)) in.fail(in.where(), "radius must not be zero, got " + std::to_string(v[1]));
+    Mat4 diskLight = glm::scale(glm::translate(state().transform, Vec3(0.0f, 0.0f, v[0])), Vec3(2.0f * radius, 2.0f * radius, 1.0f));
+    if (reverse) diskLight = glm::scale(diskLight, Vec3(1.0f, -1.0f, -1.0f));  // it emits the other way
+    if (v[2] >= 360.0f && shapeAsLight("PxrDiskLight", diskLight)) return;
+    addShape(std::make_unique<Disk>(v[0], radius, v[2], state().transform, reverse), in.where());
+}
+
+void SceneBuilder::cone(RequestReader& in) {
+    std::vector<float> v = in.numbers(3, "height radius thetamax");
+    in.params().warnUnused(m_diagnostics, "Cone");
+    bool reverse = state().reverseOrientation;
+    float radius = radiusOf(v[1], reverse);
+    if (!(radius > 0.0f) || v[0] == 0.0f) in.fail(in.where(), "needs a non-zero radius and height");
+    addShape(std::make_unique<Cone>(v[0], radius, v[2], state().transform, reverse), in.where());
+}
+
+void SceneBuilder::paraboloid(RequestReader& in) {
+    std::vector<float> v = in.numbers(4, "rmax zmin zmax thetamax");
+    in.params().warnUnused(m_diagnostics, "Paraboloid");
+    bool reverse = state().reverseOrientation;
+    float radius = radiusOf(v[0], reverse);
+    if (!(radius > 0.0f) || !(std::max(v[1], v[2]) > 0.0f)) in.fail(in.where(), "needs a non-zero rmax and a positive zmax");
+    addShape(std::make_unique<Paraboloid>(radius, v[1], v[2], v[3], state().transform, reverse), in.where());
+}
+
+void SceneBuilder::hyperboloid(RequestReader& in) {
+    std::vector<float> v = in.numbers(7, "point1 point2 thetamax");
+    in.params().warnUnused(m_diagnostics, "Hyperboloid");
+    if (v[2] == v[5]) {
+        warnOnce("flat hyperboloid", in.where(), "Hyperboloid with both points at the same height is not supported; skipped");
+        return;
+    }
+    addShape(std::make_unique<Hyperboloid>(Vec3(v[0], v[1], v[2]), Vec3(v[3], v[4], v[5]), v[6], state().transform,
+                                           state().reverseOrientation),
+             in.where());
+}
+
+void SceneBuilder::torus(RequestReader& in) {
+    std::vector<float> v = in.numbers(5, "majorrad minorrad phimin phimax thetamax");
+    in.params().warnUnused(m_diagnostics, "Torus");
+    if (!(v[0] > 0.0f) || !(v[1] > 0.0f)) in.fail(in.where(), "radii must be positive");
+    bool flip = state().reverseOrientation != mirrors(state().transform);
+    addShape(std::make_unique<TriangleMesh>(buildTorus(v[0], v[1], v[2], v[3], v[4], state().transform, flip), "Torus",
+                                            false),
+             in.where());
+}
+
+void SceneBuilder::polygon(RequestReader& in) {
+    ParamList params = in.params();
+    std::vector<float> const* P = params.getFloats("P", ParamType::Point);
+    if (!P) in.fail(in.where(), "needs a \"P\" parameter with the vertex positions");
+    int count = static_cast<int>(P->size() / 3);
+    if (count < 3) in.fail(in.where(), "a polygon needs at least 3 vertices, got " + std::to_string(count));
+    std::vector<int> indices(static_cast<size_t>(count));
+    for (int i = 0; i < count; ++i) indices[static_cast<size_t>(i)] = i;
+    MeshData mesh = buildPolygonMesh({1}, {count}, indices, params, state().transform, in.where(), m_diagnostics);
+    params.find("Cs");  // per-vertex colour is read by no Bxdf yet; accepted quietly
+    params.warnUnused(m_diagnostics, "Polygon");
+    addShape(std::make_unique<TriangleMesh>(std::move(mesh), "Polygon", state().reverseOrientation), in.where());
+}
+
+void SceneBuilder::generalPolygon(RequestReader& in) {
+    std::vector<int> nverts = in.intArray("nvertices (vertex count per loop)");
+    ParamList params = in.params();
+    long total = 0;
+    for (int n : nverts) {
+        if (n < 3) in.fail(in.where(), "every loop needs at least 3 vertices, got " + std::to_string(n));
+        total += n;
+    }
+    std::vector<float> const* P = params.getFloats("P", ParamType::Point);
+    if (!P || static_cast<long>(P->size() / 3) != total)
+        in.fail(in.where(), "needs a \"P\" parameter with " + std::to_string(total) + " points (the loops' vertex counts added up)");
+    std::vector<int> indices(static_cast<size_t>(total));
+    for (long i = 0; i < total; ++i) indices[static_cast<size_t>(i)] = static_cast<int>(i);
+    MeshData mesh = buildPolygonMesh({static_cast<int>(nverts.size())}, nverts, indices, params, state().transform,
+                                     in.where(), m_diagnostics);
+    params.find("Cs");
+    params.warnUnused(m_diagnostics, "GeneralPolygon");
+    addShape(std::make_unique<TriangleMesh>(std::move(mesh), "GeneralPolygon", state().reverseOrientation), in.where());
+}
+
+void SceneBuilder::pointsPolygons(RequestReader& in) {
+    std::vector<int> nverts = in.intArray("nvertices (vertex count per face)");
+    std::vector<int> verts = in.intArray("vertices (point indices)");
+    ParamList params = in.params();
+    if (nverts.empty()) {
+        warnOnce("empty mesh", in.where(), "PointsPolygons with no polygons; skipped");
+        return;
+    }
+    std::vector<int> loops(nverts.size(), 1);
+    MeshData mesh = buildPolygonMesh(loops, nverts, verts, params, state().transform, in.where(), m_diagnostics);
+    params.find("Cs");
+    params.warnUnused(m_diagnostics, "PointsPolygons");
+    addShape(std::make_unique<TriangleMesh>(std::move(mesh), "PointsPolygons", state().reverseOrientation), in.where());
+}
+
+void SceneBuilder::pointsGeneralPolygons(RequestReader& in) {
+    std::vector<int> nloops = in.intArray("nloops (loop count per face)");
+    std::vector<int> nverts = in.intArray("nvertices (vertex count per loop)");
+    std::vector<int> verts = in.intArray("vertices (point indices)");
+    ParamList params = in.params();
+    if (nloops.empty()) {
+        warnOnce("empty mesh", in.where(), "PointsGeneralPolygons with no polygons; skipped");
+        return;
+    }
+    MeshData mesh = buildPolygonMesh(nloops, nverts, verts, params, state().transform, in.where(), m_diagnostics);
+    params.find("Cs");
+    params.warnUnused(m_diagnostics, "PointsGeneralPolygons");
+    addShape(std::make_unique<TriangleMesh>(std::move(mesh), "PointsGeneralPolygons", state().reverseOrientation),
+             in.where());
+}
+
+void SceneBuilder::patch(RequestReader& in) {
+    std::string type = in.string("patch type");
+    ParamList params = in.params();
+    std::vector<Vec3> points = pointsOf(params, in);
+    params.warnUnused(m_diagnostics, "Patch");
+    bool flip = state().reverseOrientation != mirrors(state().transform);
+    MeshData mesh;
+    if (type == "bilinear") {
+        if (points.size() != 4) in.fail(in.where(), "a bilinear patch needs \"P\" with exactly 4 points");
+        mesh = buildBilinearPatch({points[0], points[1], points[2], points[3]}, state().transform, flip);
+    } else if (type == "bicubic") {
+        if (points.size() != 16) in.fail(in.where(), "a bicubic patch needs \"P\" with exactly 16 points");
+        mesh = buildBicubicPatchMesh(points, 4, false, 4, false, state().uBasis, state().vBasis, state().transform, flip,
+                                     in.where());
+    } else {
+        in.fail(in.where(), "unknown patch type \"" + type + "\" (bilinear or bicubic)");
+    }
+    addShape(std::make_unique<TriangleMesh>(std::move(mesh), "Patch", false), in.where());
+}
+
+void SceneBuilder::patchMesh(RequestReader& in) {
+    std::string type = in.string("patch type");
+    int nu = in.integer("nu");
+    std::string uwrap = in.string("uwrap");
+    int nv = in.integer("nv");
+    std::string vwrap = in.string("vwrap");
+    ParamList params = in.params();
+    std::vector<Vec3> points = pointsOf(params, in);
+    params.warnUnused(m_diagnostics, "PatchMesh");
+    bool flip = state().reverseOrientation != mirrors(state().transform);
+    MeshData mesh;
+    if (type == "bicubic")
+        mesh = buildBicubicPatchMesh(points, nu, uwrap == "periodic", nv, vwrap == "periodic", state().uBasis,
+                                     state().vBasis, state().transform, flip, in.where());
+    else if (type == "bilinear")
+        mesh = buildBilinearPatchMesh(points, nu, uwrap == "periodic", nv, vwrap == "periodic", state().transform, flip,
+                                      in.where());
+    else
+        in.fail(in.where(), "unknown patch type \"" + type + "\" (bilinear or bicubic)");
+    addShape(std::make_unique<TriangleMesh>(std::move(mesh), "PatchMesh", false), in.where());
+}
+
+void SceneBuilder::geometry(RequestReader& in) {
+    std::string type = in.string("geometry type");
+    ParamList params = in.params();
+    // RenderMan 20's light shapes, for the AreaLightSource in effect.
+    if (type == "spherelight" || type == "envsphere" || type == "disklight" || type == "rectlight") {
+        float diameter = 2.0f * params.getFloat("radius", 0.5f);
+        params.warnUnused(m_diagnostics, "Geometry \"" + type + "\"");
+        if (!state().areaLight) {
+            warnOnce("geometry " + type, in.where(), "Geometry \"" + type + "\" outside an AreaLightSource block; skipped");
+            return;
+        }
+        char const* light = type == "rectlight" ? "PxrRectLight" : type == "disklight" ? "PxrDiskLight" : "PxrSphereLight";
+        Mat4 scaled = type == "envsphere" ? state().transform : glm::scale(state().transform, Vec3(diameter));
+        if (!shapeAsLight(light, scaled))
+            warnOnce("geometry " + type, in.where(), "Geometry \"" + type + "\": no light made; skipped");
+        return;
+    }
+    if (type != "teapot") {
+        warnOnce("geometry " + type, in.where(), "Geometry \"" + type + "\" is not supported; skipped");
+        return;
+    }
+    params.warnUnused(m_diagnostics, "Geometry \"teapot\"");
+    bool flip = state().reverseOrientation != mirrors(state().transform);
+    addShape(std::make_unique<TriangleMesh>(buildTeapot(state().transform, flip), "teapot", false), in.where());
+}
+
+}  // namespace bxdflab

@@ -1,0 +1,232 @@
+// The graphics state: attribute and transform blocks, transforms, named
+// coordinate systems, motion blocks and the attributes of what follows.
+#include <cmath>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+#include "scene/SceneBuilder.h"
+
+namespace bxdflab {
+
+void SceneBuilder::attributeBegin(RequestReader& in) {
+    in.finish();
+    m_attributes.push_back(state());
+    m_blocks.push_back(Block::Attribute);
+}
+
+void SceneBuilder::attributeEnd(RequestReader& in) {
+    in.finish();
+    if (m_blocks.empty() || m_blocks.back() != Block::Attribute)
+        in.fail(in.where(), m_blocks.empty() ? "AttributeEnd without a matching AttributeBegin"
+                                             : "AttributeEnd closes a TransformBegin block (expected TransformEnd)");
+    m_blocks.pop_back();
+    m_attributes.pop_back();
+}
+
+void SceneBuilder::transformBegin(RequestReader& in) {
+    in.finish();
+    m_attributes.push_back(state());
+    m_blocks.push_back(Block::Transform);
+}
+
+void SceneBuilder::transformEnd(RequestReader& in) {
+    in.finish();
+    if (m_blocks.empty() || m_blocks.back() != Block::Transform)
+        in.fail(in.where(), m_blocks.empty() ? "TransformEnd without a matching TransformBegin"
+                                             : "TransformEnd closes an AttributeBegin block (expected AttributeEnd)");
+    m_blocks.pop_back();
+    // Only the transform is restored; attributes set inside the block persist.
+    Attributes inner = m_attributes.back();
+    m_attributes.pop_back();
+    inner.transform = state().transform;
+    state() = inner;
+}
+
+void SceneBuilder::identity(RequestReader& in) {
+    in.finish();
+    // Inside the world, identity is world space; before it, the camera's.
+    state().transform = Mat4(1.0f);
+}
+
+// RIB matrices are row-major for row vectors (p' = p M); read as column-major
+// they are exactly the column-vector matrix GLM uses.
+void SceneBuilder::transform(RequestReader& in) {
+    std::vector<float> m = in.numbers(16, "a 4x4 matrix");
+    in.finish();
+    setTransform(in, glm::make_mat4(m.data()));
+}
+
+void SceneBuilder::concatTransform(RequestReader& in) {
+    std::vector<float> m = in.numbers(16, "a 4x4 matrix");
+    in.finish();
+    setTransform(in, state().transform * glm::make_mat4(m.data()));
+}
+
+void SceneBuilder::setTransform(RequestReader& in, Mat4 const& transform) {
+    // Each number is a valid float, yet products of large ones overflow; say where it happened.
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j)
+            if (!std::isfinite(transform[i][j]))
+                in.fail(in.where(), "the current transform is no longer finite (the numbers overflow a float)");
+    state().transform = transform;
+}
+
+void SceneBuilder::translate(RequestReader& in) {
+    std::vector<float> v = in.numbers(3, "dx dy dz");
+    in.finish();
+    setTransform(in, glm::translate(state().transform, Vec3(v[0], v[1], v[2])));
+}
+
+void SceneBuilder::rotate(RequestReader& in) {
+    std::vector<float> v = in.numbers(4, "angle dx dy dz");
+    in.finish();
+    Vec3 axis(v[1], v[2], v[3]);
+    if (glm::length(axis) == 0.0f) in.fail(in.where(), "rotation axis is the zero vector");
+    setTransform(in, glm::rotate(state().transform, glm::radians(v[0]), glm::normalize(axis)));
+}
+
+void SceneBuilder::scale(RequestReader& in) {
+    std::vector<float> v = in.numbers(3, "sx sy sz");
+    in.finish();
+    if (v[0] == 0.0f || v[1] == 0.0f || v[2] == 0.0f)
+        m_diagnostics.warn(in.where(), "Scale by zero collapses everything that follows");
+    setTransform(in, glm::scale(state().transform, Vec3(v[0], v[1], v[2])));
+}
+
+void SceneBuilder::coordinateSystem(RequestReader& in) {
+    std::string name = in.string("coordinate system name");
+    in.finish();
+    m_namedSpaces[name] = state().transform;
+}
+
+void SceneBuilder::scopedCoordinateSystem(RequestReader& in) {
+    std::string name = in.string("coordinate system name");
+    in.finish();
+    state().scopedSpaces[name] = state().transform;
+}
+
+void SceneBuilder::coordSysTransform(RequestReader& in) {
+    std::string name = in.string("coordinate system name");
+    in.finish();
+    auto scoped = state().scopedSpaces.find(name);
+    if (scoped != state().scopedSpaces.end()) {
+        state().transform = scoped->second;
+        return;
+    }
+    auto found = m_namedSpaces.find(name);
+    if (found == m_namedSpaces.end()) {
+        warnOnce("coordsys " + name, in.where(), "CoordSysTransform: no coordinate system \"" + name + "\"; ignored");
+        return;
+    }
+    state().transform = found->second;
+}
+
+void SceneBuilder::motionBegin(RequestReader& in) {
+    std::vector<float> times = in.numberArray("time samples");
+    in.finish();
+    if (m_motionSamples > 0) in.fail(in.where(), "MotionBegin inside a motion block");
+    if (times.empty()) in.fail(in.where(), "a motion block needs at least one time");
+    warnOnce("motion blur", in.where(),
+             "motion blur is not rendered: each motion block uses its first time sample (shutter open)");
+    m_motionSamples = static_cast<int>(times.size());
+    m_motionSeen = 0;
+}
+
+void SceneBuilder::motionEnd(RequestReader& in) {
+    in.finish();
+    if (m_motionSamples == 0) in.fail(in.where(), "MotionEnd without a matching MotionBegin");
+    m_motionSamples = 0;
+    m_motionSeen = 0;
+}
+
+void SceneBuilder::attribute(RequestReader& in) {
+    std::string category = in.string("attribute name");
+    ParamList params = in.params();
+    if (category == "visibility") {
+        Visibility& vis = state().visibility;
+        vis.camera = params.getInt("camera", vis.camera) != 0;
+        vis.indirect = params.getInt("indirect", vis.indirect) != 0;
+        // RenderMan's older form: "string transmission" "opaque" | "transparent" | "Os" | "shader".
+        if (Param const* t = params.find("transmission")) {
+            if (t->decl.type == ParamType::String)
+                vis.transmission = t->strings.at(0) != "transparent";
+            else
+                vis.transmission = params.getInt("transmission", vis.transmission) != 0;
+        }
+        // Older files name the indirect rays by kind; any kind seeing the object makes it visible to indirect rays.
+        bool olderKinds = params.has("diffuse") || params.has("specular");
+        if (olderKinds) vis.indirect = params.getInt("diffuse", 0) != 0 || params.getInt("specular", 0) != 0;
+    } else if (category == "identifier") {
+        if (Param const* name = params.find("name")) state().name = name->strings.empty() ? state().name : name->strings[0];
+        for (auto const& p : params.all()) p.used = true;  // shadinggroup, id: labels only
+    } else {
+        warnOnce("attribute " + category, in.where(), "Attribute \"" + category + "\" is not used by this renderer; skipped");
+        return;
+    }
+    for (auto const& p : params.all())
+        if (!p.used)
+            warnOnce("attribute " + category + " " + p.name(), p.location,
+                     "Attribute \"" + category + "\" \"" + p.name() + "\" is not used by this renderer; skipped");
+}
+
+void SceneBuilder::color(RequestReader& in) {
+    std::vector<float> c = in.numbers(3, "red green blue");
+    in.finish();
+    state().color = Vec3(c[0], c[1], c[2]);
+    state().colorSet = true;
+}
+
+void SceneBuilder::opacity(RequestReader& in) {
+    std::vector<float> c = in.numbers(3, "red green blue");
+    in.finish();
+    state().opacity = Vec3(c[0], c[1], c[2]);
+    if (c[0] < 1.0f || c[1] < 1.0f || c[2] < 1.0f)
+        warnOnce("opacity", in.where(), "Opacity below 1 is not rendered: surfaces are opaque");
+}
+
+void SceneBuilder::reverseOrientation(RequestReader& in) {
+    in.finish();
+    state().reverseOrientation = !state().reverseOrientation;
+}
+
+void SceneBuilder::orientation(RequestReader& in) {
+    std::string value = in.string("orientation");
+    in.finish();
+    if (value == "outside" || value == "lh")
+        state().reverseOrientation = false;
+    else if (value == "inside" || value == "rh")
+        state().reverseOrientation = true;
+    else
+        in.fail(in.where(), "orientation must be \"outside\", \"inside\", \"lh\" or \"rh\", not \"" + value + "\"");
+}
+
+void SceneBuilder::sides(RequestReader& in) {
+    // Every surface is shaded from the side it is seen from, so one- and
+    // two-sided surfaces render alike here; accepted for compatibility.
+    float sides = in.number("number of sides");
+    in.finish();
+    if (sides != 1.0f && sides != 2.0f) in.fail(in.where(), "Sides must be 1 or 2");
+}
+
+void SceneBuilder::basis(RequestReader& in) {
+    SplineBasis bases[2];
+    for (int k = 0; k < 2; ++k) {
+        const char* what = k == 0 ? "u basis" : "v basis";
+        if (in.nextIsString()) {
+            std::string name = in.string(what);
+            if (!SplineBasis::named(name, bases[k]))
+                in.fail(in.where(), "unknown basis \"" + name + "\" (bezier, b-spline, catmull-rom, hermite, power)");
+        } else {
+            std::vector<float> m = in.numbers(16, what);
+            for (int i = 0; i < 16; ++i) bases[k].matrix[i / 4][i % 4] = m[static_cast<size_t>(i)];
+        }
+        int step = in.integer(k == 0 ? "u step" : "v step");
+        if (step < 1) in.fail(in.where(), "basis steps must be whole numbers of at least 1");
+        bases[k].step = step;
+    }
+    in.finish();
+    state().uBasis = bases[0];
+    state().vBasis = bases[1];
+}
+
+}  // namespace bxdflab

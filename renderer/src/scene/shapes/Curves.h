@@ -1,0 +1,52 @@
+// Curves (hair, grass, strokes): round tubes along linear or cubic curves,
+// intersected by Embree's curve geometry. Every cubic basis RenderMan allows
+// (Basis: bezier, b-spline, catmull-rom, hermite, power or a matrix) is turned
+// into Bezier segments, so one Embree type draws them all.
+#pragma once
+
+#include <vector>
+
+#include "scene/shapes/Shape.h"
+
+namespace bxdflab {
+
+/// Control points with their radius (x, y, z, r), world space.
+struct CurveData {
+    bool cubic = false;               ///< Bezier segments of 4 points; else linear segments of 2
+    std::vector<Vec4> points;
+    std::vector<unsigned> segments;   ///< index of each segment's first point
+};
+
+class Curves final : public Shape {
+public:
+    explicit Curves(CurveData data) : m_data(std::move(data)) {}
+    ~Curves() override;
+    Curves(Curves const&) = delete;
+    Curves& operator=(Curves const&) = delete;
+
+    const char* kind() const override { return "Curves"; }
+    RTCGeometry build(RTCDevice device) const override;
+    SurfaceBasics basics(HitRecord const& hit) const override;
+    SurfaceTangents tangents(HitRecord const& hit) const override;
+    CurveData const& data() const { return m_data; }
+
+private:
+    CurveData m_data;
+    mutable RTCGeometry m_geometry = nullptr;
+};
+
+/// Points (particles): spheres of a radius each, intersected by Embree's point geometry.
+class Points final : public Shape {
+public:
+    explicit Points(std::vector<Vec4> spheres) : m_spheres(std::move(spheres)) {}
+    const char* kind() const override { return "Points"; }
+    RTCGeometry build(RTCDevice device) const override;
+    SurfaceBasics basics(HitRecord const& hit) const override;
+    SurfaceTangents tangents(HitRecord const& hit) const override;
+    std::vector<Vec4> const& spheres() const { return m_spheres; }
+
+private:
+    std::vector<Vec4> m_spheres;  ///< centre and radius, world space
+};
+
+}  // namespace bxdflab
