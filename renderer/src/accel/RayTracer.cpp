@@ -86,6 +86,13 @@ RayTracer::~RayTracer() {
     if (m_device) rtcReleaseDevice(m_device);
 }
 
+void RayTracer::cameraBounds(Vec3& lower, Vec3& upper) const {
+    RTCBounds b;
+    rtcGetSceneBounds(m_camera, &b);
+    lower = Vec3(b.lower_x, b.lower_y, b.lower_z);
+    upper = Vec3(b.upper_x, b.upper_y, b.upper_z);
+}
+
 RTCScene RayTracer::sceneFor(RayKind kind) const {
     switch (kind) {
         case RayKind::Camera: return m_camera;
@@ -119,6 +126,7 @@ HitRecord RayTracer::intersect(Vec3 const& org, Vec3 const& dir, float tnear, fl
         hit.u = rayhit.hit.u;
         hit.v = rayhit.hit.v;
         hit.t = rayhit.ray.tfar;
+        hit.Ng = Vec3(rayhit.hit.Ng_x, rayhit.hit.Ng_y, rayhit.hit.Ng_z);
     }
     return hit;
 }

@@ -51,6 +51,8 @@ public:
     bool occluded(Vec3 const& org, Vec3 const& dir, float tnear, float tfar, RayCounts& counts) const;
 
     RayCounters& counters() const { return m_counters; }
+    /// World-space bounds of what camera rays can hit (empty: lower > upper).
+    void cameraBounds(Vec3& lower, Vec3& upper) const;
 
     /// A traced ray, for the benchmark that replays a render's rays through raw Embree.
     struct RecordedRay {

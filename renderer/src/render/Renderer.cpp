@@ -11,6 +11,8 @@
 #include <chrono>
 #include <cstdio>
 #include <mutex>
+#include <optional>
+#include <set>
 #include <thread>
 
 #include "accel/RayTracer.h"
@@ -21,6 +23,7 @@
 #include "shade/MemoryArena.h"
 #include "shade/PluginSearchPath.h"
 #include "shade/ShadingContextImpl.h"
+#include "shade/StandInMaterials.h"
 
 namespace bxdflab {
 namespace {
@@ -82,6 +85,44 @@ private:
 
 }  // namespace
 
+namespace {
+
+void summarise(Film const& film, RenderStats::ImageSummary& out) {
+    std::vector<float> const rgba = film.rgba();
+    size_t const pixels = rgba.size() / 4;
+    double sum[3] = {0, 0, 0};
+    size_t lit = 0;
+    for (size_t p = 0; p < pixels; ++p) {
+        float const* c = &rgba[4 * p];
+        for (int k = 0; k < 3; ++k) {
+            sum[k] += c[k];
+            out.maxRgb[k] = std::max(out.maxRgb[k], c[k]);
+        }
+        lit += 0.2126f * c[0] + 0.7152f * c[1] + 0.0722f * c[2] > 1e-3f;
+    }
+    for (int k = 0; k < 3; ++k) out.meanRgb[k] = pixels ? static_cast<float>(sum[k] / static_cast<double>(pixels)) : 0.0f;
+    out.litFraction = pixels ? static_cast<double>(lit) / static_cast<double>(pixels) : 0.0;
+}
+
+/// A camera transform that puts every shape behind the camera is a common
+/// mistake (and the sign of a right-handed export): say so, rather than
+/// leaving an empty image to explain itself.
+void warnIfNothingInFront(RayTracer const& tracer, Scene const& scene, Diagnostics& diagnostics) {
+    Vec3 lower, upper;
+    tracer.cameraBounds(lower, upper);
+    if (!(lower.x <= upper.x)) return;  // nothing the camera can see at all
+    float nearest = -kInfinity;
+    for (int corner = 0; corner < 8; ++corner) {
+        Vec3 p(corner & 1 ? upper.x : lower.x, corner & 2 ? upper.y : lower.y, corner & 4 ? upper.z : lower.z);
+        nearest = std::max(nearest, transformPoint(scene.camera.worldToCamera, p).z);
+    }
+    if (nearest <= 0.0f)
+        diagnostics.warn("every shape is behind the camera (at negative camera z): the image will be empty. RenderMan's "
+                         "camera looks down +z; a camera transform from a right-handed program may need Scale 1 1 -1");
+}
+
+}  // namespace
+
 struct Renderer::Impl {
     Scene& scene;
     RenderSettings settings;
@@ -116,9 +157,20 @@ Renderer::Renderer(Scene& scene, RenderSettings settings, Diagnostics& diagnosti
     Impl& r = *m_impl;
 
     // Plugins: one instance per Bxdf statement; each plugin hears RenderBegin once.
+    // RenderMan's own materials that are not on the search path get a stock stand-in.
+    std::set<std::string> standInsWarned;
     for (MaterialDesc const& material : scene.materials) {
-        BxdfPlugin& plugin = r.loader.bxdf(material.plugin, material.where);
-        r.materials.push_back(std::make_unique<BxdfInstance>(material, plugin, diagnostics));
+        std::optional<StandIn> standIn;
+        if (!r.loader.has(material.plugin)) standIn = standInFor(material);
+        MaterialDesc const& used = standIn ? standIn->material : material;
+        if (standIn && standInsWarned.insert(material.plugin).second) {
+            diagnostics.warn(material.where, "Bxdf \"" + material.plugin + "\" is one of RenderMan's materials and no " +
+                                                 material.plugin + ".so is on the plugin search path: rendered as " +
+                                                 standIn->note);
+            m_stats.effects.skip("material " + material.plugin, "rendered as " + standIn->note);
+        }
+        BxdfPlugin& plugin = r.loader.bxdf(used.plugin, used.where);
+        r.materials.push_back(std::make_unique<BxdfInstance>(used, plugin, diagnostics));
     }
     std::vector<BxdfPlugin*> synced;
     for (auto const& m : r.materials) {
@@ -130,7 +182,26 @@ Renderer::Renderer(Scene& scene, RenderSettings settings, Diagnostics& diagnosti
     }
 
     r.camera = std::make_unique<Camera>(scene.camera, scene.xres, scene.yres, scene.pixelAspect);
-    r.integratorPlugin = r.loader.integrator(scene.integrator.name, scene.integrator.params, scene.integrator.where);
+    IntegratorDesc integrator = scene.integrator;
+    bool const renderMansGlobalIllumination = integrator.name == "PxrVCM" || integrator.name == "PxrUnified" ||
+                                              integrator.name == "PxrUPBP" || integrator.name == "PxrVPL";
+    if (renderMansGlobalIllumination && !r.loader.has(integrator.name)) {
+        // RenderMan's other global-illumination integrators (PxrVCM, PxrUnified,
+        // PxrVPL, ...) compute the same image: the path tracer stands in, with
+        // the path length the scene asked for.
+        IntegratorDesc standIn;
+        standIn.name = "PxrPathTracer";
+        standIn.handle = integrator.handle;
+        standIn.where = integrator.where;
+        for (Param const& p : integrator.params.all())
+            if (p.name() == "maxPathLength") standIn.params.add(p);
+        diagnostics.warn(integrator.where, "Integrator \"" + integrator.name + "\" is one of RenderMan's and no " +
+                                               integrator.name + ".so is on the plugin search path: PxrPathTracer renders "
+                                               "the same light transport instead (with its maxPathLength)");
+        m_stats.effects.skip("integrator " + integrator.name, "PxrPathTracer stands in");
+        integrator = standIn;
+    }
+    r.integratorPlugin = r.loader.integrator(integrator.name, integrator.params, integrator.where);
     r.integrator = &r.integratorPlugin->integrator();
     if (r.integrator->WantsHeadlight()) {
         r.headlight = std::make_unique<HeadLight>(r.camera->position());
@@ -141,6 +212,7 @@ Renderer::Renderer(Scene& scene, RenderSettings settings, Diagnostics& diagnosti
     for (auto const& light : scene.lights)
         if (light->visibility.camera) r.cameraLights.push_back(light.get());
     r.tracer = std::make_unique<RayTracer>(scene);
+    warnIfNothingInFront(*r.tracer, scene, diagnostics);
     r.shader = std::make_unique<BatchShader>(scene, r.materials, r.camera->pixelSpread(), r.counters, diagnostics);
 
     // What this render will and will not simulate.
@@ -291,6 +363,7 @@ Film Renderer::render() {
     m_stats.nonFiniteSamples = r.nonFinite.load();
     m_stats.invalidPdfSamples = r.invalidPdf.load();
     m_stats.peakMemoryMB = peakResidentMB();
+    summarise(film, m_stats.image);
 
     // Effects decided while shading: tangent frames are computed only on request.
     auto& effects = m_stats.effects;
@@ -330,6 +403,10 @@ nlohmann::json RenderStats::toJson(Diagnostics const& diagnostics) const {
         {"nonfinite_samples", nonFiniteSamples},
         {"invalid_pdf_samples", invalidPdfSamples},
         {"peak_memory_mb", peakMemoryMB},
+        {"image",
+         {{"mean_rgb", {image.meanRgb[0], image.meanRgb[1], image.meanRgb[2]}},
+          {"max_rgb", {image.maxRgb[0], image.maxRgb[1], image.maxRgb[2]}},
+          {"lit_fraction", image.litFraction}}},
         {"effects", {{"simulated", effects.simulated}, {"skipped", skipped}}},
         {"plugins", plugins},
         {"warnings", warnings},

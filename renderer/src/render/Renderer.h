@@ -37,6 +37,11 @@ struct RenderStats {
     uint64_t nonFiniteSamples = 0;
     uint64_t invalidPdfSamples = 0;  ///< pdfs a Bxdf must not return (see RixIntegratorContext::CountInvalidPdf)
     double peakMemoryMB = 0;         ///< the process's peak resident memory so far (MiB)
+    /// The finished image at a glance (an empty or black image says something went wrong).
+    struct ImageSummary {
+        float meanRgb[3] = {0, 0, 0}, maxRgb[3] = {0, 0, 0};
+        double litFraction = 0;  ///< pixels whose luminance exceeds 1e-3
+    } image;
     EffectReport effects;
     std::vector<std::string> plugins;
     std::string integrator;

@@ -88,6 +88,13 @@ BxdfInstance::BxdfInstance(MaterialDesc const& material, BxdfPlugin& plugin, Dia
     for (size_t i = 0; i < table.size(); ++i) m_values[i].type = table[i].type;
 
     for (Param const& p : material.params.all()) {
+        if (p.decl.reference) {
+            // Connections to pattern outputs ("reference color baseColor" ["tex:Cout"]).
+            diagnostics.warn(p.location, "Bxdf \"" + plugin.name() + "\" parameter \"" + p.name() + "\" is connected to " +
+                                             (p.strings.empty() ? std::string("a pattern") : "\"" + p.strings[0] + "\"") +
+                                             ", which is not evaluated; the plugin's default is used");
+            continue;
+        }
         int id = plugin.paramId(p.name());
         if (id < 0) {
             std::string known;

@@ -88,15 +88,24 @@ int BxdfPlugin::paramId(std::string const& name) const {
     return -1;
 }
 
-std::string PluginLoader::find(std::string const& name, const char* kind, SourceLocation const& where) const {
-    std::string prefix = where.known() ? where.str() + ": " : "";
-    if (name.find('/') != std::string::npos)
-        throw RenderError(prefix + "plugin names may not contain '/': \"" + name + "\"");
+std::string PluginLoader::locate(std::string const& name) const {
+    if (name.find('/') != std::string::npos) return "";
     for (std::string const& folder : m_searchPath) {
         std::filesystem::path candidate = std::filesystem::path(folder) / (name + ".so");
         std::error_code error;  // a name the file system rejects (too long, ...) is simply not found
         if (std::filesystem::is_regular_file(candidate, error)) return candidate.string();
     }
+    return "";
+}
+
+bool PluginLoader::has(std::string const& name) const { return m_plugins.count(name) > 0 || !locate(name).empty(); }
+
+std::string PluginLoader::find(std::string const& name, const char* kind, SourceLocation const& where) const {
+    std::string prefix = where.known() ? where.str() + ": " : "";
+    if (name.find('/') != std::string::npos)
+        throw RenderError(prefix + "plugin names may not contain '/': \"" + name + "\"");
+    std::string found = locate(name);
+    if (!found.empty()) return found;
     std::string searched;
     for (auto const& folder : m_searchPath) searched += "\n    " + folder;
     throw RenderError(prefix + kind + " plugin \"" + name + "\" not found: no " + name +

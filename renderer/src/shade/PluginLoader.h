@@ -79,6 +79,8 @@ public:
     /// The plugin `name` (loading it on first use). Throws a RenderError that
     /// names the plugin and every folder searched when it cannot be found.
     BxdfPlugin& bxdf(std::string const& name, SourceLocation const& where = {});
+    /// Whether a plugin of that name is on the search path.
+    bool has(std::string const& name) const;
     /// Loads the integrator plugin `name` and creates it with `params`.
     std::unique_ptr<IntegratorPlugin> integrator(std::string const& name, ParamList const& params,
                                                  SourceLocation const& where);
@@ -87,6 +89,8 @@ public:
 private:
     /// The file name.so in the first folder that has it; throws naming every folder tried.
     std::string find(std::string const& name, const char* kind, SourceLocation const& where) const;
+    /// The same path, or empty when no folder has it.
+    std::string locate(std::string const& name) const;
     std::vector<std::string> m_searchPath;
     Diagnostics& m_diagnostics;
     std::map<std::string, std::unique_ptr<BxdfPlugin>> m_plugins;

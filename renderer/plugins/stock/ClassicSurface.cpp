@@ -1,0 +1,144 @@
+// ClassicSurface — what the classic RenderMan surface shaders of older RIB
+// files (`Surface "plastic" "Ks" [0.5]`) become: the scene reader turns each
+// such Surface request into this Bxdf, with the shader's name in "shader" and
+// the Color, Opacity and ambient light in effect.
+//
+//   constant        Cs, unlit (an emitter with no reflection)
+//   matte           Kd Cs / pi
+//   plastic         Kd Cs / pi  +  Ks specularcolor * glossy lobe
+//   paintedplastic  as plastic (its texture map is not read)
+//   metal           Ks Cs * glossy lobe
+//   shinymetal      as metal (its environment map is not read)
+//
+// plus Ka Cs ambient emitted by all but constant (the shaders' ambient()
+// term, from the scene's ambientlight shaders).
+//
+// The classic shaders' specular() is a Blinn lobe max(0, N.H)^(1/roughness),
+// with no cosine and no normalisation. Here the glossy lobe is the chapter 6
+// Phong lobe around the mirror direction, unnormalised and divided by pi:
+//   f_s = Ks specularcolor / pi * max(0, R.L)^(1 / (4 roughness)).
+// The exponent gives the same highlight width (the half vector turns half as
+// fast as the mirror direction), and since the lights of those files get a
+// factor pi in the scene reader (the classic diffuse() has no 1/pi), the
+// highlight's peak keeps the brightness the files were made for; a lobe of
+// at most 1/pi never reflects more than the surface receives.
+#include <algorithm>
+#include <cstring>
+#include <new>
+
+#include "Emissive.h"
+#include "Plastic.h"
+#include "RixShadingUtils.h"
+
+namespace {
+
+enum class Shader { Constant, Matte, Plastic, Metal };
+
+/// The plastic Bxdf with the classic ambient term as emission.
+class ClassicBxdf : public Plastic {
+public:
+    ClassicBxdf(RixShadingContext const* sc, RixBxdfFactory* factory, PlasticParams const& params, RtColorRGB glow)
+        : Plastic(sc, factory, params), m_glow(glow) {}
+    bool EmitLocal(RtColorRGB* result) override {
+        if (m_glow.IsBlack()) return false;
+        for (int i = 0; i < shadingCtx->numPts; ++i) result[i] = m_glow;
+        return true;
+    }
+
+private:
+    RtColorRGB m_glow;
+};
+
+class ClassicSurfaceFactory : public RixBxdfFactory {
+public:
+    enum Param { k_shader, k_surfaceColor, k_surfaceOpacity, k_ambient, k_Ka, k_Kd, k_Ks, k_roughness, k_specularcolor };
+
+    int Init(RixContext&, RtUString const) override { return 0; }
+    void Finalize(RixContext&) override {}
+    RixSCParamInfo const* GetParamTable() override {
+        static RixSCParamInfo table[] = {
+            RixSCParamInfo(RtUString("shader"), k_RixSCString, k_RixSCScatterInput),
+            RixSCParamInfo(RtUString("surfaceColor"), k_RixSCColor, k_RixSCScatterInput),
+            RixSCParamInfo(RtUString("surfaceOpacity"), k_RixSCColor, k_RixSCScatterInput),
+            RixSCParamInfo(RtUString("ambient"), k_RixSCColor, k_RixSCScatterInput),
+            RixSCParamInfo(RtUString("Ka"), k_RixSCFloat, k_RixSCScatterInput),
+            RixSCParamInfo(RtUString("Kd"), k_RixSCFloat, k_RixSCScatterInput),
+            RixSCParamInfo(RtUString("Ks"), k_RixSCFloat, k_RixSCScatterInput),
+            RixSCParamInfo(RtUString("roughness"), k_RixSCFloat, k_RixSCScatterInput),
+            RixSCParamInfo(RtUString("specularcolor"), k_RixSCColor, k_RixSCScatterInput),
+            RixSCParamInfo()};
+        return table;
+    }
+    void Synchronize(RixContext& ctx, RixSCSyncMsg msg, RixParameterList const*) override {
+        if (msg != k_RixSCRenderBegin) return;
+        g_plasticDiffuseLobe = RixBXLookupLobeByName(ctx, false, false, true, false, 0, "Diffuse");
+        g_plasticSpecularLobe = RixBXLookupLobeByName(ctx, false, true, true, false, 0, "Specular");
+        g_plasticTraits = RixBXLobeTraits(g_plasticDiffuseLobe) | RixBXLobeTraits(g_plasticSpecularLobe);
+    }
+
+    RixBxdf* BeginScatter(RixShadingContext const* sCtx, RixBXLobeTraits const&, RixSCShadingMode, void*,
+                          RtPointer) override {
+        // Every parameter is uniform: the scene reader writes one value per material.
+        RtUString const* name;
+        RtColorRGB const *Cs, *Os, *ambient, *specularColor;
+        float const *Ka, *Kd, *Ks, *roughness;
+        RtUString const plastic("plastic");
+        RtColorRGB const white(1.0f), black(0.0f);
+        float const one = 1.0f, tenth = 0.1f;
+        sCtx->EvalParam(k_shader, -1, &name, &plastic, false);
+        sCtx->EvalParam(k_surfaceColor, -1, &Cs, &white, false);
+        sCtx->EvalParam(k_surfaceOpacity, -1, &Os, &white, false);
+        sCtx->EvalParam(k_ambient, -1, &ambient, &black, false);
+        sCtx->EvalParam(k_specularcolor, -1, &specularColor, &white, false);
+        Shader shader = shaderNamed(name->CStr());
+        // The shaders' own defaults: matte Ka 1 Kd 1; plastic Ka 1 Kd .5 Ks .5; metal Ka 1 Ks 1; roughness .1.
+        float const kdDefault = shader == Shader::Matte ? 1.0f : 0.5f;
+        float const ksDefault = shader == Shader::Metal ? 1.0f : 0.5f;
+        sCtx->EvalParam(k_Ka, -1, &Ka, &one, false);
+        sCtx->EvalParam(k_Kd, -1, &Kd, &kdDefault, false);
+        sCtx->EvalParam(k_Ks, -1, &Ks, &ksDefault, false);
+        sCtx->EvalParam(k_roughness, -1, &roughness, &tenth, false);
+
+        RtColorRGB const color = *Cs * *Os;
+        RixShadingContext::Allocator pool(sCtx);
+        int const n = sCtx->numPts;
+        if (shader == Shader::Constant) {
+            RtColorRGB* emission = pool.AllocForBxdf<RtColorRGB>(n);
+            std::fill(emission, emission + n, color);
+            return new (pool.AllocForBxdf<Emissive>(1)) Emissive(sCtx, this, emission);
+        }
+        RtColorRGB diffuse = shader == Shader::Metal ? black : color * *Kd;
+        RtColorRGB specular = (shader == Shader::Metal ? color : *specularColor) * (*Ks * F_INVPI);
+        if (shader == Shader::Matte) specular = black;
+        PlasticParams params;
+        RtColorRGB* diffuseColors = pool.AllocForBxdf<RtColorRGB>(n);
+        RtColorRGB* specularColors = pool.AllocForBxdf<RtColorRGB>(n);
+        float* gloss = pool.AllocForBxdf<float>(n);
+        std::fill(diffuseColors, diffuseColors + n, diffuse);
+        std::fill(specularColors, specularColors + n, specular);
+        std::fill(gloss, gloss + n, 0.25f / RixMax(*roughness, 1e-4f));
+        params.diffuseColor = diffuseColors;
+        params.specularColor = specularColors;
+        params.gloss = gloss;
+        params.normalize = 0;
+        RtColorRGB glow = color * *ambient * *Ka;
+        return new (pool.AllocForBxdf<ClassicBxdf>(1)) ClassicBxdf(sCtx, this, params, glow);
+    }
+    void EndScatter(RixBxdf*) override {}
+
+private:
+    static Shader shaderNamed(char const* name) {
+        if (!std::strcmp(name, "constant")) return Shader::Constant;
+        if (!std::strcmp(name, "matte")) return Shader::Matte;
+        if (!std::strcmp(name, "metal") || !std::strcmp(name, "shinymetal")) return Shader::Metal;
+        return Shader::Plastic;
+    }
+};
+
+}  // namespace
+
+RIX_BXDFPLUGINCREATE {
+    PIXAR_ARGUSED(hint);
+    return new ClassicSurfaceFactory();
+}
+RIX_BXDFPLUGINDESTROY { delete static_cast<ClassicSurfaceFactory*>(bxdf); }

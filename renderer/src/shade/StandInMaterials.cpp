@@ -1,0 +1,87 @@
+#include "shade/StandInMaterials.h"
+
+#include <algorithm>
+
+namespace bxdflab {
+namespace {
+
+bool isRenderMansOwn(std::string const& name) { return name.rfind("Pxr", 0) == 0 || name.rfind("Lama", 0) == 0; }
+
+/// The first of `names` the material sets as a plain (not connected) colour.
+std::optional<Vec3> colorOf(ParamList const& params, std::initializer_list<char const*> names) {
+    for (char const* name : names)
+        for (Param const& p : params.all())
+            if (p.name() == name && !p.decl.reference && p.decl.type == ParamType::Color && p.floats.size() >= 3) {
+                p.used = true;
+                return Vec3(p.floats[0], p.floats[1], p.floats[2]);
+            }
+    return std::nullopt;
+}
+
+std::optional<float> floatOf(ParamList const& params, char const* name) {
+    for (Param const& p : params.all())
+        if (p.name() == name && !p.decl.reference && (p.decl.type == ParamType::Float || p.decl.type == ParamType::Int) &&
+            !p.floats.empty()) {
+            p.used = true;
+            return p.floats[0];
+        }
+    return std::nullopt;
+}
+
+Param floatParam(std::string const& name, float value) {
+    Param p;
+    p.decl.name = name;
+    p.decl.type = ParamType::Float;
+    p.floats = {value};
+    return p;
+}
+
+float luminance(Vec3 const& c) { return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z; }
+
+}  // namespace
+
+std::optional<StandIn> standInFor(MaterialDesc const& material) {
+    std::string const& name = material.plugin;
+    if (!isRenderMansOwn(name)) return std::nullopt;
+    ParamList const& in = material.params;
+    StandIn s;
+    s.material.handle = material.handle;
+    s.material.where = material.where;
+    s.material.plugin = "PxrDisney";
+    ParamList& out = s.material.params;
+
+    if (name == "PxrSurface" || name == "PxrLayerSurface") {
+        // Diffuse colour times gain; the artistic specular's face colour as a dielectric's reflectance.
+        Vec3 diffuse = colorOf(in, {"diffuseColor"}).value_or(Vec3(0.18f)) * floatOf(in, "diffuseGain").value_or(1.0f);
+        Vec3 face = colorOf(in, {"specularFaceColor"}).value_or(Vec3(0.0f));
+        out.add(colorParam("baseColor", diffuse));
+        out.add(floatParam("specular", std::clamp(luminance(face) / 0.08f, 0.0f, 1.0f)));
+        out.add(floatParam("roughness", std::sqrt(std::clamp(floatOf(in, "specularRoughness").value_or(0.2f), 0.0f, 1.0f))));
+        if (auto coat = colorOf(in, {"clearcoatFaceColor"})) out.add(floatParam("clearcoat", std::min(1.0f, luminance(*coat) / 0.04f)));
+        s.note = "PxrDisney with its diffuse colour and specular face colour (no layering, transmission or subsurface)";
+    } else if (name == "PxrLMPlastic") {
+        out.add(colorParam("baseColor", colorOf(in, {"diffuseColor"}).value_or(Vec3(0.5f))));
+        out.add(floatParam("roughness", std::sqrt(std::clamp(floatOf(in, "specularRoughness").value_or(0.01f), 0.0f, 1.0f))));
+        s.note = "PxrDisney with its diffuse colour";
+    } else if (name == "PxrLMMetal") {
+        out.add(colorParam("baseColor", colorOf(in, {"specularColor"}).value_or(Vec3(0.9f))));
+        out.add(floatParam("metallic", 1.0f));
+        out.add(floatParam("roughness", std::sqrt(std::clamp(floatOf(in, "roughness").value_or(0.01f), 0.0f, 1.0f))));
+        s.note = "a PxrDisney metal (its eta and kappa are not used)";
+    } else if (name == "PxrGlass" || name == "PxrLMGlass") {
+        // No refraction here: a clear coat over black keeps the reflections of glass, not what is behind it.
+        out.add(colorParam("baseColor", Vec3(0.0f)));
+        out.add(floatParam("specular", 0.5f));
+        out.add(floatParam("roughness", std::sqrt(std::clamp(floatOf(in, "roughness").value_or(0.0f), 0.0f, 1.0f))));
+        s.note = "the reflections of glass over black: transmission and refraction are not rendered";
+    } else {
+        // PxrLMDiffuse, PxrDiffuse-likes and anything else: a diffuse surface in its colour.
+        s.material.plugin = "PxrDiffuse";
+        std::optional<Vec3> color = colorOf(in, {"diffuseColor", "baseColor", "frontColor", "color", "emitColor"});
+        if (color) out.add(colorParam("diffuseColor", *color));
+        s.note = color ? "PxrDiffuse in its colour" : "PxrDiffuse";
+    }
+    return s;
+}
+
+}  // namespace bxdflab

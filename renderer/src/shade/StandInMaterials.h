@@ -1,0 +1,23 @@
+// RenderMan's own materials that this renderer does not have (PxrSurface,
+// PxrLM*, PxrGlass, ...): when a scene names one and no plugin of that name
+// is on the search path, a stock plugin stands in for it, keeping the colour
+// and what it can of the look, with one warning per material name.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "scene/Scene.h"
+
+namespace bxdflab {
+
+struct StandIn {
+    MaterialDesc material;  ///< the stock plugin and the parameters carried over
+    std::string note;       ///< what is lost, for the warning
+};
+
+/// The stand-in for `material`, or nothing when its plugin is not one of
+/// RenderMan's (then a missing plugin stays an error).
+std::optional<StandIn> standInFor(MaterialDesc const& material);
+
+}  // namespace bxdflab
