@@ -46,7 +46,7 @@ std::string meshScene(int triangles) {
     int n = std::max(4, static_cast<int>(std::sqrt(triangles / 2.0)));
     std::ostringstream rib;
     rib << "Format 200 175 1\nProjection \"perspective\" \"fov\" [15]\nIntegrator \"PxrDirectLighting\" \"d\"\n"
-           "WorldBegin\n AttributeBegin\n Translate -2 2 0\n Rotate -165.96 0 1 0\n Rotate -13.63 1 0 0\n"
+           "WorldBegin\n AttributeBegin\n Translate -2 2 0\n Rotate 14.04 0 1 0\n Rotate 13.63 1 0 0\n"
            " Light \"PxrDiskLight\" \"l\" \"float intensity\" [150]\n AttributeEnd\n Translate 0 0 8\n"
            " Bxdf \"diffuse\" \"d\"\n PointsPolygons [";
     for (int k = 0; k < n * n; ++k) rib << "4 ";

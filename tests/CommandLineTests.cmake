@@ -15,7 +15,12 @@ endfunction()
 add_cli_failure(malformed_rib "bad-input/unterminated.rib:4:29: unterminated string" ${BAD}/unterminated.rib -o out.exr)
 add_cli_failure(unknown_plugin "Bxdf plugin \"notaplugin\" not found" ${BAD}/unknown-plugin.rib -o out.exr)
 add_cli_failure(wrong_param_type "wrong-type.rib:[0-9]+:[0-9]+: Bxdf \"diffuse\" parameter \"diffuseColor\" is a color" ${BAD}/wrong-type.rib -o out.exr)
-add_cli_failure(missing_image "lightColorMap \".*no-such-sky.exr\" does not exist" ${BAD}/missing-image.rib -o out.exr)
+add_cli_failure(missing_image_strict "lightColorMap \".*no-such-sky.exr\" does not exist" ${BAD}/missing-image.rib --strict -o out.exr)
+# Without --strict a missing file is a located warning and the render goes on (RenderMan's way).
+add_test(NAME cli.missing_image_warns COMMAND rixrender --quiet --spp 1 -o missing-image.exr ${BAD}/missing-image.rib
+         WORKING_DIRECTORY ${CLI_OUT})
+set_tests_properties(cli.missing_image_warns PROPERTIES LABELS "cli;sanitize" PASS_REGULAR_EXPRESSION
+  "missing-image.rib:4:3: PxrDomeLight: lightColorMap .*no-such-sky.exr\" does not exist .*rendering without it.*wrote missing-image.exr")
 add_cli_failure(unwritable_output "folder \"/nonexistent-folder\" does not exist" ${PROJECT_SOURCE_DIR}/scenes/ch06/diffuse.rib -o /nonexistent-folder/x.exr)
 add_cli_failure(zero_size_image "zero-size.rib:3:1: Format: resolution must be whole numbers of at least 1 pixel" ${BAD}/zero-size.rib -o out.exr)
 add_cli_failure(nan_transform "nan-transform.rib:5:3: Scale: .*finite" ${BAD}/nan-transform.rib -o out.exr)

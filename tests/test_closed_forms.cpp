@@ -2,8 +2,10 @@
 // known-albedo) Lambertian surface, so the radiance toward the camera is
 // albedo / pi times the irradiance E, and compares with the formula.
 #include <catch2/catch.hpp>
+#include <cmath>
 
 #include "film/Film.h"
+#include "scene/lights/InfiniteLights.h"
 #include "support/RenderHelpers.h"
 
 using namespace bxdflab;
@@ -50,7 +52,7 @@ double centreRadiance(test::RenderOutcome const& r) {
 TEST_CASE("disk light: radiance below its centre is L r^2 / (r^2 + h^2) for every sampling strategy", "[closed-form]") {
     const float r = 1.0f, h = 2.0f, L = 10.0f;
     std::string light = "    Translate 0 0 " + std::to_string(5.0f - h) +
-                        "\n    Rotate 180 1 0 0\n    Scale " + std::to_string(2 * r) + " " + std::to_string(2 * r) +
+                        "\n    Scale " + std::to_string(2 * r) + " " + std::to_string(2 * r) +
                         " 1\n    Light \"PxrDiskLight\" \"disk\" \"float intensity\" [" + std::to_string(L) + "]\n";
     // E = pi L r^2 / (r^2 + h^2); a white Lambertian reflects E / pi.
     const double expected = L * r * r / (r * r + h * h);
@@ -85,12 +87,17 @@ TEST_CASE("sphere light: radiance of a facing point is L (r/d)^2", "[closed-form
 }
 
 TEST_CASE("distant light: E cos(theta) / pi, exactly (a delta light has no noise)", "[closed-form]") {
-    // Light travelling along -z, turned 60 degrees: it arrives at the plane at 60 degrees.
+    // Light travelling along +z (toward the plane), turned 60 degrees: it arrives at 60 degrees.
+    // Its intensity is the radiance of a sun-sized disk: E = intensity * pi sin^2(0.265 degrees).
+    const double intensity = 150000.0;
     std::string light =
-        "    Rotate 60 0 1 0\n    Rotate 180 1 0 0\n"
-        "    Light \"PxrDistantLight\" \"sun\" \"float intensity\" [3] \"float angleExtent\" [0]\n";
+        "    Rotate 60 0 1 0\n"
+        "    Light \"PxrDistantLight\" \"sun\" \"float intensity\" [150000] \"float angleExtent\" [0]\n";
     auto result = test::renderRib(planeScene(light, "Integrator \"PxrDirectLighting\" \"d\"\n"));
-    const double expected = 3.0 * 0.5 / F_PI;
+    const double sinHalf = std::sin(0.5 * 0.53 * F_PI / 180.0);
+    const double E = intensity * F_PI * sinHalf * sinHalf;
+    CHECK(E == Approx(intensity * distantLightIrradianceScale(0.0f, false)).epsilon(1e-5));
+    const double expected = E * 0.5 / F_PI;
     for (int y = 0; y < result.height; ++y)
         for (int x = 0; x < result.width; ++x) REQUIRE(result.channel(x, y, 0) == Approx(expected).epsilon(1e-5));
 }

@@ -12,7 +12,7 @@ std::string sceneWith(std::string const& bxdf, std::string const& lights,
            "WorldBegin\n" + lights + "  Translate 0 0 5\n  " + bxdf + "\n  Sphere 1 -1 1 360\nWorldEnd\n";
 }
 const std::string kDiskLight =
-    "  AttributeBegin\n  Translate 0 3 5\n  Rotate -90 1 0 0\n"
+    "  AttributeBegin\n  Translate 0 3 5\n  Rotate 90 1 0 0\n"
     "  Light \"PxrDiskLight\" \"key\" \"float intensity\" [20]\n  AttributeEnd\n";
 
 bool skipped(RenderStats const& stats, std::string const& effect) {

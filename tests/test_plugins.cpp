@@ -16,7 +16,7 @@ namespace {
 const std::string kLitSphere =
     "Format 24 24 1\nProjection \"perspective\" \"fov\" [25]\n"
     "Integrator \"PxrDirectLighting\" \"d\"\n"
-    "WorldBegin\n  AttributeBegin\n  Translate 0 2 4\n  Rotate -90 1 0 0\n"
+    "WorldBegin\n  AttributeBegin\n  Translate 0 2 4\n  Rotate 90 1 0 0\n"
     "  Light \"PxrDiskLight\" \"key\" \"float intensity\" [30]\n  AttributeEnd\n"
     "  Translate 0 0 5\n  BXDF\n  Sphere 1 -1 1 360\nWorldEnd\n";
 

@@ -13,10 +13,10 @@ using bxdflab::test::parseRib;
 
 namespace {
 /// The message of the RibError the text raises (fails the test if none).
-std::string ribErrorOf(std::string const& rib) {
+std::string ribErrorOf(std::string const& rib, LoadOptions options = {}) {
     Diagnostics diagnostics(false);
     try {
-        parseRib(rib, diagnostics, "bad.rib");
+        parseRib(rib, diagnostics, "bad.rib", options);
     } catch (RibError const& e) {
         return e.what();
     }
@@ -107,9 +107,9 @@ TEST_CASE("malformed RIB gives file:line:col and what was expected", "[rib][erro
         {"WorldBegin\nPatchMesh \"bicubic\" 4294967295 \"nonperiodic\" 4 \"nonperiodic\" \"P\" [0 0 0]", "bad.rib:2:21", "fits an int"},
         {"Basis \"bezier\" 3e9 \"bezier\" 3", "bad.rib:1:16", "fits an int"},
         {"Hider \"raytrace\" \"int maxsamples\" [0]", "bad.rib:1:18", "between 1 and"},
-        {"WorldBegin\nSphere -1 -1 1 360", "bad.rib:2:1", "radius must be positive"},
+        {"WorldBegin\nSphere 0 -1 1 360", "bad.rib:2:1", "radius must not be zero"},
         {"Light \"PxrDiskLight\" \"l\" \"blah intensity\" [1]", "bad.rib:1:26", "unknown parameter type"},
-        {"Light \"PxrDiskLight\" \"l\" \"exposure\" [1]", "bad.rib:1:26", "has no type"},
+        {"WorldBegin\nLight \"PxrDiskLight\" \"l\" \"exposure\" [1]", "bad.rib:2:26", "has no type"},
         {"Light \"PxrDiskLight\" \"l\" \"float intensity\" \"x\"", "bad.rib:1:44", "declared float"},
         {"Translate 1e999 0 0", "bad.rib:1:11", "too large for a 32-bit float"},
         {"WorldBegin\nTranslate 3e38 0 0\nPolygon \"P\" [0 0 0 3e38 0 0 0 1 0]", "bad.rib:3:1", "not finite once transformed"},
@@ -260,14 +260,32 @@ TEST_CASE("attributes scope visibility, names and materials", "[rib]") {
     REQUIRE(scene.dropped.size() == 1);
 }
 
-TEST_CASE("ReadArchive resolves relative to the including file and reports what it tried", "[rib]") {
-    std::string message = ribErrorOf("WorldBegin\nReadArchive \"nowhere.rib\"\n");
+TEST_CASE("a missing archive or sky image is a warning naming what was tried; --strict makes it an error", "[rib]") {
+    LoadOptions strict;
+    strict.strict = true;
+    std::string message = ribErrorOf("WorldBegin\nReadArchive \"nowhere.rib\"\n", strict);
     CHECK_THAT(message, Catch::Matchers::StartsWith("bad.rib:2:1"));
     CHECK_THAT(message, Catch::Matchers::Contains("nowhere.rib"));
     CHECK_THAT(message, Catch::Matchers::Contains("tried"));
     // A name the file system refuses outright (longer than any file name) is not found either.
     std::string longName(5000, 'x');
-    CHECK_THAT(ribErrorOf("WorldBegin\nReadArchive \"" + longName + "\"\n"), Catch::Matchers::Contains("not found"));
-    CHECK_THAT(ribErrorOf("WorldBegin\nLight \"PxrDomeLight\" \"d\" \"string lightColorMap\" [\"" + longName + "\"]\n"),
+    CHECK_THAT(ribErrorOf("WorldBegin\nReadArchive \"" + longName + "\"\n", strict), Catch::Matchers::Contains("not found"));
+    CHECK_THAT(ribErrorOf("WorldBegin\nLight \"PxrDomeLight\" \"d\" \"string lightColorMap\" [\"" + longName + "\"]\n", strict),
                Catch::Matchers::Contains("does not exist"));
+
+    // Without --strict the scene is read on, as RenderMan does, with one located warning each.
+    Diagnostics diagnostics(false);
+    Scene scene = parseRib("WorldBegin\nReadArchive \"nowhere.rib\"\nLight \"PxrDomeLight\" \"d\" \"string lightColorMap\" "
+                           "[\"no-sky.exr\"]\nSphere 1 -1 1 360\n",
+                           diagnostics, "lenient.rib");
+    CHECK(scene.shapes.size() == 1u);
+    REQUIRE(scene.lights.size() == 1u);  // the dome light, with its plain colour
+    int warnings = 0;
+    for (auto const& entry : diagnostics.entries()) {
+        if (entry.severity != Diagnostics::Severity::Warning) continue;
+        ++warnings;
+        CHECK_THAT(entry.text, Catch::Matchers::StartsWith("lenient.rib:"));
+        CHECK_THAT(entry.text, Catch::Matchers::Contains("tried"));
+    }
+    CHECK(warnings == 2);
 }

@@ -13,8 +13,8 @@ TEST_CASE("no shadow acne: every visible point of a sphere lit from the camera s
         "Format 64 64 1\nProjection \"perspective\" \"fov\" [20]\n"
         "Integrator \"PxrDirectLighting\" \"d\"\n"
         "WorldBegin\n"
-        "  AttributeBegin\n  Rotate 180 1 0 0\n"
-        "  Light \"PxrDistantLight\" \"sun\" \"float intensity\" [3] \"float angleExtent\" [0]\n  AttributeEnd\n"
+        "  AttributeBegin\n"
+        "  Light \"PxrDistantLight\" \"sun\" \"float intensity\" [50000] \"float angleExtent\" [0]\n  AttributeEnd\n"
         "  Translate 0.3 -0.2 1000\n  Scale 150 150 150\n"  // far away and large: a hard case for offsets
         "  Bxdf \"diffuse\" \"d\"\n  Sphere 1 -1 1 360\nWorldEnd\n";
     RenderSettings settings;
@@ -42,7 +42,7 @@ TEST_CASE("no light leaks: closed surfaces and thin walls stop light completely"
     SECTION("a light just behind a thin wall does not light its front") {
         auto r = test::renderRib(head +
                                  "WorldBegin\n  AttributeBegin\n  Attribute \"visibility\" \"int camera\" [0]\n"
-                                 "  Translate 0 0 5.001\n  Scale 4 4 1\n"
+                                 "  Translate 0 0 5.001\n  Rotate 180 1 0 0\n  Scale 4 4 1\n"
                                  "  Light \"PxrRectLight\" \"behind\" \"float intensity\" [1000]\n  AttributeEnd\n"
                                  "  Bxdf \"diffuse\" \"d\"\n  Polygon \"P\" [-10 -10 5  10 -10 5  10 10 5  -10 10 5]\n"
                                  "WorldEnd\n");
@@ -51,7 +51,7 @@ TEST_CASE("no light leaks: closed surfaces and thin walls stop light completely"
     SECTION("the same light in front of the wall does light it (the test can fail)") {
         auto r = test::renderRib(head +
                                  "WorldBegin\n  AttributeBegin\n  Attribute \"visibility\" \"int camera\" [0]\n"
-                                 "  Translate 0 0 4.5\n  Rotate 180 1 0 0\n  Scale 4 4 1\n"
+                                 "  Translate 0 0 4.5\n  Scale 4 4 1\n"
                                  "  Light \"PxrRectLight\" \"front\" \"float intensity\" [10]\n  AttributeEnd\n"
                                  "  Bxdf \"diffuse\" \"d\"\n  Polygon \"P\" [-10 -10 5  10 -10 5  10 10 5  -10 10 5]\n"
                                  "WorldEnd\n");
@@ -62,7 +62,7 @@ TEST_CASE("no light leaks: closed surfaces and thin walls stop light completely"
 TEST_CASE("non-finite Bxdf values are counted, reported and kept out of the image", "[nonfinite]") {
     std::string rib =
         "Format 16 16 1\nProjection \"perspective\" \"fov\" [30]\nIntegrator \"PxrDirectLighting\" \"d\"\n"
-        "WorldBegin\n  AttributeBegin\n  Translate 0 2 4\n  Rotate -90 1 0 0\n"
+        "WorldBegin\n  AttributeBegin\n  Translate 0 2 4\n  Rotate 90 1 0 0\n"
         "  Light \"PxrDiskLight\" \"key\" \"float intensity\" [20]\n  AttributeEnd\n"
         "  Translate 0 0 5\n  Bxdf \"probe_nan\" \"broken\"\n  Sphere 1 -1 1 360\nWorldEnd\n";
     auto r = test::renderRib(rib);
@@ -77,7 +77,7 @@ TEST_CASE("pdfs a Bxdf must not return are counted, reported and never used", "[
     // probe_negative_pdf returns FPdf < 0 on odd points from GenerateSample and EvaluateSample.
     std::string const scene =
         "Format 16 16 1\nProjection \"perspective\" \"fov\" [30]\nINTEGRATOR\n"
-        "WorldBegin\n  AttributeBegin\n  Translate 0 2 4\n  Rotate -90 1 0 0\n"
+        "WorldBegin\n  AttributeBegin\n  Translate 0 2 4\n  Rotate 90 1 0 0\n"
         "  Light \"PxrDiskLight\" \"key\" \"float intensity\" [20]\n  AttributeEnd\n"
         "  Translate 0 0 5\n  Bxdf \"BXDF\" \"b\"\n  Sphere 1 -1 1 360\nWorldEnd\n";
     auto rib = [&](std::string const& integrator, std::string const& bxdf) {
@@ -101,7 +101,7 @@ TEST_CASE("pdfs a Bxdf must not return are counted, reported and never used", "[
 TEST_CASE("the variance image estimates the variance of each pixel mean", "[film]") {
     std::string rib =
         "Format 16 16 1\nProjection \"perspective\" \"fov\" [30]\nIntegrator \"PxrDirectLighting\" \"d\"\n"
-        "WorldBegin\n  AttributeBegin\n  Translate 0 2 4\n  Rotate -90 1 0 0\n"
+        "WorldBegin\n  AttributeBegin\n  Translate 0 2 4\n  Rotate 90 1 0 0\n"
         "  Light \"PxrDiskLight\" \"key\" \"float intensity\" [20]\n  AttributeEnd\n"
         "  AttributeBegin\n  Translate -1.2 0 5\n  Bxdf \"emissive\" \"e\"\n  Sphere 1 -1 1 360\n  AttributeEnd\n"
         "  Translate 1.2 0 5\n  Bxdf \"diffuse\" \"d\"\n  Sphere 1 -1 1 360\nWorldEnd\n";

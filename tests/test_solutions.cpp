@@ -158,6 +158,24 @@ TEST_CASE("solutions: every reference solution passes every check of its exercis
     CHECK(outcome.passed());
 }
 
+TEST_CASE("stock models (PxrDisney) pass every check of their model manifest", "[stock][checks]") {
+    // The same checks as the solutions', on the stock plugins that have a model.json.
+    static std::vector<Exercise> const models = {
+        loadExercise(BXDFLAB_SOURCE_DIR, std::string(BXDFLAB_SOURCE_DIR) + "/renderer/plugins/stock/disney/model.json")};
+    auto const& e = GENERATE(from_range(models));
+    auto const check = GENERATE(from_range(checkNames()));
+    bool listed = false;
+    for (auto const& c : e.checks) listed = listed || c.first == check;
+    if (!listed) return;
+    CAPTURE(e.plugin, check);
+    static Diagnostics quiet(false);
+    ProbeMeasurer model(e.plugin, {STOCK_PLUGIN_DIR}, quiet);
+    CheckContext context{e, model, model, 1u};
+    CheckOutcome outcome = runCheck(check, context);
+    CAPTURE(outcome.summary, outcome.details);
+    CHECK(outcome.passed());
+}
+
 TEST_CASE("solutions: FPdf integrates to 1 over the hemisphere, or to the valid fraction", "[solutions][pdf]") {
     auto model = GENERATE(from_range(kModels));
     auto viewTheta = GENERATE(0.0f, 60.0f);

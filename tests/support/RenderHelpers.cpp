@@ -12,9 +12,9 @@ bool RenderOutcome::anyMessageContains(std::string const& text) const {
     return false;
 }
 
-Scene parseRib(std::string const& rib, Diagnostics& diagnostics, std::string const& name) {
+Scene parseRib(std::string const& rib, Diagnostics& diagnostics, std::string const& name, LoadOptions options) {
     Scene scene;
-    SceneBuilder builder(scene, diagnostics);
+    SceneBuilder builder(scene, diagnostics, options);
     builder.readText(rib, name);
     return scene;
 }

@@ -9,6 +9,7 @@
 #include "film/Film.h"
 #include "render/Renderer.h"
 #include "scene/Scene.h"
+#include "scene/SceneBuilder.h"
 
 namespace bxdflab::test {
 
@@ -28,7 +29,8 @@ struct RenderOutcome {
 RenderOutcome renderRib(std::string const& rib, RenderSettings settings = {}, std::string const& name = "test.rib");
 
 /// Parses RIB text into a scene (throws like the renderer does).
-Scene parseRib(std::string const& rib, Diagnostics& diagnostics, std::string const& name = "test.rib");
+Scene parseRib(std::string const& rib, Diagnostics& diagnostics, std::string const& name = "test.rib",
+               LoadOptions options = {});
 
 /// Mean of channel c over the pixels for which keep(x, y) is true.
 double meanChannel(RenderOutcome const& r, int c, std::function<bool(int, int)> const& keep);

@@ -1,0 +1,125 @@
+// Which way lights shine, as in RenderMan: disk and rect lights emit along
+// their local +z, a distant light's light travels along +z, and the classic
+// light shaders (LightSource) keep the brightness their scenes were made for.
+#include <catch2/catch.hpp>
+#include <cmath>
+
+#include "support/RenderHelpers.h"
+
+using namespace bxdflab;
+
+namespace {
+
+/// A white diffuse square facing the camera at z = 5 and one light given by
+/// `light` (placed at the origin of its own block); the mean red of the image.
+double litSquare(std::string const& light) {
+    std::string rib = "Format 16 16 1\nProjection \"perspective\" \"fov\" [20]\nIntegrator \"PxrDirectLighting\" \"d\"\n"
+                      "WorldBegin\n  AttributeBegin\n  Attribute \"visibility\" \"int camera\" [0]\n" +
+                      light +
+                      "  AttributeEnd\n  Bxdf \"diffuse\" \"white\" \"color diffuseColor\" [1 1 1]\n"
+                      "  Polygon \"P\" [-4 -4 5  4 -4 5  4 4 5  -4 4 5]\nWorldEnd\n";
+    RenderSettings settings;
+    settings.spp = 16;
+    auto r = test::renderRib(rib, settings);
+    return test::meanChannel(r, 0, [](int, int) { return true; });
+}
+
+}  // namespace
+
+TEST_CASE("area and distant lights shine along their local +z: a surface on that side is lit, one behind is not",
+          "[lights]") {
+    for (std::string type : {"PxrRectLight", "PxrDiskLight", "PxrDistantLight"}) {
+        CAPTURE(type);
+        // A distant light's intensity is the radiance of a sun-sized disk (RenderMan's default is 50000).
+        std::string intensity = type == "PxrDistantLight" ? "50000" : "2";
+        std::string light = "  Light \"" + type + "\" \"l\" \"float intensity\" [" + intensity + "]\n";
+        // At z = 3, +z points at the square's front (the side the camera sees).
+        double facing = litSquare("  Translate 0 0 3\n" + light);
+        double turned = litSquare("  Translate 0 0 3\n  Rotate 180 1 0 0\n" + light);
+        CHECK(facing > 0.02);
+        CHECK(turned == 0.0);
+    }
+}
+
+TEST_CASE("a rect light under a ceiling turned with Rotate 90 1 0 0 lights the floor below it", "[lights]") {
+    // The camera looks down from above (+y is up); the floor is at y = -2, the light at y = 1.
+    std::string rib = "Format 16 16 1\nProjection \"perspective\" \"fov\" [30]\nIntegrator \"PxrDirectLighting\" \"d\"\n"
+                      "Rotate -90 1 0 0\nTranslate 0 -6 0\n"
+                      "WorldBegin\n  AttributeBegin\n  Attribute \"visibility\" \"int camera\" [0]\n"
+                      "  Translate 0 1 0\n  Rotate 90 1 0 0\n  Scale 2 2 1\n"
+                      "  Light \"PxrRectLight\" \"ceiling\" \"float intensity\" [4]\n  AttributeEnd\n"
+                      "  Bxdf \"diffuse\" \"white\" \"color diffuseColor\" [1 1 1]\n"
+                      "  Polygon \"P\" [-4 -2 -4  4 -2 -4  4 -2 4  -4 -2 4]\nWorldEnd\n";
+    RenderSettings settings;
+    settings.spp = 16;
+    auto r = test::renderRib(rib, settings);
+    CHECK(test::meanChannel(r, 0, [](int, int) { return true; }) > 0.1);
+}
+
+TEST_CASE("classic light shaders: pointlight, spotlight and distantlight light what they face, ambientlight adds Ka",
+          "[lights]") {
+    // pointlight: intensity I at distance d gives a matte (Kd = 1) surface facing it the radiance I / d^2,
+    // as the classic diffuse() did: the pi of the physically based Bxdf is in the light.
+    std::string const head = "Format 8 8 1\nProjection \"orthographic\"\nScreenWindow -0.01 0.01 -0.01 0.01\n"
+                             "Integrator \"PxrDirectLighting\" \"d\"\nWorldBegin\n";
+    std::string const matte = "Surface \"matte\"\nPolygon \"P\" [-10 -10 5  10 -10 5  10 10 5  -10 10 5]\nWorldEnd\n";
+    RenderSettings settings;
+    settings.spp = 4;
+    auto point = test::renderRib(head + "LightSource \"pointlight\" 1 \"intensity\" [8] \"from\" [0 0 3]\n" + matte, settings);
+    CHECK(test::meanChannel(point, 0, [](int, int) { return true; }) == Approx(8.0 / 4.0).epsilon(1e-3));
+    // distantlight from its default direction (0 0 0) -> (0 0 1): straight at the surface.
+    auto distant = test::renderRib(head + "LightSource \"distantlight\" 1 \"intensity\" [0.7]\n" + matte, settings);
+    CHECK(test::meanChannel(distant, 0, [](int, int) { return true; }) == Approx(0.7).epsilon(1e-3));
+    // ...and aimed away, nothing.
+    auto away = test::renderRib(head + "LightSource \"distantlight\" 1 \"intensity\" [0.7] \"to\" [0 0 -1]\n" + matte, settings);
+    CHECK(test::meanChannel(away, 0, [](int, int) { return true; }) == 0.0);
+    // A spotlight pointing at the surface lights it; pointing away it does not.
+    auto spot = test::renderRib(head + "LightSource \"spotlight\" 1 \"intensity\" [8] \"from\" [0 0 3] \"to\" [0 0 5]\n" + matte,
+                                settings);
+    CHECK(test::meanChannel(spot, 0, [](int, int) { return true; }) == Approx(2.0).epsilon(1e-3));
+    auto spotAway = test::renderRib(
+        head + "LightSource \"spotlight\" 1 \"intensity\" [8] \"from\" [0 0 3] \"to\" [0 0 1]\n" + matte, settings);
+    CHECK(test::meanChannel(spotAway, 0, [](int, int) { return true; }) == 0.0);
+    // ambientlight: Ka * ambient, whatever the geometry (Ka = 1 for matte).
+    auto ambient = test::renderRib(head + "LightSource \"ambientlight\" 1 \"intensity\" [0.25]\n" + matte, settings);
+    CHECK(test::meanChannel(ambient, 0, [](int, int) { return true; }) == Approx(0.25).epsilon(1e-3));
+    // Illuminate 1 0 turns the light off.
+    auto off = test::renderRib(
+        head + "LightSource \"distantlight\" 1 \"intensity\" [0.7]\nIlluminate 1 0\n" + matte, settings);
+    CHECK(test::meanChannel(off, 0, [](int, int) { return true; }) == 0.0);
+}
+
+TEST_CASE("a light given before WorldBegin is placed in camera space", "[lights]") {
+    // A headlight-like pointlight at the camera, then the camera moves back by 3: the light moves with it.
+    std::string rib = "Format 8 8 1\nProjection \"orthographic\"\nScreenWindow -0.01 0.01 -0.01 0.01\n"
+                      "Integrator \"PxrDirectLighting\" \"d\"\n"
+                      "LightSource \"pointlight\" 1 \"intensity\" [8]\nTranslate 0 0 3\nWorldBegin\n"
+                      "Surface \"matte\"\nPolygon \"P\" [-10 -10 2  10 -10 2  10 10 2  -10 10 2]\nWorldEnd\n";
+    RenderSettings settings;
+    settings.spp = 4;
+    auto r = test::renderRib(rib, settings);
+    // The surface is at camera z = 5: 8 / 25.
+    CHECK(test::meanChannel(r, 0, [](int, int) { return true; }) == Approx(8.0 / 25.0).epsilon(1e-3));
+}
+
+TEST_CASE("areaNormalize keeps a light's power whatever its size; without it power grows with area", "[lights]") {
+    // A tiny patch of a white plane 20 units in front of a rect light of side 1 or 2.
+    auto irradiance = [](float side, bool normalize) {
+        std::string rib = "Format 4 4 1\nProjection \"orthographic\"\nScreenWindow -0.01 0.01 -0.01 0.01\n"
+                          "Integrator \"PxrDirectLighting\" \"d\"\nWorldBegin\n  AttributeBegin\n"
+                          "  Attribute \"visibility\" \"int camera\" [0]\n  Scale " +
+                          std::to_string(side) + " " + std::to_string(side) +
+                          " 1\n  Light \"PxrRectLight\" \"l\" \"float intensity\" [100] \"int areaNormalize\" [" +
+                          (normalize ? "1" : "0") +
+                          "]\n  AttributeEnd\n  Bxdf \"diffuse\" \"white\" \"color diffuseColor\" [1 1 1]\n"
+                          "  Polygon \"P\" [-10 -10 20  10 -10 20  10 10 20  -10 10 20]\nWorldEnd\n";
+        RenderSettings settings;
+        settings.spp = 64;
+        auto r = test::renderRib(rib, settings);
+        return test::meanChannel(r, 0, [](int, int) { return true; });
+    };
+    CHECK(irradiance(2.0f, false) / irradiance(1.0f, false) == Approx(4.0).epsilon(0.02));
+    CHECK(irradiance(2.0f, true) / irradiance(1.0f, true) == Approx(1.0).epsilon(0.02));
+    // Normalized, a light of area A has radiance intensity / A: side 1 gives the same as without.
+    CHECK(irradiance(1.0f, true) == Approx(irradiance(1.0f, false)).epsilon(1e-4));
+}

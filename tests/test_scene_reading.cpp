@@ -1,0 +1,249 @@
+// What older and exported RIB files need from the scene reader: frames,
+// motion blocks, named coordinate systems, the RI defaults, classic surface
+// shaders, negative quadric radii and general polygons.
+#include <catch2/catch.hpp>
+#include <cmath>
+
+#include "accel/RayTracer.h"
+#include "scene/SceneBuilder.h"
+#include "scene/shapes/Quadric.h"
+#include "support/RenderHelpers.h"
+
+using namespace bxdflab;
+
+namespace {
+
+HitRecord trace(RayTracer const& tracer, Vec3 org, Vec3 dir) {
+    RayCounts counts;
+    return tracer.intersect(org, glm::normalize(dir), 0.0f, kInfinity, RayKind::Camera, counts);
+}
+
+int warningsContaining(Diagnostics const& diagnostics, std::string const& text) {
+    int n = 0;
+    for (auto const& entry : diagnostics.entries())
+        n += entry.severity == Diagnostics::Severity::Warning && entry.text.find(text) != std::string::npos;
+    return n;
+}
+
+std::string const kTwoFrames =
+    "FrameBegin 1\n  Display \"a.exr\" \"file\" \"rgba\"\n  Format 32 16 1\n  Projection \"perspective\" \"fov\" [40]\n"
+    "  WorldBegin\n    Sphere 1 -1 1 360\n  WorldEnd\nFrameEnd\n"
+    "FrameBegin 2\n  Display \"b.exr\" \"file\" \"rgba\"\n  Translate 0 0 3\n"
+    "  WorldBegin\n    Disk 0 1 360\n    Disk 1 1 360\n  WorldEnd\nFrameEnd\n";
+
+}  // namespace
+
+TEST_CASE("each frame is its own scene: options, camera and world, none piled on another", "[rib][frames]") {
+    Diagnostics diagnostics(false);
+    Scene scene;
+    SceneBuilder builder(scene, diagnostics);
+    struct Seen {
+        int frame;
+        std::string display, projection;
+        int xres;
+        size_t shapes;
+        float cameraZ;
+    };
+    std::vector<Seen> frames;
+    builder.setFrameSink([&](Scene& f) {
+        frames.push_back({f.frame, f.display.name, f.camera.projection, f.xres, f.shapes.size(),
+                          f.camera.worldToCamera[3][2]});
+    });
+    builder.readText(kTwoFrames, "frames.rib");
+    REQUIRE(frames.size() == 2u);
+    CHECK(frames[0].frame == 1);
+    CHECK(frames[0].display == "a.exr");
+    CHECK(frames[0].projection == "perspective");
+    CHECK(frames[0].xres == 32);
+    CHECK(frames[0].shapes == 1u);
+    CHECK(frames[0].cameraZ == 0.0f);
+    // Frame 2 starts from the options outside the frames: the first frame's Format and Projection are gone.
+    CHECK(frames[1].frame == 2);
+    CHECK(frames[1].display == "b.exr");
+    CHECK(frames[1].projection == "orthographic");  // the RI default, as nothing outside the frames set one
+    CHECK(frames[1].xres == 640);
+    CHECK(frames[1].shapes == 2u);
+    CHECK(frames[1].cameraZ == 3.0f);
+
+    // Asking for one frame builds that one only.
+    LoadOptions second;
+    second.frame = 2;
+    Scene only = test::parseRib(kTwoFrames, diagnostics, "frames.rib", second);
+    CHECK(only.frame == 2);
+    CHECK(only.shapes.size() == 2u);
+}
+
+TEST_CASE("a motion block uses its first time sample, with one warning", "[rib]") {
+    Diagnostics diagnostics(false);
+    Scene scene = test::parseRib("WorldBegin\nMotionBegin [0 1]\n  Translate 2 0 0\n  Translate 9 0 0\nMotionEnd\n"
+                                 "Sphere 1 -1 1 360\nMotionBegin [0 0.5 1]\n Sphere 1 -1 1 360\n Sphere 3 -3 3 360\n"
+                                 " Sphere 5 -5 5 360\nMotionEnd\n",
+                                 diagnostics);
+    REQUIRE(scene.shapes.size() == 2u);
+    RayTracer tracer(scene);
+    HitRecord hit = trace(tracer, Vec3(2, 0, -10), Vec3(0, 0, 1));
+    REQUIRE(hit.hit());
+    CHECK(hit.t == Approx(9.0f).epsilon(1e-5));  // the sphere of radius 1 at x = 2
+    CHECK(warningsContaining(diagnostics, "motion blur is not rendered") == 1);
+}
+
+TEST_CASE("named coordinate systems: CoordinateSystem, ScopedCoordinateSystem and CoordSysTransform", "[rib]") {
+    Diagnostics diagnostics(false);
+    Scene scene = test::parseRib(
+        "WorldBegin\nAttributeBegin\n  Translate 0 0 5\n  CoordinateSystem \"table\"\nAttributeEnd\n"
+        "AttributeBegin\n  Translate 7 0 0\n  ScopedCoordinateSystem \"aside\"\n"
+        "  Identity\n  CoordSysTransform \"aside\"\n  Sphere 1 -1 1 360\nAttributeEnd\n"
+        "CoordSysTransform \"table\"\nSphere 1 -1 1 360\nCoordSysTransform \"aside\"\nDisk 0 1 360\n",
+        diagnostics);
+    REQUIRE(scene.shapes.size() == 3u);
+    auto center = [&](size_t i) { return transformPoint(dynamic_cast<Quadric const&>(*scene.shapes[i]).objectToWorld(), Vec3(0)); };
+    CHECK(center(0).x == Approx(7.0f));
+    CHECK(center(1).z == Approx(5.0f));
+    // "aside" was scoped to its attribute block: outside it, the transform is left as it was (with a warning).
+    CHECK(center(2).z == Approx(5.0f));
+    CHECK(warningsContaining(diagnostics, "no coordinate system \"aside\"") == 1);
+}
+
+TEST_CASE("classic Surface shaders become the ClassicSurface Bxdf with the Color in effect; a Bxdf wins", "[rib]") {
+    Diagnostics diagnostics(false);
+    Scene scene = test::parseRib("WorldBegin\nColor [1 0 0]\nSurface \"plastic\" \"Ks\" [0.7]\nSphere 1 -1 1 360\n"
+                                 "Surface \"wobbly\"\nSphere 1 -1 1 360\n"
+                                 "Surface \"matte\"\nBxdf \"PxrDiffuse\" \"d\"\nSphere 1 -1 1 360\n",
+                                 diagnostics);
+    REQUIRE(scene.shapes.size() == 3u);
+    MaterialDesc const& plastic = scene.materials[static_cast<size_t>(scene.shapes[0]->material)];
+    CHECK(plastic.plugin == "ClassicSurface");
+    CHECK(plastic.params.getString("shader", "") == "plastic");
+    CHECK(plastic.params.getFloat("Ks", 0.0f) == 0.7f);
+    CHECK(plastic.params.getColor("surfaceColor", Vec3(0)) == Vec3(1, 0, 0));
+    // An unknown shader: one warning, and the default material in the current Color.
+    MaterialDesc const& unknown = scene.materials[static_cast<size_t>(scene.shapes[1]->material)];
+    CHECK(unknown.plugin == "PxrDiffuse");
+    CHECK(unknown.params.getColor("diffuseColor", Vec3(0)) == Vec3(1, 0, 0));
+    CHECK(warningsContaining(diagnostics, "Surface \"wobbly\"") == 1);
+    CHECK(scene.materials[static_cast<size_t>(scene.shapes[2]->material)].plugin == "PxrDiffuse");
+    CHECK(scene.materials[static_cast<size_t>(scene.shapes[2]->material)].handle == "d");
+}
+
+TEST_CASE("a negative quadric radius turns the surface inside out", "[rib][geometry]") {
+    Diagnostics diagnostics(false);
+    Scene scene = test::parseRib("WorldBegin\nTranslate 0 0 5\nDisk 0 -1 360\n", diagnostics);
+    REQUIRE(scene.shapes.size() == 1u);
+    RayTracer tracer(scene);
+    HitRecord hit = trace(tracer, Vec3(0.2f, 0, 0), Vec3(0, 0, 1));
+    REQUIRE(hit.hit());
+    CHECK(hit.t == Approx(5.0f));
+    CHECK(scene.shapes[0]->basics(hit).Ng.z == Approx(-1.0f));  // a positive radius faces +z
+}
+
+TEST_CASE("GeneralPolygon: the outer loop of a polygon with holes", "[rib][geometry]") {
+    Diagnostics diagnostics(false);
+    Scene scene = test::parseRib("WorldBegin\nGeneralPolygon [4 3] \"P\" [-2 -2 5  2 -2 5  2 2 5  -2 2 5  "
+                                 "-1 -1 5  1 -1 5  0 1 5]\n",
+                                 diagnostics);
+    REQUIRE(scene.shapes.size() == 1u);
+    RayTracer tracer(scene);
+    CHECK(trace(tracer, Vec3(1.8f, 1.8f, 0), Vec3(0, 0, 1)).hit());
+    CHECK_FALSE(trace(tracer, Vec3(2.5f, 0, 0), Vec3(0, 0, 1)).hit());
+}
+
+TEST_CASE("RenderMan's camera plugins are perspective cameras; with no Projection the camera is orthographic",
+          "[rib]") {
+    Diagnostics diagnostics(false);
+    Scene pxr = test::parseRib("Projection \"PxrCamera\" \"float fov\" [35]\nWorldBegin\n", diagnostics);
+    CHECK(pxr.camera.projection == "perspective");
+    CHECK(pxr.camera.fov == 35.0f);
+    CHECK(warningsContaining(diagnostics, "PxrCamera") == 1);
+    Scene none = test::parseRib("WorldBegin\n", diagnostics);
+    CHECK(none.camera.projection == "orthographic");
+}
+
+TEST_CASE("free-form shapes: subdivision surface, NURBS patch, curves, points and blobby", "[rib][geometry]") {
+    auto hitDistance = [](std::string const& rib, Vec3 org = Vec3(0.0f), Vec3 dir = Vec3(0, 0, 1)) {
+        Diagnostics diagnostics(false);
+        Scene scene = test::parseRib("WorldBegin\n" + rib, diagnostics);
+        REQUIRE(scene.shapes.size() == 1u);
+        RayTracer tracer(scene);
+        HitRecord hit = trace(tracer, org, dir);
+        if (!hit.hit()) return -1.0f;
+        SurfaceBasics b = scene.shapes[0]->basics(hit);
+        CHECK(std::fabs(glm::dot(b.N, dir)) > 0.5f);  // a normal across the surface, not along it
+        return hit.t;
+    };
+    SECTION("a Catmull-Clark cube shrinks toward a rounded blob inside its cage") {
+        std::string cube = "Translate 0 0 5\nSubdivisionMesh \"catmull-clark\" [4 4 4 4 4 4] "
+                           "[0 1 3 2  2 3 7 6  6 7 5 4  4 5 1 0  1 5 7 3  4 0 2 6] [\"interpolateboundary\"] [0 0] [] [] "
+                           "\"P\" [-1 -1 -1  1 -1 -1  -1 1 -1  1 1 -1  -1 -1 1  1 -1 1  -1 1 1  1 1 1]\n";
+        float t = hitDistance(cube);
+        CHECK(t > 4.05f);  // inside the cage (its face is at 4)
+        CHECK(t < 4.5f);
+        // A sharp crease along every edge keeps the cube's faces flat.
+        std::string creased = "Translate 0 0 5\nSubdivisionMesh \"catmull-clark\" [4 4 4 4 4 4] "
+                              "[0 1 3 2  2 3 7 6  6 7 5 4  4 5 1 0  1 5 7 3  4 0 2 6] "
+                              "[\"crease\" \"crease\" \"crease\" \"crease\" \"crease\" \"crease\"] [5 1 5 1 2 1 2 1 2 1 2 1] "
+                              "[0 1 3 2 0  4 5 7 6 4  0 4  1 5  3 7  2 6] [10 10 10 10 10 10] "
+                              "\"P\" [-1 -1 -1  1 -1 -1  -1 1 -1  1 1 -1  -1 -1 1  1 -1 1  -1 1 1  1 1 1]\n";
+        CHECK(hitDistance(creased, Vec3(0.3f, 0.2f, 0.0f)) == Approx(4.0f).margin(0.02));
+    }
+    SECTION("a NuPatch of order 2 is its control quad; Pw divides by w") {
+        CHECK(hitDistance("NuPatch 2 2 [0 0 1 1] 0 1 2 2 [0 0 1 1] 0 1 \"P\" [-1 -1 5  1 -1 5  -1 1 5  1 1 5]\n") ==
+              Approx(5.0f).epsilon(1e-4));
+        CHECK(hitDistance("NuPatch 2 2 [0 0 1 1] 0 1 2 2 [0 0 1 1] 0 1 \"Pw\" [-2 -2 10 2  2 -2 10 2  -2 2 10 2  2 2 10 2]\n") ==
+              Approx(5.0f).epsilon(1e-4));
+    }
+    SECTION("a linear curve is a tube of its width; a point is a sphere of its width") {
+        CHECK(hitDistance("Curves \"linear\" [2] \"nonperiodic\" \"P\" [-1 0 5  1 0 5] \"constantwidth\" [0.2]\n") ==
+              Approx(4.9f).epsilon(1e-3));
+        CHECK(hitDistance("Points \"P\" [0 0 5] \"constantwidth\" [1]\n") == Approx(4.5f).epsilon(1e-4));
+        // A cubic curve (b-spline basis) through points on x = 0: hit from the side.
+        CHECK(hitDistance("Basis \"b-spline\" 1 \"b-spline\" 1\nCurves \"cubic\" [4] \"nonperiodic\" "
+                          "\"P\" [0 -3 5  0 -1 5  0 1 5  0 3 5] \"constantwidth\" [0.5]\n") == Approx(4.75f).epsilon(1e-2));
+    }
+    SECTION("a lone blobby ellipsoid is its unit sphere") {
+        CHECK(hitDistance("Blobby 1 [1001 0] [1 0 0 0  0 1 0 0  0 0 1 0  0 0 5 1] [\"\"]\n") == Approx(4.0f).epsilon(0.01));
+    }
+}
+
+TEST_CASE("area lights from geometry: AreaLightSource and PxrMeshLight shapes become lights or glow", "[rib][lights]") {
+    Diagnostics diagnostics(false);
+    Scene scene = test::parseRib("WorldBegin\nAttributeBegin\n"
+                                 "AreaLightSource \"PxrStdAreaLight\" \"key\" \"float exposure\" [2]\n"
+                                 "Translate 0 3 0\nSphere 0.5 -0.5 0.5 360\nDisk 0 1 360\nAttributeEnd\n"
+                                 "AttributeBegin\nLight \"PxrMeshLight\" \"panel\" \"float intensity\" [3]\n"
+                                 "Polygon \"P\" [0 0 4  1 0 4  1 1 4  0 1 4]\nAttributeEnd\nSphere 1 -1 1 360\n",
+                                 diagnostics);
+    // The sphere and the disk are lights of their own kind; the polygon glows; the last sphere is ordinary.
+    REQUIRE(scene.lights.size() == 2u);
+    CHECK(std::string(scene.lights[0]->kind()) == "PxrSphereLight");
+    CHECK(std::string(scene.lights[1]->kind()) == "PxrDiskLight");
+    CHECK(scene.lights[0]->color.r == Approx(4.0f));  // 2^exposure
+    REQUIRE(scene.shapes.size() == 2u);
+    MaterialDesc const& glow = scene.materials[static_cast<size_t>(scene.shapes[0]->material)];
+    CHECK(glow.plugin == "PxrConstant");
+    CHECK(glow.params.getColor("emitColor", Vec3(0)) == Vec3(3.0f));
+    CHECK(scene.materials[static_cast<size_t>(scene.shapes[1]->material)].plugin == "PxrDiffuse");
+}
+
+TEST_CASE("RenderMan's own materials and integrators that are not here get a stand-in, with one warning each",
+          "[rib][plugins]") {
+    std::string rib = "Format 8 8 1\nProjection \"perspective\" \"fov\" [30]\nIntegrator \"PxrVCM\" \"v\" \"int maxPathLength\" [3]\n"
+                      "WorldBegin\nLight \"PxrDomeLight\" \"sky\"\nTranslate 0 0 5\n"
+                      "Bxdf \"PxrSurface\" \"s\" \"color diffuseColor\" [0.8 0.2 0.1] \"float diffuseGain\" [0.5]\n"
+                      "Sphere 1 -1 1 360\nBxdf \"PxrSurface\" \"t\"\nSphere 0.5 -0.5 0.5 360\nWorldEnd\n";
+    RenderSettings settings;
+    settings.spp = 4;
+    auto r = test::renderRib(rib, settings);
+    int surfaceWarnings = 0, integratorWarnings = 0;
+    for (auto const& m : r.messages) {
+        surfaceWarnings += m.text.find("\"PxrSurface\" is one of RenderMan's materials") != std::string::npos;
+        integratorWarnings += m.text.find("\"PxrVCM\" is one of RenderMan's") != std::string::npos;
+    }
+    CHECK(surfaceWarnings == 1);
+    CHECK(integratorWarnings == 1);
+    CHECK(r.stats.integrator == "PxrPathTracer");
+    // The stand-in keeps the colour: the centre pixel is red-dominated (0.8 x 0.5 against 0.1 x 0.5).
+    CHECK(r.channel(4, 4, 0) > 3.0f * r.channel(4, 4, 2));
+    // A misspelt integrator of no known kind stays an error.
+    CHECK_THROWS_WITH(test::renderRib("Integrator \"PxrNoSuch\" \"x\"\nWorldBegin\nWorldEnd\n"),
+                      Catch::Matchers::Contains("not found"));
+}
