@@ -20,6 +20,7 @@ set(RIX_SCENE_SOURCES
   scene/shapes/Quadric.cpp
   scene/shapes/TriangleMesh.cpp
   scene/shapes/MeshBuilders.cpp
+  scene/shapes/Triangulation.cpp
   scene/shapes/SubdivisionSurface.cpp
   scene/shapes/Curves.cpp
   scene/shapes/NurbsSurface.cpp

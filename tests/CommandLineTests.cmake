@@ -22,6 +22,8 @@ add_test(NAME cli.missing_image_warns COMMAND rixrender --quiet --spp 1 -o missi
 set_tests_properties(cli.missing_image_warns PROPERTIES LABELS "cli;sanitize" PASS_REGULAR_EXPRESSION
   "missing-image.rib:4:3: PxrDomeLight: lightColorMap .*no-such-sky.exr\" does not exist .*rendering without it.*wrote missing-image.exr")
 add_cli_failure(unwritable_output "folder \"/nonexistent-folder\" does not exist" ${PROJECT_SOURCE_DIR}/scenes/ch06/diffuse.rib -o /nonexistent-folder/x.exr)
+add_cli_failure(output_is_a_folder "cannot write \".*bad-input\": it is a folder" ${PROJECT_SOURCE_DIR}/scenes/ch06/diffuse.rib -o ${BAD})
+add_cli_failure(stats_is_a_folder "cannot write \".*bad-input\": it is a folder" ${PROJECT_SOURCE_DIR}/scenes/ch06/diffuse.rib -o out.exr --stats-json ${BAD})
 add_cli_failure(zero_size_image "zero-size.rib:3:1: Format: resolution must be whole numbers of at least 1 pixel" ${BAD}/zero-size.rib -o out.exr)
 add_cli_failure(nan_transform "nan-transform.rib:5:3: Scale: .*finite" ${BAD}/nan-transform.rib -o out.exr)
 add_cli_failure(missing_scene "cannot open RIB file" ${BAD}/does-not-exist.rib -o out.exr)

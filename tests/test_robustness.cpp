@@ -125,3 +125,20 @@ TEST_CASE("the variance image estimates the variance of each pixel mean", "[film
     CHECK(sumLow / sumHigh > 2.5);
     CHECK(sumLow / sumHigh < 6.5);
 }
+
+TEST_CASE("an exception from a plugin names the plugin, its Bxdf statement and the shared object", "[errors][plugins]") {
+    std::string rib =
+        "Format 8 8 1\nProjection \"perspective\" \"fov\" [30]\nIntegrator \"PxrPathTracer\" \"p\"\n"
+        "WorldBegin\n  Light \"PxrDomeLight\" \"sky\"\n  Translate 0 0 5\n  Bxdf \"probe_throws\" \"thrower\"\n"
+        "  Sphere 1 -1 1 360\nWorldEnd\n";
+    try {
+        test::renderRib(rib, {}, "thrower.rib");
+        FAIL("expected the plugin's exception to stop the render");
+    } catch (PluginFault const& e) {
+        std::string message = e.what();
+        CHECK_THAT(message, Catch::Matchers::Contains("plugin \"probe_throws\""));
+        CHECK_THAT(message, Catch::Matchers::Contains("Bxdf \"thrower\" at thrower.rib:7:3"));
+        CHECK_THAT(message, Catch::Matchers::Contains("probe_throws.so"));
+        CHECK_THAT(message, Catch::Matchers::Contains("probe: GenerateSample gave up"));
+    }
+}

@@ -3,10 +3,12 @@
 // shaders, negative quadric radii and general polygons.
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <sstream>
 
 #include "accel/RayTracer.h"
 #include "scene/SceneBuilder.h"
 #include "scene/shapes/Quadric.h"
+#include "scene/shapes/TriangleMesh.h"
 #include "support/RenderHelpers.h"
 
 using namespace bxdflab;
@@ -136,15 +138,49 @@ TEST_CASE("a negative quadric radius turns the surface inside out", "[rib][geome
     CHECK(scene.shapes[0]->basics(hit).Ng.z == Approx(-1.0f));  // a positive radius faces +z
 }
 
-TEST_CASE("GeneralPolygon: the outer loop of a polygon with holes", "[rib][geometry]") {
+TEST_CASE("GeneralPolygon and PointsGeneralPolygons: holes are holes", "[rib][geometry]") {
     Diagnostics diagnostics(false);
-    Scene scene = test::parseRib("WorldBegin\nGeneralPolygon [4 3] \"P\" [-2 -2 5  2 -2 5  2 2 5  -2 2 5  "
-                                 "-1 -1 5  1 -1 5  0 1 5]\n",
+    // A square with a triangular hole (either winding of the hole).
+    for (std::string hole : {"-1 -1 5  1 -1 5  0 1 5", "0 1 5  1 -1 5  -1 -1 5"}) {
+        Scene scene = test::parseRib("WorldBegin\nGeneralPolygon [4 3] \"P\" [-2 -2 5  2 -2 5  2 2 5  -2 2 5  " + hole + "]\n",
+                                     diagnostics);
+        REQUIRE(scene.shapes.size() == 1u);
+        RayTracer tracer(scene);
+        CHECK(trace(tracer, Vec3(1.8f, 1.8f, 0), Vec3(0, 0, 1)).hit());
+        CHECK(trace(tracer, Vec3(-1.5f, 0.5f, 0), Vec3(0, 0, 1)).hit());
+        CHECK_FALSE(trace(tracer, Vec3(0.0f, -0.5f, 0), Vec3(0, 0, 1)).hit());  // in the hole
+        CHECK_FALSE(trace(tracer, Vec3(2.5f, 0, 0), Vec3(0, 0, 1)).hit());
+    }
+    // Two holes side by side in one face of a mesh.
+    Scene scene = test::parseRib("WorldBegin\nPointsGeneralPolygons [3] [4 4 4] [0 1 2 3  4 5 6 7  8 9 10 11] \"P\" ["
+                                 "-3 -1 5  3 -1 5  3 1 5  -3 1 5   -2 -0.5 5  -1 -0.5 5  -1 0.5 5  -2 0.5 5   "
+                                 "1 -0.5 5  2 -0.5 5  2 0.5 5  1 0.5 5]\n",
                                  diagnostics);
-    REQUIRE(scene.shapes.size() == 1u);
     RayTracer tracer(scene);
-    CHECK(trace(tracer, Vec3(1.8f, 1.8f, 0), Vec3(0, 0, 1)).hit());
-    CHECK_FALSE(trace(tracer, Vec3(2.5f, 0, 0), Vec3(0, 0, 1)).hit());
+    CHECK_FALSE(trace(tracer, Vec3(-1.5f, 0, 0), Vec3(0, 0, 1)).hit());
+    CHECK_FALSE(trace(tracer, Vec3(1.5f, 0, 0), Vec3(0, 0, 1)).hit());
+    CHECK(trace(tracer, Vec3(0.0f, 0, 0), Vec3(0, 0, 1)).hit());
+    CHECK(trace(tracer, Vec3(2.5f, 0.8f, 0), Vec3(0, 0, 1)).hit());
+}
+
+TEST_CASE("a face of a million vertices is triangulated in about as many steps; an absurd one is refused",
+          "[rib][geometry][errors]") {
+    // A star: every other vertex reflex, the worst kind of face for a naive ear clipper.
+    size_t const n = 1'000'000;
+    std::ostringstream rib;
+    rib << "WorldBegin\nPolygon \"P\" [";
+    for (size_t i = 0; i < n; ++i) {
+        double angle = 2.0 * 3.14159265358979 * static_cast<double>(i) / n, r = i % 2 ? 1.0 : 0.999;
+        rib << r * std::cos(angle) << ' ' << r * std::sin(angle) << " 5 ";
+    }
+    rib << "]\n";
+    Diagnostics diagnostics(false);
+    Scene scene = test::parseRib(rib.str(), diagnostics);
+    REQUIRE(scene.shapes.size() == 1u);
+    auto const& mesh = dynamic_cast<TriangleMesh const&>(*scene.shapes[0]);
+    CHECK(mesh.data().triangleCount() == n - 2);
+    RayTracer tracer(scene);
+    CHECK(trace(tracer, Vec3(0.3f, 0.2f, 0), Vec3(0, 0, 1)).hit());
 }
 
 TEST_CASE("RenderMan's camera plugins are perspective cameras; with no Projection the camera is orthographic",

@@ -7,8 +7,10 @@
 //   PROBE_NEGATIVE_PDF  GenerateSample and EvaluateSample return negative pdfs on odd points
 //   PROBE_UNTERMINATED_TABLE  GetParamTable's table has lost its end marker
 //   PROBE_BAD_TABLE_ENTRY     GetParamTable's table has an entry with no name
+//   PROBE_THROWS     GenerateSample throws a std::runtime_error
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 #include <new>
 #include <vector>
 
@@ -36,6 +38,9 @@ public:
 
     void GenerateSample(RixBXTransportTrait, RixBXLobeTraits const*, RixRNG* rng, RixBXLobeSampled* sampled,
                         RtVector3* Ln, RixBXLobeWeights& W, float* FPdf, float* RPdf, RtColorRGB*) override {
+#ifdef PROBE_THROWS
+        throw std::runtime_error("probe: GenerateSample gave up");
+#endif
         RtColorRGB* w = W.AddActiveLobe(g_lobe);
         for (int i = 0; i < shadingCtx->numPts; ++i) {
             RtNormal3 N = RixGetForwardFacingNormal(m_Vn[i], m_Nn[i]);

@@ -52,6 +52,9 @@ void checkWritable(std::string const& path) {
     fs::path parent = fs::path(path).parent_path();
     if (parent.empty()) parent = ".";
     std::error_code error;  // queries that fail (a name too long, ...) count as "not there"
+    if (fs::is_directory(path, error))
+        throw RenderError("cannot write \"" + path + "\": it is a folder (give a file name, e.g. " +
+                          (fs::path(path) / "image.exr").string() + ")");
     if (!fs::is_directory(parent, error))
         throw RenderError("cannot write image \"" + path + "\": folder \"" + parent.string() + "\" does not exist");
     if (access(parent.c_str(), W_OK) != 0)

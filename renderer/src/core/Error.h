@@ -35,4 +35,11 @@ public:
     SourceLocation location;
 };
 
+/// An exception a plugin threw while shading, with the plugin and the RIB
+/// statement that uses it: "plugin \"x\" (Bxdf \"h\", scene.rib:12:3) threw: ...".
+class PluginFault : public RenderError {
+public:
+    using RenderError::RenderError;
+};
+
 }  // namespace bxdflab

@@ -1,6 +1,15 @@
 #include "render/BatchShader.h"
 
 namespace bxdflab {
+namespace {
+
+std::string faultOf(BxdfInstance const& material, std::string const& what) {
+    return "plugin \"" + material.plugin().name() + "\" (Bxdf \"" + material.handle() + "\" at " + material.where().str() +
+           ", loaded from " + material.plugin().path() + ") threw while shading: " + what +
+           " (the integrator, or this Bxdf's own code; a Bxdf must not throw)";
+}
+
+}  // namespace
 
 void BatchShader::shade(HitRecord const* hits, RixRNG::SampleCtx const* samples, int count, MemoryArena& arena,
                         Visitor const& visit) const {
@@ -31,15 +40,23 @@ void BatchShader::shade(HitRecord const* hits, RixRNG::SampleCtx const* samples,
                                m_counters.builtins);
         RixRNG rng(groupSamples, n);
         RixBxdfFactory* factory = material.plugin().factory();
-        RixBxdf* bxdf = factory->BeginScatter(&ctx, RixBXLobeTraits::All(), k_RixSCScatterQuery, nullptr,
-                                              material.instanceData());
-        if (!bxdf) {
-            m_diagnostics.warn("plugin \"" + material.plugin().name() +
-                               "\": BeginScatter returned null; its surfaces render black");
-        } else {
-            ShadeGroup group{ctx, *bxdf, rng, order + begin};
-            visit(group);
-            factory->EndScatter(bxdf);
+        try {
+            RixBxdf* bxdf = factory->BeginScatter(&ctx, RixBXLobeTraits::All(), k_RixSCScatterQuery, nullptr,
+                                                  material.instanceData());
+            if (!bxdf) {
+                m_diagnostics.warn("plugin \"" + material.plugin().name() +
+                                   "\": BeginScatter returned null; its surfaces render black");
+            } else {
+                ShadeGroup group{ctx, *bxdf, rng, order + begin};
+                visit(group);
+                factory->EndScatter(bxdf);
+            }
+        } catch (PluginFault const&) {
+            throw;  // from a batch shaded deeper down the path: already named
+        } catch (std::exception const& e) {
+            throw PluginFault(faultOf(material, e.what()));
+        } catch (...) {
+            throw PluginFault(faultOf(material, "an exception that is not a std::exception"));
         }
         arena.release(groupStart);
         m_counters.shadePoints.fetch_add(static_cast<uint64_t>(n), std::memory_order_relaxed);

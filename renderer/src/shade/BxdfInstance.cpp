@@ -82,7 +82,7 @@ private:
 }  // namespace
 
 BxdfInstance::BxdfInstance(MaterialDesc const& material, BxdfPlugin& plugin, Diagnostics& diagnostics)
-    : m_plugin(plugin), m_handle(material.handle) {
+    : m_plugin(plugin), m_handle(material.handle), m_where(material.where) {
     auto const& table = plugin.paramTable();
     m_values.resize(table.size());
     for (size_t i = 0; i < table.size(); ++i) m_values[i].type = table[i].type;

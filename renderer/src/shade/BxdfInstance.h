@@ -33,6 +33,8 @@ public:
 
     BxdfPlugin& plugin() const { return m_plugin; }
     std::string const& handle() const { return m_handle; }
+    /// The Bxdf statement in the RIB.
+    SourceLocation const& where() const { return m_where; }
     RtPointer instanceData() const { return m_instance.data; }
     int hints() const { return m_hints; }
     /// Value of parameter `id` (table order); nullptr for an out-of-range id.
@@ -43,6 +45,7 @@ public:
 private:
     BxdfPlugin& m_plugin;
     std::string m_handle;
+    SourceLocation m_where;
     std::vector<ParamValue> m_values;
     RixShadingPlugin::InstanceData m_instance;
     int m_hints = RixBxdfFactory::k_TriviallyOpaque;

@@ -88,7 +88,7 @@ void SceneBuilder::readSubdivisionMesh(RequestReader& in, bool hierarchical) {
     if (scheme == "bilinear") {
         // Flat faces: the polygons themselves.
         std::vector<int> loops(nverts.size(), 1);
-        MeshData mesh = buildPolygonMesh(loops, nverts, verts, params, state().transform, in.where(), m_diagnostics);
+        MeshData mesh = buildPolygonMesh(loops, nverts, verts, params, state().transform, in.where());
         addShape(std::make_unique<TriangleMesh>(std::move(mesh), request, state().reverseOrientation), in.where());
         return;
     }

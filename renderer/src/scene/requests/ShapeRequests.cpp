@@ -146,7 +146,7 @@ void SceneBuilder::polygon(RequestReader& in) {
     if (count < 3) in.fail(in.where(), "a polygon needs at least 3 vertices, got " + std::to_string(count));
     std::vector<int> indices(static_cast<size_t>(count));
     for (int i = 0; i < count; ++i) indices[static_cast<size_t>(i)] = i;
-    MeshData mesh = buildPolygonMesh({1}, {count}, indices, params, state().transform, in.where(), m_diagnostics);
+    MeshData mesh = buildPolygonMesh({1}, {count}, indices, params, state().transform, in.where());
     params.find("Cs");  // per-vertex colour is read by no Bxdf yet; accepted quietly
     params.warnUnused(m_diagnostics, "Polygon");
     addShape(std::make_unique<TriangleMesh>(std::move(mesh), "Polygon", state().reverseOrientation), in.where());
@@ -166,7 +166,7 @@ void SceneBuilder::generalPolygon(RequestReader& in) {
     std::vector<int> indices(static_cast<size_t>(total));
     for (long i = 0; i < total; ++i) indices[static_cast<size_t>(i)] = static_cast<int>(i);
     MeshData mesh = buildPolygonMesh({static_cast<int>(nverts.size())}, nverts, indices, params, state().transform,
-                                     in.where(), m_diagnostics);
+                                     in.where());
     params.find("Cs");
     params.warnUnused(m_diagnostics, "GeneralPolygon");
     addShape(std::make_unique<TriangleMesh>(std::move(mesh), "GeneralPolygon", state().reverseOrientation), in.where());
@@ -181,7 +181,7 @@ void SceneBuilder::pointsPolygons(RequestReader& in) {
         return;
     }
     std::vector<int> loops(nverts.size(), 1);
-    MeshData mesh = buildPolygonMesh(loops, nverts, verts, params, state().transform, in.where(), m_diagnostics);
+    MeshData mesh = buildPolygonMesh(loops, nverts, verts, params, state().transform, in.where());
     params.find("Cs");
     params.warnUnused(m_diagnostics, "PointsPolygons");
     addShape(std::make_unique<TriangleMesh>(std::move(mesh), "PointsPolygons", state().reverseOrientation), in.where());
@@ -196,7 +196,7 @@ void SceneBuilder::pointsGeneralPolygons(RequestReader& in) {
         warnOnce("empty mesh", in.where(), "PointsGeneralPolygons with no polygons; skipped");
         return;
     }
-    MeshData mesh = buildPolygonMesh(nloops, nverts, verts, params, state().transform, in.where(), m_diagnostics);
+    MeshData mesh = buildPolygonMesh(nloops, nverts, verts, params, state().transform, in.where());
     params.find("Cs");
     params.warnUnused(m_diagnostics, "PointsGeneralPolygons");
     addShape(std::make_unique<TriangleMesh>(std::move(mesh), "PointsGeneralPolygons", state().reverseOrientation),

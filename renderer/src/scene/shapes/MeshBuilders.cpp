@@ -5,6 +5,7 @@
 #include <numeric>
 
 #include "scene/shapes/TeapotData.h"
+#include "scene/shapes/Triangulation.h"
 
 namespace bxdflab {
 namespace {
@@ -33,64 +34,6 @@ private:
     Param const* m_param;
     int m_components;
 };
-
-/// Signed area test in 2-D, used by ear clipping.
-float cross2(Vec2 const& a, Vec2 const& b, Vec2 const& c) { return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x); }
-
-bool insideTriangle(Vec2 const& p, Vec2 const& a, Vec2 const& b, Vec2 const& c) {
-    return cross2(a, b, p) >= 0.0f && cross2(b, c, p) >= 0.0f && cross2(c, a, p) >= 0.0f;
-}
-
-/// Triangulates one simple polygon (corner positions in order); returns
-/// triples of corner indices. Ear clipping in the polygon's dominant plane.
-std::vector<int> triangulateLoop(std::vector<Vec3> const& corners) {
-    int n = static_cast<int>(corners.size());
-    std::vector<int> triangles;
-    if (n < 3) return triangles;
-    // Newell's method gives a robust normal for non-planar and concave loops.
-    Vec3 normal(0.0f);
-    for (int i = 0; i < n; ++i) {
-        Vec3 const& a = corners[i];
-        Vec3 const& b = corners[(i + 1) % n];
-        normal += Vec3((a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x), (a.x - b.x) * (a.y + b.y));
-    }
-    int axis = std::fabs(normal.x) > std::fabs(normal.y) ? (std::fabs(normal.x) > std::fabs(normal.z) ? 0 : 2)
-                                                         : (std::fabs(normal.y) > std::fabs(normal.z) ? 1 : 2);
-    int ax = (axis + 1) % 3, ay = (axis + 2) % 3;
-    float orientation = normal[axis] >= 0.0f ? 1.0f : -1.0f;
-    std::vector<Vec2> flat(n);
-    for (int i = 0; i < n; ++i) flat[i] = Vec2(corners[i][ax], orientation * corners[i][ay]);
-
-    std::vector<int> remaining(n);
-    std::iota(remaining.begin(), remaining.end(), 0);
-    int guard = 2 * n * n;
-    while (remaining.size() > 3 && guard-- > 0) {
-        int m = static_cast<int>(remaining.size());
-        bool clipped = false;
-        for (int k = 0; k < m && !clipped; ++k) {
-            int ia = remaining[(k + m - 1) % m], ib = remaining[k], ic = remaining[(k + 1) % m];
-            if (cross2(flat[ia], flat[ib], flat[ic]) <= 0.0f) continue;  // reflex corner
-            bool blocked = false;
-            for (int other : remaining)
-                if (other != ia && other != ib && other != ic && insideTriangle(flat[other], flat[ia], flat[ib], flat[ic])) {
-                    blocked = true;
-                    break;
-                }
-            if (blocked) continue;
-            triangles.insert(triangles.end(), {ia, ib, ic});
-            remaining.erase(remaining.begin() + k);
-            clipped = true;
-        }
-        if (!clipped) break;  // degenerate loop: fall back to a fan below
-    }
-    if (remaining.size() > 3 || guard <= 0) {
-        for (size_t k = 1; k + 1 < remaining.size(); ++k)
-            triangles.insert(triangles.end(), {remaining[0], remaining[k], remaining[k + 1]});
-    } else if (remaining.size() == 3) {
-        triangles.insert(triangles.end(), {remaining[0], remaining[1], remaining[2]});
-    }
-    return triangles;
-}
 
 using SurfaceFunction = std::function<void(float u, float v, Vec3& P, Vec3& dPdu, Vec3& dPdv)>;
 
@@ -163,7 +106,7 @@ void tessellate(MeshData& mesh, int nu, int nv, SurfaceFunction const& surface, 
 
 MeshData buildPolygonMesh(std::vector<int> const& loopsPerFace, std::vector<int> const& verticesPerLoop,
                           std::vector<int> const& vertexIndices, ParamList const& params, Mat4 const& toWorld,
-                          SourceLocation const& where, Diagnostics& diagnostics) {
+                          SourceLocation const& where) {
     Param const* P = params.find("P");
     if (!P) throw RibError(where, "polygon needs a \"P\" primvar with its vertex positions");
     if (P->decl.type != ParamType::Point && P->decl.type != ParamType::Float && P->decl.type != ParamType::Vector)
@@ -189,49 +132,54 @@ MeshData buildPolygonMesh(std::vector<int> const& loopsPerFace, std::vector<int>
         if (loops < 1) throw RibError(where, "face " + std::to_string(face) + " has no loops");
         if (loopCursor + static_cast<size_t>(loops) > verticesPerLoop.size())
             throw RibError(where, "more loops than vertex counts (nloops and nverts disagree)");
-        if (loops > 1)
-            diagnostics.warn(where, "polygons with holes are not supported: the holes are filled");
+        // The face's corners (every loop's), and each loop as indices into them.
+        std::vector<Vec3> corners;
+        std::vector<int> pointIndex;
+        std::vector<std::vector<int>> faceLoops;
+        size_t const firstCorner = cornerCursor;
         for (int loop = 0; loop < loops; ++loop) {
             int count = verticesPerLoop[loopCursor + static_cast<size_t>(loop)];
             if (count < 0 || cornerCursor + static_cast<size_t>(count) > vertexIndices.size())
                 throw RibError(where, "vertex counts add up to more indices than were given");
-            if (loop == 0) {
-                std::vector<Vec3> corners;
-                std::vector<int> pointIndex;
-                for (int k = 0; k < count; ++k) {
-                    int vi = vertexIndices[cornerCursor + static_cast<size_t>(k)];
-                    if (vi < 0 || static_cast<size_t>(vi) >= numPoints)
-                        throw RibError(where, "vertex index " + std::to_string(vi) + " is out of range (there are " +
-                                                  std::to_string(numPoints) + " points)");
-                    pointIndex.push_back(vi);
-                    corners.emplace_back(P->floats[3 * vi], P->floats[3 * vi + 1], P->floats[3 * vi + 2]);
-                }
-                std::vector<int> triangles = triangulateLoop(corners);
-                // If the mirror flips winding, swap two corners to keep "outside" outside.
-                for (size_t k = 0; k < triangles.size(); k += 3) {
-                    if (mirrored) std::swap(triangles[k + 1], triangles[k + 2]);
-                    for (size_t c = 0; c < 3; ++c) {
-                        int local = triangles[k + c];
-                        int corner = static_cast<int>(cornerCursor) + local;
-                        int vertex = pointIndex[static_cast<size_t>(local)];
-                        unsigned id = mesh.addVertex(transformPoint(toWorld, corners[static_cast<size_t>(local)]));
-                        if (normalVar.present()) {
-                            float const* n = normalVar.at(static_cast<int>(face), corner, vertex);
-                            mesh.N.push_back(safeNormalize(transformNormal(normalMatrix, Vec3(n[0], n[1], n[2]))));
-                        }
-                        if (hasSt) {
-                            Vec2 value = st ? Vec2(stVar.at(static_cast<int>(face), corner, vertex)[0],
-                                                   stVar.at(static_cast<int>(face), corner, vertex)[1])
-                                            : Vec2(*sVar.at(static_cast<int>(face), corner, vertex),
-                                                   *tVar.at(static_cast<int>(face), corner, vertex));
-                            mesh.st.push_back(value);
-                            mesh.uv.push_back(value);
-                        }
-                        mesh.indices.push_back(id);
-                    }
-                }
+            if (corners.size() + static_cast<size_t>(count) > kMaxFaceVertices)
+                throw RibError(where, "face " + std::to_string(face) + " has more than " + std::to_string(kMaxFaceVertices) +
+                                          " vertices");
+            faceLoops.emplace_back();
+            for (int k = 0; k < count; ++k) {
+                int vi = vertexIndices[cornerCursor + static_cast<size_t>(k)];
+                if (vi < 0 || static_cast<size_t>(vi) >= numPoints)
+                    throw RibError(where, "vertex index " + std::to_string(vi) + " is out of range (there are " +
+                                              std::to_string(numPoints) + " points)");
+                faceLoops.back().push_back(static_cast<int>(corners.size()));
+                pointIndex.push_back(vi);
+                corners.emplace_back(P->floats[3 * static_cast<size_t>(vi)], P->floats[3 * static_cast<size_t>(vi) + 1],
+                                     P->floats[3 * static_cast<size_t>(vi) + 2]);
             }
             cornerCursor += static_cast<size_t>(count);
+        }
+        std::vector<int> triangles = triangulatePolygon(corners, faceLoops);
+        // If the mirror flips winding, swap two corners to keep "outside" outside.
+        for (size_t k = 0; k + 2 < triangles.size(); k += 3) {
+            if (mirrored) std::swap(triangles[k + 1], triangles[k + 2]);
+            for (size_t c = 0; c < 3; ++c) {
+                int local = triangles[k + c];
+                int corner = static_cast<int>(firstCorner) + local;
+                int vertex = pointIndex[static_cast<size_t>(local)];
+                unsigned id = mesh.addVertex(transformPoint(toWorld, corners[static_cast<size_t>(local)]));
+                if (normalVar.present()) {
+                    float const* n = normalVar.at(static_cast<int>(face), corner, vertex);
+                    mesh.N.push_back(safeNormalize(transformNormal(normalMatrix, Vec3(n[0], n[1], n[2]))));
+                }
+                if (hasSt) {
+                    Vec2 value = st ? Vec2(stVar.at(static_cast<int>(face), corner, vertex)[0],
+                                           stVar.at(static_cast<int>(face), corner, vertex)[1])
+                                    : Vec2(*sVar.at(static_cast<int>(face), corner, vertex),
+                                           *tVar.at(static_cast<int>(face), corner, vertex));
+                    mesh.st.push_back(value);
+                    mesh.uv.push_back(value);
+                }
+                mesh.indices.push_back(id);
+            }
         }
         loopCursor += static_cast<size_t>(loops);
     }

@@ -12,13 +12,13 @@
 namespace bxdflab {
 
 /// Polygon, PointsPolygons and PointsGeneralPolygons. `loopsPerFace` has one
-/// entry per face (1 for simple polygons; more means holes, which are not
-/// supported: the outer loop is kept and a warning given). Concave faces are
-/// triangulated by ear clipping. Primvars read from `params`: P (required),
+/// entry per face (1 for simple polygons; more means holes: the first loop is
+/// the outline, the others holes). Concave faces and holes are triangulated
+/// by ear clipping (scene/shapes/Triangulation). Primvars read from `params`: P (required),
 /// N and st (or s and t) with class vertex/varying/facevarying/uniform/constant.
 MeshData buildPolygonMesh(std::vector<int> const& loopsPerFace, std::vector<int> const& verticesPerLoop,
                           std::vector<int> const& vertexIndices, ParamList const& params, Mat4 const& toWorld,
-                          SourceLocation const& where, Diagnostics& diagnostics);
+                          SourceLocation const& where);
 
 /// Patch "bilinear": four corners in the order (0,0) (1,0) (0,1) (1,1).
 MeshData buildBilinearPatch(std::array<Vec3, 4> const& corners, Mat4 const& toWorld, bool flip);
