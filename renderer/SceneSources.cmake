@@ -21,6 +21,7 @@ set(RIX_SCENE_SOURCES
   scene/shapes/TriangleMesh.cpp
   scene/shapes/MeshBuilders.cpp
   scene/shapes/Triangulation.cpp
+  scene/shapes/Primvars.cpp
   scene/shapes/SubdivisionSurface.cpp
   scene/shapes/Curves.cpp
   scene/shapes/NurbsSurface.cpp

@@ -272,6 +272,8 @@ TEST_CASE("a missing archive or sky image is a warning naming what was tried; --
     CHECK_THAT(ribErrorOf("WorldBegin\nReadArchive \"" + longName + "\"\n", strict), Catch::Matchers::Contains("not found"));
     CHECK_THAT(ribErrorOf("WorldBegin\nLight \"PxrDomeLight\" \"d\" \"string lightColorMap\" [\"" + longName + "\"]\n", strict),
                Catch::Matchers::Contains("does not exist"));
+    // A device is not an archive, strict or not.
+    CHECK_THAT(ribErrorOf("WorldBegin\nReadArchive \"/dev/zero\"\n"), Catch::Matchers::Contains("not a regular file"));
 
     // Without --strict the scene is read on, as RenderMan does, with one located warning each.
     Diagnostics diagnostics(false);

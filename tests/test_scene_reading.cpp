@@ -283,3 +283,64 @@ TEST_CASE("RenderMan's own materials and integrators that are not here get a sta
     CHECK_THROWS_WITH(test::renderRib("Integrator \"PxrNoSuch\" \"x\"\nWorldBegin\nWorldEnd\n"),
                       Catch::Matchers::Contains("not found"));
 }
+
+TEST_CASE("primvars reach plugins (GetPrimVar): constant, per-face, per-vertex and per-corner values", "[rib][primvars]") {
+    std::string const head = "Format 16 16 1\nProjection \"orthographic\"\nScreenWindow -1 1 -1 1\n"
+                             "Integrator \"PxrDefault\" \"d\"\nWorldBegin\nTranslate 0 0 5\n";
+    RenderSettings settings;
+    settings.spp = 4;
+    auto pixel = [](test::RenderOutcome const& r, int x, int y) {
+        return Vec3(r.channel(x, y, 0), r.channel(x, y, 1), r.channel(x, y, 2));
+    };
+    SECTION("a constant color on a sphere") {
+        auto r = test::renderRib(head + "Bxdf \"primvar\" \"p\"\nSphere 1 -1 1 360 \"constant color Cs\" [0.2 0.4 0.6]\n",
+                                 settings);
+        Vec3 c = pixel(r, 8, 8);
+        CHECK(c.x == Approx(0.2f));
+        CHECK(c.z == Approx(0.6f));
+    }
+    SECTION("a per-vertex float across a square: 0 on the left, 1 on the right") {
+        auto r = test::renderRib(head + "Bxdf \"primvar\" \"p\" \"string floatPrimvar\" \"ramp\"\n"
+                                        "Polygon \"P\" [-1 -1 0  1 -1 0  1 1 0  -1 1 0] \"varying float ramp\" [0 1 1 0]\n",
+                                 settings);
+        CHECK(pixel(r, 1, 8).x < 0.15f);
+        CHECK(pixel(r, 14, 8).x > 0.85f);
+        CHECK(pixel(r, 8, 8).x == Approx(0.5f).margin(0.07));
+    }
+    SECTION("one colour per face of a mesh") {
+        auto r = test::renderRib(head + "Bxdf \"primvar\" \"p\"\nPointsPolygons [4 4] [0 1 4 3  1 2 5 4] "
+                                        "\"P\" [-1 -1 0  0 -1 0  1 -1 0  -1 1 0  0 1 0  1 1 0] "
+                                        "\"uniform color Cs\" [1 0 0  0 0 1]\n",
+                                 settings);
+        CHECK(pixel(r, 3, 8) == Vec3(1, 0, 0));
+        CHECK(pixel(r, 12, 8) == Vec3(0, 0, 1));
+    }
+    SECTION("four corner values over a quadric's (u, v); none on a second shape") {
+        // A disk's u runs around it and v inward from the rim: the corners give v = 0 black, v = 1 white.
+        auto r = test::renderRib(head + "Bxdf \"primvar\" \"p\" \"string floatPrimvar\" \"g\"\n"
+                                        "Disk 0 1 360 \"varying float g\" [0 0 1 1]\nTranslate 5 0 0\nSphere 0.5 -0.5 0.5 360\n",
+                                 settings);
+        CHECK(pixel(r, 8, 8).x > 0.8f);   // the centre: v near 1
+        CHECK(pixel(r, 8, 0).x < 0.2f);   // the rim
+    }
+    SECTION("the default material shows Cs: a mesh coloured per vertex, lit") {
+        auto r = test::renderRib("Format 16 16 1\nProjection \"orthographic\"\nScreenWindow -1 1 -1 1\n"
+                                 "Integrator \"PxrDirectLighting\" \"d\"\nWorldBegin\nLightSource \"distantlight\" 1\n"
+                                 "Translate 0 0 5\nPolygon \"P\" [-1 -1 0  1 -1 0  1 1 0  -1 1 0] "
+                                 "\"varying color Cs\" [1 0 0  1 0 0  0 1 0  0 1 0]\n",
+                                 settings);
+        CHECK(pixel(r, 8, 14).x > 3.0f * pixel(r, 8, 14).y);  // bottom rows red
+        CHECK(pixel(r, 8, 1).y > 3.0f * pixel(r, 8, 1).x);    // top rows green
+    }
+}
+
+TEST_CASE("TextureCoordinates map a parametric surface's (u, v) to (s, t)", "[rib][primvars]") {
+    Diagnostics diagnostics(false);
+    Scene scene = test::parseRib("WorldBegin\nTextureCoordinates 0 0 2 0 0 4 2 4\nTranslate 0 0 5\n"
+                                 "Patch \"bilinear\" \"P\" [-1 -1 0  1 -1 0  -1 1 0  1 1 0]\n",
+                                 diagnostics);
+    REQUIRE(scene.shapes.size() == 1u);
+    CHECK(scene.shapes[0]->hasTextureCoordinates);
+    CHECK(scene.shapes[0]->textureCoordinates[6] == 2.0f);
+    CHECK(scene.shapes[0]->textureCoordinates[7] == 4.0f);
+}

@@ -48,6 +48,12 @@ public:
     }
 
 protected:
+    /// Probe points lie on no geometry: they have no primvars.
+    RixSCDetail PrimVar(RtUString const, RixSCType, void const** result, RtFloat const** radius) const override {
+        *result = nullptr;
+        if (radius) *radius = nullptr;
+        return k_RixSCInvalidDetail;
+    }
     int Builtin(BuiltinId id, RixSCType wanted, void const** result) const override {
         *result = nullptr;
         if (id < 0 || id >= k_numBuiltins) return 1;

@@ -179,6 +179,36 @@ public:
         return EvalParam(id, arrayIndex, const_cast<T const**>(result), dflt, promoteToVarying);
     }
 
+    /// A primitive variable ("primvar") of the geometry being shaded: a value
+    /// the RIB attaches to a shape, like "color Cs" [1 0 0] on a Sphere, or a
+    /// "varying float s" with one value per vertex of a mesh. *result becomes
+    /// an array of numPts values, interpolated across the surface where the
+    /// value varies. Returns k_RixSCInvalidDetail (and *result = nullptr) when
+    /// no shape in this batch has a primvar of that name and type; else
+    /// k_RixSCUniform (the same value at every point) or k_RixSCVarying.
+    /// Points on a shape without it get zeros. `radius`, if you pass it,
+    /// receives the filter radius of each value (0 here: no filtering).
+    ///   RtColorRGB const* Cs;
+    ///   if (sCtx->GetPrimVar(RtUString("Cs"), &Cs) != k_RixSCInvalidDetail) ...
+    RixSCDetail GetPrimVar(RtUString const name, RtFloat const** result, RtFloat const** radius = nullptr) const {
+        return PrimVar(name, k_RixSCFloat, (void const**)result, radius);
+    }
+    RixSCDetail GetPrimVar(RtUString const name, RtFloat2 const** result, RtFloat const** radius = nullptr) const {
+        return PrimVar(name, k_RixSCFloat2, (void const**)result, radius);
+    }
+    RixSCDetail GetPrimVar(RtUString const name, RtColorRGB const** result, RtFloat const** radius = nullptr) const {
+        return PrimVar(name, k_RixSCColor, (void const**)result, radius);
+    }
+    RixSCDetail GetPrimVar(RtUString const name, RtFloat3 const** result, RtFloat const** radius = nullptr) const {
+        return PrimVar(name, k_RixSCVector, (void const**)result, radius);
+    }
+    RixSCDetail GetPrimVar(RtUString const name, RtPoint3 const** result, RtFloat const** radius = nullptr) const {
+        return PrimVar(name, k_RixSCPoint, (void const**)result, radius);
+    }
+    RixSCDetail GetPrimVar(RtUString const name, RtNormal3 const** result, RtFloat const** radius = nullptr) const {
+        return PrimVar(name, k_RixSCNormal, (void const**)result, radius);
+    }
+
     /// Renderer services (RixMessages) while shading.
     virtual RixInterface* GetRixInterface(RixInterfaceId id) const = 0;
 
@@ -207,6 +237,9 @@ protected:
     virtual RixSCDetail Param(int id, int arrayIndex, RixSCType wanted, size_t elementSize,
                               void const** result, void const* dflt, bool promote) const = 0;
     virtual void* Allocate(size_t bytes, size_t alignment) const = 0;
+    /// Renderer side of GetPrimVar: numPts values of the type asked for, or k_RixSCInvalidDetail.
+    virtual RixSCDetail PrimVar(RtUString const name, RixSCType wanted, void const** result,
+                                RtFloat const** radius) const = 0;
 
 private:
     static RixSCType TypeOf(RtFloat const*) { return k_RixSCFloat; }

@@ -11,7 +11,9 @@
 //   shinymetal      as metal (its environment map is not read)
 //
 // plus Ka Cs ambient emitted by all but constant (the shaders' ambient()
-// term, from the scene's ambientlight shaders).
+// term, from the scene's ambientlight shaders). Cs and Os are the shape's
+// primvars when it has them ("color Cs" per vertex, say), else the Color and
+// Opacity in effect (surfaceColor, surfaceOpacity).
 //
 // The classic shaders' specular() is a Blinn lobe max(0, N.H)^(1/roughness),
 // with no cosine and no normalisation. Here the glossy lobe is the chapter 6
@@ -37,16 +39,20 @@ enum class Shader { Constant, Matte, Plastic, Metal };
 /// The plastic Bxdf with the classic ambient term as emission.
 class ClassicBxdf : public Plastic {
 public:
-    ClassicBxdf(RixShadingContext const* sc, RixBxdfFactory* factory, PlasticParams const& params, RtColorRGB glow)
+    /// `glow` has one colour per point.
+    ClassicBxdf(RixShadingContext const* sc, RixBxdfFactory* factory, PlasticParams const& params, RtColorRGB const* glow)
         : Plastic(sc, factory, params), m_glow(glow) {}
     bool EmitLocal(RtColorRGB* result) override {
-        if (m_glow.IsBlack()) return false;
-        for (int i = 0; i < shadingCtx->numPts; ++i) result[i] = m_glow;
-        return true;
+        bool any = false;
+        for (int i = 0; i < shadingCtx->numPts; ++i) {
+            result[i] = m_glow[i];
+            any = any || !m_glow[i].IsBlack();
+        }
+        return any;
     }
 
 private:
-    RtColorRGB m_glow;
+    RtColorRGB const* m_glow;
 };
 
 class ClassicSurfaceFactory : public RixBxdfFactory {
@@ -99,29 +105,31 @@ public:
         sCtx->EvalParam(k_Ks, -1, &Ks, &ksDefault, false);
         sCtx->EvalParam(k_roughness, -1, &roughness, &tenth, false);
 
-        RtColorRGB const color = *Cs * *Os;
+        // The shape's own Cs and Os, where it has them.
+        RtColorRGB const *CsVarying = nullptr, *OsVarying = nullptr;
+        if (sCtx->GetPrimVar(RtUString("Cs"), &CsVarying) == k_RixSCInvalidDetail) CsVarying = nullptr;
+        if (sCtx->GetPrimVar(RtUString("Os"), &OsVarying) == k_RixSCInvalidDetail) OsVarying = nullptr;
         RixShadingContext::Allocator pool(sCtx);
         int const n = sCtx->numPts;
-        if (shader == Shader::Constant) {
-            RtColorRGB* emission = pool.AllocForBxdf<RtColorRGB>(n);
-            std::fill(emission, emission + n, color);
-            return new (pool.AllocForBxdf<Emissive>(1)) Emissive(sCtx, this, emission);
-        }
-        RtColorRGB diffuse = shader == Shader::Metal ? black : color * *Kd;
-        RtColorRGB specular = (shader == Shader::Metal ? color : *specularColor) * (*Ks * F_INVPI);
-        if (shader == Shader::Matte) specular = black;
+        RtColorRGB* color = pool.AllocForBxdf<RtColorRGB>(n);
+        for (int i = 0; i < n; ++i) color[i] = (CsVarying ? CsVarying[i] : *Cs) * (OsVarying ? OsVarying[i] : *Os);
+        if (shader == Shader::Constant) return new (pool.AllocForBxdf<Emissive>(1)) Emissive(sCtx, this, color);
         PlasticParams params;
         RtColorRGB* diffuseColors = pool.AllocForBxdf<RtColorRGB>(n);
         RtColorRGB* specularColors = pool.AllocForBxdf<RtColorRGB>(n);
+        RtColorRGB* glow = pool.AllocForBxdf<RtColorRGB>(n);
         float* gloss = pool.AllocForBxdf<float>(n);
-        std::fill(diffuseColors, diffuseColors + n, diffuse);
-        std::fill(specularColors, specularColors + n, specular);
-        std::fill(gloss, gloss + n, 0.25f / RixMax(*roughness, 1e-4f));
+        for (int i = 0; i < n; ++i) {
+            diffuseColors[i] = shader == Shader::Metal ? black : color[i] * *Kd;
+            specularColors[i] = shader == Shader::Matte ? black
+                                : (shader == Shader::Metal ? color[i] : *specularColor) * (*Ks * F_INVPI);
+            glow[i] = color[i] * *ambient * *Ka;
+            gloss[i] = 0.25f / RixMax(*roughness, 1e-4f);
+        }
         params.diffuseColor = diffuseColors;
         params.specularColor = specularColors;
         params.gloss = gloss;
         params.normalize = 0;
-        RtColorRGB glow = color * *ambient * *Ka;
         return new (pool.AllocForBxdf<ClassicBxdf>(1)) ClassicBxdf(sCtx, this, params, glow);
     }
     void EndScatter(RixBxdf*) override {}

@@ -55,6 +55,7 @@ std::map<std::string, SceneBuilder::Handler> const& SceneBuilder::handlers() {
         {"Orientation", &SceneBuilder::orientation},
         {"Sides", &SceneBuilder::sides},
         {"Basis", &SceneBuilder::basis},
+        {"TextureCoordinates", &SceneBuilder::textureCoordinates},
         // Shading and lights.
         {"Bxdf", &SceneBuilder::bxdf},
         {"Surface", &SceneBuilder::surface},

@@ -6,6 +6,7 @@
 // instancing (objects and archives).
 #pragma once
 
+#include <array>
 #include <functional>
 #include <map>
 #include <memory>
@@ -56,6 +57,8 @@ private:
         bool colorSet = false;
         bool volume = false;  ///< the Bxdf in effect is a volume's (PxrVolume): its shapes are not rendered
         std::set<std::string> lightsOff;  ///< handles turned off with Illuminate for the shapes that follow
+        bool textureCoordinatesSet = false;
+        std::array<float, 8> textureCoordinates{{0, 0, 1, 0, 0, 1, 1, 1}};
         SplineBasis uBasis = SplineBasis::bezier(), vBasis = SplineBasis::bezier();
         std::map<std::string, Mat4> scopedSpaces;  ///< ScopedCoordinateSystem
         /// A classic Surface shader in effect (when no Bxdf is): its name and parameters.
@@ -117,6 +120,7 @@ private:
     void orientation(RequestReader& in);
     void sides(RequestReader& in);
     void basis(RequestReader& in);
+    void textureCoordinates(RequestReader& in);
     // Shading: Bxdfs, classic shaders, lights (scene/requests/ShadingRequests.cpp).
     void bxdf(RequestReader& in);
     void surface(RequestReader& in);
@@ -128,6 +132,8 @@ private:
                         SourceLocation const& where);
     void illuminate(RequestReader& in);
     int defaultMaterial();
+    /// The default material of a shape with "Cs" primvars: the classic matte shader, which reads them.
+    int primvarColorMaterial();
     /// The material of the classic Surface shader in effect, with the current Color.
     int classicMaterial();
     /// With an area light in effect, a shape that has a light of its own kind (a
@@ -153,7 +159,8 @@ private:
     void patch(RequestReader& in);
     void patchMesh(RequestReader& in);
     void geometry(RequestReader& in);
-    void addShape(std::unique_ptr<Shape> shape, SourceLocation const& where);
+    /// Adds a shape with the material and attributes in effect, and its primvars that do not vary.
+    void addShape(std::unique_ptr<Shape> shape, SourceLocation const& where, PrimvarSet constants = {});
     // Free-form shapes (scene/requests/FreeformRequests.cpp).
     void subdivisionMesh(RequestReader& in);
     void hierarchicalSubdivisionMesh(RequestReader& in);

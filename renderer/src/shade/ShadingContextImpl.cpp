@@ -85,7 +85,14 @@ void ShadingContextImpl::computeSurfaceGroup() const {
     for (auto& array : uvst) array = m_arena.allocArray<float>(static_cast<size_t>(numPts));
     m_pError = m_arena.allocArray<Vec3>(static_cast<size_t>(numPts));
     for (int i = 0; i < numPts; ++i) {
-        SurfaceBasics b = m_scene.shapes[m_hits[i].geomID]->basics(m_hits[i]);
+        Shape const& shape = *m_scene.shapes[m_hits[i].geomID];
+        SurfaceBasics b = shape.basics(m_hits[i]);
+        if (shape.hasTextureCoordinates) {
+            float const* c = shape.textureCoordinates;
+            float u = b.u, v = b.v;
+            b.s = (1 - u) * (1 - v) * c[0] + u * (1 - v) * c[2] + (1 - u) * v * c[4] + u * v * c[6];
+            b.t = (1 - u) * (1 - v) * c[1] + u * (1 - v) * c[3] + (1 - u) * v * c[5] + u * v * c[7];
+        }
         P[i] = toRt(b.P);
         Nn[i] = toRt(b.N);
         Ngn[i] = toRt(b.Ng);
@@ -175,6 +182,55 @@ int ShadingContextImpl::Builtin(BuiltinId id, RixSCType wanted, void const** res
 RixSCDetail ShadingContextImpl::Param(int id, int arrayIndex, RixSCType wanted, size_t elementSize,
                                       void const** result, void const* dflt, bool promote) const {
     return evalInstanceParam(m_material, id, arrayIndex, wanted, elementSize, result, dflt, promote, numPts, m_arena);
+}
+
+namespace {
+
+/// Whether a primvar of this type answers a GetPrimVar for `wanted`.
+bool primvarMatches(Primvar const& var, RixSCType wanted) {
+    switch (wanted) {
+        case k_RixSCFloat: return var.components == 1;
+        case k_RixSCFloat2: return var.components == 2;
+        case k_RixSCColor: return var.type == ParamType::Color;
+        case k_RixSCVector:
+        case k_RixSCPoint:
+        case k_RixSCNormal: return var.components == 3 && var.type != ParamType::Color;
+        default: return false;
+    }
+}
+
+}  // namespace
+
+RixSCDetail ShadingContextImpl::PrimVar(RtUString const name, RixSCType wanted, void const** result,
+                                        RtFloat const** radius) const {
+    *result = nullptr;
+    if (radius) *radius = nullptr;
+    int const components = wanted == k_RixSCFloat ? 1 : wanted == k_RixSCFloat2 ? 2 : 3;
+    std::string const wantedName = name.CStr() ? name.CStr() : "";
+    float* values = m_arena.allocArray<float>(static_cast<size_t>(numPts * components));
+    std::fill(values, values + numPts * components, 0.0f);
+    bool found = false, uniform = true;
+    Shape const* first = nullptr;
+    for (int i = 0; i < numPts; ++i) {
+        Shape const& shape = *m_scene.shapes[m_hits[i].geomID];
+        Primvar const* var = shape.primvars.find(wantedName);
+        if (!var || !primvarMatches(*var, wanted)) {
+            uniform = false;
+            continue;
+        }
+        shape.primvar(*var, m_hits[i], values + i * components);
+        found = true;
+        uniform = uniform && var->detail == Primvar::Detail::Constant && (!first || first == &shape);
+        first = &shape;
+    }
+    if (!found) return k_RixSCInvalidDetail;
+    *result = values;
+    if (radius) {
+        float* zeros = m_arena.allocArray<float>(static_cast<size_t>(numPts));
+        std::fill(zeros, zeros + numPts, 0.0f);
+        *radius = zeros;
+    }
+    return uniform ? k_RixSCUniform : k_RixSCVarying;
 }
 
 }  // namespace bxdflab

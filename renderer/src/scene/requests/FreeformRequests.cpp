@@ -82,14 +82,14 @@ void SceneBuilder::readSubdivisionMesh(RequestReader& in, bool hierarchical) {
     }
     std::vector<Vec3> P = worldPoints(params, state().transform, in);
     params.find("N");  // the limit surface has its own normals
-    params.find("Cs");
-    params.find("st");
+    PrimvarSet vars = shapePrimvars(params);
     params.warnUnused(m_diagnostics, request);
     if (scheme == "bilinear") {
         // Flat faces: the polygons themselves.
         std::vector<int> loops(nverts.size(), 1);
         MeshData mesh = buildPolygonMesh(loops, nverts, verts, params, state().transform, in.where());
-        addShape(std::make_unique<TriangleMesh>(std::move(mesh), request, state().reverseOrientation), in.where());
+        addShape(std::make_unique<TriangleMesh>(std::move(mesh), request, state().reverseOrientation), in.where(),
+                 std::move(vars));
         return;
     }
     if (scheme != "catmull-clark")
@@ -150,7 +150,7 @@ void SceneBuilder::readSubdivisionMesh(RequestReader& in, bool hierarchical) {
         floats += nf;
     }
     bool flip = state().reverseOrientation != mirrors(state().transform);
-    addShape(std::make_unique<SubdivisionSurface>(std::move(data), flip), in.where());
+    addShape(std::make_unique<SubdivisionSurface>(std::move(data), flip), in.where(), std::move(vars));
 }
 
 void SceneBuilder::nuPatch(RequestReader& in) {
@@ -175,12 +175,11 @@ void SceneBuilder::nuPatch(RequestReader& in) {
     } else {
         in.fail(in.where(), "needs \"P\" or \"Pw\" control points");
     }
-    params.find("Cs");
-    params.find("st");
+    PrimvarSet vars = shapePrimvars(params, 4);
     params.warnUnused(m_diagnostics, "NuPatch");
     bool flip = state().reverseOrientation != mirrors(state().transform);
     addShape(std::make_unique<TriangleMesh>(buildNurbsPatch(d, state().transform, flip, in.where()), "NuPatch", false),
-             in.where());
+             in.where(), std::move(vars));
 }
 
 void SceneBuilder::trimCurve(RequestReader& in) {
@@ -194,7 +193,7 @@ void SceneBuilder::blobby(RequestReader& in) {
     std::vector<float> floats = in.numberArray("floats");
     std::vector<std::string> strings = in.stringArray("strings");
     ParamList params = in.params();
-    params.find("Cs");
+    PrimvarSet vars = shapePrimvars(params);
     params.warnUnused(m_diagnostics, "Blobby");
     bool flip = state().reverseOrientation != mirrors(state().transform);
     std::string skipped;
@@ -204,7 +203,7 @@ void SceneBuilder::blobby(RequestReader& in) {
         warnOnce("empty blobby", in.where(), "Blobby: the field never reaches the surface threshold; nothing to draw");
         return;
     }
-    addShape(std::make_unique<TriangleMesh>(std::move(mesh), "Blobby", false), in.where());
+    addShape(std::make_unique<TriangleMesh>(std::move(mesh), "Blobby", false), in.where(), std::move(vars));
 }
 
 void SceneBuilder::points(RequestReader& in) {
@@ -215,8 +214,8 @@ void SceneBuilder::points(RequestReader& in) {
     if (widths && widths->size() != P.size())
         in.fail(in.where(), "\"width\" needs one value per point (" + std::to_string(P.size()) + "), got " +
                                 std::to_string(widths->size()));
-    params.find("Cs");
     params.find("N");
+    PrimvarSet vars = shapePrimvars(params);
     params.warnUnused(m_diagnostics, "Points");
     if (P.empty()) return;
     float scale = lengthScale(state().transform);
@@ -224,7 +223,7 @@ void SceneBuilder::points(RequestReader& in) {
     spheres.reserve(P.size());
     for (size_t i = 0; i < P.size(); ++i)
         spheres.emplace_back(P[i], 0.5f * scale * std::fabs(widths ? (*widths)[i] : constantWidth));
-    addShape(std::make_unique<Points>(std::move(spheres)), in.where());
+    addShape(std::make_unique<Points>(std::move(spheres)), in.where(), std::move(vars));
 }
 
 void SceneBuilder::curves(RequestReader& in) {
@@ -238,8 +237,8 @@ void SceneBuilder::curves(RequestReader& in) {
     std::vector<Vec3> P = worldPoints(params, state().transform, in);
     std::vector<float> const* widths = params.getFloats("width", ParamType::Float);
     float constantWidth = params.getFloat("constantwidth", 1.0f);
-    params.find("Cs");
     params.find("N");  // ribbons facing N are drawn as round tubes
+    PrimvarSet vars = shapePrimvars(params);
     params.warnUnused(m_diagnostics, "Curves");
     float const scale = lengthScale(state().transform);
     int const step = cubic ? state().vBasis.step : 1;
@@ -281,7 +280,7 @@ void SceneBuilder::curves(RequestReader& in) {
         widthIndex += static_cast<size_t>(varying);
     }
     if (data.segments.empty()) return;
-    addShape(std::make_unique<Curves>(std::move(data)), in.where());
+    addShape(std::make_unique<Curves>(std::move(data)), in.where(), std::move(vars));
 }
 
 }  // namespace bxdflab

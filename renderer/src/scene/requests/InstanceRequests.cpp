@@ -38,6 +38,9 @@ void SceneBuilder::readArchive(RequestReader& in) {
     };
     for (fs::path const& candidate : candidates) {
         tried += "\n    " + candidate.string();
+        std::error_code error;
+        if (fs::exists(candidate, error) && !fs::is_regular_file(candidate, error) && !fs::is_directory(candidate, error))
+            in.fail(in.where(), "archive \"" + candidate.string() + "\" is not a regular file (a pipe or a device?)");
         if (exists(candidate)) {
             readFile(candidate.string());
             return;

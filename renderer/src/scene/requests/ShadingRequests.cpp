@@ -72,6 +72,18 @@ int SceneBuilder::classicMaterial() {
     return index;
 }
 
+int SceneBuilder::primvarColorMaterial() {
+    std::shared_ptr<MaterialDesc> saved = state().surface;
+    auto matte = std::make_shared<MaterialDesc>();
+    matte->plugin = "ClassicSurface";
+    matte->handle = "default material (the shape's Cs)";
+    matte->params.add(stringParam("shader", "matte"));
+    state().surface = matte;
+    int index = classicMaterial();
+    state().surface = saved;
+    return index;
+}
+
 int SceneBuilder::defaultMaterial() {
     // RenderMan shades surfaces without a Bxdf with the stock PxrDiffuse; the
     // legacy `Color` attribute, when set, is its colour.

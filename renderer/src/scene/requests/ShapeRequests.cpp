@@ -30,7 +30,7 @@ float radiusOf(float value, bool& reverse) {
 
 }  // namespace
 
-void SceneBuilder::addShape(std::unique_ptr<Shape> shape, SourceLocation const& where) {
+void SceneBuilder::addShape(std::unique_ptr<Shape> shape, SourceLocation const& where, PrimvarSet constants) {
     if (!m_inWorld)
         throw RibError(where, m_framesDone == 0
                                   ? "geometry before any WorldBegin: a file of shapes without a world is an archive "
@@ -45,6 +45,16 @@ void SceneBuilder::addShape(std::unique_ptr<Shape> shape, SourceLocation const& 
             if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
                 throw RibError(where, std::string("a point of this ") + shape->kind() +
                                           " is not finite once transformed to world space (values near the float limit?)");
+    for (Primvar& var : constants.all())
+        if (!shape->primvars.find(var.name)) shape->primvars.add(std::move(var));
+    // TextureCoordinates map the parameters of parametric surfaces (not polygons) to s and t.
+    std::string const kind = shape->kind();
+    bool const polygonal = kind == "Polygon" || kind == "GeneralPolygon" || kind == "PointsPolygons" ||
+                           kind == "PointsGeneralPolygons" || kind == "SubdivisionMesh";
+    if (state().textureCoordinatesSet && !polygonal) {
+        shape->hasTextureCoordinates = true;
+        std::copy(state().textureCoordinates.begin(), state().textureCoordinates.end(), shape->textureCoordinates);
+    }
     shape->visibility = state().visibility;
     shape->name = state().name;
     shape->where = where;
@@ -59,83 +69,105 @@ void SceneBuilder::addShape(std::unique_ptr<Shape> shape, SourceLocation const& 
     for (auto& [handle, use] : m_lightUse) ++(state().lightsOff.count(handle) ? use.shapesOff : use.shapesOn);
     // Under an area light the shape glows; else a Bxdf wins over a classic
     // Surface shader (RenderMan's RIS ignores Surface).
+    // A shape with its own colours (a "Cs" primvar) and no material gets the
+    // classic matte shader, which reads them.
     if (state().areaLight)
         shape->material = emissiveMaterial(where);
+    else if (state().material >= 0)
+        shape->material = state().material;
+    else if (state().surface)
+        shape->material = classicMaterial();
+    else if (shape->primvars.find("Cs"))
+        shape->material = primvarColorMaterial();
     else
-        shape->material = state().material >= 0 ? state().material : state().surface ? classicMaterial() : defaultMaterial();
+        shape->material = defaultMaterial();
     m_scene.shapes.push_back(std::move(shape));
 }
 
 void SceneBuilder::sphere(RequestReader& in) {
     std::vector<float> v = in.numbers(4, "radius zmin zmax thetamax");
-    in.params().warnUnused(m_diagnostics, "Sphere");
+    ParamList params = in.params();
+    PrimvarSet vars = shapePrimvars(params, 4);
+    params.warnUnused(m_diagnostics, "Sphere");
     bool reverse = state().reverseOrientation;
     float radius = radiusOf(v[0], reverse);
     if (!(radius > 0.0f)) in.fail(in.where(), "radius must not be zero, got " + std::to_string(v[0]));
     bool whole = v[1] <= -radius && v[2] >= radius && v[3] >= 360.0f;
     if (whole && shapeAsLight("PxrSphereLight", glm::scale(state().transform, Vec3(2.0f * radius)))) return;
-    addShape(std::make_unique<Sphere>(radius, v[1], v[2], v[3], state().transform, reverse), in.where());
+    addShape(std::make_unique<Sphere>(radius, v[1], v[2], v[3], state().transform, reverse), in.where(), std::move(vars));
 }
 
 void SceneBuilder::cylinder(RequestReader& in) {
     std::vector<float> v = in.numbers(4, "radius zmin zmax thetamax");
-    in.params().warnUnused(m_diagnostics, "Cylinder");
+    ParamList params = in.params();
+    PrimvarSet vars = shapePrimvars(params, 4);
+    params.warnUnused(m_diagnostics, "Cylinder");
     bool reverse = state().reverseOrientation;
     float radius = radiusOf(v[0], reverse);
     if (!(radius > 0.0f)) in.fail(in.where(), "radius must not be zero, got " + std::to_string(v[0]));
-    addShape(std::make_unique<Cylinder>(radius, v[1], v[2], v[3], state().transform, reverse), in.where());
+    addShape(std::make_unique<Cylinder>(radius, v[1], v[2], v[3], state().transform, reverse), in.where(), std::move(vars));
 }
 
 void SceneBuilder::disk(RequestReader& in) {
     std::vector<float> v = in.numbers(3, "height radius thetamax");
-    in.params().warnUnused(m_diagnostics, "Disk");
+    ParamList params = in.params();
+    PrimvarSet vars = shapePrimvars(params, 4);
+    params.warnUnused(m_diagnostics, "Disk");
     bool reverse = state().reverseOrientation;
     float radius = radiusOf(v[1], reverse);
     if (!(radius > 0.0f)) in.fail(in.where(), "radius must not be zero, got " + std::to_string(v[1]));
     Mat4 diskLight = glm::scale(glm::translate(state().transform, Vec3(0.0f, 0.0f, v[0])), Vec3(2.0f * radius, 2.0f * radius, 1.0f));
     if (reverse) diskLight = glm::scale(diskLight, Vec3(1.0f, -1.0f, -1.0f));  // it emits the other way
     if (v[2] >= 360.0f && shapeAsLight("PxrDiskLight", diskLight)) return;
-    addShape(std::make_unique<Disk>(v[0], radius, v[2], state().transform, reverse), in.where());
+    addShape(std::make_unique<Disk>(v[0], radius, v[2], state().transform, reverse), in.where(), std::move(vars));
 }
 
 void SceneBuilder::cone(RequestReader& in) {
     std::vector<float> v = in.numbers(3, "height radius thetamax");
-    in.params().warnUnused(m_diagnostics, "Cone");
+    ParamList params = in.params();
+    PrimvarSet vars = shapePrimvars(params, 4);
+    params.warnUnused(m_diagnostics, "Cone");
     bool reverse = state().reverseOrientation;
     float radius = radiusOf(v[1], reverse);
     if (!(radius > 0.0f) || v[0] == 0.0f) in.fail(in.where(), "needs a non-zero radius and height");
-    addShape(std::make_unique<Cone>(v[0], radius, v[2], state().transform, reverse), in.where());
+    addShape(std::make_unique<Cone>(v[0], radius, v[2], state().transform, reverse), in.where(), std::move(vars));
 }
 
 void SceneBuilder::paraboloid(RequestReader& in) {
     std::vector<float> v = in.numbers(4, "rmax zmin zmax thetamax");
-    in.params().warnUnused(m_diagnostics, "Paraboloid");
+    ParamList params = in.params();
+    PrimvarSet vars = shapePrimvars(params, 4);
+    params.warnUnused(m_diagnostics, "Paraboloid");
     bool reverse = state().reverseOrientation;
     float radius = radiusOf(v[0], reverse);
     if (!(radius > 0.0f) || !(std::max(v[1], v[2]) > 0.0f)) in.fail(in.where(), "needs a non-zero rmax and a positive zmax");
-    addShape(std::make_unique<Paraboloid>(radius, v[1], v[2], v[3], state().transform, reverse), in.where());
+    addShape(std::make_unique<Paraboloid>(radius, v[1], v[2], v[3], state().transform, reverse), in.where(), std::move(vars));
 }
 
 void SceneBuilder::hyperboloid(RequestReader& in) {
     std::vector<float> v = in.numbers(7, "point1 point2 thetamax");
-    in.params().warnUnused(m_diagnostics, "Hyperboloid");
+    ParamList params = in.params();
+    PrimvarSet vars = shapePrimvars(params, 4);
+    params.warnUnused(m_diagnostics, "Hyperboloid");
     if (v[2] == v[5]) {
         warnOnce("flat hyperboloid", in.where(), "Hyperboloid with both points at the same height is not supported; skipped");
         return;
     }
     addShape(std::make_unique<Hyperboloid>(Vec3(v[0], v[1], v[2]), Vec3(v[3], v[4], v[5]), v[6], state().transform,
                                            state().reverseOrientation),
-             in.where());
+             in.where(), std::move(vars));
 }
 
 void SceneBuilder::torus(RequestReader& in) {
     std::vector<float> v = in.numbers(5, "majorrad minorrad phimin phimax thetamax");
-    in.params().warnUnused(m_diagnostics, "Torus");
+    ParamList params = in.params();
+    PrimvarSet vars = shapePrimvars(params, 4);
+    params.warnUnused(m_diagnostics, "Torus");
     if (!(v[0] > 0.0f) || !(v[1] > 0.0f)) in.fail(in.where(), "radii must be positive");
     bool flip = state().reverseOrientation != mirrors(state().transform);
     addShape(std::make_unique<TriangleMesh>(buildTorus(v[0], v[1], v[2], v[3], v[4], state().transform, flip), "Torus",
                                             false),
-             in.where());
+             in.where(), std::move(vars));
 }
 
 void SceneBuilder::polygon(RequestReader& in) {
@@ -147,9 +179,9 @@ void SceneBuilder::polygon(RequestReader& in) {
     std::vector<int> indices(static_cast<size_t>(count));
     for (int i = 0; i < count; ++i) indices[static_cast<size_t>(i)] = i;
     MeshData mesh = buildPolygonMesh({1}, {count}, indices, params, state().transform, in.where());
-    params.find("Cs");  // per-vertex colour is read by no Bxdf yet; accepted quietly
+    PrimvarSet vars = shapePrimvars(params);
     params.warnUnused(m_diagnostics, "Polygon");
-    addShape(std::make_unique<TriangleMesh>(std::move(mesh), "Polygon", state().reverseOrientation), in.where());
+    addShape(std::make_unique<TriangleMesh>(std::move(mesh), "Polygon", state().reverseOrientation), in.where(), std::move(vars));
 }
 
 void SceneBuilder::generalPolygon(RequestReader& in) {
@@ -167,9 +199,9 @@ void SceneBuilder::generalPolygon(RequestReader& in) {
     for (long i = 0; i < total; ++i) indices[static_cast<size_t>(i)] = static_cast<int>(i);
     MeshData mesh = buildPolygonMesh({static_cast<int>(nverts.size())}, nverts, indices, params, state().transform,
                                      in.where());
-    params.find("Cs");
+    PrimvarSet vars = shapePrimvars(params);
     params.warnUnused(m_diagnostics, "GeneralPolygon");
-    addShape(std::make_unique<TriangleMesh>(std::move(mesh), "GeneralPolygon", state().reverseOrientation), in.where());
+    addShape(std::make_unique<TriangleMesh>(std::move(mesh), "GeneralPolygon", state().reverseOrientation), in.where(), std::move(vars));
 }
 
 void SceneBuilder::pointsPolygons(RequestReader& in) {
@@ -182,9 +214,9 @@ void SceneBuilder::pointsPolygons(RequestReader& in) {
     }
     std::vector<int> loops(nverts.size(), 1);
     MeshData mesh = buildPolygonMesh(loops, nverts, verts, params, state().transform, in.where());
-    params.find("Cs");
+    PrimvarSet vars = shapePrimvars(params);
     params.warnUnused(m_diagnostics, "PointsPolygons");
-    addShape(std::make_unique<TriangleMesh>(std::move(mesh), "PointsPolygons", state().reverseOrientation), in.where());
+    addShape(std::make_unique<TriangleMesh>(std::move(mesh), "PointsPolygons", state().reverseOrientation), in.where(), std::move(vars));
 }
 
 void SceneBuilder::pointsGeneralPolygons(RequestReader& in) {
@@ -197,16 +229,17 @@ void SceneBuilder::pointsGeneralPolygons(RequestReader& in) {
         return;
     }
     MeshData mesh = buildPolygonMesh(nloops, nverts, verts, params, state().transform, in.where());
-    params.find("Cs");
+    PrimvarSet vars = shapePrimvars(params);
     params.warnUnused(m_diagnostics, "PointsGeneralPolygons");
     addShape(std::make_unique<TriangleMesh>(std::move(mesh), "PointsGeneralPolygons", state().reverseOrientation),
-             in.where());
+             in.where(), std::move(vars));
 }
 
 void SceneBuilder::patch(RequestReader& in) {
     std::string type = in.string("patch type");
     ParamList params = in.params();
     std::vector<Vec3> points = pointsOf(params, in);
+    PrimvarSet vars = shapePrimvars(params, 4);
     params.warnUnused(m_diagnostics, "Patch");
     bool flip = state().reverseOrientation != mirrors(state().transform);
     MeshData mesh;
@@ -220,7 +253,7 @@ void SceneBuilder::patch(RequestReader& in) {
     } else {
         in.fail(in.where(), "unknown patch type \"" + type + "\" (bilinear or bicubic)");
     }
-    addShape(std::make_unique<TriangleMesh>(std::move(mesh), "Patch", false), in.where());
+    addShape(std::make_unique<TriangleMesh>(std::move(mesh), "Patch", false), in.where(), std::move(vars));
 }
 
 void SceneBuilder::patchMesh(RequestReader& in) {
@@ -231,6 +264,7 @@ void SceneBuilder::patchMesh(RequestReader& in) {
     std::string vwrap = in.string("vwrap");
     ParamList params = in.params();
     std::vector<Vec3> points = pointsOf(params, in);
+    PrimvarSet vars = shapePrimvars(params);
     params.warnUnused(m_diagnostics, "PatchMesh");
     bool flip = state().reverseOrientation != mirrors(state().transform);
     MeshData mesh;
@@ -242,7 +276,7 @@ void SceneBuilder::patchMesh(RequestReader& in) {
                                       in.where());
     else
         in.fail(in.where(), "unknown patch type \"" + type + "\" (bilinear or bicubic)");
-    addShape(std::make_unique<TriangleMesh>(std::move(mesh), "PatchMesh", false), in.where());
+    addShape(std::make_unique<TriangleMesh>(std::move(mesh), "PatchMesh", false), in.where(), std::move(vars));
 }
 
 void SceneBuilder::geometry(RequestReader& in) {
@@ -266,9 +300,11 @@ void SceneBuilder::geometry(RequestReader& in) {
         warnOnce("geometry " + type, in.where(), "Geometry \"" + type + "\" is not supported; skipped");
         return;
     }
+    PrimvarSet vars = shapePrimvars(params);
     params.warnUnused(m_diagnostics, "Geometry \"teapot\"");
     bool flip = state().reverseOrientation != mirrors(state().transform);
-    addShape(std::make_unique<TriangleMesh>(buildTeapot(state().transform, flip), "teapot", false), in.where());
+    addShape(std::make_unique<TriangleMesh>(buildTeapot(state().transform, flip), "teapot", false), in.where(),
+             std::move(vars));
 }
 
 }  // namespace bxdflab

@@ -229,4 +229,11 @@ void SceneBuilder::basis(RequestReader& in) {
     state().vBasis = bases[1];
 }
 
+void SceneBuilder::textureCoordinates(RequestReader& in) {
+    std::vector<float> v = in.numbers(8, "s1 t1 s2 t2 s3 t3 s4 t4");
+    in.finish();
+    std::copy(v.begin(), v.end(), state().textureCoordinates.begin());
+    state().textureCoordinatesSet = true;
+}
+
 }  // namespace bxdflab

@@ -11,9 +11,9 @@ namespace bxdflab {
 namespace {
 
 /// Reads one item of a primvar whatever its storage class.
-class Primvar {
+class CornerReader {
 public:
-    Primvar(Param const* param, int components) : m_param(param), m_components(components) {}
+    CornerReader(Param const* param, int components) : m_param(param), m_components(components) {}
     bool present() const { return m_param != nullptr; }
     /// The value for a corner of face `face`, which is vertex `vertex` of the
     /// point list and the `corner`-th corner of the whole mesh.
@@ -120,7 +120,25 @@ MeshData buildPolygonMesh(std::vector<int> const& loopsPerFace, std::vector<int>
     Param const* st = params.find("st");
     Param const* s = params.find("s");
     Param const* t = params.find("t");
-    Primvar normalVar(normals, 3), stVar(st, 2), sVar(s, 1), tVar(t, 1);
+    CornerReader normalVar(normals, 3), stVar(st, 2), sVar(s, 1), tVar(t, 1);
+    // Primvars that vary over the mesh (one value per shape is the shape's constant primvar).
+    struct Varying {
+        Param const* param;
+        CornerReader reader;
+        Primvar out;
+    };
+    std::vector<Varying> varying;
+    for (Param const& p : params.all()) {
+        int components = primvarComponents(p);
+        if (components == 0 || isGeometryParameter(p.name()) || p.floats.size() <= static_cast<size_t>(components)) continue;
+        Primvar out;
+        out.name = p.name();
+        out.type = p.decl.type;
+        out.components = components;
+        out.detail = p.decl.storageClass == "uniform" ? Primvar::Detail::Uniform : Primvar::Detail::Varying;
+        p.used = true;
+        varying.push_back({&p, CornerReader(&p, components), std::move(out)});
+    }
     bool hasSt = st || (s && t);
 
     Mat4 normalMatrix = glm::inverse(toWorld);
@@ -161,10 +179,20 @@ MeshData buildPolygonMesh(std::vector<int> const& loopsPerFace, std::vector<int>
         // If the mirror flips winding, swap two corners to keep "outside" outside.
         for (size_t k = 0; k + 2 < triangles.size(); k += 3) {
             if (mirrored) std::swap(triangles[k + 1], triangles[k + 2]);
+            for (Varying& v : varying)
+                if (v.out.detail == Primvar::Detail::Uniform) {
+                    float const* value = v.reader.at(static_cast<int>(face), 0, 0);
+                    v.out.values.insert(v.out.values.end(), value, value + v.out.components);
+                }
             for (size_t c = 0; c < 3; ++c) {
                 int local = triangles[k + c];
                 int corner = static_cast<int>(firstCorner) + local;
                 int vertex = pointIndex[static_cast<size_t>(local)];
+                for (Varying& v : varying)
+                    if (v.out.detail == Primvar::Detail::Varying) {
+                        float const* value = v.reader.at(static_cast<int>(face), corner, vertex);
+                        v.out.values.insert(v.out.values.end(), value, value + v.out.components);
+                    }
                 unsigned id = mesh.addVertex(transformPoint(toWorld, corners[static_cast<size_t>(local)]));
                 if (normalVar.present()) {
                     float const* n = normalVar.at(static_cast<int>(face), corner, vertex);
@@ -184,6 +212,7 @@ MeshData buildPolygonMesh(std::vector<int> const& loopsPerFace, std::vector<int>
         loopCursor += static_cast<size_t>(loops);
     }
     if (mesh.indices.empty()) throw RibError(where, "polygon mesh has no triangles (all faces are degenerate)");
+    for (Varying& v : varying) mesh.primvars.add(std::move(v.out));
     return mesh;
 }
 

@@ -14,6 +14,7 @@
 
 #include "core/Error.h"
 #include "core/Math.h"
+#include "scene/shapes/Primvars.h"
 
 namespace bxdflab {
 
@@ -60,8 +61,18 @@ public:
     virtual RTCGeometry build(RTCDevice device) const = 0;
     virtual SurfaceBasics basics(HitRecord const& hit) const = 0;
     virtual SurfaceTangents tangents(HitRecord const& hit) const = 0;
+    /// The value of one of this shape's primvars at a hit (`out` receives
+    /// var.components floats). Shapes with per-vertex or per-face values override it.
+    virtual void primvar(Primvar const& var, HitRecord const& hit, float* out) const {
+        primvarAtCorners(var, hit.u, hit.v, out);
+    }
 
     int material = -1;  ///< index into Scene::materials
+    PrimvarSet primvars;
+    /// TextureCoordinates s1 t1 s2 t2 s3 t3 s4 t4: (s, t) at the corners (u, v) =
+    /// (0,0) (1,0) (0,1) (1,1) of a parametric surface, interpolated between.
+    bool hasTextureCoordinates = false;
+    float textureCoordinates[8] = {0, 0, 1, 0, 0, 1, 1, 1};
     Visibility visibility;
     std::string name;  ///< Attribute "identifier" "name"
     SourceLocation where;

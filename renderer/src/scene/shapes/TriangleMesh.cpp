@@ -5,7 +5,26 @@
 namespace bxdflab {
 
 TriangleMesh::TriangleMesh(MeshData data, const char* kindName, bool flipNormals)
-    : m_data(std::move(data)), m_kind(kindName), m_orientation(flipNormals ? -1.0f : 1.0f) {}
+    : m_data(std::move(data)), m_kind(kindName), m_orientation(flipNormals ? -1.0f : 1.0f) {
+    primvars = std::move(m_data.primvars);
+    m_data.primvars = PrimvarSet();
+}
+
+void TriangleMesh::primvar(Primvar const& var, HitRecord const& hit, float* out) const {
+    size_t const c = static_cast<size_t>(var.components);
+    if (var.detail == Primvar::Detail::Uniform && var.values.size() >= (hit.primID + 1) * c) {
+        for (size_t k = 0; k < c; ++k) out[k] = var.values[hit.primID * c + k];
+        return;
+    }
+    if (var.detail == Primvar::Detail::Varying && var.values.size() == m_data.P.size() * c) {
+        unsigned const* tri = &m_data.indices[3 * hit.primID];
+        float b1 = hit.u, b2 = hit.v, b0 = 1.0f - b1 - b2;
+        for (size_t k = 0; k < c; ++k)
+            out[k] = b0 * var.values[tri[0] * c + k] + b1 * var.values[tri[1] * c + k] + b2 * var.values[tri[2] * c + k];
+        return;
+    }
+    for (size_t k = 0; k < c; ++k) out[k] = var.values[k];
+}
 
 RTCGeometry TriangleMesh::build(RTCDevice device) const {
     RTCGeometry geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);

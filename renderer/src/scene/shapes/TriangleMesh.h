@@ -20,6 +20,9 @@ struct MeshData {
     std::vector<Vec2> st;
     std::vector<Vec3> dPdu;
     std::vector<Vec3> dPdv;
+    /// Primvars that vary over the mesh: Varying ones hold a value per mesh
+    /// vertex, Uniform ones a value per triangle.
+    PrimvarSet primvars;
 
     size_t triangleCount() const { return indices.size() / 3; }
     /// Appends another mesh with the same attributes.
@@ -51,6 +54,7 @@ public:
     RTCGeometry build(RTCDevice device) const override;
     SurfaceBasics basics(HitRecord const& hit) const override;
     SurfaceTangents tangents(HitRecord const& hit) const override;
+    void primvar(Primvar const& var, HitRecord const& hit, float* out) const override;
     MeshData const& data() const { return m_data; }
 
 private:

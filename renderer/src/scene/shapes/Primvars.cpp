@@ -1,0 +1,62 @@
+#include "scene/shapes/Primvars.h"
+
+namespace bxdflab {
+
+bool isGeometryParameter(std::string const& name) {
+    for (char const* g : {"P", "Pw", "Pz", "N", "width", "constantwidth"})
+        if (name == g) return true;
+    return false;
+}
+
+int primvarComponents(Param const& param) {
+    if (param.decl.reference || param.decl.untyped) return 0;
+    switch (param.decl.type) {
+        case ParamType::Float:
+        case ParamType::Int: return param.decl.arraySize == 2 ? 2 : param.decl.arraySize == 1 ? 1 : 0;
+        case ParamType::Color:
+        case ParamType::Point:
+        case ParamType::Vector:
+        case ParamType::Normal: return param.decl.arraySize == 1 ? 3 : 0;
+        default: return 0;
+    }
+}
+
+PrimvarSet shapePrimvars(ParamList const& params, size_t corners) {
+    PrimvarSet set;
+    for (Param const& p : params.all()) {
+        if (isGeometryParameter(p.name())) continue;
+        int components = primvarComponents(p);
+        if (components == 0 || p.floats.empty() || p.floats.size() % static_cast<size_t>(components) != 0) continue;
+        size_t count = p.floats.size() / static_cast<size_t>(components);
+        std::string const& cls = p.decl.storageClass;
+        Primvar v;
+        v.name = p.name();
+        v.type = p.decl.type;
+        v.components = components;
+        if (count == 1) {
+            v.detail = Primvar::Detail::Constant;
+        } else if (corners > 0 && count == corners && (cls == "varying" || cls == "vertex")) {
+            v.detail = Primvar::Detail::Varying;
+        } else {
+            continue;
+        }
+        v.values = p.floats;
+        p.used = true;
+        set.add(std::move(v));
+    }
+    return set;
+}
+
+void primvarAtCorners(Primvar const& var, float u, float v, float* out) {
+    size_t const c = static_cast<size_t>(var.components);
+    if (var.detail != Primvar::Detail::Varying || var.values.size() < 4 * c) {
+        for (size_t k = 0; k < c; ++k) out[k] = var.values[k];
+        return;
+    }
+    // Corners in RenderMan's order: (0,0) (1,0) (0,1) (1,1).
+    for (size_t k = 0; k < c; ++k)
+        out[k] = (1 - u) * (1 - v) * var.values[k] + u * (1 - v) * var.values[c + k] + (1 - u) * v * var.values[2 * c + k] +
+                 u * v * var.values[3 * c + k];
+}
+
+}  // namespace bxdflab

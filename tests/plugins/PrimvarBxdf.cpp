@@ -1,0 +1,84 @@
+// A test Bxdf that shows a primvar: it emits the color primvar named by
+// "string colorPrimvar" (default "Cs"), or, failing that, the float primvar
+// "string floatPrimvar" as a grey, and reflects nothing. Black where neither exists.
+#include <new>
+
+#include "RixBxdf.h"
+
+namespace {
+
+class PrimvarEmitter : public RixBxdf {
+public:
+    PrimvarEmitter(RixShadingContext const* sc, RixBxdfFactory* factory, RtColorRGB const* emission)
+        : RixBxdf(sc, factory), m_emission(emission) {}
+    RixBXEvaluateDomain GetEvaluateDomain() override { return k_RixBXEmptyDomain; }
+    void GetAggregateLobeTraits(RixBXLobeTraits* lobes) override { lobes->SetNone(); }
+    bool EmitLocal(RtColorRGB* result) override {
+        for (int i = 0; i < shadingCtx->numPts; ++i) result[i] = m_emission[i];
+        return true;
+    }
+    void GenerateSample(RixBXTransportTrait, RixBXLobeTraits const*, RixRNG*, RixBXLobeSampled* sampled, RtVector3* Ln,
+                        RixBXLobeWeights&, float* FPdf, float* RPdf, RtColorRGB*) override {
+        for (int i = 0; i < shadingCtx->numPts; ++i) {
+            sampled[i].SetValid(false);
+            Ln[i] = RtVector3(0.0f);
+            FPdf[i] = RPdf[i] = 0.0f;
+        }
+    }
+    void EvaluateSample(RixBXTransportTrait, RixBXLobeTraits const*, RixRNG*, RixBXLobeTraits* evaluated, RtVector3 const*,
+                        RixBXLobeWeights&, float* FPdf, float* RPdf) override {
+        for (int i = 0; i < shadingCtx->numPts; ++i) {
+            evaluated[i].SetNone();
+            FPdf[i] = RPdf[i] = 0.0f;
+        }
+    }
+    void EvaluateSamplesAtIndex(RixBXTransportTrait, RixBXLobeTraits const&, RixRNG*, int, int numSamples,
+                                RixBXLobeTraits* evaluated, RtVector3 const*, RixBXLobeWeights&, float* FPdf,
+                                float* RPdf) override {
+        for (int s = 0; s < numSamples; ++s) {
+            evaluated[s].SetNone();
+            FPdf[s] = RPdf[s] = 0.0f;
+        }
+    }
+
+private:
+    RtColorRGB const* m_emission;
+};
+
+class PrimvarFactory : public RixBxdfFactory {
+public:
+    int Init(RixContext&, RtUString const) override { return 0; }
+    void Finalize(RixContext&) override {}
+    RixSCParamInfo const* GetParamTable() override {
+        static RixSCParamInfo table[] = {RixSCParamInfo(RtUString("colorPrimvar"), k_RixSCString, k_RixSCScatterInput),
+                                         RixSCParamInfo(RtUString("floatPrimvar"), k_RixSCString, k_RixSCScatterInput),
+                                         RixSCParamInfo()};
+        return table;
+    }
+    void Synchronize(RixContext&, RixSCSyncMsg, RixParameterList const*) override {}
+    RixBxdf* BeginScatter(RixShadingContext const* sCtx, RixBXLobeTraits const&, RixSCShadingMode, void*,
+                          RtPointer) override {
+        RtUString const Cs("Cs"), none("");
+        RtUString const *colorName, *floatName;
+        sCtx->EvalParam(0, -1, &colorName, &Cs, false);
+        sCtx->EvalParam(1, -1, &floatName, &none, false);
+        RixShadingContext::Allocator pool(sCtx);
+        RtColorRGB* emission = pool.AllocForBxdf<RtColorRGB>(sCtx->numPts);
+        RtColorRGB const* color = nullptr;
+        RtFloat const* grey = nullptr;
+        if (sCtx->GetPrimVar(*colorName, &color) == k_RixSCInvalidDetail) color = nullptr;
+        if (!floatName->Empty() && sCtx->GetPrimVar(*floatName, &grey) == k_RixSCInvalidDetail) grey = nullptr;
+        for (int i = 0; i < sCtx->numPts; ++i)
+            emission[i] = color ? color[i] : grey ? RtColorRGB(grey[i]) : RtColorRGB(0.0f);
+        return new (pool.AllocForBxdf<PrimvarEmitter>(1)) PrimvarEmitter(sCtx, this, emission);
+    }
+    void EndScatter(RixBxdf*) override {}
+};
+
+}  // namespace
+
+RIX_BXDFPLUGINCREATE {
+    PIXAR_ARGUSED(hint);
+    return new PrimvarFactory();
+}
+RIX_BXDFPLUGINDESTROY { delete static_cast<PrimvarFactory*>(bxdf); }
