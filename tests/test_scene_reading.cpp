@@ -344,3 +344,15 @@ TEST_CASE("TextureCoordinates map a parametric surface's (u, v) to (s, t)", "[ri
     CHECK(scene.shapes[0]->textureCoordinates[6] == 2.0f);
     CHECK(scene.shapes[0]->textureCoordinates[7] == 4.0f);
 }
+
+TEST_CASE("PxrLightEmission glows with a light's intensity * 2^exposure * lightColor", "[rib][lights]") {
+    RenderSettings settings;
+    settings.spp = 1;
+    auto r = test::renderRib("Format 4 4 1\nProjection \"orthographic\"\nScreenWindow -0.1 0.1 -0.1 0.1\n"
+                             "Integrator \"PxrDirectLighting\" \"d\"\nWorldBegin\nTranslate 0 0 5\n"
+                             "Bxdf \"PxrLightEmission\" \"glow\" \"float intensity\" [3] \"float exposure\" [1] "
+                             "\"color lightColor\" [1 0.5 0.25]\nSphere 1 -1 1 360\n",
+                             settings);
+    CHECK(r.channel(2, 2, 0) == Approx(6.0f));
+    CHECK(r.channel(2, 2, 2) == Approx(1.5f));
+}
