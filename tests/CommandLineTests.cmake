@@ -128,3 +128,16 @@ add_test(NAME cli.memory_bounded_at_any_spp
                  "-DINTEGRATORS=PxrDirectLighting;PxrPathTracer;PxrDefault;PxrValidateBxdf;PxrDebugShadingContext;PxrOcclusion"
                  -P ${CMAKE_CURRENT_SOURCE_DIR}/check-bounded-memory.cmake)
 set_tests_properties(cli.memory_bounded_at_any_spp PROPERTIES LABELS cli)
+
+# The course text's way to build: its headers from $(RMANTREE)/include with
+# -std=c++14 (every warning an error), a plain Makefile, and a plugin folder
+# named in a rendermn.ini beside the scene. The text-style plugin then renders
+# the chapter 6 scene with no warning and no invalid pdf.
+add_test(NAME api.headers_compile_as_cxx14
+         COMMAND ${CMAKE_CXX_COMPILER} -std=c++14 -fsyntax-only -Wall -Wextra -Wpedantic -Werror
+                 -I${RMANTREE_DIR}/include ${CMAKE_CURRENT_SOURCE_DIR}/api_all_headers.cpp)
+set(TEXT_STYLE ${CLI_OUT}/textstyle)
+add_test(NAME api.text_style_plugin_with_a_makefile
+         COMMAND sh -c "rm -rf ${TEXT_STYLE} && mkdir -p ${TEXT_STYLE} && cp ${CMAKE_CURRENT_SOURCE_DIR}/plugins/textstyle/* ${TEXT_STYLE}/ && make -s -C ${TEXT_STYLE} RMANTREE=${RMANTREE_DIR} && printf '/standardrixpluginpath .\\n' > ${TEXT_STYLE}/rendermn.ini && sed 's/Bxdf \"diffuse\"/Bxdf \"textdiffuse\"/' ${PROJECT_SOURCE_DIR}/scenes/ch06/diffuse.rib > ${TEXT_STYLE}/scene.rib && cd ${TEXT_STYLE} && $<TARGET_FILE:rixrender> --quiet --spp 4 --stats-json stats.json -o text.exr scene.rib && grep -q '\"invalid_pdf_samples\": 0' stats.json && grep -q '\"nonfinite_samples\": 0' stats.json && echo rendered")
+set_tests_properties(api.text_style_plugin_with_a_makefile PROPERTIES PASS_REGULAR_EXPRESSION "rendered"
+                     FAIL_REGULAR_EXPRESSION "warning|error")

@@ -1,6 +1,7 @@
 // Plugins: book-style code works, and every way a plugin can be missing or
 // broken gives a clear message instead of a crash.
 #include <catch2/catch.hpp>
+#include <sstream>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -142,4 +143,35 @@ TEST_CASE("integrators are plugins: a missing one names the folders searched, a 
     message = renderError(bad);
     CHECK_THAT(message, Contains("test.rib:3:1"));
     CHECK_THAT(message, Contains("numLightSamples must be between 0 and 4096"));
+}
+
+TEST_CASE("a plugin in the course text's style (SetValid only, pdfs left unwritten) renders like the solution",
+          "[plugins][api]") {
+    // The chapter 6 scene, with the text-style Bxdf in place of the solution.
+    std::ifstream in(std::string(SCENES_DIR) + "/ch06/diffuse.rib");
+    std::stringstream text;
+    text << in.rdbuf();
+    std::string solution = text.str(), textStyle = text.str();
+    textStyle.replace(textStyle.find("Bxdf \"diffuse\""), 14, "Bxdf \"textdiffuse\"");
+    RenderSettings settings;
+    settings.spp = 16;
+    auto mine = test::renderRib(textStyle, settings, "text.rib");
+    settings.pluginPath = SOLUTION_PLUGIN_DIR;
+    auto reference = test::renderRib(solution, settings, "solution.rib");
+    CHECK(mine.stats.invalidPdfSamples == 0);
+    CHECK(mine.stats.nonFiniteSamples == 0);
+    int warnings = 0;
+    for (auto const& m : mine.messages) warnings += m.severity == Diagnostics::Severity::Warning;
+    CHECK(warnings == 0);
+    auto all = [](int, int) { return true; };
+    double a = test::meanChannel(mine, 0, all), b = test::meanChannel(reference, 0, all);
+    CHECK(a == Approx(b).epsilon(0.02));
+    // No fireflies: no pixel far brighter than the brightest of the solution's render.
+    float brightest = 0.0f, brightestMine = 0.0f;
+    for (int y = 0; y < mine.height; ++y)
+        for (int x = 0; x < mine.width; ++x) {
+            brightest = std::max(brightest, reference.channel(x, y, 0));
+            brightestMine = std::max(brightestMine, mine.channel(x, y, 0));
+        }
+    CHECK(brightestMine < 1.5f * brightest);
 }

@@ -1,5 +1,7 @@
 // The student-facing API: value types, lobes, the RNG and RixShadingUtils.
 #include <catch2/catch.hpp>
+
+#include "shade/LobeTable.h"
 #include <set>
 
 #include "RixBxdf.h"
@@ -209,4 +211,25 @@ TEST_CASE("the shading memory pool does not grow when batches repeat", "[memory]
     // Memory handed out is aligned and usable.
     auto* p = static_cast<double*>(arena.allocate(sizeof(double) * 8, 64));
     CHECK(reinterpret_cast<uintptr_t>(p) % 64 == 0);
+}
+
+TEST_CASE("lobes are told apart by kind and light path expression id, as in RenderMan", "[api]") {
+    // Named lookups give each name of a kind its own id, the same every time.
+    bxdflab::LobeTable& table = bxdflab::LobeTable::instance();
+    unsigned char specular = table.GetLpeIdByName(true, false, "Specular");
+    unsigned char clearcoat = table.GetLpeIdByName(true, false, "Clearcoat");
+    CHECK(specular != clearcoat);
+    CHECK(table.GetLpeIdByName(true, false, "Specular") == specular);
+    CHECK(table.GetLpeIdByName(false, false, "Emission") == 0);
+    // Two specular lobes with their own lpeIds have their own weights; the same lpeId shares them.
+    RtColorRGB storage[RixBXLobeWeights::k_numSlots * 4];
+    RixBXLobeWeights W(4, storage);
+    RixBXLobeSampled first(false, true, true, false, 1, 0), second(false, true, true, false, 2, 0),
+        again(false, true, true, false, 1, 5);
+    RtColorRGB* a = W.AddActiveLobe(first);
+    RtColorRGB* b = W.AddActiveLobe(second);
+    CHECK(a != b);
+    CHECK(W.AddActiveLobe(again) == a);  // lobeId is the plugin's own label; lpeId decides
+    CHECK(W.GetNumActiveLobes() == 2);
+    CHECK((RixBXLobeTraits(first) & RixBXLobeTraits(second)).HasAny() == false);
 }

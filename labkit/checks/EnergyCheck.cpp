@@ -31,7 +31,7 @@ CheckOutcome checkEnergy(CheckContext& c) {
         uint32_t root = static_cast<uint32_t>(std::sqrt(static_cast<double>(n)));
         RixRNG::SampleCtx jitter{RixRNG::Hash(c.seed + 11u), 0, 0, -1.0f, -1.0f};
         for (uint32_t i = 0; i < n; ++i) {
-            jitter.sampleIndex = i;
+            jitter.sampleid = i;
             RtFloat2 xi = RixRNG::Sample2D(jitter);
             jitter.draw = 0;
             double z = ((i / root) + xi.x) / root, phi = 2 * M_PI * ((i % root) + xi.y) / root;

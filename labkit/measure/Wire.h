@@ -60,7 +60,7 @@ struct EvaluateItem {
 };
 struct GenerateItem {
     PointItem point;
-    uint32_t pixelSeed, sampleIndex;
+    uint32_t patternid, sampleid;
     float fixedValue, fixedValue2;
 };
 struct ResultItem {

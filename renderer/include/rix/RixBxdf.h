@@ -27,6 +27,8 @@
 //     RIX_BXDFPLUGINDESTROY { delete static_cast<MyFactory*>(bxdf); }
 #pragma once
 
+#include <vector>
+
 #include "RiTypesHelper.h"
 #include "RixBxdfLobe.h"
 #include "RixInterfaces.h"
@@ -118,6 +120,10 @@ public:
     }
     virtual void Release() {}
 
+    /// The shading context this Bxdf was made for, and the factory that made it.
+    RixShadingContext const* GetShadingCtx() const { return shadingCtx; }
+    RixBxdfFactory* GetBxdfFactory() const { return bxdfFactory; }
+
 protected:
     RixShadingContext const* shadingCtx;
     RixBxdfFactory* bxdfFactory;
@@ -167,10 +173,12 @@ public:
         return nullptr;
     }
     virtual void EndInterior(RixVolumeIntegrator* vol) { PIXAR_ARGUSED(vol); }
+    virtual void EndSubsurface(RixVolumeIntegrator* vol) { PIXAR_ARGUSED(vol); }
     virtual float GetIndexOfRefraction(RtPointer instanceData) const { PIXAR_ARGUSED(instanceData); return 1.0f; }
-    virtual void RegisterTemporalVolumeParams(RixSCParamInfo const** paramTable, int* numParams) {
-        if (paramTable) *paramTable = nullptr;
-        if (numParams) *numParams = 0;
+    /// Which parameters vary over the shutter, for motion-blurred volumes: none here.
+    virtual void RegisterTemporalVolumeParams(RtPointer instanceData, std::vector<RtInt>& paramIds) const {
+        PIXAR_ARGUSED(instanceData);
+        PIXAR_ARGUSED(paramIds);
     }
 };
 

@@ -43,9 +43,10 @@ public:
     bool GetTransmit() const { return !m_reflect; }
     unsigned char GetLpeId() const { return m_lpeId; }
     unsigned char GetLobeId() const { return m_lobeId; }
+    /// The same lobe: the same kind and light path expression id (as RenderMan
+    /// tells lobes apart), and direction.
     bool operator==(RixBXLobeSampled const& o) const {
-        return m_specular == o.m_specular && m_user == o.m_user && m_lobeId == o.m_lobeId &&
-               m_reflect == o.m_reflect;
+        return m_specular == o.m_specular && m_user == o.m_user && m_lpeId == o.m_lpeId && m_reflect == o.m_reflect;
     }
 
 private:
@@ -64,10 +65,11 @@ class RixBXLobeTraits {
 public:
     RixBXLobeTraits() = default;
     /// The set holding exactly the given lobe.
+    /// Lobes are told apart by kind and light path expression id, as in RenderMan.
     explicit RixBXLobeTraits(RixBXLobeSampled lobe) {
-        int bit = lobe.GetUser() ? k_userShift + lobe.GetLobeId()
-                  : lobe.GetSpecular() ? k_specularShift + lobe.GetLobeId()
-                                       : lobe.GetLobeId();
+        int bit = lobe.GetUser() ? k_userShift + lobe.GetLpeId() % k_RixBXMaxNumUserLobes
+                  : lobe.GetSpecular() ? k_specularShift + lobe.GetLpeId() % k_RixBXMaxNumSpecularLobes
+                                       : lobe.GetLpeId() % k_RixBXMaxNumDiffuseLobes;
         m_bits = (1u << bit) | (lobe.GetReflect() ? k_reflectBit : k_transmitBit);
         if (lobe.GetValid()) m_bits |= k_validBit;
     }
@@ -108,24 +110,27 @@ private:
     uint32_t m_bits = 0;
 };
 
-/// Looks a lobe up by name (the name feeds light path expressions; "Diffuse"
-/// and "Specular" are the usual ones). Call it from Synchronize at
-/// k_RixSCRenderBegin and keep the result in a static.
+/// Looks a lobe up by name ("Diffuse", "Specular", "Clearcoat", ...): the
+/// renderer gives each name of a kind its own light path expression id, and
+/// that id is what tells lobes apart: two lobes of one Bxdf need two names
+/// (a second specular lobe named "Specular" again would share the first's
+/// weights). lobeId is yours, to tell your own lobes apart. Call it from
+/// Synchronize at k_RixSCRenderBegin and keep the result in a static.
 PRMAN_INLINE RixBXLobeSampled RixBXLookupLobeByName(RixContext& ctx, bool discrete, bool specular,
                                                     bool reflect, bool user, unsigned char lobeId,
                                                     const char* name) {
-    PIXAR_ARGUSED(ctx);
-    // Light-path-expression ids: 1 diffuse, 2 specular, 3 user; a fixed table is
-    // enough for this renderer, which has no LPE outputs of its own.
-    unsigned char lpeId = user ? 3 : specular ? 2 : 1;
-    if (name && std::strcmp(name, "Emission") == 0) lpeId = 0;
+    unsigned char lpeId = 1;
+    if (RixLPEInfo* table = static_cast<RixLPEInfo*>(ctx.GetRixInterface(k_RixLPEInfo)))
+        lpeId = table->GetLpeIdByName(specular, user, name ? name : "");
+    else if (name && std::strcmp(name, "Emission") == 0)
+        lpeId = 0;
     return RixBXLobeSampled(discrete, specular, reflect, user, lpeId, lobeId);
 }
 
 /// Per-lobe weight arrays. The integrator owns the storage; a Bxdf calls
 /// AddActiveLobe(lobe) to get that lobe's array (numPts colours, zeroed on
 /// first use) and writes W = f * |cos(theta_L)| into it. The integrator sums the
-/// active lobes.
+/// active lobes. There is one array per lobe kind and light path expression id.
 class RixBXLobeWeights {
 public:
     /// Renderer side, with all the storage up front: `storage` holds
@@ -169,7 +174,7 @@ public:
 
 private:
     static int SlotOf(RixBXLobeSampled lobe) {
-        int id = lobe.GetLobeId();
+        int id = lobe.GetLpeId();
         if (lobe.GetUser()) return k_RixBXMaxNumDiffuseLobes + k_RixBXMaxNumSpecularLobes + id % k_RixBXMaxNumUserLobes;
         if (lobe.GetSpecular()) return k_RixBXMaxNumDiffuseLobes + id % k_RixBXMaxNumSpecularLobes;
         return id % k_RixBXMaxNumDiffuseLobes;

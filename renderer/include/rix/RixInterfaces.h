@@ -15,6 +15,7 @@ enum RixInterfaceId {
     k_RixMessages = 0,
     k_RixRenderState,   ///< not provided by this renderer (GetRixInterface returns null)
     k_RixThreadUtils,   ///< not provided by this renderer (GetRixInterface returns null)
+    k_RixLPEInfo,       ///< the light-path-expression lobe table (used by RixBXLookupLobeByName)
 };
 
 /// Base of every interface. Versions let a plugin check what it was built for.
@@ -22,6 +23,17 @@ class RixInterface {
 public:
     virtual ~RixInterface() = default;
     virtual int GetVersion() const { return 1; }
+};
+
+/// The renderer's table of named lobes. Each name gets its own light path
+/// expression id within its kind (diffuse, specular or user), the same for
+/// every plugin that names it; RixBXLookupLobeByName asks it, so you rarely
+/// call it yourself.
+class RixLPEInfo : public RixInterface {
+public:
+    /// The id of the lobe `name` of that kind (1, 2, ... in order of first
+    /// lookup; "Emission" is 0).
+    virtual unsigned char GetLpeIdByName(bool specular, bool user, const char* name) = 0;
 };
 
 /// Messages from plugins. Use Warning for "your parameters make no physical

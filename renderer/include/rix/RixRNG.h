@@ -22,15 +22,27 @@
 class RixRNG {
 public:
     /// Where in its sequence one shade point is.
+    /// The first two fields are RenderMan's: `patternid` picks the sample
+    /// pattern (here a hash of the pixel and the render seed, which decorrelates
+    /// pixels) and `sampleid` the sample within it (the pixel's sample number).
     struct SampleCtx {
-        uint32_t pixelSeed = 0;    ///< hash of pixel and render seed (decorrelates pixels)
-        uint32_t sampleIndex = 0;  ///< which of the pixel's samples this is
-        uint32_t draw = 0;         ///< how many draws this point has made so far
+        uint32_t patternid = 0;  ///< which pattern: hash of pixel and render seed
+        uint32_t sampleid = 0;   ///< which of the pattern's samples this is
+        uint32_t draw = 0;       ///< how many draws this point has made so far (this renderer's)
         /// Testing hook: when >= 0, every draw returns this value in every
         /// dimension (how the test suite feeds a Bxdf xi = 0 or xi = 1 - 2^-24).
         float fixedValue = -1.0f;
         /// With fixedValue: when >= 0, the second coordinate of 2-D draws (else fixedValue).
         float fixedValue2 = -1.0f;
+
+        /// The same sample in a new, independent pattern (RenderMan's way to give
+        /// a sub-computation numbers of its own): `scramble` tells domains apart.
+        SampleCtx NewDomain(uint32_t scramble) const {
+            SampleCtx c = *this;
+            c.patternid = Hash(patternid ^ Hash(scramble + 0x2545f491u));
+            c.draw = 0;
+            return c;
+        }
     };
 
     RixRNG(SampleCtx* contexts, int numPoints) : numPts(numPoints), sampleCtxArray(contexts) {}
@@ -53,8 +65,8 @@ public:
     static RtFloat2 Sample2D(SampleCtx& ctx) {
         if (ctx.fixedValue >= 0.0f)
             return RtFloat2(ctx.fixedValue, ctx.fixedValue2 >= 0.0f ? ctx.fixedValue2 : ctx.fixedValue);
-        uint32_t seed = Hash(ctx.pixelSeed ^ Hash(ctx.draw++ * 0x9e3779b9u + 0x632be5abu));
-        uint32_t index = NestedUniformScramble(ctx.sampleIndex, seed);
+        uint32_t seed = Hash(ctx.patternid ^ Hash(ctx.draw++ * 0x9e3779b9u + 0x632be5abu));
+        uint32_t index = NestedUniformScramble(ctx.sampleid, seed);
         uint32_t x = NestedUniformScramble(ReverseBits(index), Hash(seed ^ 0xa511e9b3u));
         uint32_t y = NestedUniformScramble(SobolSecondDimension(index), Hash(seed ^ 0x63d83595u));
         return RtFloat2(ToUnitFloat(x), ToUnitFloat(y));
@@ -62,8 +74,8 @@ public:
     /// The next 1-D sample of a context (advances its draw counter).
     static float Sample1D(SampleCtx& ctx) {
         if (ctx.fixedValue >= 0.0f) return ctx.fixedValue;
-        uint32_t seed = Hash(ctx.pixelSeed ^ Hash(ctx.draw++ * 0x9e3779b9u + 0x1b873593u));
-        uint32_t index = NestedUniformScramble(ctx.sampleIndex, seed);
+        uint32_t seed = Hash(ctx.patternid ^ Hash(ctx.draw++ * 0x9e3779b9u + 0x1b873593u));
+        uint32_t index = NestedUniformScramble(ctx.sampleid, seed);
         return ToUnitFloat(NestedUniformScramble(ReverseBits(index), Hash(seed ^ 0x85ebca6bu)));
     }
 

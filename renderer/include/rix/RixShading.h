@@ -40,6 +40,8 @@ enum RixSCAccess {
 };
 
 /// How much a value varies over a shading context.
+class RixBxdf;
+
 enum RixSCDetail {
     k_RixSCInvalidDetail = 0,  ///< no such parameter / wrong type
     k_RixSCUniform,            ///< one value for every point (result points at 1 value)
@@ -149,6 +151,15 @@ public:
     int numPts = 0;          ///< number of shade points in this batch
     RixSCTraits scTraits;    ///< what kind of rays led here
 
+    /// Whether the batch holds hits (it always does here: rays that miss
+    /// every surface never make a shading context in this renderer).
+    bool HasHits() const { return numPts > 0; }
+    bool HasMisses() const { return false; }
+    /// The Bxdf made for this context by BeginScatter (null before, or when it returned null).
+    RixBxdf* GetBxdf() const { return m_bxdf; }
+    /// Which Bxdf statement of the scene this context shades (its index among them).
+    int Id() const { return m_id; }
+
     virtual ~RixShadingContext() = default;
 
     // GetBuiltinVar sets *result to an array of numPts values and returns 0,
@@ -232,6 +243,8 @@ public:
     };
 
 protected:
+    RixBxdf* m_bxdf = nullptr;  ///< set by the renderer after BeginScatter
+    int m_id = 0;               ///< set by the renderer
     /// Renderer side: returns 0 and the array, or non-zero on a type mismatch.
     virtual int Builtin(BuiltinId id, RixSCType wanted, void const** result) const = 0;
     virtual RixSCDetail Param(int id, int arrayIndex, RixSCType wanted, size_t elementSize,
@@ -279,5 +292,12 @@ public:
     virtual void CreateInstanceData(RixContext& ctx, RtUString const handle,
                                     RixParameterList const* parameterList, InstanceData* instance) {
         PIXAR_ARGUSED(ctx); PIXAR_ARGUSED(handle); PIXAR_ARGUSED(parameterList); PIXAR_ARGUSED(instance);
+    }
+    /// RenderMan calls this when an interactive session edits an instance's
+    /// parameters. This renderer has no interactive edits: it is never called.
+    virtual void SynchronizeInstanceData(RixContext& ctx, RtUString const handle, RixParameterList const* parameterList,
+                                         uint32_t editHints, InstanceData* instance) {
+        PIXAR_ARGUSED(ctx); PIXAR_ARGUSED(handle); PIXAR_ARGUSED(parameterList); PIXAR_ARGUSED(editHints);
+        PIXAR_ARGUSED(instance);
     }
 };

@@ -29,11 +29,19 @@ struct BxdfScratch {
         for (int i = 0; i < ctx.numPts; ++i) lobesWanted[i] = RixBXLobeTraits::All();
     }
 
-    /// One sample per point. A sample the Bxdf marks valid must have FPdf > 0;
-    /// one that does not (zero, negative or NaN) is a Bxdf bug: it is reported
-    /// (counted in the render stats) and marked invalid, so no integrator uses it.
+    /// One sample per point. Every array starts cleared (no lobe, invalid,
+    /// zero direction and pdfs): a Bxdf may leave untouched what its contract
+    /// lets it (a point it does not sample), as the course text's plugins do.
+    /// A sample the Bxdf marks valid must have FPdf > 0; one that does not
+    /// (zero, negative or NaN) is a Bxdf bug: it is reported (counted in the
+    /// render stats) and marked invalid, so no integrator uses it.
     void generate(RixBxdf& bxdf, RixRNG& rng, RixIntegratorContext& ictx) {
         W.ClearActiveLobes();
+        for (int i = 0; i < numPts; ++i) {
+            lobeSampled[i] = RixBXLobeSampled();
+            Ln[i] = RtVector3(0.0f, 0.0f, 0.0f);
+            FPdf[i] = RPdf[i] = 0.0f;
+        }
         bxdf.GenerateSample(k_RixBXDirectLighting, lobesWanted, &rng, lobeSampled, Ln, W, FPdf, RPdf);
         for (int i = 0; i < numPts; ++i)
             if (lobeSampled[i].GetValid() && !(FPdf[i] > 0.0f)) {
@@ -41,14 +49,19 @@ struct BxdfScratch {
                 lobeSampled[i].SetValid(false);
             }
     }
-    /// Evaluates the directions currently in Ln. FPdf may be 0 (the Bxdf would
-    /// never choose Ln) but not negative or NaN: such a value is reported and
-    /// taken as 0.
+    /// Evaluates the directions currently in Ln (lobes evaluated and pdfs
+    /// start cleared). Where the Bxdf says it evaluated a lobe, FPdf may be 0
+    /// (it would never choose Ln) but not negative or NaN: such a value is
+    /// reported and taken as 0.
     void evaluate(RixBxdf& bxdf, RixRNG& rng, RixIntegratorContext& ictx) {
         W.ClearActiveLobes();
+        for (int i = 0; i < numPts; ++i) {
+            lobesEvaluated[i].SetNone();
+            FPdf[i] = RPdf[i] = 0.0f;
+        }
         bxdf.EvaluateSample(k_RixBXDirectLighting, lobesWanted, &rng, lobesEvaluated, Ln, W, FPdf, RPdf);
         for (int i = 0; i < numPts; ++i)
-            if (!(FPdf[i] >= 0.0f)) {
+            if (lobesEvaluated[i].HasAny() && !(FPdf[i] >= 0.0f)) {
                 ictx.CountInvalidPdf();
                 FPdf[i] = 0.0f;
             }

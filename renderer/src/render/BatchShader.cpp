@@ -43,6 +43,8 @@ void BatchShader::shade(HitRecord const* hits, RixRNG::SampleCtx const* samples,
         try {
             RixBxdf* bxdf = factory->BeginScatter(&ctx, RixBXLobeTraits::All(), k_RixSCScatterQuery, nullptr,
                                                   material.instanceData());
+            ctx.setBxdf(bxdf);
+            ctx.setId(static_cast<int>(m));
             if (!bxdf) {
                 m_diagnostics.warn("plugin \"" + material.plugin().name() +
                                    "\": BeginScatter returned null; its surfaces render black");

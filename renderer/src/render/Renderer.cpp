@@ -269,10 +269,10 @@ void Renderer::Impl::renderTile(int tileX, int tileY, int spp, Film& film, Worke
         int k = 0;
         for (int y = y0; y < y1; ++y)
             for (int x = x0; x < x1; ++x) {
-                uint32_t pixelSeed = RixRNG::Hash(static_cast<uint32_t>(y * scene.xres + x) ^ RixRNG::Hash(settings.seed + 0x5bd1e995u));
+                uint32_t patternid = RixRNG::Hash(static_cast<uint32_t>(y * scene.xres + x) ^ RixRNG::Hash(settings.seed + 0x5bd1e995u));
                 for (int s = s0; s < s1; ++s, ++k) {
                     RixRNG::SampleCtx& sample = w.samples[static_cast<size_t>(k)];
-                    sample = {pixelSeed, static_cast<uint32_t>(s), 0, -1.0f};
+                    sample = {patternid, static_cast<uint32_t>(s), 0, -1.0f};
                     RtFloat2 jitter = RixRNG::Sample2D(sample);
                     Vec3 org, dir;
                     camera->generateRay(static_cast<float>(x) + jitter.x, static_cast<float>(y) + jitter.y, org, dir);

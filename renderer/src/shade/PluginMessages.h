@@ -5,6 +5,7 @@
 #include <string>
 
 #include "RixInterfaces.h"
+#include "shade/LobeTable.h"
 #include "core/Diagnostics.h"
 
 namespace bxdflab {
@@ -31,7 +32,9 @@ class PluginContext final : public RixContext {
 public:
     explicit PluginContext(RixMessages& messages) : m_messages(messages) {}
     RixInterface* GetRixInterface(RixInterfaceId id) const override {
-        return id == k_RixMessages ? &m_messages : nullptr;
+        if (id == k_RixMessages) return &m_messages;
+        if (id == k_RixLPEInfo) return &LobeTable::instance();
+        return nullptr;
     }
 
 private:

@@ -2,6 +2,8 @@
 
 #include <unistd.h>
 
+#include <algorithm>
+#include <cctype>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -18,6 +20,38 @@ std::vector<std::string> splitSearchPath(std::string const& colonSeparated) {
     return parts;
 }
 
+namespace {
+
+/// ${NAME} and $NAME replaced by the environment variable's value (empty when unset),
+/// as RenderMan's ini files write ${RMANTREE}.
+std::string expandVariables(std::string const& text) {
+    std::string out;
+    for (size_t i = 0; i < text.size();) {
+        if (text[i] != '$') {
+            out += text[i++];
+            continue;
+        }
+        size_t start = i + 1, end = start;
+        bool braced = start < text.size() && text[start] == '{';
+        if (braced) {
+            end = text.find('}', start);
+            if (end == std::string::npos) {
+                out += text.substr(i);
+                break;
+            }
+            ++start;
+        } else {
+            while (end < text.size() && (std::isalnum(static_cast<unsigned char>(text[end])) || text[end] == '_')) ++end;
+        }
+        std::string name = text.substr(start, end - start);
+        if (char const* value = std::getenv(name.c_str())) out += value;
+        i = braced ? end + 1 : end;
+    }
+    return out;
+}
+
+}  // namespace
+
 std::vector<std::string> readIniPluginPath(std::string const& iniFile) {
     std::ifstream in(iniFile);
     if (!in) return {};
@@ -29,7 +63,8 @@ std::vector<std::string> readIniPluginPath(std::string const& iniFile) {
         if (!(words >> key) || key[0] == '#') continue;
         if (key != "/standardrixpluginpath") continue;
         std::getline(words >> std::ws, value);
-        for (std::string const& item : splitSearchPath(value)) {
+        for (std::string const& item : splitSearchPath(expandVariables(value))) {
+            if (item == "@" || item == "&") continue;  // RenderMan's "the default" and "the path so far"
             fs::path path(item);
             folders.push_back(path.is_relative() ? (base / path).lexically_normal().string() : item);
         }
@@ -58,15 +93,27 @@ std::vector<std::string> pluginSearchPath(PluginSearchInputs const& inputs) {
         for (auto const& f : splitSearchPath(env)) folders.push_back(f);
     folders.insert(folders.end(), inputs.ribSearchPath.begin(), inputs.ribSearchPath.end());
 
+    // This renderer's rixrender.ini, and RenderMan's rendermn.ini / renderman.ini
+    // (as the course text sets up a plugin folder): beside the scene, in the
+    // folder the renderer runs in, in the user's home, then in $RMANTREE/etc.
     std::vector<std::string> iniFiles;
+    auto addFolder = [&iniFiles](fs::path const& dir, std::vector<char const*> const& names) {
+        for (char const* name : names) {
+            std::string file = (dir / name).string();
+            if (std::find(iniFiles.begin(), iniFiles.end(), file) == iniFiles.end()) iniFiles.push_back(file);
+        }
+    };
     if (!inputs.sceneFile.empty()) {
         fs::path dir = fs::path(inputs.sceneFile).parent_path();
-        iniFiles.push_back(((dir.empty() ? fs::path(".") : dir) / "rixrender.ini").string());
+        addFolder(dir.empty() ? fs::path(".") : dir, {"rixrender.ini", "rendermn.ini", "renderman.ini"});
     }
+    addFolder(".", {"rendermn.ini", "renderman.ini"});
     if (const char* xdg = std::getenv("XDG_CONFIG_HOME"))
         iniFiles.push_back(std::string(xdg) + "/bxdflab/rixrender.ini");
     else if (const char* home = std::getenv("HOME"))
         iniFiles.push_back(std::string(home) + "/.config/bxdflab/rixrender.ini");
+    if (const char* home = std::getenv("HOME")) addFolder(home, {".rendermn.ini", ".renderman.ini"});
+    if (const char* tree = std::getenv("RMANTREE")) addFolder(fs::path(tree) / "etc", {"rendermn.ini", "renderman.ini"});
     for (auto const& ini : iniFiles)
         for (auto const& f : readIniPluginPath(ini)) folders.push_back(f);
 

@@ -40,6 +40,9 @@ public:
         return id == k_RixMessages ? m_messages : nullptr;
     }
     BxdfInstance const& material() const { return m_material; }
+    /// What GetBxdf() and Id() answer.
+    void setBxdf(RixBxdf* bxdf) { m_bxdf = bxdf; }
+    void setId(int id) { m_id = id; }
     HitRecord const& hit(int i) const { return m_hits[i]; }
     /// Error bounds of P, for spawning rays (computed with the surface group).
     Vec3 const* pError() const;
