@@ -5,6 +5,7 @@
 #include "RixBxdfLobe.h"
 #include "RixIntegrator.h"
 #include "RixInterfaces.h"
+#include "RixPattern.h"
 #include "RixRNG.h"
 #include "RixShading.h"
 #include "RixShadingUtils.h"

@@ -121,7 +121,7 @@ BxdfProbe::BxdfProbe(std::string const& plugin, std::string const& ribParams, st
     SceneBuilder builder(m_impl->scene, diagnostics);
     builder.readText("Bxdf \"" + plugin + "\" \"probe\" " + ribParams + "\n", "<probe parameters>");
     m_impl->announce("loading the plugin (its static initialisers, CreateRixBxdfFactory, Init, GetParamTable)");
-    BxdfPlugin& loaded = m_impl->loader.bxdf(plugin);
+    ShadingPlugin& loaded = m_impl->loader.bxdf(plugin);
     m_impl->announce("CreateInstanceData");
     m_impl->instance = std::make_unique<BxdfInstance>(m_impl->scene.materials.at(0), loaded, diagnostics);
     m_impl->announce("Synchronize");
@@ -130,7 +130,7 @@ BxdfProbe::BxdfProbe(std::string const& plugin, std::string const& ribParams, st
 
 BxdfProbe::~BxdfProbe() {
     if (m_impl && m_impl->instance) {
-        BxdfPlugin& plugin = m_impl->instance->plugin();
+        ShadingPlugin& plugin = m_impl->instance->plugin();
         m_impl->announce("Synchronize");
         plugin.factory()->Synchronize(plugin.context(), k_RixSCRenderEnd, nullptr);
         m_impl->instance.reset();

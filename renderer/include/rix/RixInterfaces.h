@@ -16,6 +16,7 @@ enum RixInterfaceId {
     k_RixRenderState,   ///< not provided by this renderer (GetRixInterface returns null)
     k_RixThreadUtils,   ///< not provided by this renderer (GetRixInterface returns null)
     k_RixLPEInfo,       ///< the light-path-expression lobe table (used by RixBXLookupLobeByName)
+    k_RixTexture,       ///< filtered, mip-mapped texture lookups (from a RixShadingContext)
 };
 
 /// Base of every interface. Versions let a plugin check what it was built for.
@@ -34,6 +35,32 @@ public:
     /// The id of the lobe `name` of that kind (1, 2, ... in order of first
     /// lookup; "Emission" is 0).
     virtual unsigned char GetLpeIdByName(bool specular, bool user, const char* name) = 0;
+};
+
+/// Texture lookups for pattern plugins. The renderer keeps one cache of
+/// texture tiles for every plugin and thread, so a texture is read from disk
+/// once however many patterns use it. Ask the shading context for it:
+///
+///   auto* tex = static_cast<RixTexture*>(sCtx->GetRixInterface(k_RixTexture));
+///
+/// Any image OpenImageIO reads works; mip-mapped tiled files made with
+/// `maketx` (.tx) are filtered fastest and best.
+class RixTexture : public RixInterface {
+public:
+    /// How one lookup is done.
+    struct TxParams {
+        int firstChannel = 0;           ///< first channel to read (0 = red)
+        RtColorRGB missingColor{1.0f, 0.0f, 1.0f};  ///< returned where the file cannot be read
+        bool periodic = true;           ///< repeat outside [0,1] (false: clamp to the edge)
+    };
+    /// Reads `numChannels` (1 to 3) channels of `filename` at `numPts` texture
+    /// coordinates `st` (s across the image from its left edge, t down from its
+    /// top row), filtered over a square of side `width[i]` in texture units
+    /// (0: the finest level, bilinear). `result` receives numPts * numChannels
+    /// floats, point by point. Returns 0, or 1 when the file cannot be read
+    /// (then every point gets the missing colour and the renderer warns once).
+    virtual int Texture(RtUString filename, TxParams const& params, int numPts, RtFloat2 const* st,
+                        RtFloat const* width, int numChannels, RtFloat* result) = 0;
 };
 
 /// Messages from plugins. Use Warning for "your parameters make no physical

@@ -39,9 +39,9 @@ enum RixSCAccess {
     k_RixSCInvalidAccess,
 };
 
-/// How much a value varies over a shading context.
 class RixBxdf;
 
+/// How much a value varies over a shading context.
 enum RixSCDetail {
     k_RixSCInvalidDetail = 0,  ///< no such parameter / wrong type
     k_RixSCUniform,            ///< one value for every point (result points at 1 value)

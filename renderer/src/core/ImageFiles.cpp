@@ -17,6 +17,11 @@ ImageFiles const& imageFiles() {
     return *files;
 }
 
+std::unique_ptr<TextureService> openTextures(Diagnostics& diagnostics) {
+    ImageFiles const* files = g_files;
+    return files ? files->openTextures(diagnostics) : nullptr;
+}
+
 void writeImage(std::string const& path, std::vector<float> const& pixels, int width, int height, int channels) {
     imageFiles().write(path, pixels, width, height, channels);
 }

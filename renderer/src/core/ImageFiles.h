@@ -5,14 +5,32 @@
 // are built on -- start without OpenImageIO's hundreds of shared libraries.
 #pragma once
 
+#include <atomic>
+#include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
+
+#include "RixInterfaces.h"
 
 namespace bxdflab {
 
 struct ImagePixels {
     int width = 0, height = 0, channels = 0;
     std::vector<float> pixels;  ///< row-major from the top left, `channels` floats per pixel
+};
+
+class Diagnostics;
+
+/// The renderer's RixTexture, with the count of points looked up (for the stats).
+class TextureService : public RixTexture {
+public:
+    /// Folders where relative file names are looked for, in order.
+    virtual void setSearchPath(std::vector<std::string> const& folders) = 0;
+    uint64_t lookups() const { return m_lookups.load(std::memory_order_relaxed); }
+
+protected:
+    std::atomic<uint64_t> m_lookups{0};
 };
 
 class ImageFiles {
@@ -25,12 +43,18 @@ public:
     /// .png .jpg become 8-bit sRGB without alpha). Throws RenderError.
     virtual void write(std::string const& path, std::vector<float> const& pixels, int width, int height,
                        int channels) const = 0;
+    /// A texture service for pattern plugins (warnings about unreadable
+    /// files go to `diagnostics`); null when the program reads no images.
+    virtual std::unique_ptr<TextureService> openTextures(Diagnostics& diagnostics) const = 0;
 };
 
 /// Makes `files` the implementation every image read and write goes through.
 void installImageFiles(ImageFiles const* files);
 /// The installed implementation; throws RenderError when the program has none.
 ImageFiles const& imageFiles();
+
+/// The installed implementation's texture service, or null when the program has none.
+std::unique_ptr<TextureService> openTextures(Diagnostics& diagnostics);
 
 /// Shorthand for imageFiles().write(...).
 void writeImage(std::string const& path, std::vector<float> const& pixels, int width, int height, int channels);

@@ -9,12 +9,17 @@
 #include <filesystem>
 
 #include "core/Error.h"
+#include "film/OiioTextures.h"
 
 namespace bxdflab {
 namespace {
 
 class OiioImageFiles final : public ImageFiles {
 public:
+    std::unique_ptr<TextureService> openTextures(Diagnostics& diagnostics) const override {
+        return makeOiioTextures(diagnostics);
+    }
+
     ImagePixels read(std::string const& path, std::string const& what) const override {
         std::string prefix = what + " \"" + path + "\": ";
         auto input = OIIO::ImageInput::open(path);

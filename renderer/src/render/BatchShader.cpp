@@ -37,7 +37,7 @@ void BatchShader::shade(HitRecord const* hits, RixRNG::SampleCtx const* samples,
         }
         BxdfInstance const& material = *m_materials[m];
         ShadingContextImpl ctx(m_scene, material, groupHits, n, m_pixelSpread, arena, &material.plugin().messages(),
-                               m_counters.builtins);
+                               m_counters.builtins, m_textures);
         RixRNG rng(groupSamples, n);
         RixBxdfFactory* factory = material.plugin().factory();
         try {

@@ -37,9 +37,9 @@ struct ShadingCounters {
 class BatchShader {
 public:
     BatchShader(Scene const& scene, std::vector<std::unique_ptr<BxdfInstance>> const& materials, float pixelSpread,
-                ShadingCounters& counters, Diagnostics& diagnostics)
+                ShadingCounters& counters, Diagnostics& diagnostics, RixTexture* textures = nullptr)
         : m_scene(scene), m_materials(materials), m_pixelSpread(pixelSpread), m_counters(counters),
-          m_diagnostics(diagnostics) {}
+          m_diagnostics(diagnostics), m_textures(textures) {}
 
     using Visitor = std::function<void(ShadeGroup&)>;
     /// Shades hits[0..count) that hit something; samples[i] is hit i's place
@@ -54,6 +54,7 @@ private:
     float m_pixelSpread;
     ShadingCounters& m_counters;
     Diagnostics& m_diagnostics;
+    RixTexture* m_textures;
 };
 
 }  // namespace bxdflab

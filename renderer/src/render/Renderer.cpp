@@ -10,22 +10,26 @@
 #include <atomic>
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
 #include <mutex>
 #include <optional>
 #include <set>
 #include <thread>
 
 #include "accel/RayTracer.h"
+#include "core/ImageFiles.h"
 #include "render/BatchShader.h"
 #include "scene/Camera.h"
 #include "scene/lights/HeadLight.h"
 #include "shade/BxdfInstance.h"
 #include "shade/MemoryArena.h"
+#include "shade/PatternInstance.h"
 #include "shade/PluginSearchPath.h"
 #include "shade/ShadingContextImpl.h"
 #include "shade/StandInMaterials.h"
 
 namespace bxdflab {
+namespace fs = std::filesystem;
 namespace {
 
 using Clock = std::chrono::steady_clock;
@@ -128,6 +132,9 @@ struct Renderer::Impl {
     RenderSettings settings;
     Diagnostics& diagnostics;
     PluginLoader loader;
+    std::unique_ptr<TextureService> textures;             // only when a pattern is used
+    PatternCounters patternCounters;
+    std::vector<std::unique_ptr<PatternInstance>> patterns;  // by Scene::patterns index; null: not used
     std::vector<std::unique_ptr<BxdfInstance>> materials;
     std::unique_ptr<RayTracer> tracer;
     std::unique_ptr<Camera> camera;
@@ -147,9 +154,62 @@ struct Renderer::Impl {
           diagnostics(d),
           loader(pluginSearchPath({rs.pluginPath, s.pluginSearchPath, s.file}), d) {}
 
+    /// Loads the patterns the materials' connections reach (and only those),
+    /// and the texture service if any is used.
+    void loadPatterns(std::vector<MaterialDesc> const& usedMaterials);
+    /// Every loaded Bxdf and pattern plugin, each once, in order of first use.
+    std::vector<ShadingPlugin*> usedPlugins() const;
     void renderTile(int tileX, int tileY, int spp, Film& film, Worker& worker);
     void shadeChunk(Worker& worker, int count);
 };
+
+void Renderer::Impl::loadPatterns(std::vector<MaterialDesc> const& usedMaterials) {
+    // Connections only point at earlier patterns, so one sweep from the last
+    // pattern to the first finds everything reachable.
+    std::vector<char> reached(scene.patterns.size(), 0);
+    auto reach = [&reached](std::map<std::string, Connection> const& connections) {
+        for (auto const& [name, link] : connections) reached[static_cast<size_t>(link.pattern)] = 1;
+    };
+    for (MaterialDesc const& material : usedMaterials) reach(material.connections);
+    for (size_t i = reached.size(); i-- > 0;)
+        if (reached[i]) reach(scene.patterns[i].connections);
+
+    patterns.resize(scene.patterns.size());
+    auto patternOf = [this](int index) -> PatternInstance const* { return patterns[static_cast<size_t>(index)].get(); };
+    for (size_t i = 0; i < reached.size(); ++i) {
+        if (!reached[i]) continue;
+        PatternDesc const& desc = scene.patterns[i];
+        ShadingPlugin* plugin = nullptr;
+        try {
+            plugin = &loader.pattern(desc.plugin, desc.where);
+        } catch (RenderError const& e) {
+            // Like a missing texture: the render goes on, and says what it lacks.
+            diagnostics.warn(desc.where, "Pattern \"" + desc.handle + "\" cannot be used (" + e.what() +
+                                             "); the parameters connected to it keep their own values");
+            continue;
+        }
+        patterns[i] = std::make_unique<PatternInstance>(desc, *plugin, patternOf, patternCounters, diagnostics);
+        if (!textures) {
+            textures = openTextures(diagnostics);
+            if (textures) {
+                std::vector<std::string> folders = scene.textureSearchPath;
+                if (!scene.file.empty()) folders.push_back(fs::path(scene.file).parent_path().string());
+                textures->setSearchPath(folders);
+            }
+        }
+    }
+}
+
+std::vector<ShadingPlugin*> Renderer::Impl::usedPlugins() const {
+    std::vector<ShadingPlugin*> plugins;
+    auto add = [&plugins](ShadingPlugin& plugin) {
+        if (std::find(plugins.begin(), plugins.end(), &plugin) == plugins.end()) plugins.push_back(&plugin);
+    };
+    for (auto const& pattern : patterns)
+        if (pattern) add(pattern->plugin());
+    for (auto const& material : materials) add(material->plugin());
+    return plugins;
+}
 
 Renderer::Renderer(Scene& scene, RenderSettings settings, Diagnostics& diagnostics)
     : m_impl(std::make_unique<Impl>(scene, settings, diagnostics)) {
@@ -159,26 +219,27 @@ Renderer::Renderer(Scene& scene, RenderSettings settings, Diagnostics& diagnosti
     // Plugins: one instance per Bxdf statement; each plugin hears RenderBegin once.
     // RenderMan's own materials that are not on the search path get a stock stand-in.
     std::set<std::string> standInsWarned;
+    std::vector<MaterialDesc> used;
     for (MaterialDesc const& material : scene.materials) {
         std::optional<StandIn> standIn;
         if (!r.loader.has(material.plugin)) standIn = standInFor(material);
-        MaterialDesc const& used = standIn ? standIn->material : material;
         if (standIn && standInsWarned.insert(material.plugin).second) {
             diagnostics.warn(material.where, "Bxdf \"" + material.plugin + "\" is one of RenderMan's materials and no " +
                                                  material.plugin + ".so is on the plugin search path: rendered as " +
                                                  standIn->note);
             m_stats.effects.skip("material " + material.plugin, "rendered as " + standIn->note);
         }
-        BxdfPlugin& plugin = r.loader.bxdf(used.plugin, used.where);
-        r.materials.push_back(std::make_unique<BxdfInstance>(used, plugin, diagnostics));
+        used.push_back(standIn ? standIn->material : material);
     }
-    std::vector<BxdfPlugin*> synced;
-    for (auto const& m : r.materials) {
-        BxdfPlugin& plugin = m->plugin();
-        if (std::find(synced.begin(), synced.end(), &plugin) != synced.end()) continue;
-        plugin.factory()->Synchronize(plugin.context(), k_RixSCRenderBegin, nullptr);
-        synced.push_back(&plugin);
-        m_stats.plugins.push_back(plugin.name() + " (" + plugin.path() + ")");
+    r.loadPatterns(used);
+    auto patternOf = [&r](int index) -> PatternInstance const* { return r.patterns[static_cast<size_t>(index)].get(); };
+    for (MaterialDesc const& material : used) {
+        ShadingPlugin& plugin = r.loader.bxdf(material.plugin, material.where);
+        r.materials.push_back(std::make_unique<BxdfInstance>(material, plugin, diagnostics, patternOf));
+    }
+    for (ShadingPlugin* plugin : r.usedPlugins()) {
+        plugin->plugin()->Synchronize(plugin->context(), k_RixSCRenderBegin, nullptr);
+        m_stats.plugins.push_back(plugin->name() + " (" + plugin->path() + ")");
     }
 
     r.camera = std::make_unique<Camera>(scene.camera, scene.xres, scene.yres, scene.pixelAspect);
@@ -213,7 +274,8 @@ Renderer::Renderer(Scene& scene, RenderSettings settings, Diagnostics& diagnosti
         if (light->visibility.camera) r.cameraLights.push_back(light.get());
     r.tracer = std::make_unique<RayTracer>(scene);
     warnIfNothingInFront(*r.tracer, scene, diagnostics);
-    r.shader = std::make_unique<BatchShader>(scene, r.materials, r.camera->pixelSpread(), r.counters, diagnostics);
+    r.shader = std::make_unique<BatchShader>(scene, r.materials, r.camera->pixelSpread(), r.counters, diagnostics,
+                                             r.textures.get());
 
     // What this render will and will not simulate.
     EffectReport& effects = m_stats.effects;
@@ -238,14 +300,11 @@ Renderer::Renderer(Scene& scene, RenderSettings settings, Diagnostics& diagnosti
 
 Renderer::~Renderer() {
     if (!m_impl) return;
-    std::vector<BxdfPlugin*> done;
-    for (auto const& m : m_impl->materials) {
-        BxdfPlugin& plugin = m->plugin();
-        if (std::find(done.begin(), done.end(), &plugin) != done.end()) continue;
-        plugin.factory()->Synchronize(plugin.context(), k_RixSCRenderEnd, nullptr);
-        done.push_back(&plugin);
-    }
-    m_impl->materials.clear();  // instance data is freed before the plugins unload
+    for (ShadingPlugin* plugin : m_impl->usedPlugins())
+        plugin->plugin()->Synchronize(plugin->context(), k_RixSCRenderEnd, nullptr);
+    // Instance data is freed before the plugins unload.
+    m_impl->materials.clear();
+    m_impl->patterns.clear();
 }
 
 void Renderer::Impl::renderTile(int tileX, int tileY, int spp, Film& film, Worker& w) {
@@ -360,6 +419,9 @@ Film Renderer::render() {
     m_stats.batches = r.counters.batches.load();
     m_stats.surfacePoints = r.counters.builtins.surfacePoints.load();
     m_stats.tangentPoints = r.counters.builtins.tangentPoints.load();
+    m_stats.patternEvaluations = r.patternCounters.evaluations.load();
+    m_stats.patternPoints = r.patternCounters.points.load();
+    m_stats.textureLookups = r.textures ? r.textures->lookups() : 0;
     m_stats.nonFiniteSamples = r.nonFinite.load();
     m_stats.invalidPdfSamples = r.invalidPdf.load();
     m_stats.peakMemoryMB = peakResidentMB();
@@ -400,6 +462,7 @@ nlohmann::json RenderStats::toJson(Diagnostics const& diagnostics) const {
         {"shade_points", shadePoints},
         {"batches", batches},
         {"builtins", {{"surface_points", surfacePoints}, {"tangent_points", tangentPoints}}},
+        {"patterns", {{"evaluations", patternEvaluations}, {"points", patternPoints}, {"texture_lookups", textureLookups}}},
         {"nonfinite_samples", nonFiniteSamples},
         {"invalid_pdf_samples", invalidPdfSamples},
         {"peak_memory_mb", peakMemoryMB},

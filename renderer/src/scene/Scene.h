@@ -2,6 +2,7 @@
 // materials (Bxdf statements), lights and shapes.
 #pragma once
 
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -37,12 +38,30 @@ struct IntegratorDesc {
     bool given = false;
 };
 
+/// A parameter connected to a pattern's output: "reference color x" ["handle:output"].
+struct Connection {
+    int pattern = -1;    ///< index into Scene::patterns
+    std::string output;  ///< the output's name in that pattern's table
+    SourceLocation where;
+};
+
 /// One `Bxdf "plugin" "handle" ...` statement.
 struct MaterialDesc {
     std::string plugin;
     std::string handle;
     ParamList params;
     SourceLocation where;
+    std::map<std::string, Connection> connections;  ///< by parameter name
+};
+
+/// One `Pattern "plugin" "handle" ...` statement: a node of a shading network.
+/// Its connections only reach patterns declared before it, so networks have no cycles.
+struct PatternDesc {
+    std::string plugin;
+    std::string handle;
+    ParamList params;
+    SourceLocation where;
+    std::map<std::string, Connection> connections;
 };
 
 /// An area light given by geometry: AreaLightSource (RenderMan 20 and the
@@ -67,11 +86,13 @@ struct SceneOptions {
     DisplayDesc display;
     IntegratorDesc integrator;
     std::vector<std::string> pluginSearchPath;  ///< from Option "searchpath" "rixplugin"
+    std::vector<std::string> textureSearchPath; ///< from Option "searchpath" "texture" (then the RIB's folder)
     int frame = -1;  ///< the FrameBegin number (-1: the file has no frames)
 };
 
 struct Scene : SceneOptions {
     std::vector<MaterialDesc> materials;
+    std::vector<PatternDesc> patterns;
     std::vector<std::unique_ptr<Shape>> shapes;
     std::vector<std::unique_ptr<Light>> lights;
     /// Things dropped at load, e.g. "light 'fill' has zero intensity" (for the stats).

@@ -58,6 +58,7 @@ std::map<std::string, SceneBuilder::Handler> const& SceneBuilder::handlers() {
         {"TextureCoordinates", &SceneBuilder::textureCoordinates},
         // Shading and lights.
         {"Bxdf", &SceneBuilder::bxdf},
+        {"Pattern", &SceneBuilder::pattern},
         {"Surface", &SceneBuilder::surface},
         {"Light", &SceneBuilder::light},
         {"LightSource", &SceneBuilder::lightSource},
@@ -220,6 +221,8 @@ void SceneBuilder::finishFrame() {
     m_sink(m_scene);
     // Ready for the next world: the options stay, the world goes.
     m_scene.materials.clear();
+    m_scene.patterns.clear();
+    m_patternHandles.clear();
     m_scene.shapes.clear();
     m_scene.lights.clear();
     m_scene.dropped.clear();

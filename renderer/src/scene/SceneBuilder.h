@@ -123,6 +123,10 @@ private:
     void textureCoordinates(RequestReader& in);
     // Shading: Bxdfs, classic shaders, lights (scene/requests/ShadingRequests.cpp).
     void bxdf(RequestReader& in);
+    void pattern(RequestReader& in);
+    /// The connections of a parameter list's "reference" parameters, to the
+    /// patterns declared so far (a located error for a handle not declared before).
+    std::map<std::string, Connection> connectionsOf(ParamList const& params, std::string const& owner);
     void surface(RequestReader& in);
     void light(RequestReader& in);
     void lightSource(RequestReader& in);
@@ -206,6 +210,7 @@ private:
     std::vector<std::string> m_fileStack;
     std::vector<std::string> m_archiveSearchPath;
     std::map<std::string, int> m_defaultMaterials;
+    std::map<std::string, int> m_patternHandles;  ///< handle -> the latest Pattern of that name
     std::map<std::shared_ptr<AreaLightDesc>, int> m_emissiveMaterials;
     std::map<std::string, Mat4> m_namedSpaces;  ///< CoordinateSystem
     std::set<std::string> m_warnedKinds;

@@ -23,66 +23,78 @@ std::string describeType(RixSCType type) {
 }
 }  // namespace
 
-BxdfPlugin::BxdfPlugin(std::string name, std::string path, Diagnostics& diagnostics)
-    : m_name(std::move(name)),
+ShadingPlugin::ShadingPlugin(Kind kind, std::string name, std::string path, Diagnostics& diagnostics)
+    : m_kind(kind),
+      m_name(std::move(name)),
       m_path(std::move(path)),
       m_messages(diagnostics, m_name),
       m_context(m_messages),
       m_library(m_path, "plugin \"" + m_name + "\" (" + m_path + ")") {
     std::string where = "plugin \"" + m_name + "\" (" + m_path + ")";
-    auto fail = [&](std::string const& message) { throw RenderError(where + ": " + message); };
-    auto create = reinterpret_cast<CreateFn>(m_library.symbol("CreateRixBxdfFactory"));
-    m_destroy = reinterpret_cast<DestroyFn>(m_library.symbol("DestroyRixBxdfFactory"));
+    auto fail = [&](std::string const& message) {
+        release();
+        throw RenderError(where + ": " + message);
+    };
+    bool const bxdf = kind == Kind::Bxdf;
+    char const* createName = bxdf ? "CreateRixBxdfFactory" : "CreateRixPattern";
+    char const* destroyName = bxdf ? "DestroyRixBxdfFactory" : "DestroyRixPattern";
+    char const* createMacro = bxdf ? "RIX_BXDFPLUGINCREATE" : "RIX_PATTERNCREATE";
+    char const* destroyMacro = bxdf ? "RIX_BXDFPLUGINDESTROY" : "RIX_PATTERNDESTROY";
+    void* create = m_library.symbol(createName);
+    void* destroy = m_library.symbol(destroyName);
     if (!create)
-        fail("does not export CreateRixBxdfFactory (define it with RIX_BXDFPLUGINCREATE, or extern \"C\" PRMANEXPORT)");
-    if (!m_destroy)
-        fail("does not export DestroyRixBxdfFactory (define it with RIX_BXDFPLUGINDESTROY, or extern \"C\" PRMANEXPORT)");
-    if (auto version = reinterpret_cast<VersionFn>(m_library.symbol("RixBxdfPluginApiVersion"))) {
-        int v = version();
-        if (v != RIX_BXDF_API_VERSION)
-            fail("was built against Rix API version " + std::to_string(v) + ", this renderer provides version " +
-                 std::to_string(RIX_BXDF_API_VERSION) + "; rebuild the plugin");
+        fail(std::string("does not export ") + createName + " (define it with " + createMacro +
+             ", or extern \"C\" PRMANEXPORT)" + (bxdf && m_library.symbol("CreateRixPattern") ? "; it is a pattern" : "") +
+             (!bxdf && m_library.symbol("CreateRixBxdfFactory") ? "; it is a Bxdf" : ""));
+    if (!destroy) fail(std::string("does not export ") + destroyName + " (define it with " + destroyMacro + ")");
+    if (bxdf) {
+        if (auto version = reinterpret_cast<VersionFn>(m_library.symbol("RixBxdfPluginApiVersion"))) {
+            int v = version();
+            if (v != RIX_BXDF_API_VERSION)
+                fail("was built against Rix API version " + std::to_string(v) + ", this renderer provides version " +
+                     std::to_string(RIX_BXDF_API_VERSION) + "; rebuild the plugin");
+        }
+        m_destroyBxdf = reinterpret_cast<void (*)(RixBxdfFactory*)>(destroy);
+        m_factory = reinterpret_cast<RixBxdfFactory* (*)(const char*)>(create)(m_name.c_str());
+    } else {
+        m_destroyPattern = reinterpret_cast<void (*)(RixPattern*)>(destroy);
+        m_factory = reinterpret_cast<RixPattern* (*)(const char*)>(create)(m_name.c_str());
     }
-    m_factory = create(m_name.c_str());
-    if (!m_factory) fail("CreateRixBxdfFactory returned null");
+    if (!m_factory) fail(std::string(createName) + " returned null");
     if (int status = m_factory->Init(m_context, RtUString(m_path.c_str())); status != 0) {
-        m_destroy(m_factory);
-        m_factory = nullptr;
+        destroyFactory();
         fail("Init failed with status " + std::to_string(status));
     }
     RixSCParamInfo const* table = m_factory->GetParamTable();
-    if (!table) {
-        m_factory->Finalize(m_context);
-        m_destroy(m_factory);
-        m_factory = nullptr;
-        fail("GetParamTable returned null (return a table that ends with RixSCParamInfo())");
-    }
+    if (!table) fail("GetParamTable returned null (return a table that ends with RixSCParamInfo())");
     for (size_t i = 0;; ++i) {
-        if (i == kMaxParams) {
-            m_factory->Finalize(m_context);
-            m_destroy(m_factory);
-            m_factory = nullptr;
+        if (i == kMaxParams)
             fail("the parameter table has no end marker RixSCParamInfo() in its first " + std::to_string(kMaxParams) + " entries");
-        }
         if (table[i].IsEndOfTable()) break;
-        if (table[i].name.Empty() || describeType(table[i].type) == "invalid") {
-            m_factory->Finalize(m_context);
-            m_destroy(m_factory);
-            m_factory = nullptr;
+        if (table[i].name.Empty() || describeType(table[i].type) == "invalid")
             fail("parameter table entry " + std::to_string(i) + " has an empty name or an invalid type");
-        }
         m_table.push_back(table[i]);
     }
 }
 
-BxdfPlugin::~BxdfPlugin() {
-    if (m_factory) {
-        m_factory->Finalize(m_context);
-        m_destroy(m_factory);
-    }
+void ShadingPlugin::destroyFactory() {
+    if (!m_factory) return;
+    if (m_kind == Kind::Bxdf)
+        m_destroyBxdf(static_cast<RixBxdfFactory*>(m_factory));
+    else
+        m_destroyPattern(static_cast<RixPattern*>(m_factory));
+    m_factory = nullptr;
 }
 
-int BxdfPlugin::paramId(std::string const& name) const {
+void ShadingPlugin::release() {
+    if (!m_factory) return;
+    m_factory->Finalize(m_context);
+    destroyFactory();
+}
+
+ShadingPlugin::~ShadingPlugin() { release(); }
+
+int ShadingPlugin::paramId(std::string const& name) const {
     for (size_t i = 0; i < m_table.size(); ++i)
         if (name == m_table[i].name.CStr()) return static_cast<int>(i);
     return -1;
@@ -113,11 +125,19 @@ std::string PluginLoader::find(std::string const& name, const char* kind, Source
                       "\n  (add a folder with --plugin-path, $RIX_PLUGIN_PATH or Option \"searchpath\" \"string rixplugin\")");
 }
 
-BxdfPlugin& PluginLoader::bxdf(std::string const& name, SourceLocation const& where) {
+ShadingPlugin& PluginLoader::bxdf(std::string const& name, SourceLocation const& where) {
     auto found = m_plugins.find(name);
     if (found != m_plugins.end()) return *found->second;
-    auto plugin = std::make_unique<BxdfPlugin>(name, find(name, "Bxdf", where), m_diagnostics);
+    auto plugin = std::make_unique<ShadingPlugin>(ShadingPlugin::Kind::Bxdf, name, find(name, "Bxdf", where), m_diagnostics);
     return *m_plugins.emplace(name, std::move(plugin)).first->second;
+}
+
+ShadingPlugin& PluginLoader::pattern(std::string const& name, SourceLocation const& where) {
+    auto found = m_patterns.find(name);
+    if (found != m_patterns.end()) return *found->second;
+    auto plugin =
+        std::make_unique<ShadingPlugin>(ShadingPlugin::Kind::Pattern, name, find(name, "Pattern", where), m_diagnostics);
+    return *m_patterns.emplace(name, std::move(plugin)).first->second;
 }
 
 std::unique_ptr<IntegratorPlugin> PluginLoader::integrator(std::string const& name, ParamList const& params,

@@ -1,4 +1,5 @@
-// Loads Bxdf plugins (shared objects) by name from the plugin search path.
+// Loads Bxdf, pattern and integrator plugins (shared objects) by name from
+// the plugin search path.
 #pragma once
 
 #include <map>
@@ -8,6 +9,7 @@
 
 #include "RixBxdf.h"
 #include "RixIntegrator.h"
+#include "RixPattern.h"
 #include "core/Diagnostics.h"
 #include "core/Error.h"
 #include "parse/ParamList.h"
@@ -16,17 +18,23 @@
 
 namespace bxdflab {
 
-/// One loaded plugin: its factory (initialised) and its parameter table.
-class BxdfPlugin {
+/// One loaded shading plugin, a Bxdf or a pattern: its factory (initialised)
+/// and its parameter table.
+class ShadingPlugin {
 public:
-    BxdfPlugin(std::string name, std::string path, Diagnostics& diagnostics);
-    ~BxdfPlugin();
-    BxdfPlugin(BxdfPlugin const&) = delete;
-    BxdfPlugin& operator=(BxdfPlugin const&) = delete;
+    enum class Kind { Bxdf, Pattern };
+    ShadingPlugin(Kind kind, std::string name, std::string path, Diagnostics& diagnostics);
+    ~ShadingPlugin();
+    ShadingPlugin(ShadingPlugin const&) = delete;
+    ShadingPlugin& operator=(ShadingPlugin const&) = delete;
 
     std::string const& name() const { return m_name; }
     std::string const& path() const { return m_path; }
-    RixBxdfFactory* factory() const { return m_factory; }
+    Kind kind() const { return m_kind; }
+    /// The Bxdf factory (null for a pattern) and the pattern (null for a Bxdf).
+    RixBxdfFactory* factory() const { return m_kind == Kind::Bxdf ? static_cast<RixBxdfFactory*>(m_factory) : nullptr; }
+    RixPattern* pattern() const { return m_kind == Kind::Pattern ? static_cast<RixPattern*>(m_factory) : nullptr; }
+    RixShadingPlugin* plugin() const { return m_factory; }
     std::vector<RixSCParamInfo> const& paramTable() const { return m_table; }
     /// Index of a parameter in the table, or -1.
     int paramId(std::string const& name) const;
@@ -35,16 +43,19 @@ public:
     RixMessages& messages() { return m_messages; }
 
 private:
-    using CreateFn = RixBxdfFactory* (*)(const char*);
-    using DestroyFn = void (*)(RixBxdfFactory*);
     using VersionFn = int (*)();
+    /// Finalizes and destroys the factory (a failed constructor's clean-up too).
+    void release();
+    void destroyFactory();
 
+    Kind m_kind;
     std::string m_name, m_path;
     PluginMessages m_messages;
     PluginContext m_context;
     SharedObject m_library;
-    RixBxdfFactory* m_factory = nullptr;
-    DestroyFn m_destroy = nullptr;
+    RixShadingPlugin* m_factory = nullptr;
+    void (*m_destroyBxdf)(RixBxdfFactory*) = nullptr;
+    void (*m_destroyPattern)(RixPattern*) = nullptr;
     std::vector<RixSCParamInfo> m_table;
 };
 
@@ -78,7 +89,9 @@ public:
 
     /// The plugin `name` (loading it on first use). Throws a RenderError that
     /// names the plugin and every folder searched when it cannot be found.
-    BxdfPlugin& bxdf(std::string const& name, SourceLocation const& where = {});
+    ShadingPlugin& bxdf(std::string const& name, SourceLocation const& where = {});
+    /// The pattern plugin `name`, the same way.
+    ShadingPlugin& pattern(std::string const& name, SourceLocation const& where = {});
     /// Whether a plugin of that name is on the search path.
     bool has(std::string const& name) const;
     /// Loads the integrator plugin `name` and creates it with `params`.
@@ -93,7 +106,8 @@ private:
     std::string locate(std::string const& name) const;
     std::vector<std::string> m_searchPath;
     Diagnostics& m_diagnostics;
-    std::map<std::string, std::unique_ptr<BxdfPlugin>> m_plugins;
+    std::map<std::string, std::unique_ptr<ShadingPlugin>> m_plugins;   ///< Bxdfs
+    std::map<std::string, std::unique_ptr<ShadingPlugin>> m_patterns;
 };
 
 }  // namespace bxdflab

@@ -1,6 +1,9 @@
 #include "shade/ShadingContextImpl.h"
 
 #include <cstring>
+#include <string>
+
+#include "core/Error.h"
 
 namespace bxdflab {
 namespace {
@@ -30,14 +33,13 @@ void const* replicate(void const* value, size_t elementSize, int count, MemoryAr
 
 }  // namespace
 
-RixSCDetail evalInstanceParam(BxdfInstance const& material, int id, int arrayIndex, RixSCType wanted,
-                              size_t elementSize, void const** result, void const* dflt, bool promote, int numPts,
-                              MemoryArena& arena) {
+RixSCDetail evalUniformParam(NodeParams const& node, int id, int arrayIndex, RixSCType wanted, size_t elementSize,
+                             void const** result, void const* dflt, bool promote, int numPts, MemoryArena& arena) {
     auto fallback = [&](RixSCDetail detail) {
         *result = promote && dflt ? replicate(dflt, elementSize, numPts, arena) : dflt;
         return detail;
     };
-    ParamValue const* value = material.value(id);
+    ParamValue const* value = node.value(id);
     if (!value) return fallback(k_RixSCInvalidDetail);
     // Points, vectors and normals are interchangeable; colours are not.
     bool typeOk = value->type == wanted || (isTriple(value->type) && isTriple(wanted) && value->type != k_RixSCColor &&
@@ -66,14 +68,15 @@ RixSCDetail evalInstanceParam(BxdfInstance const& material, int id, int arrayInd
 
 ShadingContextImpl::ShadingContextImpl(Scene const& scene, BxdfInstance const& material, HitRecord const* hits,
                                        int count, float pixelSpread, MemoryArena& arena, RixInterface* messages,
-                                       BuiltinCounters& counters)
+                                       BuiltinCounters& counters, RixTexture* textures)
     : m_scene(scene),
       m_material(material),
       m_hits(hits),
       m_pixelSpread(pixelSpread),
       m_arena(arena),
       m_messages(messages),
-      m_counters(counters) {
+      m_counters(counters),
+      m_textures(textures) {
     numPts = count;
 }
 
@@ -181,7 +184,113 @@ int ShadingContextImpl::Builtin(BuiltinId id, RixSCType wanted, void const** res
 
 RixSCDetail ShadingContextImpl::Param(int id, int arrayIndex, RixSCType wanted, size_t elementSize,
                                       void const** result, void const* dflt, bool promote) const {
-    return evalInstanceParam(m_material, id, arrayIndex, wanted, elementSize, result, dflt, promote, numPts, m_arena);
+    return evalParam(m_material.params(), id, arrayIndex, wanted, elementSize, result, dflt, promote);
+}
+
+RixSCDetail ShadingContextImpl::evalParam(NodeParams const& node, int id, int arrayIndex, RixSCType wanted,
+                                          size_t elementSize, void const** result, void const* dflt,
+                                          bool promote) const {
+    ParamConnection const* link = node.connection(id);
+    ParamValue const* declared = node.value(id);
+    if (link && declared && connectable(declared->type, wanted)) {
+        if (RixPattern::OutputSpecification const* out = patternOutput(*link->pattern, link->output)) {
+            if (out->detail == k_RixSCVarying) {
+                *result = out->value;
+                return k_RixSCVarying;
+            }
+            *result = promote ? replicate(out->value, elementSize, numPts, m_arena) : out->value;
+            return k_RixSCUniform;
+        }
+    }
+    return evalUniformParam(node, id, arrayIndex, wanted, elementSize, result, dflt, promote, numPts, m_arena);
+}
+
+/// The context a pattern computes in: the same points, builtins, primvars and
+/// memory as the Bxdf's context; its own parameters.
+class PatternContext final : public RixShadingContext {
+public:
+    PatternContext(ShadingContextImpl const& parent, PatternInstance const& pattern)
+        : m_parent(parent), m_pattern(pattern) {
+        numPts = parent.numPts;
+        scTraits = parent.scTraits;
+        m_id = parent.Id();
+    }
+    RixInterface* GetRixInterface(RixInterfaceId id) const override {
+        if (id == k_RixMessages) return &m_pattern.plugin().messages();
+        return m_parent.GetRixInterface(id);
+    }
+
+protected:
+    int Builtin(BuiltinId id, RixSCType wanted, void const** result) const override {
+        return m_parent.Builtin(id, wanted, result);
+    }
+    RixSCDetail Param(int id, int arrayIndex, RixSCType wanted, size_t elementSize, void const** result,
+                      void const* dflt, bool promote) const override {
+        return m_parent.evalParam(m_pattern.params(), id, arrayIndex, wanted, elementSize, result, dflt, promote);
+    }
+    void* Allocate(size_t bytes, size_t alignment) const override { return m_parent.Allocate(bytes, alignment); }
+    RixSCDetail PrimVar(RtUString const name, RixSCType wanted, void const** result,
+                        RtFloat const** radius) const override {
+        return m_parent.PrimVar(name, wanted, result, radius);
+    }
+
+private:
+    ShadingContextImpl const& m_parent;
+    PatternInstance const& m_pattern;
+};
+
+namespace {
+
+std::string patternFault(PatternInstance const& pattern, std::string const& what) {
+    return "plugin \"" + pattern.plugin().name() + "\" (Pattern \"" + pattern.handle() + "\" at " +
+           pattern.where().str() + ", loaded from " + pattern.plugin().path() + ") " + what;
+}
+
+}  // namespace
+
+RixPattern::OutputSpecification const* ShadingContextImpl::patternOutput(PatternInstance const& pattern,
+                                                                         int output) const {
+    auto pick = [output](PatternOutputs const& done) -> RixPattern::OutputSpecification const* {
+        for (int k = 0; k < done.count; ++k)
+            if (done.outputs[k].paramId == output) return &done.outputs[k];
+        return nullptr;
+    };
+    for (PatternOutputs const& done : m_patternOutputs)
+        if (done.pattern == &pattern) return pick(done);
+
+    PatternContext ctx(*this, pattern);
+    RtInt count = 0;
+    RixPattern::OutputSpecification* outputs = nullptr;
+    try {
+        int status = pattern.plugin().pattern()->ComputeOutputParams(&ctx, &count, &outputs, pattern.instanceData(),
+                                                                     nullptr);
+        if (status != 0) count = 0;  // a pattern that declines: its connections use their own values
+    } catch (PluginFault const&) {
+        throw;
+    } catch (std::exception const& e) {
+        throw PluginFault(patternFault(pattern, std::string("threw while computing its outputs: ") + e.what()));
+    } catch (...) {
+        throw PluginFault(patternFault(pattern, "threw something that is not a std::exception"));
+    }
+    auto const& table = pattern.plugin().paramTable();
+    if (count < 0 || count > static_cast<int>(table.size()) || (count > 0 && !outputs))
+        throw PluginFault(patternFault(pattern, "returned " + std::to_string(count) + " outputs" +
+                                                    (outputs ? "" : " and no OutputSpecification array") +
+                                                    " from ComputeOutputParams"));
+    for (int k = 0; k < count; ++k) {
+        auto const& out = outputs[k];
+        bool rowOk = out.paramId >= 0 && out.paramId < static_cast<int>(table.size()) &&
+                     table[static_cast<size_t>(out.paramId)].access == k_RixSCOutput;
+        if (!rowOk || !out.value || (out.detail != k_RixSCUniform && out.detail != k_RixSCVarying))
+            throw PluginFault(patternFault(pattern, "returned output " + std::to_string(k) + " with " +
+                                                        (!rowOk ? "paramId " + std::to_string(out.paramId) +
+                                                                      ", which is not an output of its table"
+                                                                : !out.value ? "no values" : "an invalid detail")));
+    }
+    pattern.counters().evaluations.fetch_add(1, std::memory_order_relaxed);
+    pattern.counters().points.fetch_add(static_cast<uint64_t>(numPts), std::memory_order_relaxed);
+    m_patternOutputs.push_back({&pattern, count, outputs});
+    return pick(m_patternOutputs.back());
 }
 
 namespace {

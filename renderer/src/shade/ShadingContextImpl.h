@@ -10,19 +10,29 @@
 #pragma once
 
 #include <atomic>
+#include <utility>
+#include <vector>
 
 #include "RixShading.h"
 #include "scene/Scene.h"
+#include "RixPattern.h"
 #include "shade/BxdfInstance.h"
 #include "shade/MemoryArena.h"
+#include "shade/PatternInstance.h"
 
 namespace bxdflab {
 
-/// EvalParam for a Bxdf instance's parameters over a batch of numPts points
-/// (shared by every RixShadingContext the renderer builds).
-RixSCDetail evalInstanceParam(BxdfInstance const& material, int id, int arrayIndex, RixSCType wanted,
-                              size_t elementSize, void const** result, void const* dflt, bool promote, int numPts,
-                              MemoryArena& arena);
+/// EvalParam for a node's own (RIB or default) value of a parameter over a
+/// batch of numPts points, ignoring connections (shared by every
+/// RixShadingContext the renderer builds).
+RixSCDetail evalUniformParam(NodeParams const& node, int id, int arrayIndex, RixSCType wanted, size_t elementSize,
+                             void const** result, void const* dflt, bool promote, int numPts, MemoryArena& arena);
+inline RixSCDetail evalInstanceParam(BxdfInstance const& material, int id, int arrayIndex, RixSCType wanted,
+                                     size_t elementSize, void const** result, void const* dflt, bool promote,
+                                     int numPts, MemoryArena& arena) {
+    return evalUniformParam(material.params(), id, arrayIndex, wanted, elementSize, result, dflt, promote, numPts,
+                            arena);
+}
 
 struct BuiltinCounters {
     std::atomic<uint64_t> surfacePoints{0};  ///< points whose surface group was computed
@@ -34,11 +44,13 @@ public:
     /// `hits` must stay valid for the context's life; `pixelSpread` is the
     /// angle one pixel subtends (for du/dv).
     ShadingContextImpl(Scene const& scene, BxdfInstance const& material, HitRecord const* hits, int count,
-                       float pixelSpread, MemoryArena& arena, RixInterface* messages, BuiltinCounters& counters);
+                       float pixelSpread, MemoryArena& arena, RixInterface* messages, BuiltinCounters& counters,
+                       RixTexture* textures = nullptr);
 
     RixInterface* GetRixInterface(RixInterfaceId id) const override {
-        return id == k_RixMessages ? m_messages : nullptr;
+        return id == k_RixMessages ? m_messages : id == k_RixTexture ? m_textures : nullptr;
     }
+    RixTexture* textures() const { return m_textures; }
     BxdfInstance const& material() const { return m_material; }
     /// What GetBxdf() and Id() answer.
     void setBxdf(RixBxdf* bxdf) { m_bxdf = bxdf; }
@@ -46,6 +58,14 @@ public:
     HitRecord const& hit(int i) const { return m_hits[i]; }
     /// Error bounds of P, for spawning rays (computed with the surface group).
     Vec3 const* pError() const;
+    /// Output `output` of `pattern` for this batch, or nullptr when the
+    /// pattern did not compute it. The pattern runs on first use (its own
+    /// connected inputs first) and its outputs are kept for the batch.
+    RixPattern::OutputSpecification const* patternOutput(PatternInstance const& pattern, int output) const;
+    /// EvalParam of `node`'s parameter `id` in this batch: a connected
+    /// parameter's pattern output, else the node's own value.
+    RixSCDetail evalParam(NodeParams const& node, int id, int arrayIndex, RixSCType wanted, size_t elementSize,
+                          void const** result, void const* dflt, bool promote) const;
 
 protected:
     int Builtin(BuiltinId id, RixSCType wanted, void const** result) const override;
@@ -55,6 +75,12 @@ protected:
     RixSCDetail PrimVar(RtUString const name, RixSCType wanted, void const** result, RtFloat const** radius) const override;
 
 private:
+    friend class PatternContext;
+    struct PatternOutputs {
+        PatternInstance const* pattern;
+        int count;
+        RixPattern::OutputSpecification const* outputs;
+    };
     void computeSurfaceGroup() const;
     void computeTangentGroup() const;
     void computeView() const;
@@ -68,6 +94,8 @@ private:
     BuiltinCounters& m_counters;
     mutable void* m_builtins[k_numBuiltins] = {};
     mutable Vec3* m_pError = nullptr;
+    RixTexture* m_textures;
+    mutable std::vector<PatternOutputs> m_patternOutputs;  ///< patterns run in this batch
 };
 
 }  // namespace bxdflab

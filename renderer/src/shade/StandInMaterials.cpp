@@ -36,6 +36,23 @@ Param floatParam(std::string const& name, float value) {
     return p;
 }
 
+/// Connects the stand-in's `to` where the material connects `from` to a
+/// pattern (a textured diffuse colour stays textured); true if it did.
+bool carryConnection(MaterialDesc const& material, char const* from, MaterialDesc& standIn, std::string const& to) {
+    auto found = material.connections.find(from);
+    if (found == material.connections.end()) return false;
+    for (Param const& p : material.params.all())
+        if (p.name() == from && p.decl.reference) {
+            p.used = true;
+            Param link = p;
+            link.decl.name = to;
+            standIn.params.add(link);
+            standIn.connections[to] = found->second;
+            return true;
+        }
+    return false;
+}
+
 float luminance(Vec3 const& c) { return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z; }
 
 }  // namespace
@@ -54,13 +71,14 @@ std::optional<StandIn> standInFor(MaterialDesc const& material) {
         // Diffuse colour times gain; the artistic specular's face colour as a dielectric's reflectance.
         Vec3 diffuse = colorOf(in, {"diffuseColor"}).value_or(Vec3(0.18f)) * floatOf(in, "diffuseGain").value_or(1.0f);
         Vec3 face = colorOf(in, {"specularFaceColor"}).value_or(Vec3(0.0f));
-        out.add(colorParam("baseColor", diffuse));
+        if (!carryConnection(material, "diffuseColor", s.material, "baseColor")) out.add(colorParam("baseColor", diffuse));
         out.add(floatParam("specular", std::clamp(luminance(face) / 0.08f, 0.0f, 1.0f)));
         out.add(floatParam("roughness", std::sqrt(std::clamp(floatOf(in, "specularRoughness").value_or(0.2f), 0.0f, 1.0f))));
         if (auto coat = colorOf(in, {"clearcoatFaceColor"})) out.add(floatParam("clearcoat", std::min(1.0f, luminance(*coat) / 0.04f)));
         s.note = "PxrDisney with its diffuse colour and specular face colour (no layering, transmission or subsurface)";
     } else if (name == "PxrLMPlastic") {
-        out.add(colorParam("baseColor", colorOf(in, {"diffuseColor"}).value_or(Vec3(0.5f))));
+        if (!carryConnection(material, "diffuseColor", s.material, "baseColor"))
+            out.add(colorParam("baseColor", colorOf(in, {"diffuseColor"}).value_or(Vec3(0.5f))));
         out.add(floatParam("roughness", std::sqrt(std::clamp(floatOf(in, "specularRoughness").value_or(0.01f), 0.0f, 1.0f))));
         s.note = "PxrDisney with its diffuse colour";
     } else if (name == "PxrLMMetal") {
@@ -77,9 +95,12 @@ std::optional<StandIn> standInFor(MaterialDesc const& material) {
     } else {
         // PxrLMDiffuse, PxrDiffuse-likes and anything else: a diffuse surface in its colour.
         s.material.plugin = "PxrDiffuse";
+        bool connected = false;
+        for (char const* from : {"diffuseColor", "baseColor", "frontColor"})
+            if (!connected) connected = carryConnection(material, from, s.material, "diffuseColor");
         std::optional<Vec3> color = colorOf(in, {"diffuseColor", "baseColor", "frontColor", "color", "emitColor"});
-        if (color) out.add(colorParam("diffuseColor", *color));
-        s.note = color ? "PxrDiffuse in its colour" : "PxrDiffuse";
+        if (color && !connected) out.add(colorParam("diffuseColor", *color));
+        s.note = color || connected ? "PxrDiffuse in its colour" : "PxrDiffuse";
     }
     return s;
 }

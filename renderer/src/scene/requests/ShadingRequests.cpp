@@ -32,8 +32,45 @@ void SceneBuilder::bxdf(RequestReader& in) {
         return;
     }
     if (!building()) return;
+    material.connections = connectionsOf(material.params, "Bxdf \"" + material.handle + "\"");
     state().material = static_cast<int>(m_scene.materials.size());
     m_scene.materials.push_back(std::move(material));
+}
+
+void SceneBuilder::pattern(RequestReader& in) {
+    PatternDesc node;
+    node.plugin = in.string("pattern plugin name");
+    node.handle = in.string("pattern handle");
+    node.params = in.params();
+    node.where = in.where();
+    if (node.plugin.empty()) in.fail(in.where(), "the plugin name is empty");
+    if (node.handle.find(':') != std::string::npos)
+        in.fail(in.where(), "a pattern handle may not contain ':' (it separates handle and output in references)");
+    if (!building()) return;
+    // Resolved before this node is known by its handle: a node cannot reach itself.
+    node.connections = connectionsOf(node.params, "Pattern \"" + node.handle + "\"");
+    m_patternHandles[node.handle] = static_cast<int>(m_scene.patterns.size());
+    m_scene.patterns.push_back(std::move(node));
+}
+
+std::map<std::string, Connection> SceneBuilder::connectionsOf(ParamList const& params, std::string const& owner) {
+    std::map<std::string, Connection> connections;
+    for (Param const& p : params.all()) {
+        if (!p.decl.reference) continue;
+        p.used = true;
+        std::string const target = p.strings.empty() ? "" : p.strings[0];
+        size_t colon = target.find(':');
+        if (colon == std::string::npos || colon == 0 || colon + 1 == target.size())
+            throw RibError(p.location, owner + " parameter \"" + p.name() + "\": a reference is \"handle:output\", not \"" +
+                                           target + "\"");
+        std::string handle = target.substr(0, colon);
+        auto found = m_patternHandles.find(handle);
+        if (found == m_patternHandles.end())
+            throw RibError(p.location, owner + " parameter \"" + p.name() + "\" refers to pattern \"" + handle +
+                                           "\", which is not declared before it (patterns come before what uses them)");
+        connections[p.name()] = {found->second, target.substr(colon + 1), p.location};
+    }
+    return connections;
 }
 
 void SceneBuilder::surface(RequestReader& in) {

@@ -1,0 +1,66 @@
+// Small helpers the stock patterns share: allocating an output, and the
+// texture coordinates of a shading context with their filter footprint.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+
+#include "RixPattern.h"
+
+namespace stockpatterns {
+
+/// Adds output `paramId` with one value per point to `out` (which has room)
+/// and returns the array to fill.
+template <typename T>
+T* addVaryingOutput(RixShadingContext const* sCtx, RixPattern::OutputSpecification* out, int& count, int paramId) {
+    RixShadingContext::Allocator pool(sCtx);
+    T* values = pool.AllocForPattern<T>(sCtx->numPts);
+    out[count].paramId = paramId;
+    out[count].detail = k_RixSCVarying;
+    out[count].value = values;
+    ++count;
+    return values;
+}
+
+/// The texture coordinates of every point as a manifold: (s, t, footprint),
+/// the footprint being the width of the ray's footprint in st units (taken
+/// from du and dv, which assumes st runs like uv, as it does by default).
+inline RtPoint3* stManifold(RixShadingContext const* sCtx) {
+    RtFloat const *s, *t, *du, *dv;
+    sCtx->GetBuiltinVar(RixShadingContext::k_s, &s);
+    sCtx->GetBuiltinVar(RixShadingContext::k_t, &t);
+    sCtx->GetBuiltinVar(RixShadingContext::k_du, &du);
+    sCtx->GetBuiltinVar(RixShadingContext::k_dv, &dv);
+    RixShadingContext::Allocator pool(sCtx);
+    RtPoint3* q = pool.AllocFor<RtPoint3>(sCtx->numPts);
+    for (int i = 0; i < sCtx->numPts; ++i) q[i] = RtPoint3(s[i], t[i], std::max(du[i], dv[i]));
+    return q;
+}
+
+}  // namespace stockpatterns
+
+namespace stockpatterns {
+
+/// Outputs the same values (1 or 3 floats per point) as a float (the first),
+/// a colour and a point, at the table rows given: what PxrPrimvar and
+/// PxrVariable hand on, whatever type the value had.
+inline void outputAsEveryType(RixShadingContext const* sCtx, float const* values, int components, int floatRow,
+                              int colorRow, int pointRow, RtInt* numOutputs, RixPattern::OutputSpecification** outputs) {
+    RixShadingContext::Allocator pool(sCtx);
+    RixPattern::OutputSpecification* out = pool.AllocForPattern<RixPattern::OutputSpecification>(3);
+    int count = 0;
+    RtFloat* f = addVaryingOutput<RtFloat>(sCtx, out, count, floatRow);
+    RtColorRGB* rgb = addVaryingOutput<RtColorRGB>(sCtx, out, count, colorRow);
+    RtPoint3* p = addVaryingOutput<RtPoint3>(sCtx, out, count, pointRow);
+    for (int i = 0; i < sCtx->numPts; ++i) {
+        float const* v = values + i * components;
+        float y = components == 3 ? v[1] : v[0], z = components == 3 ? v[2] : v[0];
+        f[i] = v[0];
+        rgb[i] = RtColorRGB(v[0], y, z);
+        p[i] = RtPoint3(v[0], y, z);
+    }
+    *numOutputs = count;
+    *outputs = out;
+}
+
+}  // namespace stockpatterns

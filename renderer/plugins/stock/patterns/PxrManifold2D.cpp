@@ -1,0 +1,78 @@
+// PxrManifold2D — places a 2-D texture on a surface: it turns the surface's
+// texture coordinates (s, t) into the coordinates a PxrTexture reads, by a
+// rotation, a scale and an offset:
+//
+//   (s', t') = scale * rotate(angle) * (s, t) + offset
+//
+// Connect its "result" to a texture's "manifold":
+//   Pattern "PxrManifold2D" "place" "float scaleS" [4] "float scaleT" [4]
+//   Pattern "PxrTexture" "tex" "string filename" ["maple.tx"] "reference struct manifold" ["place:result"]
+//
+// RenderMan's manifold is a struct (a point Q and its filter radius); here it
+// travels as one point: (s', t', filter width in s't' units).
+#include <cmath>
+
+#include "PatternHelpers.h"
+
+namespace {
+
+class PxrManifold2D : public RixPattern {
+public:
+    enum { k_angle, k_scaleS, k_scaleT, k_offsetS, k_offsetT, k_invertT, k_result };
+
+    int Init(RixContext&, RtUString const) override { return 0; }
+    void Finalize(RixContext&) override {}
+    RixSCParamInfo const* GetParamTable() override {
+        static RixSCParamInfo table[] = {
+            RixSCParamInfo(RtUString("angle"), k_RixSCFloat),    // degrees, counter-clockwise
+            RixSCParamInfo(RtUString("scaleS"), k_RixSCFloat),   // repeats across s
+            RixSCParamInfo(RtUString("scaleT"), k_RixSCFloat),
+            RixSCParamInfo(RtUString("offsetS"), k_RixSCFloat),
+            RixSCParamInfo(RtUString("offsetT"), k_RixSCFloat),
+            RixSCParamInfo(RtUString("invertT"), k_RixSCInteger),  // 1: use 1 - t
+            RixSCParamInfo(RtUString("result"), k_RixSCPoint, k_RixSCOutput),
+            RixSCParamInfo()};
+        return table;
+    }
+    void Synchronize(RixContext&, RixSCSyncMsg, RixParameterList const*) override {}
+
+    int ComputeOutputParams(RixShadingContext const* sCtx, RtInt* numOutputs, OutputSpecification** outputs,
+                            RtPointer, RixSCParamInfo const*) override {
+        RtFloat const zero = 0.0f, one = 1.0f;
+        RtInt const noInvert = 0;
+        RtFloat const *angle, *scaleS, *scaleT, *offsetS, *offsetT;
+        RtInt const* invertT;
+        sCtx->EvalParam(k_angle, -1, &angle, &zero, true);
+        sCtx->EvalParam(k_scaleS, -1, &scaleS, &one, true);
+        sCtx->EvalParam(k_scaleT, -1, &scaleT, &one, true);
+        sCtx->EvalParam(k_offsetS, -1, &offsetS, &zero, true);
+        sCtx->EvalParam(k_offsetT, -1, &offsetT, &zero, true);
+        sCtx->EvalParam(k_invertT, -1, &invertT, &noInvert, true);
+
+        RixShadingContext::Allocator pool(sCtx);
+        OutputSpecification* out = pool.AllocForPattern<OutputSpecification>(1);
+        int count = 0;
+        RtPoint3* result = stockpatterns::addVaryingOutput<RtPoint3>(sCtx, out, count, k_result);
+        RtPoint3 const* st = stockpatterns::stManifold(sCtx);
+        for (int i = 0; i < sCtx->numPts; ++i) {
+            float s = st[i].x, t = invertT[i] ? 1.0f - st[i].y : st[i].y;
+            float radians = angle[i] * 3.14159265f / 180.0f;
+            float c = std::cos(radians), n = std::sin(radians);
+            float rs = c * s - n * t, rt = n * s + c * t;
+            // The footprint grows with the larger scale (an upper bound that never under-filters).
+            float width = st[i].z * std::max(std::fabs(scaleS[i]), std::fabs(scaleT[i]));
+            result[i] = RtPoint3(scaleS[i] * rs + offsetS[i], scaleT[i] * rt + offsetT[i], width);
+        }
+        *numOutputs = count;
+        *outputs = out;
+        return 0;
+    }
+};
+
+}  // namespace
+
+RIX_PATTERNCREATE {
+    PIXAR_ARGUSED(hint);
+    return new PxrManifold2D();
+}
+RIX_PATTERNDESTROY { delete static_cast<PxrManifold2D*>(pattern); }

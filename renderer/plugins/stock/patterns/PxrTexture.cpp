@@ -1,0 +1,115 @@
+// PxrTexture — reads a colour from an image at each shade point's texture
+// coordinates, through the renderer's texture service (RixTexture): mip-mapped
+// and filtered over the ray's footprint, so a distant board does not shimmer.
+//
+//   Pattern "PxrTexture" "grain" "string filename" ["maple_color.tx"] "int linearize" [1]
+//   Bxdf "PxrDiffuse" "board" "reference color diffuseColor" ["grain:resultRGB"]
+//
+// Coordinates come from a connected manifold (PxrManifold2D) or else from the
+// surface's s and t. With invertT (on by default, as in RenderMan) t runs up
+// the image: t = 0 is its bottom row. "linearize" undoes the sRGB encoding of
+// 8-bit images made for display, so the colours are the reflectances meant.
+// A file that cannot be read gives missingColor (magenta) and one warning.
+#include <cmath>
+
+#include "PatternHelpers.h"
+
+namespace {
+
+float srgbToLinear(float c) { return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f); }
+
+class PxrTexture : public RixPattern {
+public:
+    enum {
+        k_filename, k_firstChannel, k_invertT, k_linearize, k_missingColor, k_missingAlpha, k_manifold,
+        k_resultRGB, k_resultR, k_resultG, k_resultB, k_resultA
+    };
+
+    int Init(RixContext&, RtUString const) override { return 0; }
+    void Finalize(RixContext&) override {}
+    RixSCParamInfo const* GetParamTable() override {
+        static RixSCParamInfo table[] = {
+            RixSCParamInfo(RtUString("filename"), k_RixSCString),
+            RixSCParamInfo(RtUString("firstChannel"), k_RixSCInteger),
+            RixSCParamInfo(RtUString("invertT"), k_RixSCInteger),
+            RixSCParamInfo(RtUString("linearize"), k_RixSCInteger),
+            RixSCParamInfo(RtUString("missingColor"), k_RixSCColor),
+            RixSCParamInfo(RtUString("missingAlpha"), k_RixSCFloat),
+            RixSCParamInfo(RtUString("manifold"), k_RixSCPoint),  // (s, t, filter width): see PxrManifold2D
+            RixSCParamInfo(RtUString("resultRGB"), k_RixSCColor, k_RixSCOutput),
+            RixSCParamInfo(RtUString("resultR"), k_RixSCFloat, k_RixSCOutput),
+            RixSCParamInfo(RtUString("resultG"), k_RixSCFloat, k_RixSCOutput),
+            RixSCParamInfo(RtUString("resultB"), k_RixSCFloat, k_RixSCOutput),
+            RixSCParamInfo(RtUString("resultA"), k_RixSCFloat, k_RixSCOutput),
+            RixSCParamInfo()};
+        return table;
+    }
+    void Synchronize(RixContext&, RixSCSyncMsg, RixParameterList const*) override {}
+
+    int ComputeOutputParams(RixShadingContext const* sCtx, RtInt* numOutputs, OutputSpecification** outputs,
+                            RtPointer, RixSCParamInfo const*) override {
+        int const n = sCtx->numPts;
+        RtUString const noFile;
+        RtInt const zero = 0, one = 1;
+        RtColorRGB const magenta(1.0f, 0.0f, 1.0f);
+        RtFloat const opaque = 1.0f;
+        RtUString const* filename;
+        RtInt const *firstChannel, *invertT, *linearize;
+        RtColorRGB const* missingColor;
+        RtFloat const* missingAlpha;
+        // Uniform parameters: one value for the whole batch.
+        sCtx->EvalParam(k_filename, -1, &filename, &noFile);
+        sCtx->EvalParam(k_firstChannel, -1, &firstChannel, &zero);
+        sCtx->EvalParam(k_invertT, -1, &invertT, &one);
+        sCtx->EvalParam(k_linearize, -1, &linearize, &zero);
+        sCtx->EvalParam(k_missingColor, -1, &missingColor, &magenta);
+        sCtx->EvalParam(k_missingAlpha, -1, &missingAlpha, &opaque);
+
+        // Where to look: the connected manifold, or the surface's own s and t.
+        RtPoint3 const* manifold = nullptr;
+        if (sCtx->EvalParam(k_manifold, -1, &manifold) != k_RixSCVarying) manifold = stockpatterns::stManifold(sCtx);
+
+        RixShadingContext::Allocator pool(sCtx);
+        RtFloat2* st = pool.AllocFor<RtFloat2>(n);
+        RtFloat* width = pool.AllocFor<RtFloat>(n);
+        for (int i = 0; i < n; ++i) {
+            st[i] = RtFloat2(manifold[i].x, *invertT ? 1.0f - manifold[i].y : manifold[i].y);
+            width[i] = manifold[i].z;
+        }
+
+        OutputSpecification* out = pool.AllocForPattern<OutputSpecification>(5);
+        int count = 0;
+        RtColorRGB* rgb = stockpatterns::addVaryingOutput<RtColorRGB>(sCtx, out, count, k_resultRGB);
+        RtFloat* r = stockpatterns::addVaryingOutput<RtFloat>(sCtx, out, count, k_resultR);
+        RtFloat* g = stockpatterns::addVaryingOutput<RtFloat>(sCtx, out, count, k_resultG);
+        RtFloat* b = stockpatterns::addVaryingOutput<RtFloat>(sCtx, out, count, k_resultB);
+        RtFloat* a = stockpatterns::addVaryingOutput<RtFloat>(sCtx, out, count, k_resultA);
+
+        RixTexture::TxParams lookup;
+        lookup.firstChannel = *firstChannel;
+        lookup.missingColor = *missingColor;
+        auto* textures = static_cast<RixTexture*>(sCtx->GetRixInterface(k_RixTexture));
+        bool found = textures && textures->Texture(*filename, lookup, n, st, width, 3, &rgb[0].r) == 0;
+        if (!textures)
+            for (int i = 0; i < n; ++i) rgb[i] = *missingColor;  // a program without textures (a probe)
+        for (int i = 0; i < n; ++i) {
+            if (found && *linearize)
+                rgb[i] = RtColorRGB(srgbToLinear(rgb[i].r), srgbToLinear(rgb[i].g), srgbToLinear(rgb[i].b));
+            r[i] = rgb[i].r;
+            g[i] = rgb[i].g;
+            b[i] = rgb[i].b;
+            a[i] = found ? 1.0f : *missingAlpha;
+        }
+        *numOutputs = count;
+        *outputs = out;
+        return 0;
+    }
+};
+
+}  // namespace
+
+RIX_PATTERNCREATE {
+    PIXAR_ARGUSED(hint);
+    return new PxrTexture();
+}
+RIX_PATTERNDESTROY { delete static_cast<PxrTexture*>(pattern); }

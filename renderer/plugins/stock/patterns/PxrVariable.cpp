@@ -1,0 +1,81 @@
+// PxrVariable — hands a geometric quantity of the shade points (a builtin:
+// P, Nn, Ngn, Tn, Vn, dPdu, dPdv, u, v, s, t, du, dv, VLen) to the network,
+// e.g. to colour a surface by its normal while debugging:
+//
+//   Pattern "PxrVariable" "normal" "string variable" ["Nn"]
+//   Bxdf "PxrDiffuse" "d" "reference color diffuseColor" ["normal:resultRGB"]
+#include <cstring>
+
+#include "PatternHelpers.h"
+
+namespace {
+
+struct NamedBuiltin {
+    char const* name;
+    RixShadingContext::BuiltinId id;
+    bool scalar;
+};
+
+NamedBuiltin const kBuiltins[] = {
+    {"P", RixShadingContext::k_P, false},       {"Nn", RixShadingContext::k_Nn, false},
+    {"Ngn", RixShadingContext::k_Ngn, false},   {"Tn", RixShadingContext::k_Tn, false},
+    {"Vn", RixShadingContext::k_Vn, false},     {"dPdu", RixShadingContext::k_dPdu, false},
+    {"dPdv", RixShadingContext::k_dPdv, false}, {"u", RixShadingContext::k_u, true},
+    {"v", RixShadingContext::k_v, true},        {"s", RixShadingContext::k_s, true},
+    {"t", RixShadingContext::k_t, true},        {"du", RixShadingContext::k_du, true},
+    {"dv", RixShadingContext::k_dv, true},      {"VLen", RixShadingContext::k_VLen, true},
+};
+
+class PxrVariable : public RixPattern {
+public:
+    enum { k_variable, k_resultF, k_resultRGB, k_resultP };
+
+    int Init(RixContext&, RtUString const) override { return 0; }
+    void Finalize(RixContext&) override {}
+    RixSCParamInfo const* GetParamTable() override {
+        static RixSCParamInfo table[] = {RixSCParamInfo(RtUString("variable"), k_RixSCString),
+                                         RixSCParamInfo(RtUString("resultF"), k_RixSCFloat, k_RixSCOutput),
+                                         RixSCParamInfo(RtUString("resultRGB"), k_RixSCColor, k_RixSCOutput),
+                                         RixSCParamInfo(RtUString("resultP"), k_RixSCPoint, k_RixSCOutput),
+                                         RixSCParamInfo()};
+        return table;
+    }
+    void Synchronize(RixContext&, RixSCSyncMsg, RixParameterList const*) override {}
+
+    int ComputeOutputParams(RixShadingContext const* sCtx, RtInt* numOutputs, OutputSpecification** outputs,
+                            RtPointer, RixSCParamInfo const*) override {
+        RtUString const normal("Nn");
+        RtUString const* variable;
+        sCtx->EvalParam(k_variable, -1, &variable, &normal);
+        NamedBuiltin const* chosen = nullptr;
+        for (NamedBuiltin const& b : kBuiltins)
+            if (std::strcmp(b.name, variable->CStr()) == 0) chosen = &b;
+        if (!chosen) {
+            auto* msg = static_cast<RixMessages*>(sCtx->GetRixInterface(k_RixMessages));
+            msg->Warning("PxrVariable: no variable \"%s\" (P, Nn, Ngn, Tn, Vn, dPdu, dPdv, u, v, s, t, du, dv, VLen); "
+                         "using Nn", variable->CStr());
+            chosen = &kBuiltins[1];
+        }
+        float const* values;
+        if (chosen->scalar) {
+            RtFloat const* f;
+            sCtx->GetBuiltinVar(chosen->id, &f);
+            values = f;
+        } else {
+            RtVector3 const* v;
+            sCtx->GetBuiltinVar(chosen->id, &v);
+            values = &v[0].x;
+        }
+        stockpatterns::outputAsEveryType(sCtx, values, chosen->scalar ? 1 : 3, k_resultF, k_resultRGB, k_resultP,
+                                         numOutputs, outputs);
+        return 0;
+    }
+};
+
+}  // namespace
+
+RIX_PATTERNCREATE {
+    PIXAR_ARGUSED(hint);
+    return new PxrVariable();
+}
+RIX_PATTERNDESTROY { delete static_cast<PxrVariable*>(pattern); }

@@ -1,0 +1,143 @@
+#include "shade/NodeParams.h"
+
+#include "shade/PatternInstance.h"
+
+namespace bxdflab {
+namespace {
+
+bool isGeometric(RixSCType type) { return type == k_RixSCNormal || type == k_RixSCVector || type == k_RixSCPoint; }
+
+/// Whether a RIB value of type `given` can set a parameter declared `declared`.
+bool compatible(RixSCType declared, ParamType given) {
+    switch (declared) {
+        case k_RixSCFloat: return given == ParamType::Float || given == ParamType::Int;
+        case k_RixSCInteger: return given == ParamType::Int;
+        case k_RixSCColor: return given == ParamType::Color;
+        case k_RixSCNormal:
+        case k_RixSCVector:
+        case k_RixSCPoint: return given == ParamType::Vector || given == ParamType::Point || given == ParamType::Normal;
+        case k_RixSCString: return given == ParamType::String;
+        case k_RixSCFloat2: return given == ParamType::Float;
+        default: return false;
+    }
+}
+
+std::string namesIn(std::vector<RixSCParamInfo> const& table, bool outputs) {
+    std::string names;
+    for (auto const& entry : table)
+        if ((entry.access == k_RixSCOutput) == outputs)
+            names += std::string(names.empty() ? "" : ", ") + entry.name.CStr();
+    return names.empty() ? "none" : names;
+}
+
+}  // namespace
+
+bool connectable(RixSCType from, RixSCType to) {
+    auto triple = [](RixSCType t) { return t == k_RixSCColor || isGeometric(t); };
+    return from == to || (triple(from) && triple(to));
+}
+
+const char* ribTypeFor(RixSCType type) {
+    switch (type) {
+        case k_RixSCFloat: return "float";
+        case k_RixSCInteger: return "int";
+        case k_RixSCColor: return "color";
+        case k_RixSCNormal: return "normal";
+        case k_RixSCVector: return "vector";
+        case k_RixSCPoint: return "point";
+        case k_RixSCString: return "string";
+        case k_RixSCFloat2: return "float[2]";
+        default: return "?";
+    }
+}
+
+NodeParams::NodeParams(std::string const& kind, ShadingPlugin const& plugin, ParamList const& params,
+                       std::map<std::string, Connection> const& connections, PatternLookup const& patternOf,
+                       Diagnostics& diagnostics) {
+    auto const& table = plugin.paramTable();
+    m_values.resize(table.size());
+    m_connections.resize(table.size());
+    for (size_t i = 0; i < table.size(); ++i) m_values[i].type = table[i].type;
+    std::string const owner = kind + " \"" + plugin.name() + "\"";
+
+    for (Param const& p : params.all()) {
+        int id = plugin.paramId(p.name());
+        if (id < 0 || table[static_cast<size_t>(id)].access == k_RixSCOutput) {
+            diagnostics.warn(p.location, owner + " has no " + (id < 0 ? "" : "input ") + "parameter \"" + p.name() +
+                                             "\"; ignored (its parameters: " + namesIn(table, false) + ")");
+            continue;
+        }
+        RixSCParamInfo const& info = table[static_cast<size_t>(id)];
+        // RenderMan's structs (a manifold) travel as a point here: see RixPattern.h.
+        bool structOk = p.decl.reference && p.decl.type == ParamType::Unknown && info.type == k_RixSCPoint;
+        if (!structOk && !compatible(info.type, p.decl.type))
+            throw RibError(p.location, owner + " parameter \"" + p.name() + "\" is a " + ribTypeFor(info.type) +
+                                           ", but the RIB gives a " +
+                                           (p.decl.type == ParamType::Unknown ? "struct" : paramTypeName(p.decl.type)) +
+                                           " (write \"" + (p.decl.reference ? "reference " : "") + ribTypeFor(info.type) +
+                                           " " + p.name() + "\")");
+        if (p.decl.reference) {
+            Connection const& link = connections.at(p.name());
+            PatternInstance const* source = patternOf(link.pattern);
+            if (!source) continue;  // not loaded: already warned; the default stands
+            ShadingPlugin const& from = source->plugin();
+            int output = from.paramId(link.output);
+            if (output < 0 || from.paramTable()[static_cast<size_t>(output)].access != k_RixSCOutput)
+                throw RibError(link.where, owner + " parameter \"" + p.name() + "\": pattern \"" + source->handle() +
+                                               "\" (" + from.name() + ") has no output \"" + link.output +
+                                               "\" (its outputs: " + namesIn(from.paramTable(), true) + ")");
+            RixSCType outType = from.paramTable()[static_cast<size_t>(output)].type;
+            if (!connectable(outType, info.type))
+                throw RibError(link.where, owner + " parameter \"" + p.name() + "\" is a " + ribTypeFor(info.type) +
+                                               ", but \"" + source->handle() + ":" + link.output + "\" is a " +
+                                               ribTypeFor(outType) + " output");
+            m_connections[static_cast<size_t>(id)] = {source, output};
+            continue;
+        }
+        ParamValue& value = m_values[static_cast<size_t>(id)];
+        value.set = true;
+        value.floats = p.floats;
+        value.ints = p.ints;
+        for (auto const& s : p.strings) value.strings.emplace_back(s.c_str());
+        if (info.type == k_RixSCInteger && value.ints.empty())
+            for (float f : p.floats) value.ints.push_back(static_cast<int>(f));
+    }
+}
+
+int NodeParameterList::GetParamId(RtUString name, int* id) const {
+    for (size_t i = 0; i < m_table.size(); ++i)
+        if (m_table[i].name == name && m_params.values()[i].set) {
+            *id = static_cast<int>(i);
+            return 0;
+        }
+    return 1;
+}
+
+int NodeParameterList::GetParamInfo(int id, RtUString* name, RixSCType* type) const {
+    if (id < 0 || static_cast<size_t>(id) >= m_table.size()) return 1;
+    if (name) *name = m_table[static_cast<size_t>(id)].name;
+    if (type) *type = m_table[static_cast<size_t>(id)].type;
+    return 0;
+}
+
+RixSCDetail NodeParameterList::Eval(int id, int arrayIndex, RixSCType wanted, void* result) const {
+    ParamValue const* v = m_params.value(id);
+    if (!v || !v->set) return k_RixSCInvalidDetail;
+    size_t index = arrayIndex > 0 ? static_cast<size_t>(arrayIndex) : 0;
+    bool triple = v->type == k_RixSCColor || isGeometric(v->type);
+    if (wanted == k_RixSCFloat && v->type == k_RixSCFloat && index < v->floats.size()) {
+        *static_cast<float*>(result) = v->floats[index];
+    } else if (wanted == k_RixSCInteger && v->type == k_RixSCInteger && index < v->ints.size()) {
+        *static_cast<int*>(result) = v->ints[index];
+    } else if ((wanted == k_RixSCColor || wanted == k_RixSCVector) && triple && 3 * index + 2 < v->floats.size()) {
+        float* out = static_cast<float*>(result);
+        for (size_t c = 0; c < 3; ++c) out[c] = v->floats[3 * index + c];
+    } else if (wanted == k_RixSCString && v->type == k_RixSCString && index < v->strings.size()) {
+        *static_cast<RtUString*>(result) = v->strings[index];
+    } else {
+        return k_RixSCInvalidDetail;
+    }
+    return k_RixSCUniform;
+}
+
+}  // namespace bxdflab

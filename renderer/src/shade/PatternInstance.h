@@ -1,0 +1,45 @@
+// One `Pattern "plugin" "handle" ...` statement made live: the plugin, its
+// parameters and connections, and the instance data the plugin made for it.
+// Patterns are run by the shading contexts that need their outputs
+// (ShadingContextImpl::patternOutput), at most once per context.
+#pragma once
+
+#include <atomic>
+#include <string>
+
+#include "RixPattern.h"
+#include "shade/NodeParams.h"
+
+namespace bxdflab {
+
+/// What the stats report about shading networks.
+struct PatternCounters {
+    std::atomic<uint64_t> evaluations{0};  ///< ComputeOutputParams calls
+    std::atomic<uint64_t> points{0};       ///< points they computed
+};
+
+class PatternInstance {
+public:
+    PatternInstance(PatternDesc const& desc, ShadingPlugin& plugin, NodeParams::PatternLookup const& patternOf,
+                    PatternCounters& counters, Diagnostics& diagnostics);
+    ~PatternInstance();
+    PatternInstance(PatternInstance const&) = delete;
+    PatternInstance& operator=(PatternInstance const&) = delete;
+
+    ShadingPlugin& plugin() const { return m_plugin; }
+    std::string const& handle() const { return m_handle; }
+    SourceLocation const& where() const { return m_where; }
+    NodeParams const& params() const { return m_params; }
+    RtPointer instanceData() const { return m_instance.data; }
+    PatternCounters& counters() const { return m_counters; }
+
+private:
+    ShadingPlugin& m_plugin;
+    std::string m_handle;
+    SourceLocation m_where;
+    NodeParams m_params;
+    RixShadingPlugin::InstanceData m_instance;
+    PatternCounters& m_counters;
+};
+
+}  // namespace bxdflab

@@ -1,0 +1,189 @@
+// Pattern networks: connected parameters are varying and carry the pattern's
+// per-point values; patterns run only when asked, once per batch; textures
+// match OpenImageIO's own lookups; bad networks give located messages.
+#include <OpenImageIO/texture.h>
+
+#include <catch2/catch.hpp>
+#include <cmath>
+
+#include "core/ImageFiles.h"
+#include "support/RenderHelpers.h"
+
+using namespace bxdflab;
+
+namespace {
+
+// A 16 x 16 orthographic view of the square [-1,1]^2; the patch's u runs
+// along x and v along y, so at pixel (x, y): u = (x + 0.5) / 16, v = 1 - (y + 0.5) / 16.
+std::string const kHead = "Format 16 16 1\nProjection \"orthographic\"\nScreenWindow -1 1 -1 1\n"
+                          "Integrator \"PxrDefault\" \"d\"\nWorldBegin\nTranslate 0 0 5\n";
+std::string const kSquare = "Patch \"bilinear\" \"P\" [-1 -1 0  1 -1 0  -1 1 0  1 1 0]\n";
+
+float pixelU(int x) { return (static_cast<float>(x) + 0.5f) / 16.0f; }
+float pixelV(int y) { return 1.0f - (static_cast<float>(y) + 0.5f) / 16.0f; }
+
+RenderSettings fewSamples() {
+    RenderSettings settings;
+    settings.spp = 4;
+    return settings;
+}
+
+}  // namespace
+
+TEST_CASE("a connected parameter takes the pattern's value at every point", "[patterns]") {
+    SECTION("PxrVariable u into an emissive colour") {
+        auto r = test::renderRib(kHead + "Pattern \"PxrVariable\" \"u\" \"string variable\" [\"u\"]\n"
+                                         "Bxdf \"PxrConstant\" \"c\" \"reference color emitColor\" [\"u:resultRGB\"]\n" +
+                                     kSquare,
+                                 fewSamples());
+        for (int x : {0, 5, 11, 15})
+            for (int y : {2, 13}) CHECK(r.channel(x, y, 0) == Approx(pixelU(x)).margin(0.01));
+    }
+    SECTION("PxrMix of a uniform colour and a connected one, through a manifold-free chain") {
+        auto r = test::renderRib(kHead + "Pattern \"PxrVariable\" \"v\" \"string variable\" [\"v\"]\n"
+                                         "Pattern \"PxrMix\" \"m\" \"color color1\" [1 0 0] "
+                                         "\"reference color color2\" [\"v:resultRGB\"] \"float mix\" [0.25]\n"
+                                         "Bxdf \"PxrConstant\" \"c\" \"reference color emitColor\" [\"m:resultRGB\"]\n" +
+                                     kSquare,
+                                 fewSamples());
+        for (int y : {1, 8, 14}) {
+            CHECK(r.channel(7, y, 0) == Approx(0.75f + 0.25f * pixelV(y)).margin(0.01));
+            CHECK(r.channel(7, y, 1) == Approx(0.25f * pixelV(y)).margin(0.01));
+        }
+    }
+    SECTION("PxrPrimvar hands a mesh's per-vertex colour on") {
+        auto r = test::renderRib(kHead + "Pattern \"PxrPrimvar\" \"cs\" \"string varname\" [\"Cs\"]\n"
+                                         "Bxdf \"PxrConstant\" \"c\" \"reference color emitColor\" [\"cs:resultRGB\"]\n"
+                                         "Polygon \"P\" [-1 -1 0  1 -1 0  1 1 0  -1 1 0] "
+                                         "\"varying color Cs\" [0 0 1  1 0 1  1 0 1  0 0 1]\n",
+                                 fewSamples());
+        for (int x : {0, 8, 15}) CHECK(r.channel(x, 8, 0) == Approx(pixelU(x)).margin(0.02));
+        CHECK(r.channel(8, 8, 2) == Approx(1.0f).margin(1e-4));
+    }
+    SECTION("PxrManifold2D scales, offsets and turns s and t") {
+        // 90 degrees turns (s, t) into (-t, s); then s' = 2 * (-t) + 2.
+        auto r = test::renderRib(kHead + "Pattern \"PxrManifold2D\" \"m\" \"float angle\" [90] \"float scaleS\" [2] "
+                                         "\"float offsetS\" [2]\n"
+                                         "Pattern \"PxrTexture\" \"unused\" \"string filename\" [\"none.tx\"]\n"
+                                         "Pattern \"PxrVariable\" \"probe\" \"string variable\" [\"s\"]\n"
+                                         "Bxdf \"PxrConstant\" \"c\" \"reference color emitColor\" [\"m:result\"]\n" +
+                                     kSquare,
+                                 fewSamples());
+        for (int y : {1, 8, 14}) {
+            CHECK(r.channel(4, y, 0) == Approx(2.0f - 2.0f * pixelV(y)).margin(0.02));
+            CHECK(r.channel(4, y, 1) == Approx(pixelU(4)).margin(0.02));
+        }
+    }
+}
+
+TEST_CASE("patterns run only for the parameters asked for, each once per batch", "[patterns]") {
+    SECTION("no connections: no pattern runs, no texture is read, unreached patterns are not even loaded") {
+        auto r = test::renderRib(kHead + "Pattern \"PxrTexture\" \"t\" \"string filename\" [\"none.tx\"]\n"
+                                         "Bxdf \"PxrConstant\" \"c\" \"color emitColor\" [0.5 0.5 0.5]\n" +
+                                     kSquare,
+                                 fewSamples());
+        CHECK(r.stats.patternEvaluations == 0u);
+        CHECK(r.stats.textureLookups == 0u);
+        for (auto const& plugin : r.stats.plugins) CHECK(plugin.find("PxrTexture") == std::string::npos);
+        CHECK_FALSE(r.anyMessageContains("none.tx"));
+    }
+    SECTION("two inputs of a mix connected to one node: that node still runs once per batch") {
+        auto r = test::renderRib(kHead + "Pattern \"PxrVariable\" \"u\" \"string variable\" [\"u\"]\n"
+                                         "Pattern \"PxrMix\" \"m\" \"reference color color1\" [\"u:resultRGB\"] "
+                                         "\"reference color color2\" [\"u:resultRGB\"]\n"
+                                         "Bxdf \"PxrConstant\" \"c\" \"reference color emitColor\" [\"m:resultRGB\"]\n" +
+                                     kSquare,
+                                 fewSamples());
+        REQUIRE(r.stats.batches > 0u);
+        CHECK(r.stats.patternEvaluations == 2 * r.stats.batches);  // the mix and the variable, once each
+        CHECK(r.stats.patternPoints == 2 * r.stats.shadePoints);
+        CHECK(r.channel(3, 3, 0) == Approx(pixelU(3)).margin(0.01));
+    }
+}
+
+TEST_CASE("PxrTexture reads what OpenImageIO's texture system reads; a missing file is magenta and a warning",
+          "[patterns][textures]") {
+    // A 64 x 64 image: red grows with x, green with y (top row 0), blue constant.
+    int const size = 64;
+    std::vector<float> pixels(static_cast<size_t>(size * size * 3));
+    for (int y = 0; y < size; ++y)
+        for (int x = 0; x < size; ++x) {
+            float* p = &pixels[static_cast<size_t>(3 * (y * size + x))];
+            p[0] = static_cast<float>(x) / (size - 1);
+            p[1] = static_cast<float>(y) / (size - 1);
+            p[2] = 0.25f;
+        }
+    std::string const file = test::outputDir() + "/ramp.exr";
+    writeImage(file, pixels, size, size, 3);
+
+    SECTION("lookups match the texture system at the same coordinates") {
+        auto r = test::renderRib(kHead + "Pattern \"PxrTexture\" \"t\" \"string filename\" [\"" + file +
+                                     "\"] \"int invertT\" [0]\n"
+                                     "Bxdf \"PxrConstant\" \"c\" \"reference color emitColor\" [\"t:resultRGB\"]\n" +
+                                     kSquare,
+                                 fewSamples());
+        CHECK(r.stats.textureLookups > 0u);
+        OIIO::TextureSystem* system = OIIO::TextureSystem::create(false);
+        OIIO::TextureOpt options;
+        for (int x : {1, 6, 9, 14})
+            for (int y : {2, 12}) {
+                // With invertT off, t is v: the image's top row sits at v = 0.
+                float expected[3];
+                REQUIRE(system->texture(OIIO::ustring(file), options, pixelU(x), pixelV(y), 0, 0, 0, 0, 3, expected));
+                CHECK(r.channel(x, y, 0) == Approx(expected[0]).margin(0.02));
+                CHECK(r.channel(x, y, 1) == Approx(expected[1]).margin(0.02));
+                CHECK(r.channel(x, y, 2) == Approx(0.25f).margin(1e-3));
+            }
+        OIIO::TextureSystem::destroy(system);
+    }
+    SECTION("invertT (RenderMan's default) flips t: the image's bottom row is t = 0") {
+        auto r = test::renderRib(kHead + "Pattern \"PxrTexture\" \"t\" \"string filename\" [\"" + file + "\"]\n"
+                                     "Bxdf \"PxrConstant\" \"c\" \"reference color emitColor\" [\"t:resultRGB\"]\n" +
+                                     kSquare,
+                                 fewSamples());
+        CHECK(r.channel(8, 1, 1) < 0.15f);   // the top of the square (v near 1) shows the image's top row
+        CHECK(r.channel(8, 14, 1) > 0.85f);
+    }
+    SECTION("a file that does not exist") {
+        auto r = test::renderRib(kHead + "Pattern \"PxrTexture\" \"t\" \"string filename\" [\"no/such/maple.tx\"] "
+                                         "\"color missingColor\" [1 0 1]\n"
+                                         "Bxdf \"PxrConstant\" \"c\" \"reference color emitColor\" [\"t:resultRGB\"]\n" +
+                                     kSquare,
+                                 fewSamples());
+        CHECK(r.anyMessageContains("no/such/maple.tx"));
+        CHECK(r.channel(8, 8, 0) == Approx(1.0f));
+        CHECK(r.channel(8, 8, 1) == Approx(0.0f));
+    }
+}
+
+TEST_CASE("bad networks: located errors for wrong handles, outputs and types; warnings for what is missing",
+          "[patterns][errors]") {
+    auto fails = [](std::string const& body, std::string const& text) {
+        CHECK_THROWS_WITH(test::renderRib(kHead + body + kSquare), Catch::Matchers::Contains(text));
+    };
+    SECTION("a handle not declared before (which is also how a cycle would have to be written)") {
+        fails("Bxdf \"PxrConstant\" \"c\" \"reference color emitColor\" [\"later:resultRGB\"]\n",
+              "test.rib:7:");
+        fails("Pattern \"PxrMix\" \"m\" \"reference color color1\" [\"m:resultRGB\"]\n", "not declared before it");
+    }
+    SECTION("an output the pattern does not have") {
+        fails("Pattern \"PxrMix\" \"m\"\nBxdf \"PxrConstant\" \"c\" \"reference color emitColor\" [\"m:resultColour\"]\n",
+              "has no output \"resultColour\" (its outputs: resultRGB)");
+    }
+    SECTION("a float output into a colour") {
+        fails("Pattern \"PxrTexture\" \"t\"\nBxdf \"PxrConstant\" \"c\" \"reference color emitColor\" [\"t:resultR\"]\n",
+              "is a color, but \"t:resultR\" is a float output");
+    }
+    SECTION("a reference without an output") {
+        fails("Pattern \"PxrMix\" \"m\"\nBxdf \"PxrConstant\" \"c\" \"reference color emitColor\" [\"m\"]\n",
+              "a reference is \"handle:output\"");
+    }
+    SECTION("a pattern plugin that is not there: a warning, and the parameter keeps the plugin's default") {
+        auto r = test::renderRib(kHead + "Pattern \"PxrOSL\" \"osl\"\n"
+                                         "Bxdf \"PxrConstant\" \"c\" \"reference color emitColor\" [\"osl:Cout\"]\n" +
+                                     kSquare,
+                                 fewSamples());
+        CHECK(r.anyMessageContains("Pattern \"osl\" cannot be used"));
+        CHECK(r.channel(8, 8, 0) == Approx(1.0f));  // PxrConstant's default emitColor is white
+    }
+}
