@@ -8,9 +8,14 @@
 // 2. Thread scaling: 2 threads against 1 (target: at least 1.85).
 // 3. Cost against samples per pixel, resolution and triangle count.
 // Times are the best of three runs. It prints ratios; it asserts nothing.
+#include <OpenImageIO/imagebuf.h>
+#include <OpenImageIO/imagebufalgo.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
 #include <functional>
 #include <sstream>
 
@@ -67,6 +72,29 @@ std::string meshScene(int triangles) {
     return rib.str();
 }
 
+std::string readFile(std::string const& path) {
+    std::ifstream in(path);
+    std::stringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+/// A mip-mapped checkerboard of size x size pixels in the temporary folder; returns its path.
+std::string writeCheckerTexture(int size) {
+    OIIO::ImageBuf image(OIIO::ImageSpec(size, size, 3, OIIO::TypeDesc::HALF));
+    for (int y = 0; y < size; ++y)
+        for (int x = 0; x < size; ++x) {
+            float value = ((x / 64 + y / 64) % 2) ? 0.9f : 0.3f;
+            float rgb[3] = {value, value * 0.8f, value * 0.6f};
+            image.setpixel(x, y, rgb);
+        }
+    std::string path = (std::filesystem::temp_directory_path() / "rixbench_checker.tx").string();
+    OIIO::ImageSpec config;
+    if (!OIIO::ImageBufAlgo::make_texture(OIIO::ImageBufAlgo::MakeTxTexture, image, path, config))
+        throw RenderError("cannot write " + path + ": " + OIIO::geterror());
+    return path;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -111,6 +139,24 @@ int main(int argc, char** argv) {
         scene.yres = yres / div;
         std::printf("%4dx%-6d %.3f\n", scene.xres, scene.yres, renderSeconds(scene, spp, 2, diagnostics));
     }
+    // 4. A texture on the diffuse colour: the chapter-6 sphere with its colour
+    //    from a 2048 x 2048 mip-mapped texture, against the uniform colour.
+    if (argc <= 1) {
+        scene.xres = xres;
+        scene.yres = yres;
+        std::string const texture = writeCheckerTexture(2048);
+        std::string rib = readFile(sceneFile);
+        std::string const uniform = "\"color diffuseColor\" [1 1 1]";
+        rib.replace(rib.find(uniform), uniform.size(), "\"reference color diffuseColor\" [\"tex:resultRGB\"]");
+        rib.insert(rib.find("    Bxdf \"diffuse\""), "    Pattern \"PxrTexture\" \"tex\" \"string filename\" [\"" + texture + "\"]\n");
+        Scene textured;
+        SceneBuilder(textured, diagnostics).readText(rib, sceneFile);
+        double plain = renderSeconds(scene, spp, 2, diagnostics);
+        double mapped = renderSeconds(textured, spp, 2, diagnostics);
+        std::printf("\ntexture     uniform colour: %.3f s   2048^2 texture: %.3f s   ratio: %.2f (target <= 1.50)\n", plain,
+                    mapped, mapped / plain);
+    }
+
     std::printf("\ntriangles   seconds (200x175, %d spp)\n", spp);
     for (int triangles : {1000, 10000, 100000, 1000000}) {
         Scene mesh;

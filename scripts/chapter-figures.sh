@@ -34,4 +34,8 @@ $bin/rixlobe ward --params '"float uRoughness" [0.3] "float vRoughness" [0.1]' -
 render scenes/ch08/ward_teapot.rib -o $fig/ch08-ward.png
 render scenes/ch08/ward_teapot_swapped.rib -o $fig/ch08-ward-swapped.png
 render scenes/ch08/wood.rib -o $fig/ch08-wood.png
+sed 's/^Rotate -30 1 0 0/Rotate -18 1 0 0/; s/^Translate 0 -2.2 0/Translate 0 -1.2 0/; s|textures/|../scenes/ch08/textures/|' \
+  scenes/ch08/wood.rib > out/wood-view2.rib
+render out/wood-view2.rib -o $fig/ch08-wood-view2.png
+render scenes/ch05/texture.rib -o $fig/ch05-texture.png
 echo "figures written to $fig"

@@ -187,3 +187,16 @@ TEST_CASE("bad networks: located errors for wrong handles, outputs and types; wa
         CHECK(r.channel(8, 8, 0) == Approx(1.0f));  // PxrConstant's default emitColor is white
     }
 }
+
+TEST_CASE("a primvar named like a parameter gives that parameter per-point values", "[patterns][primvars]") {
+    auto r = test::renderRib(kHead + "Bxdf \"PxrConstant\" \"c\" \"color emitColor\" [0.5 0.5 0.5]\n"
+                                     "Polygon \"P\" [-1 -1 0  0 -1 0  0 1 0  -1 1 0] "
+                                     "\"varying color emitColor\" [0 1 0  1 1 0  1 1 0  0 1 0]\n"
+                                     "Polygon \"P\" [0 -1 0  1 -1 0  1 1 0  0 1 0]\n",
+                             fewSamples());
+    // The left square ramps red from 0 to 1 across it; the right one keeps the Bxdf's own grey.
+    CHECK(r.channel(1, 8, 0) == Approx(2.0f * pixelU(1)).margin(0.02));
+    CHECK(r.channel(6, 8, 0) == Approx(2.0f * pixelU(6)).margin(0.02));
+    CHECK(r.channel(6, 8, 1) == Approx(1.0f));
+    CHECK(r.channel(12, 8, 0) == Approx(0.5f));
+}

@@ -2,6 +2,7 @@
 
 #include <OpenImageIO/texture.h>
 
+#include <filesystem>
 #include <map>
 #include <mutex>
 
@@ -22,11 +23,7 @@ public:
     }
     ~OiioTextures() override { OIIO::TextureSystem::destroy(m_system); }
 
-    void setSearchPath(std::vector<std::string> const& folders) override {
-        std::string joined;
-        for (auto const& folder : folders) joined += (joined.empty() ? "" : ":") + folder;
-        m_system->attribute("searchpath", joined);
-    }
+    void setSearchPath(std::vector<std::string> const& folders) override { m_searchPath = folders; }
 
     int Texture(RtUString filename, TxParams const& params, int numPts, RtFloat2 const* st, RtFloat const* width,
                 int numChannels, RtFloat* result) override {
@@ -67,7 +64,7 @@ private:
         if (found != m_files.end()) return found->second;
         OIIO::TextureSystem::TextureHandle* handle = nullptr;
         OIIO::ImageSpec spec;
-        OIIO::ustring file(name);
+        OIIO::ustring file(resolve(name));
         if (name.empty()) {
             m_diagnostics.warn("a texture lookup names no file; it returns missingColor");
         } else if (!m_system->get_imagespec(file, 0, spec)) {
@@ -85,7 +82,19 @@ private:
         return handle;
     }
 
+    /// A relative name is looked for from the current folder, then in each search folder.
+    std::string resolve(std::string const& name) const {
+        std::error_code error;
+        if (name.empty() || std::filesystem::path(name).is_absolute() || std::filesystem::exists(name, error)) return name;
+        for (std::string const& folder : m_searchPath) {
+            std::filesystem::path candidate = std::filesystem::path(folder) / name;
+            if (std::filesystem::exists(candidate, error)) return candidate.string();
+        }
+        return name;
+    }
+
     Diagnostics& m_diagnostics;
+    std::vector<std::string> m_searchPath;
     OIIO::TextureSystem* m_system;
     std::mutex m_lock;
     std::map<std::string, OIIO::TextureSystem::TextureHandle*> m_files;

@@ -4,6 +4,7 @@
 
 #include <map>
 #include <memory>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -94,6 +95,9 @@ struct Scene : SceneOptions {
     std::vector<MaterialDesc> materials;
     std::vector<PatternDesc> patterns;
     std::vector<std::unique_ptr<Shape>> shapes;
+    /// The name of every primvar some shape carries: a Bxdf or pattern
+    /// parameter of the same name takes its values from the primvar.
+    std::set<std::string> primvarNames;
     std::vector<std::unique_ptr<Light>> lights;
     /// Things dropped at load, e.g. "light 'fill' has zero intensity" (for the stats).
     std::vector<std::string> dropped;

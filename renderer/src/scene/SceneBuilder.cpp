@@ -224,6 +224,7 @@ void SceneBuilder::finishFrame() {
     m_scene.patterns.clear();
     m_patternHandles.clear();
     m_scene.shapes.clear();
+    m_scene.primvarNames.clear();
     m_scene.lights.clear();
     m_scene.dropped.clear();
     m_defaultMaterials.clear();

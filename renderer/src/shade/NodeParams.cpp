@@ -53,7 +53,8 @@ const char* ribTypeFor(RixSCType type) {
 
 NodeParams::NodeParams(std::string const& kind, ShadingPlugin const& plugin, ParamList const& params,
                        std::map<std::string, Connection> const& connections, PatternLookup const& patternOf,
-                       Diagnostics& diagnostics) {
+                       Diagnostics& diagnostics)
+    : m_table(&plugin.paramTable()) {
     auto const& table = plugin.paramTable();
     m_values.resize(table.size());
     m_connections.resize(table.size());

@@ -57,8 +57,13 @@ public:
         return c.pattern ? &c : nullptr;
     }
     std::vector<ParamValue> const& values() const { return m_values; }
+    /// The name of parameter `id` in the plugin's table ("" for an out-of-range id).
+    char const* name(int id) const {
+        return id >= 0 && static_cast<size_t>(id) < m_table->size() ? (*m_table)[static_cast<size_t>(id)].name.CStr() : "";
+    }
 
 private:
+    std::vector<RixSCParamInfo> const* m_table;
     std::vector<ParamValue> m_values;
     std::vector<ParamConnection> m_connections;
 };

@@ -202,7 +202,38 @@ RixSCDetail ShadingContextImpl::evalParam(NodeParams const& node, int id, int ar
             return k_RixSCUniform;
         }
     }
+    if (!link && !m_scene.primvarNames.empty() &&
+        primvarOverride(node, id, wanted, elementSize, result, dflt) == k_RixSCVarying)
+        return k_RixSCVarying;
     return evalUniformParam(node, id, arrayIndex, wanted, elementSize, result, dflt, promote, numPts, m_arena);
+}
+
+RixSCDetail ShadingContextImpl::primvarOverride(NodeParams const& node, int id, RixSCType wanted, size_t elementSize,
+                                                void const** result, void const* dflt) const {
+    bool const numeric = wanted == k_RixSCFloat || wanted == k_RixSCColor || isTriple(wanted);
+    char const* name = node.name(id);
+    if (!numeric || !*name || !m_scene.primvarNames.count(name)) return k_RixSCInvalidDetail;
+    int const components = static_cast<int>(elementSize / sizeof(float));
+    void const* own = nullptr;
+    evalUniformParam(node, id, -1, wanted, elementSize, &own, dflt, false, numPts, m_arena);
+    float* values = m_arena.allocArray<float>(static_cast<size_t>(numPts * components));
+    bool found = false;
+    for (int i = 0; i < numPts; ++i) {
+        float* out = values + i * components;
+        Shape const& shape = *m_scene.shapes[m_hits[i].geomID];
+        Primvar const* var = shape.primvars.find(name);
+        if (var && var->components == components) {
+            shape.primvar(*var, m_hits[i], out);
+            found = true;
+        } else if (own) {
+            std::memcpy(out, own, elementSize);
+        } else {
+            std::fill(out, out + components, 0.0f);
+        }
+    }
+    if (!found) return k_RixSCInvalidDetail;
+    *result = values;
+    return k_RixSCVarying;
 }
 
 /// The context a pattern computes in: the same points, builtins, primvars and

@@ -81,6 +81,11 @@ private:
         int count;
         RixPattern::OutputSpecification const* outputs;
     };
+    /// A parameter's values from a primvar of the same name, where the shapes
+    /// carry one (the parameter's own value elsewhere): k_RixSCVarying, or
+    /// k_RixSCInvalidDetail when no shape in the batch has it.
+    RixSCDetail primvarOverride(NodeParams const& node, int id, RixSCType wanted, size_t elementSize,
+                                void const** result, void const* dflt) const;
     void computeSurfaceGroup() const;
     void computeTangentGroup() const;
     void computeView() const;

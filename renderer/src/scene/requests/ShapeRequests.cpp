@@ -81,6 +81,7 @@ void SceneBuilder::addShape(std::unique_ptr<Shape> shape, SourceLocation const& 
         shape->material = primvarColorMaterial();
     else
         shape->material = defaultMaterial();
+    for (Primvar const& var : shape->primvars.all()) m_scene.primvarNames.insert(var.name);
     m_scene.shapes.push_back(std::move(shape));
 }
 
