@@ -141,3 +141,19 @@ add_test(NAME api.text_style_plugin_with_a_makefile
          COMMAND sh -c "rm -rf ${TEXT_STYLE} && mkdir -p ${TEXT_STYLE} && cp ${CMAKE_CURRENT_SOURCE_DIR}/plugins/textstyle/* ${TEXT_STYLE}/ && make -s -C ${TEXT_STYLE} RMANTREE=${RMANTREE_DIR} && printf '/standardrixpluginpath .\\n' > ${TEXT_STYLE}/rendermn.ini && sed 's/Bxdf \"diffuse\"/Bxdf \"textdiffuse\"/' ${PROJECT_SOURCE_DIR}/scenes/ch06/diffuse.rib > ${TEXT_STYLE}/scene.rib && cd ${TEXT_STYLE} && $<TARGET_FILE:rixrender> --quiet --spp 4 --stats-json stats.json -o text.exr scene.rib && grep -q '\"invalid_pdf_samples\": 0' stats.json && grep -q '\"nonfinite_samples\": 0' stats.json && echo rendered")
 set_tests_properties(api.text_style_plugin_with_a_makefile PROPERTIES PASS_REGULAR_EXPRESSION "rendered"
                      FAIL_REGULAR_EXPRESSION "warning|error")
+
+# The course text's errata (chapters/appendix-course-text.md): every corrected
+# form compiles against the API as the text builds it; every printed form is an error.
+set(ERRATA_COMPILE ${CMAKE_CXX_COMPILER} -std=c++14 -fsyntax-only -Wall -Wextra -Werror -I${RMANTREE_DIR}/include
+    ${CMAKE_CURRENT_SOURCE_DIR}/course_text/errata.cpp)
+add_test(NAME course_text.errata_corrected_forms_compile COMMAND ${ERRATA_COMPILE})
+set_tests_properties(course_text.errata_corrected_forms_compile PROPERTIES LABELS cli)
+foreach(erratum 6_5 8_6 GetEvaluationDomain EvaluateSamples EvaluateSampleAtIndex RixBXLookupByName RixLobeSampled)
+  add_test(NAME course_text.erratum_${erratum}_as_printed_is_an_error COMMAND ${ERRATA_COMPILE} -DAS_PRINTED_${erratum})
+  set_tests_properties(course_text.erratum_${erratum}_as_printed_is_an_error PROPERTIES WILL_FAIL TRUE LABELS cli)
+endforeach()
+# The integrator the text calls PxrValidateBxdF: not found, and the message names the right spelling.
+add_test(NAME course_text.misspelled_integrator_suggests_the_right_name
+         COMMAND sh -c "printf 'Integrator \"PxrValidateBxdF\" \"v\"\\nWorldBegin\\nWorldEnd\\n' > ${CLI_OUT}/errata.rib && $<TARGET_FILE:rixrender> --quiet -o ${CLI_OUT}/errata.exr ${CLI_OUT}/errata.rib 2>&1; true")
+set_tests_properties(course_text.misspelled_integrator_suggests_the_right_name PROPERTIES
+                     PASS_REGULAR_EXPRESSION "did you mean \"PxrValidateBxdf\"" LABELS cli)

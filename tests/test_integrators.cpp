@@ -1,5 +1,6 @@
 // Integrators against closed forms and against each other.
 #include <catch2/catch.hpp>
+#include <cmath>
 #include <fstream>
 #include <sstream>
 
@@ -151,4 +152,35 @@ TEST_CASE("PxrOcclusion: an open plane is white, a corner under a sphere is dark
         for (int x = 0; x < r.width; ++x) shadowed = std::max(shadowed, 1.0 - r.channel(x, y, 0));
     CHECK(open == Approx(1.0));
     CHECK(shadowed > 0.5);
+}
+
+TEST_CASE("PxrVisualize: shaded as PxrDefault, normals, st, one colour per material, and a normal check",
+          "[integrators]") {
+    std::string const scene = "Format 16 16 1\nProjection \"orthographic\"\nScreenWindow -2 2 -2 2\nWorldBegin\n"
+                              "Translate 0 0 5\nBxdf \"PxrDiffuse\" \"a\"\nSphere 1 -1 1 360\n"
+                              "Translate 0 0 -10\nBxdf \"PxrDiffuse\" \"b\"\nPatch \"bilinear\" \"P\" "
+                              "[-2 -2 20  2 -2 20  -2 2 20  2 2 20]\nWorldEnd\n";
+    auto withIntegrator = [&](std::string const& integrator) {
+        RenderSettings settings;
+        settings.spp = 4;
+        return test::renderRib(integrator + "\n" + scene, settings);
+    };
+    auto shaded = withIntegrator("Integrator \"PxrVisualize\" \"v\"");
+    auto reference = withIntegrator("Integrator \"PxrDefault\" \"d\"");
+    CHECK(shaded.channel(8, 8, 0) == Approx(reference.channel(8, 8, 0)).epsilon(1e-5));
+
+    auto normals = withIntegrator("Integrator \"PxrVisualize\" \"v\" \"string style\" [\"normals\"]");
+    CHECK(normals.channel(8, 8, 2) < 0.05f);  // the sphere faces the camera: Nn = (0, 0, -1)
+    CHECK(normals.channel(8, 8, 0) == Approx(0.5f).margin(0.1));
+
+    auto flat = withIntegrator("Integrator \"PxrVisualize\" \"v\" \"string style\" [\"flat\"]");
+    float const sphere = flat.channel(8, 8, 0) + 2 * flat.channel(8, 8, 1), wall = flat.channel(0, 0, 0) + 2 * flat.channel(0, 0, 1);
+    CHECK(std::fabs(sphere - wall) > 0.1f);  // two Bxdf statements, two colours
+
+    // The patch's front (the side its normal points to) faces away from the camera: the check paints it red.
+    auto check = withIntegrator("Integrator \"PxrVisualize\" \"v\" \"string style\" [\"st\"] \"int normalCheck\" [1]");
+    CHECK(check.channel(0, 0, 0) == Approx(1.0f));
+    CHECK(check.channel(0, 0, 1) == Approx(0.0f));
+    CHECK_THROWS_WITH(withIntegrator("Integrator \"PxrVisualize\" \"v\" \"string style\" [\"wire\"]"),
+                      Catch::Matchers::Contains("unknown style \"wire\""));
 }

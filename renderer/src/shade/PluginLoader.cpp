@@ -1,10 +1,12 @@
 #include "shade/PluginLoader.h"
 
+#include <cctype>
 #include <filesystem>
 
 #include "shade/RibParameterList.h"
 
 namespace bxdflab {
+namespace fs = std::filesystem;
 namespace {
 constexpr size_t kMaxParams = 1024;  // a table longer than this has lost its end marker
 
@@ -120,7 +122,21 @@ std::string PluginLoader::find(std::string const& name, const char* kind, Source
     if (!found.empty()) return found;
     std::string searched;
     for (auto const& folder : m_searchPath) searched += "\n    " + folder;
-    throw RenderError(prefix + kind + " plugin \"" + name + "\" not found: no " + name +
+    // A name that differs only in case (the course text's "PxrValidateBxdF") gets the right spelling.
+    std::string suggestion;
+    auto lower = [](std::string text) {
+        for (char& c : text) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+        return text;
+    };
+    std::error_code error;
+    for (auto const& folder : m_searchPath)
+        for (auto it = fs::directory_iterator(folder, error); !error && it != fs::directory_iterator(); it.increment(error)) {
+            std::string file = it->path().filename().string();
+            if (suggestion.empty() && file.size() > 3 && file.compare(file.size() - 3, 3, ".so") == 0 &&
+                lower(file.substr(0, file.size() - 3)) == lower(name))
+                suggestion = " (did you mean \"" + file.substr(0, file.size() - 3) + "\"?)";
+        }
+    throw RenderError(prefix + kind + " plugin \"" + name + "\" not found" + suggestion + ": no " + name +
                       ".so in any folder of the plugin search path:" + searched +
                       "\n  (add a folder with --plugin-path, $RIX_PLUGIN_PATH or Option \"searchpath\" \"string rixplugin\")");
 }
