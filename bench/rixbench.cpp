@@ -19,6 +19,7 @@
 #include <functional>
 #include <sstream>
 
+#include "CommandLine.h"
 #include "film/OiioImageFiles.h"
 #include "render/Renderer.h"
 #include "scene/SceneBuilder.h"
@@ -98,10 +99,20 @@ std::string writeCheckerTexture(int size) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    std::string const defaultScene = std::string(BXDFLAB_SOURCE_DIR) + "/scenes/ch06/diffuse.rib";
+    std::string sceneFile = defaultScene;
+    CLI::App app{"rixbench: the renderer's own costs, as ratios measured in one run (prints; asserts nothing)"};
+    app.add_option("scene", sceneFile, "the RIB scene to measure (default: the chapter-6 diffuse sphere)");
+    BXDFLAB_PARSE_COMMAND_LINE(app, argc, argv);
     bxdflab::useOpenImageIO();
-    std::string sceneFile = argc > 1 ? argv[1] : std::string(BXDFLAB_SOURCE_DIR) + "/scenes/ch06/diffuse.rib";
     Diagnostics diagnostics(false);
-    Scene scene = loadScene(sceneFile, diagnostics);
+    Scene scene;
+    try {
+        scene = loadScene(sceneFile, diagnostics);
+    } catch (std::exception const& error) {
+        std::fprintf(stderr, "rixbench: %s\n", error.what());
+        return 1;
+    }
     const int spp = 16;
 
     // 1. Shading overhead against raw Embree, one thread each.
@@ -141,7 +152,7 @@ int main(int argc, char** argv) {
     }
     // 4. A texture on the diffuse colour: the chapter-6 sphere with its colour
     //    from a 2048 x 2048 mip-mapped texture, against the uniform colour.
-    if (argc <= 1) {
+    if (sceneFile == defaultScene) {
         scene.xres = xres;
         scene.yres = yres;
         std::string const texture = writeCheckerTexture(2048);

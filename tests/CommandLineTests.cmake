@@ -157,3 +157,9 @@ add_test(NAME course_text.misspelled_integrator_suggests_the_right_name
          COMMAND sh -c "printf 'Integrator \"PxrValidateBxdF\" \"v\"\\nWorldBegin\\nWorldEnd\\n' > ${CLI_OUT}/errata.rib && $<TARGET_FILE:rixrender> --quiet -o ${CLI_OUT}/errata.exr ${CLI_OUT}/errata.rib 2>&1; true")
 set_tests_properties(course_text.misspelled_integrator_suggests_the_right_name PROPERTIES
                      PASS_REGULAR_EXPRESSION "did you mean \"PxrValidateBxdf\"" LABELS cli)
+
+# A student's workspace: the exercises copied outside the repository (never
+# into it, never over existing work), and the copy builds on its own.
+add_test(NAME cli.new_workspace_outside_the_repository
+         COMMAND sh -c "ws=$(mktemp -d) && rmdir $ws && ${PROJECT_SOURCE_DIR}/scripts/new-workspace.sh --no-build $ws && test -f $ws/ch06/diffuse/Diffuse.cpp && test -f $ws/WORKSPACE.md && ! ${PROJECT_SOURCE_DIR}/scripts/new-workspace.sh --no-build $ws && ! ${PROJECT_SOURCE_DIR}/scripts/new-workspace.sh --no-build ${PROJECT_SOURCE_DIR}/out/ws && cmake -S $ws -B $ws/build -DBXDFLAB_ROOT=${PROJECT_SOURCE_DIR} > /dev/null && cmake --build $ws/build --target hello > /dev/null && test -f $ws/build/plugins/hello.so && rm -rf $ws && echo workspace-ok")
+set_tests_properties(cli.new_workspace_outside_the_repository PROPERTIES PASS_REGULAR_EXPRESSION "workspace-ok" LABELS cli)

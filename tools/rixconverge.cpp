@@ -24,6 +24,7 @@
 #include <iomanip>
 #include <iostream>
 #include <map>
+#include <regex>
 #include <sstream>
 
 #include "film/OiioImageFiles.h"
@@ -114,11 +115,25 @@ int main(int argc, char** argv) {
     int repeats = 3, referenceSpp = 0, threads = 0;
     app.add_option("scene", sceneFile, "the RIB scene")->required();
     app.add_option("--variant", variantArgs, "NAME='RIB override' (repeatable); none: the scene as it is");
-    app.add_option("--spp", sppList, "comma-separated sample counts");
+    // Checked while parsing, so a bad value is a usage error with CLI11's message.
+    CLI::Validator const sampleCounts(
+        [](std::string& text) {
+            return std::regex_match(text, std::regex("[1-9][0-9]{0,5}(,[1-9][0-9]{0,5})*"))
+                       ? std::string()
+                       : "must be sample counts separated by commas, e.g. 1,4,16";
+        },
+        "N,N,...");
+    CLI::Validator const resolution(
+        [](std::string& text) {
+            return std::regex_match(text, std::regex("[1-9][0-9]{0,4}x[1-9][0-9]{0,4}")) ? std::string()
+                                                                                         : "must be WIDTHxHEIGHT, e.g. 200x150";
+        },
+        "WxH");
+    app.add_option("--spp", sppList, "comma-separated sample counts")->check(sampleCounts);
     app.add_option("--reference", reference, "'auto' (render one) or an image file");
     app.add_option("--reference-spp", referenceSpp, "samples for the auto reference (default 16 x the largest)");
     app.add_option("--repeats", repeats, "independent renders per point")->check(CLI::Range(1, 100));
-    app.add_option("--res", res, "override the resolution, e.g. 200x150");
+    app.add_option("--res", res, "override the resolution, e.g. 200x150")->check(resolution);
     app.add_option("--threads", threads, "worker threads (default: all)");
     app.add_option("--out", outDir, "output folder");
     BXDFLAB_PARSE_COMMAND_LINE(app, argc, argv);

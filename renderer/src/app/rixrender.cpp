@@ -135,6 +135,10 @@ int main(int argc, char** argv) {
                          stats.setupSeconds, stats.renderSeconds, static_cast<unsigned long long>(stats.cameraRays),
                          static_cast<unsigned long long>(stats.shadowRays),
                          static_cast<unsigned long long>(stats.indirectRays));
+            // Which shared object each plugin came from: a forgotten --plugin-path shows here.
+            std::string loaded;
+            for (std::string const& plugin : stats.plugins) loaded += (loaded.empty() ? "" : ", ") + plugin;
+            if (!loaded.empty()) std::fprintf(stderr, "rixrender: plugins: %s\n", loaded.c_str());
             if (imagePath.empty())
                 std::fprintf(stderr, "rixrender: wrote the raw image to descriptor %d\n", rawFd);
             else if (scene.display.type == "it" || scene.display.type == "framebuffer")

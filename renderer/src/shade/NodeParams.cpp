@@ -5,23 +5,6 @@
 namespace bxdflab {
 namespace {
 
-bool isGeometric(RixSCType type) { return type == k_RixSCNormal || type == k_RixSCVector || type == k_RixSCPoint; }
-
-/// Whether a RIB value of type `given` can set a parameter declared `declared`.
-bool compatible(RixSCType declared, ParamType given) {
-    switch (declared) {
-        case k_RixSCFloat: return given == ParamType::Float || given == ParamType::Int;
-        case k_RixSCInteger: return given == ParamType::Int;
-        case k_RixSCColor: return given == ParamType::Color;
-        case k_RixSCNormal:
-        case k_RixSCVector:
-        case k_RixSCPoint: return given == ParamType::Vector || given == ParamType::Point || given == ParamType::Normal;
-        case k_RixSCString: return given == ParamType::String;
-        case k_RixSCFloat2: return given == ParamType::Float;
-        default: return false;
-    }
-}
-
 std::string namesIn(std::vector<RixSCParamInfo> const& table, bool outputs) {
     std::string names;
     for (auto const& entry : table)
@@ -31,25 +14,6 @@ std::string namesIn(std::vector<RixSCParamInfo> const& table, bool outputs) {
 }
 
 }  // namespace
-
-bool connectable(RixSCType from, RixSCType to) {
-    auto triple = [](RixSCType t) { return t == k_RixSCColor || isGeometric(t); };
-    return from == to || (triple(from) && triple(to));
-}
-
-const char* ribTypeFor(RixSCType type) {
-    switch (type) {
-        case k_RixSCFloat: return "float";
-        case k_RixSCInteger: return "int";
-        case k_RixSCColor: return "color";
-        case k_RixSCNormal: return "normal";
-        case k_RixSCVector: return "vector";
-        case k_RixSCPoint: return "point";
-        case k_RixSCString: return "string";
-        case k_RixSCFloat2: return "float[2]";
-        default: return "?";
-    }
-}
 
 NodeParams::NodeParams(std::string const& kind, ShadingPlugin const& plugin, ParamList const& params,
                        std::map<std::string, Connection> const& connections, PatternLookup const& patternOf,
@@ -71,7 +35,7 @@ NodeParams::NodeParams(std::string const& kind, ShadingPlugin const& plugin, Par
         RixSCParamInfo const& info = table[static_cast<size_t>(id)];
         // RenderMan's structs (a manifold) travel as a point here: see RixPattern.h.
         bool structOk = p.decl.reference && p.decl.type == ParamType::Unknown && info.type == k_RixSCPoint;
-        if (!structOk && !compatible(info.type, p.decl.type))
+        if (!structOk && !ribValueSets(info.type, p.decl.type))
             throw RibError(p.location, owner + " parameter \"" + p.name() + "\" is a " + ribTypeFor(info.type) +
                                            ", but the RIB gives a " +
                                            (p.decl.type == ParamType::Unknown ? "struct" : paramTypeName(p.decl.type)) +
@@ -125,7 +89,7 @@ RixSCDetail NodeParameterList::Eval(int id, int arrayIndex, RixSCType wanted, vo
     ParamValue const* v = m_params.value(id);
     if (!v || !v->set) return k_RixSCInvalidDetail;
     size_t index = arrayIndex > 0 ? static_cast<size_t>(arrayIndex) : 0;
-    bool triple = v->type == k_RixSCColor || isGeometric(v->type);
+    bool triple = v->type == k_RixSCColor || isGeometricType(v->type);
     if (wanted == k_RixSCFloat && v->type == k_RixSCFloat && index < v->floats.size()) {
         *static_cast<float*>(result) = v->floats[index];
     } else if (wanted == k_RixSCInteger && v->type == k_RixSCInteger && index < v->ints.size()) {

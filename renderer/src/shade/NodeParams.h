@@ -12,6 +12,7 @@
 #include "RixShading.h"
 #include "core/Diagnostics.h"
 #include "scene/Scene.h"
+#include "shade/ParamTypes.h"
 #include "shade/PluginLoader.h"
 
 namespace bxdflab {
@@ -84,13 +85,5 @@ private:
     std::vector<RixSCParamInfo> const& m_table;
     NodeParams const& m_params;
 };
-
-/// Whether an output of type `from` may feed an input of type `to`: the same
-/// type, or two of the three-float types (colour, point, vector, normal), so
-/// that an image can hold directions. A float never feeds a colour.
-bool connectable(RixSCType from, RixSCType to);
-
-/// The name of a table type as a RIB declaration writes it ("color", "float[2]").
-const char* ribTypeFor(RixSCType type);
 
 }  // namespace bxdflab

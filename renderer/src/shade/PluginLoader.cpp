@@ -3,26 +3,13 @@
 #include <cctype>
 #include <filesystem>
 
+#include "shade/ParamTypes.h"
 #include "shade/RibParameterList.h"
 
 namespace bxdflab {
 namespace fs = std::filesystem;
 namespace {
 constexpr size_t kMaxParams = 1024;  // a table longer than this has lost its end marker
-
-std::string describeType(RixSCType type) {
-    switch (type) {
-        case k_RixSCFloat: return "float";
-        case k_RixSCInteger: return "int";
-        case k_RixSCColor: return "color";
-        case k_RixSCNormal: return "normal";
-        case k_RixSCVector: return "vector";
-        case k_RixSCPoint: return "point";
-        case k_RixSCString: return "string";
-        case k_RixSCFloat2: return "float[2]";
-        default: return "invalid";
-    }
-}
 }  // namespace
 
 ShadingPlugin::ShadingPlugin(Kind kind, std::string name, std::string path, Diagnostics& diagnostics)
@@ -73,7 +60,7 @@ ShadingPlugin::ShadingPlugin(Kind kind, std::string name, std::string path, Diag
         if (i == kMaxParams)
             fail("the parameter table has no end marker RixSCParamInfo() in its first " + std::to_string(kMaxParams) + " entries");
         if (table[i].IsEndOfTable()) break;
-        if (table[i].name.Empty() || describeType(table[i].type) == "invalid")
+        if (table[i].name.Empty() || std::string(ribTypeFor(table[i].type)) == "invalid")
             fail("parameter table entry " + std::to_string(i) + " has an empty name or an invalid type");
         m_table.push_back(table[i]);
     }
