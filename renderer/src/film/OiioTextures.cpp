@@ -14,14 +14,17 @@ namespace {
 class OiioTextures final : public TextureService {
 public:
     explicit OiioTextures(Diagnostics& diagnostics)
-        : m_diagnostics(diagnostics), m_system(OIIO::TextureSystem::create(/*shared=*/false)) {
+        : m_diagnostics(diagnostics), m_system(OIIO::TextureSystem::create(/*shared=*/true)) {
+        // The process-wide texture system: its tile cache outlives one render
+        // (frames and test renders reuse it) and is never destroyed here --
+        // OpenImageIO 2.4's destroy() of a private one deletes it with the
+        // wrong size, which AddressSanitizer rightly reports.
         // Tiles stay within a fixed budget however large or many the textures;
         // plain (untiled, unmipped) images are tiled and mip-mapped in memory.
         m_system->attribute("max_memory_MB", 256.0f);
         m_system->attribute("autotile", 64);
         m_system->attribute("automip", 1);
     }
-    ~OiioTextures() override { OIIO::TextureSystem::destroy(m_system); }
 
     void setSearchPath(std::vector<std::string> const& folders) override { m_searchPath = folders; }
 
