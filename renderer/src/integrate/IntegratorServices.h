@@ -9,7 +9,7 @@
 
 #include "RixIntegrator.h"
 #include "accel/RayTracer.h"
-#include "render/BatchShader.h"
+#include "shade/BatchShader.h"
 #include "scene/Scene.h"
 
 namespace bxdflab {

@@ -18,7 +18,7 @@
 
 #include "accel/RayTracer.h"
 #include "core/ImageFiles.h"
-#include "render/BatchShader.h"
+#include "shade/BatchShader.h"
 #include "scene/Camera.h"
 #include "scene/lights/HeadLight.h"
 #include "shade/BxdfInstance.h"

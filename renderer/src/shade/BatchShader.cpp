@@ -1,4 +1,4 @@
-#include "render/BatchShader.h"
+#include "shade/BatchShader.h"
 
 namespace bxdflab {
 namespace {
