@@ -123,3 +123,18 @@ TEST_CASE("areaNormalize keeps a light's power whatever its size; without it pow
     // Normalized, a light of area A has radiance intensity / A: side 1 gives the same as without.
     CHECK(irradiance(1.0f, true) == Approx(irradiance(1.0f, false)).epsilon(1e-4));
 }
+
+TEST_CASE("the camera sees the nearest light: a rect light in front of the sky hides it, whatever the order",
+          "[lights]") {
+    for (bool skyFirst : {false, true}) {
+        std::string const sky = "Light \"PxrDomeLight\" \"sky\" \"float intensity\" [0.1]\n";
+        std::string const panel = "AttributeBegin\nTranslate 0 0 5\nRotate 180 0 1 0\n"
+                                  "Light \"PxrRectLight\" \"panel\" \"float intensity\" [3]\nAttributeEnd\n";
+        RenderSettings settings;
+        settings.spp = 1;
+        auto r = test::renderRib("Format 8 8 1\nProjection \"perspective\" \"fov\" [5]\nIntegrator \"PxrDirectLighting\" \"d\"\n"
+                                 "WorldBegin\n" + (skyFirst ? sky + panel : panel + sky) + "WorldEnd\n",
+                                 settings);
+        CHECK(r.channel(4, 4, 0) == Approx(3.0f).epsilon(1e-4));
+    }
+}

@@ -39,17 +39,10 @@ bool IntegratorServices::Unoccluded(RixShadingContext const& ctx, int i, RtVecto
 }
 
 RixLightHit IntegratorServices::lightAlong(Vec3 const& from, Vec3 const& dir, float maxDistance) const {
-    RixLightHit nearest;
-    for (Light const* light : m_lights) {
-        if (light->isDelta()) continue;
-        float distance, pdf;
-        RtColorRGB radiance;
-        if (!light->intersect(from, dir, distance, radiance, pdf)) continue;
-        bool inReach = distance < maxDistance || (std::isinf(maxDistance) && light->isInfinite());
-        if (inReach && (!nearest.hit || distance < nearest.distance)) nearest = {true, distance, radiance, pdf};
-    }
-    if (nearest.hit && nearest.radiance.IsBlack()) nearest.hit = false;
-    return nearest;
+    LightAlongRay seen = nearestLightAlong(m_lights, from, dir, maxDistance);
+    // A light that sends nothing this way (the back of a rect light) is no hit for MIS.
+    if (!seen.light || seen.radiance.IsBlack()) return {};
+    return {true, seen.distance, seen.radiance, seen.pdf};
 }
 
 RixLightHit IntegratorServices::VisibleLight(RixShadingContext const& ctx, int i, RtVector3 const& dir) {

@@ -342,17 +342,11 @@ void Renderer::Impl::renderTile(int tileX, int tileY, int spp, Film& film, Worke
         // Lights the camera sees directly, in front of any geometry.
         for (int i = 0; i < count; ++i) {
             HitRecord& hit = w.hits[static_cast<size_t>(i)];
-            float nearest = hit.hit() ? hit.t : kInfinity;
-            for (Light const* light : cameraLights) {
-                float distance, pdf;
-                RtColorRGB radiance;
-                if (light->intersect(hit.org, hit.dir, distance, radiance, pdf) &&
-                    (distance < nearest || (light->isInfinite() && !hit.hit()))) {
-                    nearest = distance;
-                    w.radiance[static_cast<size_t>(i)] = radiance;
-                    w.alpha[static_cast<size_t>(i)] = 1.0f;
-                    hit.geomID = RTC_INVALID_GEOMETRY_ID;  // nothing to shade behind the light
-                }
+            LightAlongRay seen = nearestLightAlong(cameraLights, hit.org, hit.dir, hit.hit() ? hit.t : kInfinity);
+            if (seen.light) {
+                w.radiance[static_cast<size_t>(i)] = seen.radiance;
+                w.alpha[static_cast<size_t>(i)] = 1.0f;
+                hit.geomID = RTC_INVALID_GEOMETRY_ID;  // nothing to shade behind the light
             }
             if (hit.hit()) w.alpha[static_cast<size_t>(i)] = 1.0f;
         }

@@ -5,8 +5,10 @@
 // Every light's radiance is intensity * 2^exposure * lightColor.
 #pragma once
 
+#include <cmath>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "RiTypesHelper.h"
 #include "core/Math.h"
@@ -42,5 +44,33 @@ public:
     Visibility visibility;
     std::string handle;
 };
+
+/// What a ray sees of the lights: the nearest light it hits.
+struct LightAlongRay {
+    Light const* light = nullptr;  ///< null: no light in reach
+    float distance = kInfinity;
+    RtColorRGB radiance;
+    float pdf = 0.0f;
+};
+
+/// The nearest of `lights` hit by the ray (org, unit dir) closer than
+/// maxDistance; a light at infinity only when maxDistance is infinite (the
+/// ray left the scene). Delta lights are never hit. The camera and the
+/// integrators both ask this, so they agree on what a ray sees.
+inline LightAlongRay nearestLightAlong(std::vector<Light const*> const& lights, Vec3 const& org, Vec3 const& dir,
+                                       float maxDistance) {
+    LightAlongRay nearest;
+    for (Light const* light : lights) {
+        if (light->isDelta()) continue;
+        LightAlongRay candidate;
+        if (!light->intersect(org, dir, candidate.distance, candidate.radiance, candidate.pdf)) continue;
+        bool inReach = candidate.distance < maxDistance || (std::isinf(maxDistance) && light->isInfinite());
+        if (inReach && (!nearest.light || candidate.distance < nearest.distance)) {
+            candidate.light = light;
+            nearest = candidate;
+        }
+    }
+    return nearest;
+}
 
 }  // namespace bxdflab
