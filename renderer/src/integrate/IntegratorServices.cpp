@@ -63,7 +63,7 @@ void IntegratorServices::TraceIndirect(RixShadingContext const& ctx, int count, 
         HitRecord hit = m_tracer.intersect(from, d, 0.0f, kInfinity, RayKind::Indirect, m_counts);
         lightHits[k] = lightAlong(from, d, hit.hit() ? hit.t : kInfinity);
         // Rays that reach a light first, or that the integrator does not want shaded, end here.
-        if (lightHits[k].hit || !shade[k]) hit.geomID = RTC_INVALID_GEOMETRY_ID;
+        if (lightHits[k].hit || !shade[k]) hit.forget();
         hits[k] = hit;
     }
     m_shader.shade(hits, samples, count, m_arena, [&](ShadeGroup& group) {

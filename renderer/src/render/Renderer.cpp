@@ -346,7 +346,7 @@ void Renderer::Impl::renderTile(int tileX, int tileY, int spp, Film& film, Worke
             if (seen.light) {
                 w.radiance[static_cast<size_t>(i)] = seen.radiance;
                 w.alpha[static_cast<size_t>(i)] = 1.0f;
-                hit.geomID = RTC_INVALID_GEOMETRY_ID;  // nothing to shade behind the light
+                hit.forget();  // nothing to shade behind the light
             }
             if (hit.hit()) w.alpha[static_cast<size_t>(i)] = 1.0f;
         }

@@ -37,6 +37,8 @@ struct HitRecord {
     float v = 0.0f;
     Vec3 Ng{0.0f};   ///< Embree's geometric normal, not normalized (used by curves and points)
     bool hit() const { return geomID != RTC_INVALID_GEOMETRY_ID; }
+    /// Makes this a miss (a light in front of the surface, say): nothing to shade.
+    void forget() { geomID = RTC_INVALID_GEOMETRY_ID; }
 };
 
 struct SurfaceBasics {
