@@ -17,8 +17,10 @@ Every number on this page comes from `scripts/accuracy-studies.sh`, which
 runs `rixconverge` (error against a converged reference as samples double,
 several seeds each) and `rixbench` on a 2-core machine. Run it again to
 regenerate the page. relMSE is mean((x - r)^2 / (r^2 + 0.01)); efficiency is
-1 / (relMSE x seconds), higher is better; "relative" compares with the first
-row.
+1 / (relMSE x seconds) at the largest sample count, from the two columns
+before it, higher is better; its range over the sample counts from 4 up shows
+how much it moves with the count (it grows where the error falls faster than
+1/spp) and with the machine's load; "relative" compares with the first row.
 
 Our sampler is a scrambled Sobol' sequence, so errors usually fall faster
 than the plain Monte Carlo rate (slope -1 in the log-log plots): smooth
