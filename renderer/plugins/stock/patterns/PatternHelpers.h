@@ -9,6 +9,15 @@
 
 namespace stockpatterns {
 
+/// The stock patterns need no set-up, clean-up or render-time messages: only
+/// their parameter table and ComputeOutputParams differ.
+class StockPattern : public RixPattern {
+public:
+    int Init(RixContext&, RtUString const) override { return 0; }
+    void Finalize(RixContext&) override {}
+    void Synchronize(RixContext&, RixSCSyncMsg, RixParameterList const*) override {}
+};
+
 /// Adds output `paramId` with one value per point to `out` (which has room)
 /// and returns the array to fill.
 template <typename T>

@@ -16,12 +16,10 @@
 
 namespace {
 
-class PxrManifold2D : public RixPattern {
+class PxrManifold2D : public stockpatterns::StockPattern {
 public:
     enum { k_angle, k_scaleS, k_scaleT, k_offsetS, k_offsetT, k_invertT, k_result };
 
-    int Init(RixContext&, RtUString const) override { return 0; }
-    void Finalize(RixContext&) override {}
     RixSCParamInfo const* GetParamTable() override {
         static RixSCParamInfo table[] = {
             RixSCParamInfo(RtUString("angle"), k_RixSCFloat),    // degrees, counter-clockwise
@@ -34,7 +32,6 @@ public:
             RixSCParamInfo()};
         return table;
     }
-    void Synchronize(RixContext&, RixSCSyncMsg, RixParameterList const*) override {}
 
     int ComputeOutputParams(RixShadingContext const* sCtx, RtInt* numOutputs, OutputSpecification** outputs,
                             RtPointer, RixSCParamInfo const*) override {

@@ -9,12 +9,10 @@
 
 namespace {
 
-class PxrMix : public RixPattern {
+class PxrMix : public stockpatterns::StockPattern {
 public:
     enum { k_color1, k_color2, k_mix, k_clampMix, k_resultRGB };
 
-    int Init(RixContext&, RtUString const) override { return 0; }
-    void Finalize(RixContext&) override {}
     RixSCParamInfo const* GetParamTable() override {
         static RixSCParamInfo table[] = {RixSCParamInfo(RtUString("color1"), k_RixSCColor),
                                          RixSCParamInfo(RtUString("color2"), k_RixSCColor),
@@ -24,7 +22,6 @@ public:
                                          RixSCParamInfo()};
         return table;
     }
-    void Synchronize(RixContext&, RixSCSyncMsg, RixParameterList const*) override {}
 
     int ComputeOutputParams(RixShadingContext const* sCtx, RtInt* numOutputs, OutputSpecification** outputs,
                             RtPointer, RixSCParamInfo const*) override {

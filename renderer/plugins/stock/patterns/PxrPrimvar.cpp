@@ -12,12 +12,10 @@
 
 namespace {
 
-class PxrPrimvar : public RixPattern {
+class PxrPrimvar : public stockpatterns::StockPattern {
 public:
     enum { k_varname, k_type, k_defaultFloat, k_defaultColor, k_resultF, k_resultRGB, k_resultP };
 
-    int Init(RixContext&, RtUString const) override { return 0; }
-    void Finalize(RixContext&) override {}
     RixSCParamInfo const* GetParamTable() override {
         static RixSCParamInfo table[] = {RixSCParamInfo(RtUString("varname"), k_RixSCString),
                                          RixSCParamInfo(RtUString("type"), k_RixSCString),
@@ -29,7 +27,6 @@ public:
                                          RixSCParamInfo()};
         return table;
     }
-    void Synchronize(RixContext&, RixSCSyncMsg, RixParameterList const*) override {}
 
     int ComputeOutputParams(RixShadingContext const* sCtx, RtInt* numOutputs, OutputSpecification** outputs,
                             RtPointer, RixSCParamInfo const*) override {

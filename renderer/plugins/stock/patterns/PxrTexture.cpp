@@ -18,15 +18,13 @@ namespace {
 
 float srgbToLinear(float c) { return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f); }
 
-class PxrTexture : public RixPattern {
+class PxrTexture : public stockpatterns::StockPattern {
 public:
     enum {
         k_filename, k_firstChannel, k_invertT, k_linearize, k_missingColor, k_missingAlpha, k_manifold,
         k_resultRGB, k_resultR, k_resultG, k_resultB, k_resultA
     };
 
-    int Init(RixContext&, RtUString const) override { return 0; }
-    void Finalize(RixContext&) override {}
     RixSCParamInfo const* GetParamTable() override {
         static RixSCParamInfo table[] = {
             RixSCParamInfo(RtUString("filename"), k_RixSCString),
@@ -44,7 +42,6 @@ public:
             RixSCParamInfo()};
         return table;
     }
-    void Synchronize(RixContext&, RixSCSyncMsg, RixParameterList const*) override {}
 
     int ComputeOutputParams(RixShadingContext const* sCtx, RtInt* numOutputs, OutputSpecification** outputs,
                             RtPointer, RixSCParamInfo const*) override {

@@ -26,12 +26,10 @@ NamedBuiltin const kBuiltins[] = {
     {"dv", RixShadingContext::k_dv, true},      {"VLen", RixShadingContext::k_VLen, true},
 };
 
-class PxrVariable : public RixPattern {
+class PxrVariable : public stockpatterns::StockPattern {
 public:
     enum { k_variable, k_resultF, k_resultRGB, k_resultP };
 
-    int Init(RixContext&, RtUString const) override { return 0; }
-    void Finalize(RixContext&) override {}
     RixSCParamInfo const* GetParamTable() override {
         static RixSCParamInfo table[] = {RixSCParamInfo(RtUString("variable"), k_RixSCString),
                                          RixSCParamInfo(RtUString("resultF"), k_RixSCFloat, k_RixSCOutput),
@@ -40,7 +38,6 @@ public:
                                          RixSCParamInfo()};
         return table;
     }
-    void Synchronize(RixContext&, RixSCSyncMsg, RixParameterList const*) override {}
 
     int ComputeOutputParams(RixShadingContext const* sCtx, RtInt* numOutputs, OutputSpecification** outputs,
                             RtPointer, RixSCParamInfo const*) override {

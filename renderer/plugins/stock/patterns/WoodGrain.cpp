@@ -15,15 +15,13 @@
 
 namespace {
 
-class WoodGrain : public RixPattern {
+class WoodGrain : public stockpatterns::StockPattern {
 public:
     enum {
         k_ringsPerUnit, k_figureStrength, k_figureFrequency, k_grainAngle, k_earlyColor, k_lateColor, k_manifold,
         k_resultRGB, k_resultFiberColor, k_resultFiberAxis, k_resultBeta
     };
 
-    int Init(RixContext&, RtUString const) override { return 0; }
-    void Finalize(RixContext&) override {}
     RixSCParamInfo const* GetParamTable() override {
         static RixSCParamInfo table[] = {
             RixSCParamInfo(RtUString("ringsPerUnit"), k_RixSCFloat),
@@ -40,7 +38,6 @@ public:
             RixSCParamInfo()};
         return table;
     }
-    void Synchronize(RixContext&, RixSCSyncMsg, RixParameterList const*) override {}
 
     int ComputeOutputParams(RixShadingContext const* sCtx, RtInt* numOutputs, OutputSpecification** outputs,
                             RtPointer, RixSCParamInfo const*) override {
