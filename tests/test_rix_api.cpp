@@ -208,6 +208,18 @@ TEST_CASE("the shading memory pool does not grow when batches repeat", "[memory]
         if (k % 10 == 0) arena.reset();
     }
     CHECK(arena.bytesHeld() <= settled);
+    // A released large allocation is handed out again rather than fetched anew.
+    arena.reset();
+    void* first = arena.allocate(20000, 16);
+    arena.reset();
+    CHECK(arena.allocate(20000, 16) == first);
+    // Requests that keep growing do not leave a trail of too-small spares behind.
+    for (size_t size = 10000; size < 200000; size += 5000) {
+        arena.reset();
+        arena.allocate(size, 16);
+    }
+    arena.reset();
+    CHECK(arena.bytesHeld() <= 4096 * 4 + 200000 + 64);
     // Memory handed out is aligned and usable.
     auto* p = static_cast<double*>(arena.allocate(sizeof(double) * 8, 64));
     CHECK(reinterpret_cast<uintptr_t>(p) % 64 == 0);

@@ -36,7 +36,8 @@ public:
     /// Frees everything (keeps the blocks for reuse).
     void reset() { release(Mark{}); }
 
-    /// Bytes currently held from the system (blocks and large allocations).
+    /// Bytes currently held from the system (blocks, large allocations and
+    /// released large allocations kept for reuse).
     size_t bytesHeld() const;
 
 private:
@@ -45,10 +46,12 @@ private:
         size_t size;
     };
     static void* alignWithin(Allocation const& a, size_t& offset, size_t bytes, size_t alignment);
+    Allocation takeLarge(size_t size);
 
     size_t m_blockSize;
     std::vector<Allocation> m_blocks;  ///< all m_blockSize bytes, reused after release
     std::vector<Allocation> m_large;   ///< one per request too big for a block, in order
+    std::vector<Allocation> m_spare;   ///< released large allocations, reused by later large requests
     size_t m_current = 0;              ///< index of the block being filled
     size_t m_offset = 0;               ///< bytes used in it
 };
