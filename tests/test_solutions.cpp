@@ -4,6 +4,8 @@
 // the hard cases of models.md (one table: adding a case is one line).
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <fstream>
+#include <iterator>
 
 #include "checks/Check.h"
 #include "measure/ProbeMeasurer.h"
@@ -31,30 +33,44 @@ std::unique_ptr<BxdfProbe> probe(std::string const& plugin, std::string const& p
 
 RtColorRGB weightAt(BxdfProbe& p, ProbePoint const& point, Vec3 const& L) { return p.evaluate({point}, {L})[0].W; }
 
+// A parameter set the tests below use beyond the manifests' own. What each
+// model is (reciprocal, energy-conserving, ...) is the manifest's to say.
 struct Model {
     const char* plugin;
     const char* params;
-    bool reciprocal;       ///< f(V, L) = f(L, V)
-    bool conservesEnergy;  ///< directional albedo <= 1 for these (white) parameters
-    bool mayReject;        ///< GenerateSample can return invalid samples (pdf integrates to < 1)
+    bool mayReject;  ///< GenerateSample can return invalid samples (pdf integrates to < 1)
 };
 
 // Every solution, in the configurations the tests below exercise.
 const std::vector<Model> kModels = {
-    {"diffuse", "\"color diffuseColor\" [1 1 1]", true, true, false},
-    {"buggydiffuse", "\"color diffuseColor\" [1 1 1]", true, true, false},
-    {"diffuse", "\"color diffuseColor\" [1 1 1] \"int samplingMode\" [1]", true, true, false},
-    {"specular", "\"float gloss\" [30]", true, true, false},
-    {"specular", "\"float gloss\" [30] \"int samplingMode\" [1]", true, true, true},
-    {"plastic", "\"color diffuseColor\" [0.6 0.6 0.6] \"color specularColor\" [0.4 0.4 0.4] \"float gloss\" [40]", true,
-     true, true},
-    {"ward", "\"float uRoughness\" [0.3] \"float vRoughness\" [0.1]", true, false, true},
-    {"ward", "\"float uRoughness\" [0.3] \"float vRoughness\" [0.1] \"int samplingMode\" [0]", true, false, false},
-    {"ward", "\"float uRoughness\" [0.2] \"float vRoughness\" [0.2] \"color diffuseColor\" [0.4 0.4 0.4]", true, false,
-     true},
-    {"finishedwood", "", false, false, false},
-    {"finishedwood", "\"vector fiberAxis\" [0.6 0.8 0] \"float beta\" [0.3] \"float eta\" [1.3]", false, false, false},
+    {"diffuse", "\"color diffuseColor\" [1 1 1]", false},
+    {"buggydiffuse", "\"color diffuseColor\" [1 1 1]", false},
+    {"diffuse", "\"color diffuseColor\" [1 1 1] \"int samplingMode\" [1]", false},
+    {"specular", "\"float gloss\" [30]", false},
+    {"specular", "\"float gloss\" [30] \"int samplingMode\" [1]", true},
+    {"plastic", "\"color diffuseColor\" [0.6 0.6 0.6] \"color specularColor\" [0.4 0.4 0.4] \"float gloss\" [40]", true},
+    {"ward", "\"float uRoughness\" [0.3] \"float vRoughness\" [0.1]", true},
+    {"ward", "\"float uRoughness\" [0.3] \"float vRoughness\" [0.1] \"int samplingMode\" [0]", false},
+    {"ward", "\"float uRoughness\" [0.2] \"float vRoughness\" [0.2] \"color diffuseColor\" [0.4 0.4 0.4]", true},
+    {"finishedwood", "", false},
+    {"finishedwood", "\"vector fiberAxis\" [0.6 0.8 0] \"float beta\" [0.3] \"float eta\" [1.3]", false},
 };
+
+/// Runs one of the autograder's checks with the plugin as both the student's
+/// plugin and the oracle.
+void requireCheckPasses(Exercise const& e, std::string const& check, std::string const& pluginDir) {
+    static Diagnostics quiet(false);
+    ProbeMeasurer plugin(e.plugin, {pluginDir}, quiet);
+    CheckContext context{e, plugin, plugin, 1u};
+    CheckOutcome outcome = runCheck(check, context);
+    CAPTURE(outcome.summary, outcome.details);
+    CHECK(outcome.passed());
+}
+
+std::string readWholeFile(std::string const& path) {
+    std::ifstream in(path, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+}
 
 std::string describe(Model const& m) { return std::string(m.plugin) + " " + m.params; }
 
@@ -145,17 +161,23 @@ TEST_CASE("solutions: every reference solution passes every check of its exercis
     static std::vector<Exercise> const exercises = loadExercises(BXDFLAB_SOURCE_DIR);
     auto const& e = GENERATE(from_range(exercises));
     auto const check = GENERATE(from_range(checkNames()));
-    if (check == "renders") return;
-    bool listed = false;
-    for (auto const& c : e.checks) listed = listed || c.first == check;
-    if (!listed) return;
+    if (check == "renders" || !e.gradedWith(check)) return;
     CAPTURE(e.plugin, check);
-    static Diagnostics quiet(false);
-    ProbeMeasurer solution(e.plugin, {SOLUTION_PLUGIN_DIR}, quiet);
-    CheckContext context{e, solution, solution, 1u};
-    CheckOutcome outcome = runCheck(check, context);
-    CAPTURE(outcome.summary, outcome.details);
-    CHECK(outcome.passed());
+    requireCheckPasses(e, check, SOLUTION_PLUGIN_DIR);
+}
+
+TEST_CASE("solutions: starter files the manifest calls identical to the solution's are", "[solutions][starter]") {
+    // What a student is given unchanged (factories, headers) must not drift from
+    // the solution it is graded against.
+    for (Exercise const& e : loadExercises(BXDFLAB_SOURCE_DIR)) {
+        for (std::string const& file : e.identicalToSolution) {
+            CAPTURE(e.plugin, file);
+            std::string starter = readWholeFile(std::string(BXDFLAB_SOURCE_DIR) + "/" + e.folder + "/" + file);
+            std::string solution = readWholeFile(std::string(BXDFLAB_SOURCE_DIR) + "/" + e.solutionFolder + "/" + file);
+            REQUIRE_FALSE(starter.empty());
+            CHECK(starter == solution);
+        }
+    }
 }
 
 TEST_CASE("stock models (PxrDisney) pass every check of their model manifest", "[stock][checks]") {
@@ -164,16 +186,9 @@ TEST_CASE("stock models (PxrDisney) pass every check of their model manifest", "
         loadExercise(BXDFLAB_SOURCE_DIR, std::string(BXDFLAB_SOURCE_DIR) + "/renderer/plugins/stock/disney/model.json")};
     auto const& e = GENERATE(from_range(models));
     auto const check = GENERATE(from_range(checkNames()));
-    bool listed = false;
-    for (auto const& c : e.checks) listed = listed || c.first == check;
-    if (!listed) return;
+    if (!e.gradedWith(check)) return;
     CAPTURE(e.plugin, check);
-    static Diagnostics quiet(false);
-    ProbeMeasurer model(e.plugin, {STOCK_PLUGIN_DIR}, quiet);
-    CheckContext context{e, model, model, 1u};
-    CheckOutcome outcome = runCheck(check, context);
-    CAPTURE(outcome.summary, outcome.details);
-    CHECK(outcome.passed());
+    requireCheckPasses(e, check, STOCK_PLUGIN_DIR);
 }
 
 TEST_CASE("solutions: FPdf integrates to 1 over the hemisphere, or to the valid fraction", "[solutions][pdf]") {

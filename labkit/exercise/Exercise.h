@@ -55,6 +55,8 @@ struct Exercise {
 
     std::vector<std::pair<std::string, double>> checks;  ///< check name -> default points, in report order
 
+    /// Whether the exercise is graded with `check`.
+    bool gradedWith(std::string const& check) const;
     /// The reason `check` does not apply, or empty.
     std::string notApplicableReason(std::string const& check) const;
     /// params + a sampling mode's parameters.
