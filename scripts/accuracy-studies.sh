@@ -46,5 +46,5 @@ build/bin/rixbench > $out/bench.txt
 echo "bench written to $out/bench.txt"
 
 # The appendix that collects the headline numbers.
-/usr/bin/python3 tools/accuracy_appendix.py $out > chapters/appendix-accuracy-cost.md
+python3 tools/accuracy_appendix.py $out > chapters/appendix-accuracy-cost.md
 echo "wrote chapters/appendix-accuracy-cost.md"

@@ -29,7 +29,7 @@
 
 #include "film/OiioImageFiles.h"
 #include "CommandLine.h"
-#include "film/Film.h"
+#include "render/Film.h"
 #include "render/Renderer.h"
 #include "scene/SceneBuilder.h"
 
@@ -241,7 +241,7 @@ int main(int argc, char** argv) {
         }
         csv.close();
         table.close();
-        std::string plot = std::string("/usr/bin/python3 ") + BXDFLAB_TOOLS_DIR + "/plot_convergence.py '" + outDir + "'";
+        std::string plot = std::string(BXDFLAB_PYTHON) + " " + BXDFLAB_TOOLS_DIR + "/plot_convergence.py '" + outDir + "'";
         if (std::system(plot.c_str()) != 0) std::cerr << "rixconverge: plotting failed (is python3-matplotlib installed?)\n";
         std::cout << "wrote " << outDir << "/convergence.csv, table.md, error_vs_spp.png, error_vs_time.png\n";
         return 0;
