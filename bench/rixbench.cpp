@@ -20,6 +20,7 @@
 #include <sstream>
 
 #include "CommandLine.h"
+#include "RayRecording.h"
 #include "film/OiioImageFiles.h"
 #include "render/Renderer.h"
 #include "scene/SceneBuilder.h"
@@ -116,22 +117,22 @@ int main(int argc, char** argv) {
     const int spp = 16;
 
     // 1. Shading overhead against raw Embree, one thread each.
-    std::vector<RayTracer::RecordedRay> rays;
+    RayRecording rays;
     double render1 = 0.0, raw = 0.0;
     {
         RenderSettings settings;
         settings.spp = spp;
         settings.threads = 1;
         Renderer renderer(scene, settings, diagnostics);
-        renderer.tracer().record(&rays);
+        renderer.tracer().observe(&rays);
         renderer.render();
-        renderer.tracer().record(nullptr);
+        renderer.tracer().observe(nullptr);
         render1 = bestOf(3, [&] { renderer.render(); });
-        raw = bestOf(3, [&] { renderer.tracer().replay(rays); });
+        raw = bestOf(3, [&] { rays.replay(renderer.tracer()); });
     }
-    size_t shadow = static_cast<size_t>(std::count_if(rays.begin(), rays.end(), [](auto const& r) { return r.occlusion; }));
+    size_t shadow = rays.occlusionRays();
     std::printf("scene %s, %dx%d, %d spp\n", sceneFile.c_str(), scene.xres, scene.yres, spp);
-    std::printf("rays recorded: %zu camera + %zu shadow\n", rays.size() - shadow, shadow);
+    std::printf("rays recorded: %zu camera + %zu shadow\n", rays.rays().size() - shadow, shadow);
     std::printf("raw Embree: %.3f s   full render: %.3f s   overhead ratio: %.2f (target <= 1.30)\n", raw, render1,
                 render1 / raw);
 

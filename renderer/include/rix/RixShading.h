@@ -145,6 +145,8 @@ public:
         k_dPdv,      ///< RtVector3: derivative of P with respect to v (not normalized)
         k_s,         ///< RtFloat: texture coordinate s ("st" primvar, else u)
         k_t,         ///< RtFloat: texture coordinate t ("st" primvar, else v)
+        k_biasR,     ///< RtFloat: how far along Ngn a ray leaving P starts so that it cannot hit
+                     ///< the surface it leaves again (P's floating-point error; integrators use it)
         k_numBuiltins
     };
 

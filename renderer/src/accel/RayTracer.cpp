@@ -93,7 +93,7 @@ void RayTracer::cameraBounds(Vec3& lower, Vec3& upper) const {
     upper = Vec3(b.upper_x, b.upper_y, b.upper_z);
 }
 
-RTCScene RayTracer::sceneFor(RayKind kind) const {
+RTCScene RayTracer::embreeScene(RayKind kind) const {
     switch (kind) {
         case RayKind::Camera: return m_camera;
         case RayKind::Indirect: return m_indirect;
@@ -113,8 +113,8 @@ HitRecord RayTracer::intersect(Vec3 const& org, Vec3 const& dir, float tnear, fl
     rayhit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
     rayhit.hit.u = rayhit.hit.v = 0.0f;
     rayhit.hit.Ng_x = rayhit.hit.Ng_y = rayhit.hit.Ng_z = 0.0f;
-    if (m_log) m_log->push_back({org, dir, tnear, tfar, kind, false});
-    rtcIntersect1(sceneFor(kind), &context, &rayhit);
+    if (m_observer) m_observer->traced(org, dir, tnear, tfar, kind, false);
+    rtcIntersect1(embreeScene(kind), &context, &rayhit);
     ++(kind == RayKind::Camera ? counts.camera : kind == RayKind::Indirect ? counts.indirect : counts.shadow);
 
     HitRecord hit;
@@ -135,36 +135,14 @@ bool RayTracer::occluded(Vec3 const& org, Vec3 const& dir, float tnear, float tf
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
     RTCRay ray = makeRay(org, dir, tnear, tfar);
-    if (m_log) m_log->push_back({org, dir, tnear, tfar, RayKind::Shadow, true});
+    if (m_observer) m_observer->traced(org, dir, tnear, tfar, RayKind::Shadow, true);
     rtcOccluded1(m_shadow, &context, &ray);
     ++counts.shadow;
     return ray.tfar < 0.0f;
 }
 
-size_t RayTracer::replay(std::vector<RecordedRay> const& rays) const {
-    size_t hits = 0;
-    RTCIntersectContext context;
-    rtcInitIntersectContext(&context);
-    for (RecordedRay const& r : rays) {
-        if (r.occlusion) {
-            RTCRay ray = makeRay(r.org, r.dir, r.tnear, r.tfar);
-            rtcOccluded1(m_shadow, &context, &ray);
-            hits += ray.tfar < 0.0f;
-        } else {
-            RTCRayHit rayhit;
-            rayhit.ray = makeRay(r.org, r.dir, r.tnear, r.tfar);
-            rayhit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-            rayhit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
-            rtcIntersect1(sceneFor(r.kind), &context, &rayhit);
-            hits += rayhit.hit.geomID != RTC_INVALID_GEOMETRY_ID;
-        }
-    }
-    return hits;
-}
-
-Vec3 offsetRayOrigin(Vec3 const& P, Vec3 const& pError, Vec3 const& Ng, Vec3 const& w) {
-    float distance = glm::dot(glm::abs(Ng), pError);
-    Vec3 offset = distance * Ng;
+Vec3 offsetRayOrigin(Vec3 const& P, float bias, Vec3 const& Ng, Vec3 const& w) {
+    Vec3 offset = bias * Ng;
     if (glm::dot(w, Ng) < 0.0f) offset = -offset;
     Vec3 origin = P + offset;
     // Round away from P so the offset is not lost to rounding.

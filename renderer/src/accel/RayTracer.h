@@ -54,30 +54,31 @@ public:
     /// World-space bounds of what camera rays can hit (empty: lower > upper).
     void cameraBounds(Vec3& lower, Vec3& upper) const;
 
-    /// A traced ray, for the benchmark that replays a render's rays through raw Embree.
-    struct RecordedRay {
-        Vec3 org, dir;
-        float tnear, tfar;
-        RayKind kind;
-        bool occlusion;
+    /// Sees every ray as it is traced (tools such as the benchmark record them).
+    /// Called on the tracing thread: only for single-threaded renders.
+    class Observer {
+    public:
+        virtual ~Observer() = default;
+        virtual void traced(Vec3 const& org, Vec3 const& dir, float tnear, float tfar, RayKind kind,
+                            bool occlusion) = 0;
     };
-    /// Records every ray traced from now on (single-threaded renders only); null stops.
-    void record(std::vector<RecordedRay>* log) { m_log = log; }
-    /// Traces recorded rays with Embree alone; returns how many hit something.
-    size_t replay(std::vector<RecordedRay> const& rays) const;
+    /// Starts telling `observer` of every ray; null stops.
+    void observe(Observer* observer) { m_observer = observer; }
+    /// The Embree scene rays of `kind` are traced against (for tracing
+    /// outside the renderer, as the benchmark's raw-Embree replay does).
+    RTCScene embreeScene(RayKind kind) const;
 
 private:
-    RTCScene sceneFor(RayKind kind) const;
     RTCDevice m_device = nullptr;
     RTCScene m_camera = nullptr, m_indirect = nullptr, m_shadow = nullptr;
     mutable RayCounters m_counters;
-    std::vector<RecordedRay>* m_log = nullptr;
+    Observer* m_observer = nullptr;
 };
 
-/// The origin for a ray leaving surface point P (with error bound pError and
-/// unit geometric normal Ng) in direction w: pushed just far enough off the
-/// surface, to the side w goes to, that the ray cannot re-hit the surface it
-/// starts on (pbrt-v4, section 6.8.6).
-Vec3 offsetRayOrigin(Vec3 const& P, Vec3 const& pError, Vec3 const& Ng, Vec3 const& w);
+/// The origin for a ray leaving surface point P (unit geometric normal Ng) in
+/// direction w: pushed `bias` along Ng, to the side w goes to, and rounded
+/// away from P, so the ray cannot re-hit the surface it starts on. `bias` is
+/// P's error bound projected on Ng (the k_biasR builtin; pbrt-v4, section 6.8.6).
+Vec3 offsetRayOrigin(Vec3 const& P, float bias, Vec3 const& Ng, Vec3 const& w);
 
 }  // namespace bxdflab

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "shade/ShadingContextImpl.h"
+#include "accel/RayTracer.h"
 
 namespace bxdflab {
 namespace {
@@ -24,13 +24,13 @@ RixLightSample IntegratorServices::SampleLight(int light, RtPoint3 const& P, RtF
 }
 
 Vec3 IntegratorServices::origin(RixShadingContext const& ctx, int i, Vec3 const& dir) const {
-    // Every context the renderer hands out is one of its own.
-    auto const& impl = static_cast<ShadingContextImpl const&>(ctx);
     RtPoint3 const* P;
     RtNormal3 const* Ngn;
+    RtFloat const* biasR;
     ctx.GetBuiltinVar(RixShadingContext::k_P, &P);
     ctx.GetBuiltinVar(RixShadingContext::k_Ngn, &Ngn);
-    return offsetRayOrigin(toVec3(P[i]), impl.pError()[i], toVec3(Ngn[i]), dir);
+    ctx.GetBuiltinVar(RixShadingContext::k_biasR, &biasR);
+    return offsetRayOrigin(toVec3(P[i]), biasR[i], toVec3(Ngn[i]), dir);
 }
 
 bool IntegratorServices::Unoccluded(RixShadingContext const& ctx, int i, RtVector3 const& dir, float distance) {

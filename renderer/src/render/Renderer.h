@@ -10,10 +10,10 @@
 
 #include <nlohmann/json.hpp>
 
-#include "core/Diagnostics.h"
-#include "film/Film.h"
 #include "accel/RayTracer.h"
+#include "core/Diagnostics.h"
 #include "integrate/IntegratorServices.h"
+#include "render/Film.h"
 #include "scene/Scene.h"
 #include "shade/PluginLoader.h"
 
@@ -59,7 +59,7 @@ public:
     /// Renders the whole image; can be called more than once.
     Film render();
     RenderStats const& stats() const { return m_stats; }
-    /// The ray tracer (the benchmark records and replays its rays).
+    /// The ray tracer (tools may observe the rays it traces).
     RayTracer& tracer();
 
 private:

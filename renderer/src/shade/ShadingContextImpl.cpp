@@ -16,7 +16,8 @@ bool isFloatBuiltin(RixShadingContext::BuiltinId id) {
         case RixShadingContext::k_du:
         case RixShadingContext::k_dv:
         case RixShadingContext::k_s:
-        case RixShadingContext::k_t: return true;
+        case RixShadingContext::k_t:
+        case RixShadingContext::k_biasR: return true;
         default: return false;
     }
 }
@@ -86,7 +87,7 @@ void ShadingContextImpl::computeSurfaceGroup() const {
     auto* Ngn = m_arena.allocArray<RtNormal3>(static_cast<size_t>(numPts));
     float* uvst[4];
     for (auto& array : uvst) array = m_arena.allocArray<float>(static_cast<size_t>(numPts));
-    m_pError = m_arena.allocArray<Vec3>(static_cast<size_t>(numPts));
+    auto* biasR = m_arena.allocArray<float>(static_cast<size_t>(numPts));
     for (int i = 0; i < numPts; ++i) {
         Shape const& shape = *m_scene.shapes[m_hits[i].geomID];
         SurfaceBasics b = shape.basics(m_hits[i]);
@@ -103,7 +104,8 @@ void ShadingContextImpl::computeSurfaceGroup() const {
         uvst[1][i] = b.v;
         uvst[2][i] = b.s;
         uvst[3][i] = b.t;
-        m_pError[i] = b.pError;
+        // P's error bound projected on the normal: the offset that clears it.
+        biasR[i] = glm::dot(glm::abs(b.Ng), b.pError);
     }
     m_builtins[k_P] = P;
     m_builtins[k_Nn] = Nn;
@@ -112,6 +114,7 @@ void ShadingContextImpl::computeSurfaceGroup() const {
     m_builtins[k_v] = uvst[1];
     m_builtins[k_s] = uvst[2];
     m_builtins[k_t] = uvst[3];
+    m_builtins[k_biasR] = biasR;
     m_counters.surfacePoints.fetch_add(static_cast<uint64_t>(numPts), std::memory_order_relaxed);
 }
 
@@ -155,11 +158,6 @@ void ShadingContextImpl::computeTangentGroup() const {
     m_builtins[k_du] = du;
     m_builtins[k_dv] = dv;
     m_counters.tangentPoints.fetch_add(static_cast<uint64_t>(numPts), std::memory_order_relaxed);
-}
-
-Vec3 const* ShadingContextImpl::pError() const {
-    if (!m_pError) computeSurfaceGroup();
-    return m_pError;
 }
 
 int ShadingContextImpl::Builtin(BuiltinId id, RixSCType wanted, void const** result) const {

@@ -56,8 +56,6 @@ public:
     void setBxdf(RixBxdf* bxdf) { m_bxdf = bxdf; }
     void setId(int id) { m_id = id; }
     HitRecord const& hit(int i) const { return m_hits[i]; }
-    /// Error bounds of P, for spawning rays (computed with the surface group).
-    Vec3 const* pError() const;
     /// Output `output` of `pattern` for this batch, or nullptr when the
     /// pattern did not compute it. The pattern runs on first use (its own
     /// connected inputs first) and its outputs are kept for the batch.
@@ -98,7 +96,6 @@ private:
     RixInterface* m_messages;
     BuiltinCounters& m_counters;
     mutable void* m_builtins[k_numBuiltins] = {};
-    mutable Vec3* m_pError = nullptr;
     RixTexture* m_textures;
     mutable std::vector<PatternOutputs> m_patternOutputs;  ///< patterns run in this batch
 };
