@@ -118,8 +118,14 @@ set_tests_properties(tools.rixconverge PROPERTIES
   PASS_REGULAR_EXPRESSION "cosine: slope -?[0-9.]+.*uniform: slope -?[0-9.]+.*wrote converge-test/convergence.csv"
   FAIL_REGULAR_EXPRESSION "plotting failed")
 
+# The renderer's folders include one another only along the data flow (docs/architecture.md).
+add_test(NAME architecture.includes_follow_the_data_flow
+         COMMAND ${BXDFLAB_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_include_direction.py ${PROJECT_SOURCE_DIR})
+set_tests_properties(architecture.includes_follow_the_data_flow PROPERTIES
+  PASS_REGULAR_EXPRESSION "files checked, 0 includes against the data flow")
+
 # Every command the chapters show runs, and every figure they link exists.
-add_test(NAME chapters.commands_and_figures COMMAND /usr/bin/python3 ${CMAKE_CURRENT_SOURCE_DIR}/check_chapters.py ${PROJECT_SOURCE_DIR})
+add_test(NAME chapters.commands_and_figures COMMAND ${BXDFLAB_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_chapters.py ${PROJECT_SOURCE_DIR})
 set_tests_properties(chapters.commands_and_figures PROPERTIES PASS_REGULAR_EXPRESSION "command blocks run; 0 problems" RUN_SERIAL TRUE)
 
 # Memory stays bounded at any spp, for every integrator.

@@ -4,7 +4,7 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
-#include "film/Film.h"
+#include "render/Film.h"
 #include "scene/lights/InfiniteLights.h"
 #include "support/RenderHelpers.h"
 

@@ -18,7 +18,7 @@
 #include "film/OiioImageFiles.h"
 #include "CommandLine.h"
 #include "ToolSupport.h"
-#include "film/Film.h"
+#include "render/Film.h"
 #include "render/Renderer.h"
 #include "scene/SceneBuilder.h"
 

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "core/Diagnostics.h"
-#include "film/Film.h"
+#include "render/Film.h"
 #include "render/Renderer.h"
 #include "scene/Scene.h"
 #include "scene/SceneBuilder.h"
