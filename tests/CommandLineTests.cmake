@@ -124,6 +124,11 @@ add_test(NAME architecture.includes_follow_the_data_flow
 set_tests_properties(architecture.includes_follow_the_data_flow PROPERTIES
   PASS_REGULAR_EXPRESSION "files checked, 0 includes against the data flow")
 
+# The README names every RIB request the scene builder handles, and no other.
+add_test(NAME readme.lists_every_rib_request
+         COMMAND ${BXDFLAB_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_readme_requests.py ${PROJECT_SOURCE_DIR})
+set_tests_properties(readme.lists_every_rib_request PROPERTIES PASS_REGULAR_EXPRESSION "requests handled, 0 mismatches")
+
 # Every command the chapters show runs, and every figure they link exists.
 add_test(NAME chapters.commands_and_figures COMMAND ${BXDFLAB_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_chapters.py ${PROJECT_SOURCE_DIR})
 set_tests_properties(chapters.commands_and_figures PROPERTIES PASS_REGULAR_EXPRESSION "command blocks run; 0 problems" RUN_SERIAL TRUE)
