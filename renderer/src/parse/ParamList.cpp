@@ -170,14 +170,22 @@ void ParamList::add(Param param) {
 
 Param const* ParamList::find(std::string const& name) const {
     for (auto const& p : m_params)
-        if (p.name() == name) {
-            p.used = true;
-            if (p.decl.untyped)
-                throw RibError(p.location, "parameter \"" + name + "\" has no type: write it as \"<type> " + name +
-                                               "\", e.g. \"float " + name + "\", or declare it with Declare");
-            return &p;
-        }
+        if (p.name() == name) return &p;
     return nullptr;
+}
+
+Param const* ParamList::take(std::string const& name) const {
+    Param const* p = find(name);
+    if (!p) return nullptr;
+    p->used = true;
+    if (p->decl.untyped)
+        throw RibError(p->location, "parameter \"" + name + "\" has no type: write it as \"<type> " + name +
+                                        "\", e.g. \"float " + name + "\", or declare it with Declare");
+    return p;
+}
+
+void ParamList::ignore(std::string const& name) const {
+    if (Param const* p = find(name)) p->used = true;
 }
 
 Param const& ParamList::expect(Param const& p, std::initializer_list<ParamType> types, size_t count) const {
@@ -197,14 +205,14 @@ Param const& ParamList::expect(Param const& p, std::initializer_list<ParamType> 
 }
 
 float ParamList::getFloat(std::string const& name, float dflt) const {
-    Param const* p = find(name);
+    Param const* p = take(name);
     if (!p) return dflt;
     expect(*p, {ParamType::Float, ParamType::Int}, 1);
     return p->floats[0];
 }
 
 int ParamList::getInt(std::string const& name, int dflt) const {
-    Param const* p = find(name);
+    Param const* p = take(name);
     if (!p) return dflt;
     expect(*p, {ParamType::Int, ParamType::Float}, 1);
     if (p->decl.type == ParamType::Int) return p->ints[0];
@@ -215,28 +223,28 @@ int ParamList::getInt(std::string const& name, int dflt) const {
 }
 
 Vec3 ParamList::getColor(std::string const& name, Vec3 const& dflt) const {
-    Param const* p = find(name);
+    Param const* p = take(name);
     if (!p) return dflt;
     expect(*p, {ParamType::Color}, 1);
     return Vec3(p->floats[0], p->floats[1], p->floats[2]);
 }
 
 Vec3 ParamList::getVector(std::string const& name, Vec3 const& dflt) const {
-    Param const* p = find(name);
+    Param const* p = take(name);
     if (!p) return dflt;
     expect(*p, {ParamType::Vector, ParamType::Point, ParamType::Normal}, 1);
     return Vec3(p->floats[0], p->floats[1], p->floats[2]);
 }
 
 std::string ParamList::getString(std::string const& name, std::string const& dflt) const {
-    Param const* p = find(name);
+    Param const* p = take(name);
     if (!p) return dflt;
     expect(*p, {ParamType::String}, 1);
     return p->strings[0];
 }
 
 std::vector<float> const* ParamList::getFloats(std::string const& name, ParamType type) const {
-    Param const* p = find(name);
+    Param const* p = take(name);
     if (!p) return nullptr;
     if (type == ParamType::Float)
         expect(*p, {ParamType::Float, ParamType::Int}, 0);
@@ -246,7 +254,7 @@ std::vector<float> const* ParamList::getFloats(std::string const& name, ParamTyp
 }
 
 std::vector<int> const* ParamList::getInts(std::string const& name) const {
-    Param const* p = find(name);
+    Param const* p = take(name);
     if (!p) return nullptr;
     expect(*p, {ParamType::Int, ParamType::Float}, 0);
     return &p->ints;

@@ -75,10 +75,14 @@ class ParamList {
 public:
     void add(Param param);
     bool has(std::string const& name) const { return find(name) != nullptr; }
-    /// The parameter, marked used; nullptr when absent. Throws a located
-    /// RibError when it was written without a type and is not standard:
-    /// whoever asks for a value needs its type.
+    /// The parameter, or nullptr when absent. Only looks: see take().
     Param const* find(std::string const& name) const;
+    /// The parameter, marked used (so it is not reported as skipped); nullptr
+    /// when absent. Throws a located RibError when it was written without a
+    /// type and is not standard: whoever takes a value needs its type.
+    Param const* take(std::string const& name) const;
+    /// Marks a parameter as read and deliberately ignored, if present.
+    void ignore(std::string const& name) const;
     std::vector<Param> const& all() const { return m_params; }
     bool empty() const { return m_params.empty(); }
 

@@ -81,7 +81,7 @@ void SceneBuilder::readSubdivisionMesh(RequestReader& in, bool hierarchical) {
         return;
     }
     std::vector<Vec3> P = worldPoints(params, state().transform, in);
-    params.find("N");  // the limit surface has its own normals
+    params.ignore("N");  // the limit surface has its own normals
     PrimvarSet vars = shapePrimvars(params);
     params.warnUnused(m_diagnostics, request);
     if (scheme == "bilinear") {
@@ -214,7 +214,7 @@ void SceneBuilder::points(RequestReader& in) {
     if (widths && widths->size() != P.size())
         in.fail(in.where(), "\"width\" needs one value per point (" + std::to_string(P.size()) + "), got " +
                                 std::to_string(widths->size()));
-    params.find("N");
+    params.ignore("N");
     PrimvarSet vars = shapePrimvars(params);
     params.warnUnused(m_diagnostics, "Points");
     if (P.empty()) return;
@@ -237,7 +237,7 @@ void SceneBuilder::curves(RequestReader& in) {
     std::vector<Vec3> P = worldPoints(params, state().transform, in);
     std::vector<float> const* widths = params.getFloats("width", ParamType::Float);
     float constantWidth = params.getFloat("constantwidth", 1.0f);
-    params.find("N");  // ribbons facing N are drawn as round tubes
+    params.ignore("N");  // ribbons facing N are drawn as round tubes
     PrimvarSet vars = shapePrimvars(params);
     params.warnUnused(m_diagnostics, "Curves");
     float const scale = lengthScale(state().transform);

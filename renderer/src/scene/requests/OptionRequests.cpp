@@ -64,7 +64,7 @@ void SceneBuilder::projection(RequestReader& in) {
     if (type != "perspective" && type != "orthographic")
         in.fail(in.where(), "unsupported projection \"" + type + "\" (use \"perspective\" or \"orthographic\")");
     m_scene.camera.projection = type;
-    if (Param const* fov = params.find("fov")) {
+    if (Param const* fov = params.take("fov")) {
         float value = params.getFloat("fov", 90.0f);
         if (!(value > 0.0f && value < 180.0f))
             throw RibError(fov->location, "Projection: fov must be between 0 and 180 degrees (exclusive), got " +
@@ -100,7 +100,7 @@ void SceneBuilder::hider(RequestReader& in) {
     ParamList params = in.params();
     if (type != "raytrace") warnOnce("hider " + type, in.where(), "Hider \"" + type + "\" treated as \"raytrace\"");
     if (type == "raytrace")
-        if (Param const* p = params.find("maxsamples")) {
+        if (Param const* p = params.take("maxsamples")) {
             int spp = params.getInt("maxsamples", 16);
             if (spp < 1 || spp > kMaxSamplesPerPixel)
                 throw RibError(p->location, "Hider: maxsamples must be between 1 and " +
@@ -127,7 +127,7 @@ void SceneBuilder::option(RequestReader& in) {
         return;
     }
     auto update = [&](std::vector<std::string>& list, std::string const& key) {
-        Param const* p = params.find(key);
+        Param const* p = params.take(key);
         if (!p) return;
         std::string value = params.getString(key, "");
         std::vector<std::string> previous = list;

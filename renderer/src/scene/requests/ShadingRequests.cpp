@@ -233,7 +233,7 @@ bool SceneBuilder::shapeAsLight(char const* lightType, Mat4 const& lightToWorld)
     if (type == "PxrDomeLight") {
         // An environment light's image; RenderMan 20 named it by the light shader's parameter.
         for (char const* name : {"rman__EnvMap", "rman__EmissionMap"})
-            if (Param const* map = area.params.find(name))
+            if (Param const* map = area.params.take(name))
                 if (!map->strings.empty() && !map->strings[0].empty()) params.add(stringParam("lightColorMap", map->strings[0]));
     }
     std::unique_ptr<Light> light =

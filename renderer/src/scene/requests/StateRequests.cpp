@@ -147,7 +147,7 @@ void SceneBuilder::attribute(RequestReader& in) {
         vis.camera = params.getInt("camera", vis.camera) != 0;
         vis.indirect = params.getInt("indirect", vis.indirect) != 0;
         // RenderMan's older form: "string transmission" "opaque" | "transparent" | "Os" | "shader".
-        if (Param const* t = params.find("transmission")) {
+        if (Param const* t = params.take("transmission")) {
             if (t->decl.type == ParamType::String)
                 vis.transmission = t->strings.at(0) != "transparent";
             else
@@ -157,7 +157,7 @@ void SceneBuilder::attribute(RequestReader& in) {
         bool olderKinds = params.has("diffuse") || params.has("specular");
         if (olderKinds) vis.indirect = params.getInt("diffuse", 0) != 0 || params.getInt("specular", 0) != 0;
     } else if (category == "identifier") {
-        if (Param const* name = params.find("name")) state().name = name->strings.empty() ? state().name : name->strings[0];
+        if (Param const* name = params.take("name")) state().name = name->strings.empty() ? state().name : name->strings[0];
         for (auto const& p : params.all()) p.used = true;  // shadinggroup, id: labels only
     } else {
         warnOnce("attribute " + category, in.where(), "Attribute \"" + category + "\" is not used by this renderer; skipped");

@@ -107,19 +107,19 @@ void tessellate(MeshData& mesh, int nu, int nv, SurfaceFunction const& surface, 
 MeshData buildPolygonMesh(std::vector<int> const& loopsPerFace, std::vector<int> const& verticesPerLoop,
                           std::vector<int> const& vertexIndices, ParamList const& params, Mat4 const& toWorld,
                           SourceLocation const& where) {
-    Param const* P = params.find("P");
+    Param const* P = params.take("P");
     if (!P) throw RibError(where, "polygon needs a \"P\" primvar with its vertex positions");
     if (P->decl.type != ParamType::Point && P->decl.type != ParamType::Float && P->decl.type != ParamType::Vector)
         throw RibError(P->location, "\"P\" must be of type point");
     size_t numPoints = P->floats.size() / 3;
     if (P->floats.size() % 3 != 0) throw RibError(P->location, "\"P\" needs three numbers per point");
 
-    Param const* normals = params.find("N");
+    Param const* normals = params.take("N");
     if (normals && normals->decl.type != ParamType::Normal && normals->decl.type != ParamType::Vector)
         throw RibError(normals->location, "\"N\" must be of type normal");
-    Param const* st = params.find("st");
-    Param const* s = params.find("s");
-    Param const* t = params.find("t");
+    Param const* st = params.take("st");
+    Param const* s = params.take("s");
+    Param const* t = params.take("t");
     CornerReader normalVar(normals, 3), stVar(st, 2), sVar(s, 1), tVar(t, 1);
     // Primvars that vary over the mesh (one value per shape is the shape's constant primvar).
     struct Varying {
