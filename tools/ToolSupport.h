@@ -26,7 +26,8 @@ inline ProbePoint viewPoint(float thetaDegrees, float phiDegrees) {
     return point;
 }
 
-/// Writes an image, converting linear floats to 8-bit sRGB for .png; throws on failure.
+/// Writes a diagram (a plot or a colour map, already in display colours) as
+/// 8 bits per channel, with no colour conversion; throws on failure.
 void writeDisplayImage(OIIO::ImageBuf const& image, std::string const& path);
 
 /// A heat map of `values` (row-major, height x width) with colours scaled to [0, maxValue], each cell

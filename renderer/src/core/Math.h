@@ -62,13 +62,4 @@ inline Vec2 concentricDisk(Vec2 const& xi) {
     return r * Vec2(std::cos(theta), std::sin(theta));
 }
 
-/// Power heuristic with beta = 2 (Veach 1997): weight of strategy f against g,
-/// given sample counts times pdfs.
-inline float powerHeuristic(float nf, float pdfF, float ng, float pdfG) {
-    float f = nf * pdfF, g = ng * pdfG;
-    if (std::isinf(f * f)) return 1.0f;
-    float denom = f * f + g * g;
-    return denom > 0.0f ? (f * f) / denom : 0.0f;
-}
-
 }  // namespace bxdflab
