@@ -18,6 +18,12 @@ set(RIX_SCENE_SOURCES
   scene/requests/InstanceRequests.cpp
   scene/requests/FreeformRequests.cpp
   scene/shapes/Quadric.cpp
+  scene/shapes/Sphere.cpp
+  scene/shapes/Cylinder.cpp
+  scene/shapes/Disk.cpp
+  scene/shapes/Cone.cpp
+  scene/shapes/Paraboloid.cpp
+  scene/shapes/Hyperboloid.cpp
   scene/shapes/TriangleMesh.cpp
   scene/shapes/MeshBuilders.cpp
   scene/shapes/Triangulation.cpp

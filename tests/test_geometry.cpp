@@ -5,7 +5,7 @@
 
 #include "accel/RayTracer.h"
 #include "scene/shapes/MeshBuilders.h"
-#include "scene/shapes/Quadric.h"
+#include "scene/shapes/Quadrics.h"
 #include "support/RenderHelpers.h"
 
 using namespace bxdflab;

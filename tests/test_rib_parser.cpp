@@ -5,7 +5,7 @@
 #include "parse/RibLexer.h"
 #include "parse/RibParser.h"
 #include "scene/SceneBuilder.h"
-#include "scene/shapes/Quadric.h"
+#include "scene/shapes/Quadrics.h"
 #include "support/RenderHelpers.h"
 
 using namespace bxdflab;

@@ -7,7 +7,7 @@
 
 #include "accel/RayTracer.h"
 #include "scene/SceneBuilder.h"
-#include "scene/shapes/Quadric.h"
+#include "scene/shapes/Quadrics.h"
 #include "scene/shapes/TriangleMesh.h"
 #include "support/RenderHelpers.h"
 

@@ -6,7 +6,7 @@
 
 #include "scene/SceneBuilder.h"
 #include "scene/shapes/MeshBuilders.h"
-#include "scene/shapes/Quadric.h"
+#include "scene/shapes/Quadrics.h"
 
 namespace bxdflab {
 namespace {

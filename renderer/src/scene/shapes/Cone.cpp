@@ -1,0 +1,55 @@
+#include "scene/shapes/Cone.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "scene/shapes/QuadricMath.h"
+
+namespace bxdflab {
+
+using quadric::solveQuadratic;
+using quadric::sweepRadians;
+
+
+Cone::Cone(float height, float radius, float thetaMaxDegrees, Mat4 const& toWorld, bool reverse)
+    : Quadric(toWorld, reverse), m_height(height), m_radius(radius), m_phiMax(sweepRadians(thetaMaxDegrees)) {}
+
+std::optional<Quadric::LocalHit> Cone::intersectLocal(DVec3 const& o, DVec3 const& d, double tnear, double tfar) const {
+    // x^2 + y^2 = (r (1 - z/h))^2
+    double k = (m_radius / m_height) * (m_radius / m_height);
+    double a = d.x * d.x + d.y * d.y - k * d.z * d.z;
+    double b = 2.0 * (o.x * d.x + o.y * d.y - k * d.z * (o.z - m_height));
+    double c = o.x * o.x + o.y * o.y - k * (o.z - m_height) * (o.z - m_height);
+    double t0, t1;
+    if (!solveQuadratic(a, b, c, t0, t1)) return std::nullopt;
+    for (double t : {t0, t1}) {
+        if (t <= tnear || t >= tfar) continue;
+        DVec3 p = o + t * d;
+        double v = p.z / m_height;
+        double phi = azimuth(p.x, p.y);
+        if (v < 0.0 || v > 1.0 || phi > m_phiMax) continue;
+        return LocalHit{t, static_cast<float>(phi / m_phiMax), static_cast<float>(v)};
+    }
+    return std::nullopt;
+}
+
+Quadric::LocalSurface Cone::surfaceLocal(float u, float v) const {
+    double phi = u * m_phiMax, cosPhi = std::cos(phi), sinPhi = std::sin(phi);
+    double rho = m_radius * (1.0 - v);
+    DVec3 p(rho * cosPhi, rho * sinPhi, v * m_height);
+    LocalSurface s;
+    s.P = Vec3(p);
+    s.dPdu = Vec3(-m_phiMax * p.y, m_phiMax * p.x, 0.0);
+    s.dPdv = Vec3(DVec3(-m_radius * cosPhi, -m_radius * sinPhi, m_height));
+    // The outward normal does not depend on v (so it is defined at the apex too).
+    s.N = safeNormalize(Vec3(DVec3(m_height * cosPhi, m_height * sinPhi, m_radius)));
+    return s;
+}
+
+void Cone::boundsLocal(Vec3& lower, Vec3& upper) const {
+    float r = static_cast<float>(m_radius), h = static_cast<float>(m_height);
+    lower = Vec3(-r, -r, std::min(0.0f, h));
+    upper = Vec3(r, r, std::max(0.0f, h));
+}
+
+}  // namespace bxdflab

@@ -1,0 +1,49 @@
+#include "scene/shapes/Disk.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "scene/shapes/QuadricMath.h"
+
+namespace bxdflab {
+
+using quadric::sweepRadians;
+
+
+Disk::Disk(float height, float radius, float thetaMaxDegrees, Mat4 const& toWorld, bool reverse)
+    : Quadric(toWorld, reverse), m_height(height), m_radius(radius), m_phiMax(sweepRadians(thetaMaxDegrees)) {}
+
+std::optional<Quadric::LocalHit> Disk::intersectLocal(DVec3 const& o, DVec3 const& d, double tnear,
+                                                      double tfar) const {
+    if (d.z == 0.0) return std::nullopt;
+    double t = (m_height - o.z) / d.z;
+    if (t <= tnear || t >= tfar) return std::nullopt;
+    DVec3 p = o + t * d;
+    double distSq = p.x * p.x + p.y * p.y;
+    if (distSq > m_radius * m_radius) return std::nullopt;
+    double phi = azimuth(p.x, p.y);
+    if (phi > m_phiMax) return std::nullopt;
+    double v = 1.0 - std::sqrt(distSq) / m_radius;
+    return LocalHit{t, static_cast<float>(phi / m_phiMax), static_cast<float>(v)};
+}
+
+Quadric::LocalSurface Disk::surfaceLocal(float u, float v) const {
+    double phi = u * m_phiMax;
+    double cosPhi = std::cos(phi), sinPhi = std::sin(phi);
+    double rho = m_radius * (1.0 - v);
+    DVec3 p(rho * cosPhi, rho * sinPhi, m_height);
+    LocalSurface s;
+    s.P = Vec3(p);
+    s.N = Vec3(0.0f, 0.0f, 1.0f);
+    s.dPdu = Vec3(-m_phiMax * p.y, m_phiMax * p.x, 0.0);
+    s.dPdv = Vec3(-m_radius * cosPhi, -m_radius * sinPhi, 0.0);
+    return s;
+}
+
+void Disk::boundsLocal(Vec3& lower, Vec3& upper) const {
+    float r = static_cast<float>(m_radius), h = static_cast<float>(m_height);
+    lower = Vec3(-r, -r, h);
+    upper = Vec3(r, r, h);
+}
+
+}  // namespace bxdflab

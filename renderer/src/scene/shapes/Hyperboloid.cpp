@@ -1,0 +1,66 @@
+#include "scene/shapes/Hyperboloid.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "scene/shapes/QuadricMath.h"
+
+namespace bxdflab {
+
+using quadric::kTwoPi;
+using quadric::solveQuadratic;
+using quadric::sweepRadians;
+
+
+Hyperboloid::Hyperboloid(Vec3 const& p1, Vec3 const& p2, float thetaMaxDegrees, Mat4 const& toWorld, bool reverse)
+    : Quadric(toWorld, reverse), m_p1(p1), m_p2(p2), m_phiMax(sweepRadians(thetaMaxDegrees)) {}
+
+std::optional<Quadric::LocalHit> Hyperboloid::intersectLocal(DVec3 const& o, DVec3 const& d, double tnear,
+                                                             double tfar) const {
+    // A point at height z lies on the line at v = (z - p1.z) / (p2.z - p1.z), whose
+    // squared distance from the axis is r2(v) = A v^2 + B v + C. The ray meets the
+    // surface where x(t)^2 + y(t)^2 = r2(v(t)): a quadratic in t.
+    DVec3 e = m_p2 - m_p1;
+    double A = e.x * e.x + e.y * e.y, B = 2.0 * (m_p1.x * e.x + m_p1.y * e.y), C = m_p1.x * m_p1.x + m_p1.y * m_p1.y;
+    double v0 = (o.z - m_p1.z) / e.z, vd = d.z / e.z;
+    double a = d.x * d.x + d.y * d.y - A * vd * vd;
+    double b = 2.0 * (o.x * d.x + o.y * d.y) - 2.0 * A * v0 * vd - B * vd;
+    double c = o.x * o.x + o.y * o.y - A * v0 * v0 - B * v0 - C;
+    double t0, t1;
+    if (!solveQuadratic(a, b, c, t0, t1)) return std::nullopt;
+    for (double t : {t0, t1}) {
+        if (t <= tnear || t >= tfar) continue;
+        DVec3 p = o + t * d;
+        double v = v0 + t * vd;
+        if (v < 0.0 || v > 1.0) continue;
+        DVec3 line = m_p1 + v * e;
+        double phi = azimuth(p.x, p.y) - azimuth(line.x, line.y);
+        if (phi < 0.0) phi += kTwoPi;
+        if (phi > m_phiMax) continue;
+        return LocalHit{t, static_cast<float>(phi / m_phiMax), static_cast<float>(v)};
+    }
+    return std::nullopt;
+}
+
+Quadric::LocalSurface Hyperboloid::surfaceLocal(float u, float v) const {
+    double phi = u * m_phiMax, cosPhi = std::cos(phi), sinPhi = std::sin(phi);
+    DVec3 line = m_p1 + static_cast<double>(v) * (m_p2 - m_p1);
+    DVec3 e = m_p2 - m_p1;
+    DVec3 p(line.x * cosPhi - line.y * sinPhi, line.x * sinPhi + line.y * cosPhi, line.z);
+    LocalSurface s;
+    s.P = Vec3(p);
+    s.dPdu = Vec3(-m_phiMax * p.y, m_phiMax * p.x, 0.0);
+    s.dPdv = Vec3(DVec3(e.x * cosPhi - e.y * sinPhi, e.x * sinPhi + e.y * cosPhi, e.z));
+    Vec3 n = glm::cross(s.dPdu, s.dPdv);
+    if (glm::length(n) < 1e-12f) n = Vec3(float(cosPhi), float(sinPhi), 0.0f);  // on the axis
+    s.N = safeNormalize(n);
+    return s;
+}
+
+void Hyperboloid::boundsLocal(Vec3& lower, Vec3& upper) const {
+    float r = static_cast<float>(std::max(glm::length(glm::dvec2(m_p1)), glm::length(glm::dvec2(m_p2))));
+    lower = Vec3(-r, -r, static_cast<float>(std::min(m_p1.z, m_p2.z)));
+    upper = Vec3(r, r, static_cast<float>(std::max(m_p1.z, m_p2.z)));
+}
+
+}  // namespace bxdflab

@@ -1,0 +1,63 @@
+#include "scene/shapes/Sphere.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "scene/shapes/QuadricMath.h"
+
+namespace bxdflab {
+
+using quadric::solveQuadratic;
+using quadric::sweepRadians;
+
+
+Sphere::Sphere(float radius, float zmin, float zmax, float thetaMaxDegrees, Mat4 const& toWorld, bool reverse)
+    : Quadric(toWorld, reverse), m_radius(radius), m_phiMax(sweepRadians(thetaMaxDegrees)) {
+    m_zMin = std::clamp(static_cast<double>(std::min(zmin, zmax)), -m_radius, m_radius);
+    m_zMax = std::clamp(static_cast<double>(std::max(zmin, zmax)), -m_radius, m_radius);
+    m_thetaZMin = std::acos(m_zMin / m_radius);
+    m_thetaZMax = std::acos(m_zMax / m_radius);
+}
+
+std::optional<Quadric::LocalHit> Sphere::intersectLocal(DVec3 const& o, DVec3 const& d, double tnear,
+                                                        double tfar) const {
+    double t0, t1;
+    if (!solveQuadratic(glm::dot(d, d), 2.0 * glm::dot(o, d), glm::dot(o, o) - m_radius * m_radius, t0, t1))
+        return std::nullopt;
+    for (double t : {t0, t1}) {
+        if (t <= tnear || t >= tfar) continue;
+        DVec3 p = o + t * d;
+        p *= m_radius / glm::length(p);  // reproject onto the surface
+        if (p.x == 0.0 && p.y == 0.0) p.x = 1e-9 * m_radius;
+        double phi = azimuth(p.x, p.y);
+        if ((m_zMin > -m_radius && p.z < m_zMin) || (m_zMax < m_radius && p.z > m_zMax) || phi > m_phiMax)
+            continue;
+        double theta = std::acos(std::clamp(p.z / m_radius, -1.0, 1.0));
+        double v = (theta - m_thetaZMin) / (m_thetaZMax - m_thetaZMin);
+        return LocalHit{t, static_cast<float>(phi / m_phiMax), static_cast<float>(std::clamp(v, 0.0, 1.0))};
+    }
+    return std::nullopt;
+}
+
+Quadric::LocalSurface Sphere::surfaceLocal(float u, float v) const {
+    double phi = u * m_phiMax;
+    double deltaTheta = m_thetaZMax - m_thetaZMin;
+    double theta = m_thetaZMin + v * deltaTheta;
+    double sinTheta = std::sin(theta), cosTheta = std::cos(theta);
+    double cosPhi = std::cos(phi), sinPhi = std::sin(phi);
+    DVec3 p(m_radius * sinTheta * cosPhi, m_radius * sinTheta * sinPhi, m_radius * cosTheta);
+    LocalSurface s;
+    s.P = Vec3(p);
+    s.N = Vec3(p / m_radius);
+    s.dPdu = Vec3(-m_phiMax * p.y, m_phiMax * p.x, 0.0);
+    s.dPdv = Vec3(deltaTheta * DVec3(p.z * cosPhi, p.z * sinPhi, -m_radius * sinTheta));
+    return s;
+}
+
+void Sphere::boundsLocal(Vec3& lower, Vec3& upper) const {
+    float r = static_cast<float>(m_radius);
+    lower = Vec3(-r, -r, static_cast<float>(m_zMin));
+    upper = Vec3(r, r, static_cast<float>(m_zMax));
+}
+
+}  // namespace bxdflab
