@@ -8,23 +8,15 @@
 #include <iterator>
 
 #include "checks/Check.h"
+#include "checks/CheckSupport.h"
 #include "measure/ProbeMeasurer.h"
 #include "probe/BxdfProbe.h"
 
 using namespace bxdflab;
+using checks::direction;
+using checks::viewFrom;
 
 namespace {
-
-Vec3 direction(float thetaDegrees, float phiDegrees) {
-    float t = glm::radians(thetaDegrees), p = glm::radians(phiDegrees);
-    return Vec3(std::sin(t) * std::cos(p), std::sin(t) * std::sin(p), std::cos(t));
-}
-
-ProbePoint viewFrom(float thetaDegrees, float phiDegrees = 0.0f) {
-    ProbePoint point;
-    point.V = direction(thetaDegrees, phiDegrees);
-    return point;
-}
 
 std::unique_ptr<BxdfProbe> probe(std::string const& plugin, std::string const& params) {
     static Diagnostics diagnostics(false);

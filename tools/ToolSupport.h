@@ -8,23 +8,14 @@
 #include <vector>
 
 #include "core/Math.h"
+#include "checks/CheckSupport.h"
 #include "probe/BxdfProbe.h"
 #include "shade/PluginSearchPath.h"
 
 namespace bxdflab::tools {
 
-/// The unit direction at polar angle theta and azimuth phi (degrees) about +z.
-inline Vec3 direction(float thetaDegrees, float phiDegrees) {
-    float t = glm::radians(thetaDegrees), p = glm::radians(phiDegrees);
-    return Vec3(std::sin(t) * std::cos(p), std::sin(t) * std::sin(p), std::cos(t));
-}
-
-/// A shade point with N = +z, dPdu = +x and the viewer at (theta, phi).
-inline ProbePoint viewPoint(float thetaDegrees, float phiDegrees) {
-    ProbePoint point;
-    point.V = direction(thetaDegrees, phiDegrees);
-    return point;
-}
+using bxdflab::checks::direction;  // labkit's: the unit direction at (theta, phi) degrees about +z
+using bxdflab::checks::viewFrom;   // labkit's: the default shade point seen from (theta, phi)
 
 /// Writes a diagram (a plot or a colour map, already in display colours) as
 /// 8 bits per channel, with no colour conversion; throws on failure.

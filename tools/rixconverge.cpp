@@ -29,6 +29,7 @@
 
 #include "film/OiioImageFiles.h"
 #include "CommandLine.h"
+#include "image/RenderComparison.h"
 #include "render/Film.h"
 #include "render/Renderer.h"
 #include "scene/SceneBuilder.h"
@@ -46,20 +47,25 @@ struct Errors {
     double relMse = 0, rmse = 0, bias = 0;
 };
 
-Errors compare(std::vector<float> const& image, std::vector<float> const& reference) {
+std::vector<float> colourOnly(std::vector<float> const& rgba) {
+    std::vector<float> rgb;
+    rgb.reserve(rgba.size() / 4 * 3);
+    for (size_t i = 0; i < rgba.size(); ++i)
+        if (i % 4 != 3) rgb.push_back(rgba[i]);
+    return rgb;
+}
+
+Errors compare(std::vector<float> const& imageRgba, std::vector<float> const& referenceRgba) {
+    std::vector<float> image = colourOnly(imageRgba), reference = colourOnly(referenceRgba);
     Errors e;
-    size_t n = 0;
+    e.relMse = relativeMse(image, reference);  // the grader's metric (labkit)
     for (size_t i = 0; i < image.size(); ++i) {
-        if (i % 4 == 3) continue;  // colour only
         double d = static_cast<double>(image[i]) - reference[i];
-        e.relMse += d * d / (static_cast<double>(reference[i]) * reference[i] + 0.01);
         e.rmse += d * d;
         e.bias += d;
-        ++n;
     }
-    e.relMse /= static_cast<double>(n);
-    e.rmse = std::sqrt(e.rmse / static_cast<double>(n));
-    e.bias /= static_cast<double>(n);
+    e.rmse = std::sqrt(e.rmse / static_cast<double>(image.size()));
+    e.bias /= static_cast<double>(image.size());
     return e;
 }
 

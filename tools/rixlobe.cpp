@@ -36,7 +36,7 @@ std::vector<float> lobe(BxdfProbe& probe, ProbePoint const& point, std::vector<V
 
 void drawPolar(BxdfProbe& probe, float theta, float phi, std::string const& path) {
     const int width = 640, height = 360, cx = width / 2, cy = height - 20;
-    ProbePoint point = tools::viewPoint(theta, phi);
+    ProbePoint point = tools::viewFrom(theta, phi);
     // Angles in the plane of incidence, from -90 (the viewer's side) to +90 degrees.
     std::vector<Vec3> L;
     std::vector<float> angles;
@@ -78,7 +78,7 @@ void drawSphere(BxdfProbe& probe, float theta, float phi, std::string const& pat
     for (int i = 0; i <= thetaSteps; ++i)
         for (int j = 0; j <= phiSteps; ++j)
             L.push_back(tools::direction(90.0f * static_cast<float>(i) / thetaSteps, 360.0f * static_cast<float>(j) / phiSteps));
-    std::vector<float> r = lobe(probe, tools::viewPoint(theta, phi), L);
+    std::vector<float> r = lobe(probe, tools::viewFrom(theta, phi), L);
     float top = std::max(1e-12f, *std::max_element(r.begin(), r.end()));
 
     std::ostringstream rib;

@@ -39,7 +39,7 @@ int main(int argc, char** argv) {
     try {
         Diagnostics diagnostics;
         BxdfProbe probe(plugin, params, splitSearchPath(pluginPath), diagnostics);
-        ProbePoint point = tools::viewPoint(theta, phi);
+        ProbePoint point = tools::viewFrom(theta, phi);
         DirectionCells cells;
         cells.cosCells = 32;
         cells.phiCells = 64;

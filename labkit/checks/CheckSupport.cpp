@@ -34,6 +34,12 @@ Vec3 direction(double thetaDegrees, double phiDegrees) {
                 static_cast<float>(std::cos(t)));
 }
 
+ProbePoint viewFrom(double thetaDegrees, double phiDegrees) {
+    ProbePoint point;
+    point.V = direction(thetaDegrees, phiDegrees);
+    return point;
+}
+
 std::string number(double v) {
     char text[32];
     std::snprintf(text, sizeof text, "%.4g", v);

@@ -30,6 +30,8 @@ Frame const& frame();
 
 /// The local unit direction at polar angle theta and azimuth phi (degrees).
 Vec3 direction(double thetaDegrees, double phiDegrees);
+/// A shade point in the probe's default frame (N = +z, dPdu = +x) seen from (theta, phi).
+ProbePoint viewFrom(double thetaDegrees, double phiDegrees = 0.0);
 /// "theta 35 deg, phi 200 deg" for a local direction.
 std::string describeDirection(Vec3 const& local);
 std::string describe(RtColorRGB const& c);
