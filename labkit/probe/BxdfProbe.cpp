@@ -25,7 +25,7 @@ public:
         auto* Vn = arena.allocArray<RtVector3>(n);
         auto* dPdu = arena.allocArray<RtVector3>(n);
         auto* dPdv = arena.allocArray<RtVector3>(n);
-        float* scalars[7];
+        float* scalars[8];
         for (auto& s : scalars) s = arena.allocArray<float>(n);
         for (size_t i = 0; i < n; ++i) {
             ProbePoint const& p = points[i];
@@ -36,11 +36,12 @@ public:
             dPdu[i] = toRt(p.dPdu);
             dPdv[i] = toRt(glm::cross(p.N, p.dPdu));
             Tn[i] = toRt(safeNormalize(p.dPdu - p.N * glm::dot(p.N, p.dPdu)));
-            float values[7] = {1.0f, 0.5f, 0.5f, 0.0f, 0.0f, 0.5f, 0.5f};  // VLen u v du dv s t
-            for (int k = 0; k < 7; ++k) scalars[k][i] = values[k];
+            float values[8] = {1.0f, 0.5f, 0.5f, 0.0f, 0.0f, 0.5f, 0.5f, 0.0f};  // VLen u v du dv s t biasR
+            for (int k = 0; k < 8; ++k) scalars[k][i] = values[k];
         }
         void* table[k_numBuiltins] = {P, Nn, Ngn, Tn, Vn, scalars[0], scalars[1], scalars[2],
-                                      scalars[3], scalars[4], dPdu, dPdv, scalars[5], scalars[6]};
+                                      scalars[3], scalars[4], dPdu, dPdv, scalars[5], scalars[6], scalars[7]};
+        static_assert(std::size(table) == k_numBuiltins, "one entry per builtin");
         std::copy(std::begin(table), std::end(table), m_builtins);
     }
     RixInterface* GetRixInterface(RixInterfaceId id) const override {
@@ -57,14 +58,14 @@ protected:
     int Builtin(BuiltinId id, RixSCType wanted, void const** result) const override {
         *result = nullptr;
         if (id < 0 || id >= k_numBuiltins) return 1;
-        bool scalar = id == k_VLen || id == k_u || id == k_v || id == k_du || id == k_dv || id == k_s || id == k_t;
-        if (scalar != (wanted == k_RixSCFloat)) return 1;
+        if (isFloatBuiltin(id) != (wanted == k_RixSCFloat)) return 1;
         *result = m_builtins[id];
         return 0;
     }
     RixSCDetail Param(int id, int arrayIndex, RixSCType wanted, size_t elementSize, void const** result,
                       void const* dflt, bool promote) const override {
-        return evalInstanceParam(m_material, id, arrayIndex, wanted, elementSize, result, dflt, promote, numPts, m_arena);
+        return evalUniformParam(m_material.params(), {id, arrayIndex, wanted, elementSize, dflt, promote}, result,
+                                numPts, m_arena);
     }
     void* Allocate(size_t bytes, size_t alignment) const override { return m_arena.allocate(bytes, alignment); }
 

@@ -8,6 +8,18 @@
 namespace bxdflab {
 namespace {
 
+bool isTriple(RixSCType type) {
+    return type == k_RixSCPoint || type == k_RixSCVector || type == k_RixSCNormal || type == k_RixSCColor;
+}
+
+void const* replicate(void const* value, size_t elementSize, int count, MemoryArena& arena) {
+    auto* out = static_cast<std::byte*>(arena.allocate(elementSize * static_cast<size_t>(count), 16));
+    for (int i = 0; i < count; ++i) std::memcpy(out + elementSize * static_cast<size_t>(i), value, elementSize);
+    return out;
+}
+
+}  // namespace
+
 bool isFloatBuiltin(RixShadingContext::BuiltinId id) {
     switch (id) {
         case RixShadingContext::k_VLen:
@@ -22,20 +34,13 @@ bool isFloatBuiltin(RixShadingContext::BuiltinId id) {
     }
 }
 
-bool isTriple(RixSCType type) {
-    return type == k_RixSCPoint || type == k_RixSCVector || type == k_RixSCNormal || type == k_RixSCColor;
-}
-
-void const* replicate(void const* value, size_t elementSize, int count, MemoryArena& arena) {
-    auto* out = static_cast<std::byte*>(arena.allocate(elementSize * static_cast<size_t>(count), 16));
-    for (int i = 0; i < count; ++i) std::memcpy(out + elementSize * static_cast<size_t>(i), value, elementSize);
-    return out;
-}
-
-}  // namespace
-
-RixSCDetail evalUniformParam(NodeParams const& node, int id, int arrayIndex, RixSCType wanted, size_t elementSize,
-                             void const** result, void const* dflt, bool promote, int numPts, MemoryArena& arena) {
+RixSCDetail evalUniformParam(NodeParams const& node, ParamQuery const& query, void const** result, int numPts,
+                             MemoryArena& arena) {
+    int const id = query.id, arrayIndex = query.arrayIndex;
+    RixSCType const wanted = query.wanted;
+    size_t const elementSize = query.elementSize;
+    void const* const dflt = query.dflt;
+    bool const promote = query.promote;
     auto fallback = [&](RixSCDetail detail) {
         *result = promote && dflt ? replicate(dflt, elementSize, numPts, arena) : dflt;
         return detail;
@@ -203,7 +208,7 @@ RixSCDetail ShadingContextImpl::evalParam(NodeParams const& node, int id, int ar
     if (!link && !m_scene.primvarNames.empty() &&
         primvarOverride(node, id, wanted, elementSize, result, dflt) == k_RixSCVarying)
         return k_RixSCVarying;
-    return evalUniformParam(node, id, arrayIndex, wanted, elementSize, result, dflt, promote, numPts, m_arena);
+    return evalUniformParam(node, {id, arrayIndex, wanted, elementSize, dflt, promote}, result, numPts, m_arena);
 }
 
 RixSCDetail ShadingContextImpl::primvarOverride(NodeParams const& node, int id, RixSCType wanted, size_t elementSize,
@@ -213,7 +218,7 @@ RixSCDetail ShadingContextImpl::primvarOverride(NodeParams const& node, int id, 
     if (!numeric || !*name || !m_scene.primvarNames.count(name)) return k_RixSCInvalidDetail;
     int const components = static_cast<int>(elementSize / sizeof(float));
     void const* own = nullptr;
-    evalUniformParam(node, id, -1, wanted, elementSize, &own, dflt, false, numPts, m_arena);
+    evalUniformParam(node, {id, -1, wanted, elementSize, dflt, false}, &own, numPts, m_arena);
     float* values = m_arena.allocArray<float>(static_cast<size_t>(numPts * components));
     bool found = false;
     for (int i = 0; i < numPts; ++i) {

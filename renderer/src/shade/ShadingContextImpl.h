@@ -22,17 +22,24 @@
 
 namespace bxdflab {
 
+/// What an EvalParam call asks for (the arguments of RixShadingContext::Param).
+struct ParamQuery {
+    int id;
+    int arrayIndex;
+    RixSCType wanted;
+    size_t elementSize;
+    void const* dflt;
+    bool promote;
+};
+
 /// EvalParam for a node's own (RIB or default) value of a parameter over a
 /// batch of numPts points, ignoring connections (shared by every
-/// RixShadingContext the renderer builds).
-RixSCDetail evalUniformParam(NodeParams const& node, int id, int arrayIndex, RixSCType wanted, size_t elementSize,
-                             void const** result, void const* dflt, bool promote, int numPts, MemoryArena& arena);
-inline RixSCDetail evalInstanceParam(BxdfInstance const& material, int id, int arrayIndex, RixSCType wanted,
-                                     size_t elementSize, void const** result, void const* dflt, bool promote,
-                                     int numPts, MemoryArena& arena) {
-    return evalUniformParam(material.params(), id, arrayIndex, wanted, elementSize, result, dflt, promote, numPts,
-                            arena);
-}
+/// RixShadingContext the renderer builds, the probe's included).
+RixSCDetail evalUniformParam(NodeParams const& node, ParamQuery const& query, void const** result, int numPts,
+                             MemoryArena& arena);
+
+/// Whether a builtin is one float per point (the others are three).
+bool isFloatBuiltin(RixShadingContext::BuiltinId id);
 
 struct BuiltinCounters {
     std::atomic<uint64_t> surfacePoints{0};  ///< points whose surface group was computed
