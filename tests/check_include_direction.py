@@ -6,7 +6,8 @@
 renderer/src/ is folded by stage: core (shared basics), then
 parse -> scene -> accel -> shade -> integrate -> render, then film (image
 files in and out) and app (the command line). A file may include its own
-folder and the folders before it, never one after it. Stock plugins see only
+folder and the folders before it, never one after it; only accel/ includes
+Embree. Stock plugins see only
 the public API (renderer/include/rix) and their own headers; the renderer
 never includes the course's tools (labkit, autograder). Prints every edge
 against the flow and exits 1 if there is one.
@@ -17,7 +18,7 @@ import sys
 
 ORDER = ["core", "parse", "scene", "accel", "shade", "integrate", "render", "film", "app"]
 COURSE_FOLDERS = ["checks", "probe", "measure", "stats", "exercise", "image"]  # labkit's
-INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"', re.M)
+INCLUDE = re.compile(r'^\s*#\s*include\s+[<"]([^">]+)[">]', re.M)
 
 
 def includes(path):
@@ -48,7 +49,9 @@ def main():
             for line, target in includes(path):
                 top = target.split("/")[0] if "/" in target else None
                 where = f"{os.path.relpath(path, root)}:{line}"
-                if top in COURSE_FOLDERS:
+                if target.startswith("embree") and stage != "accel":
+                    problems.append(f"{where}: {stage}/ includes Embree ({target}); only accel/ may")
+                elif top in COURSE_FOLDERS:
                     problems.append(f"{where}: the renderer includes the course's {target}")
                 elif top in ORDER and ORDER.index(top) > ORDER.index(stage):
                     problems.append(f"{where}: {stage}/ includes {target}, a later stage")

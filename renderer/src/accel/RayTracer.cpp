@@ -3,9 +3,13 @@
 #include <cmath>
 #include <string>
 
+#include "accel/EmbreeGeometry.h"
 #include "core/Error.h"
 
 namespace bxdflab {
+
+static_assert(HitRecord::kNoGeometry == RTC_INVALID_GEOMETRY_ID, "a miss is a miss on both sides");
+
 namespace {
 
 void reportEmbreeError(void* userPtr, RTCError code, const char* message) {
@@ -59,7 +63,7 @@ RayTracer::RayTracer(Scene const& scene) {
 
     for (size_t id = 0; id < scene.shapes.size(); ++id) {
         Shape const& shape = *scene.shapes[id];
-        RTCGeometry geometry = shape.build(m_device);
+        RTCGeometry geometry = buildEmbreeGeometry(m_device, shape);
         check(m_device, "build a geometry");
         unsigned geomID = static_cast<unsigned>(id);
         if (allVisible) {

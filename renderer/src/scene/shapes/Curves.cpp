@@ -1,7 +1,6 @@
 #include "scene/shapes/Curves.h"
 
 #include <cmath>
-#include <cstring>
 
 namespace bxdflab {
 namespace {
@@ -14,32 +13,7 @@ void pointOnRay(HitRecord const& hit, SurfaceBasics& out) {
     out.Ng = out.N = n == Vec3(0.0f) ? -hit.dir : n;
 }
 
-RTCGeometry pointGeometry(RTCDevice device, RTCGeometryType type, std::vector<Vec4> const& points) {
-    RTCGeometry geometry = rtcNewGeometry(device, type);
-    void* buffer = rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT4, sizeof(Vec4),
-                                           points.size());
-    std::memcpy(buffer, points.data(), points.size() * sizeof(Vec4));
-    return geometry;
-}
-
 }  // namespace
-
-Curves::~Curves() {
-    if (m_geometry) rtcReleaseGeometry(m_geometry);
-}
-
-RTCGeometry Curves::build(RTCDevice device) const {
-    RTCGeometry geometry = pointGeometry(
-        device, m_data.cubic ? RTC_GEOMETRY_TYPE_ROUND_BEZIER_CURVE : RTC_GEOMETRY_TYPE_ROUND_LINEAR_CURVE, m_data.points);
-    void* index = rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT, sizeof(unsigned),
-                                          m_data.segments.size());
-    std::memcpy(index, m_data.segments.data(), m_data.segments.size() * sizeof(unsigned));
-    rtcCommitGeometry(geometry);
-    rtcRetainGeometry(geometry);
-    if (m_geometry) rtcReleaseGeometry(m_geometry);
-    m_geometry = geometry;
-    return geometry;
-}
 
 SurfaceBasics Curves::basics(HitRecord const& hit) const {
     SurfaceBasics out;
@@ -47,7 +21,7 @@ SurfaceBasics Curves::basics(HitRecord const& hit) const {
     // Embree's curve intersection is approximate near the surface: keep new
     // rays a small fraction of the radius away, or they can hit the same tube.
     float P[4];
-    rtcInterpolate1(m_geometry, hit.primID, hit.u, hit.v, RTC_BUFFER_TYPE_VERTEX, 0, P, nullptr, nullptr, 4);
+    m_evaluator->evaluate(hit.primID, hit.u, hit.v, P, nullptr, nullptr, 4);
     out.pError = glm::max(out.pError, Vec3(0.02f * std::abs(P[3])));
     out.u = out.s = hit.u;  // along the segment
     out.v = out.t = hit.v;
@@ -56,16 +30,10 @@ SurfaceBasics Curves::basics(HitRecord const& hit) const {
 
 SurfaceTangents Curves::tangents(HitRecord const& hit) const {
     float P[4], dPdu[4];
-    rtcInterpolate1(m_geometry, hit.primID, hit.u, hit.v, RTC_BUFFER_TYPE_VERTEX, 0, P, dPdu, nullptr, 4);
+    m_evaluator->evaluate(hit.primID, hit.u, hit.v, P, dPdu, nullptr, 4);
     Vec3 along(dPdu[0], dPdu[1], dPdu[2]);
     Vec3 N = safeNormalize(hit.Ng);
     return {along, glm::cross(N, along)};
-}
-
-RTCGeometry Points::build(RTCDevice device) const {
-    RTCGeometry geometry = pointGeometry(device, RTC_GEOMETRY_TYPE_SPHERE_POINT, m_spheres);
-    rtcCommitGeometry(geometry);
-    return geometry;
 }
 
 SurfaceBasics Points::basics(HitRecord const& hit) const {

@@ -20,19 +20,18 @@ struct CurveData {
 class Curves final : public Shape {
 public:
     explicit Curves(CurveData data) : m_data(std::move(data)) {}
-    ~Curves() override;
-    Curves(Curves const&) = delete;
-    Curves& operator=(Curves const&) = delete;
 
     const char* kind() const override { return "Curves"; }
-    RTCGeometry build(RTCDevice device) const override;
+    void accept(ShapeVisitor& visitor) const override { visitor.visit(*this); }
     SurfaceBasics basics(HitRecord const& hit) const override;
     SurfaceTangents tangents(HitRecord const& hit) const override;
     CurveData const& data() const { return m_data; }
+    /// The tubes' centre lines and radii as the ray tracer built them.
+    void attach(std::shared_ptr<SurfaceEvaluator const> evaluator) const { m_evaluator = std::move(evaluator); }
 
 private:
     CurveData m_data;
-    mutable RTCGeometry m_geometry = nullptr;
+    mutable std::shared_ptr<SurfaceEvaluator const> m_evaluator;
 };
 
 /// Points (particles): spheres of a radius each, intersected by Embree's point geometry.
@@ -40,7 +39,7 @@ class Points final : public Shape {
 public:
     explicit Points(std::vector<Vec4> spheres) : m_spheres(std::move(spheres)) {}
     const char* kind() const override { return "Points"; }
-    RTCGeometry build(RTCDevice device) const override;
+    void accept(ShapeVisitor& visitor) const override { visitor.visit(*this); }
     SurfaceBasics basics(HitRecord const& hit) const override;
     SurfaceTangents tangents(HitRecord const& hit) const override;
     std::vector<Vec4> const& spheres() const { return m_spheres; }

@@ -15,7 +15,7 @@ class Quadric : public Shape {
 public:
     Quadric(Mat4 const& objectToWorld, bool reverseOrientation);
 
-    RTCGeometry build(RTCDevice device) const override;
+    void accept(ShapeVisitor& visitor) const override { visitor.visit(*this); }
     SurfaceBasics basics(HitRecord const& hit) const override;
     SurfaceTangents tangents(HitRecord const& hit) const override;
 

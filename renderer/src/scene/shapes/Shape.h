@@ -1,15 +1,15 @@
 // A surface the renderer can intersect and shade.
 //
-// Each shape builds its own Embree geometry and, given a hit, computes the
-// differential geometry the shading context hands to plugins. The work is
+// A shape holds its geometry (accel/ turns it into Embree's) and, given a
+// hit, computes the differential geometry the shading context hands to
+// plugins. The work is
 // split in two so that the expensive part (tangents) is only done when a
 // plugin asks for it:
 //   basics()    P, geometric and shading normals, u, v, s, t, error bound of P
 //   tangents()  dPdu, dPdv
 #pragma once
 
-#include <embree3/rtcore.h>
-
+#include <memory>
 #include <string>
 
 #include "core/Error.h"
@@ -26,19 +26,20 @@ struct Visibility {
     bool any() const { return camera || indirect || transmission; }
 };
 
-/// What Embree reports for a hit, plus the ray that made it.
+/// What the ray tracer reports for a hit, plus the ray that made it.
 struct HitRecord {
+    static constexpr unsigned kNoGeometry = ~0u;  ///< geomID of a miss
     Vec3 org{0.0f};
     Vec3 dir{0.0f};
     float t = 0.0f;
-    unsigned geomID = RTC_INVALID_GEOMETRY_ID;
+    unsigned geomID = kNoGeometry;
     unsigned primID = 0;
     float u = 0.0f;  ///< barycentric (triangles) or surface parameter (quadrics)
     float v = 0.0f;
     Vec3 Ng{0.0f};   ///< Embree's geometric normal, not normalized (used by curves and points)
-    bool hit() const { return geomID != RTC_INVALID_GEOMETRY_ID; }
+    bool hit() const { return geomID != kNoGeometry; }
     /// Makes this a miss (a light in front of the surface, say): nothing to shade.
-    void forget() { geomID = RTC_INVALID_GEOMETRY_ID; }
+    void forget() { geomID = kNoGeometry; }
 };
 
 struct SurfaceBasics {
@@ -54,13 +55,41 @@ struct SurfaceTangents {
     Vec3 dPdv{0.0f};
 };
 
+class TriangleMesh;
+class Quadric;
+class Curves;
+class Points;
+class SubdivisionSurface;
+
+/// Does something for each kind of shape (accel/ builds Embree geometry this way).
+class ShapeVisitor {
+public:
+    virtual ~ShapeVisitor() = default;
+    virtual void visit(TriangleMesh const& mesh) = 0;
+    virtual void visit(Quadric const& quadric) = 0;
+    virtual void visit(Curves const& curves) = 0;
+    virtual void visit(Points const& points) = 0;
+    virtual void visit(SubdivisionSurface const& surface) = 0;
+};
+
+/// A surface only the ray tracer's own geometry defines exactly (a subdivision
+/// limit surface, a curve's tube): accel/ attaches one to such shapes when it
+/// builds their geometry, so shading can evaluate them at a hit.
+class SurfaceEvaluator {
+public:
+    virtual ~SurfaceEvaluator() = default;
+    /// The vertex data interpolated at (u, v) of primitive primID, with its
+    /// derivatives in u and v (each `count` floats; dPdu and dPdv may be null).
+    virtual void evaluate(unsigned primID, float u, float v, float* value, float* dPdu, float* dPdv,
+                          unsigned count) const = 0;
+};
+
 class Shape {
 public:
     virtual ~Shape() = default;
     /// A short name for messages ("sphere", "polygon mesh", ...).
     virtual const char* kind() const = 0;
-    /// Creates and commits the Embree geometry (caller attaches and releases it).
-    virtual RTCGeometry build(RTCDevice device) const = 0;
+    virtual void accept(ShapeVisitor& visitor) const = 0;
     virtual SurfaceBasics basics(HitRecord const& hit) const = 0;
     virtual SurfaceTangents tangents(HitRecord const& hit) const = 0;
     /// The value of one of this shape's primvars at a hit (`out` receives

@@ -25,21 +25,19 @@ struct SubdivisionData {
 class SubdivisionSurface final : public Shape {
 public:
     SubdivisionSurface(SubdivisionData data, bool flipNormals);
-    ~SubdivisionSurface() override;
-    SubdivisionSurface(SubdivisionSurface const&) = delete;
-    SubdivisionSurface& operator=(SubdivisionSurface const&) = delete;
 
     const char* kind() const override { return "SubdivisionMesh"; }
-    RTCGeometry build(RTCDevice device) const override;
+    void accept(ShapeVisitor& visitor) const override { visitor.visit(*this); }
     SurfaceBasics basics(HitRecord const& hit) const override;
     SurfaceTangents tangents(HitRecord const& hit) const override;
     SubdivisionData const& data() const { return m_data; }
+    /// The limit surface as the ray tracer built it (evaluated at hits).
+    void attach(std::shared_ptr<SurfaceEvaluator const> evaluator) const { m_evaluator = std::move(evaluator); }
 
 private:
     SubdivisionData m_data;
     float m_orientation;
-    /// The last geometry built (kept to evaluate the limit surface at hits).
-    mutable RTCGeometry m_geometry = nullptr;
+    mutable std::shared_ptr<SurfaceEvaluator const> m_evaluator;
 };
 
 }  // namespace bxdflab

@@ -26,21 +26,6 @@ void TriangleMesh::primvar(Primvar const& var, HitRecord const& hit, float* out)
     for (size_t k = 0; k < c; ++k) out[k] = var.values[k];
 }
 
-RTCGeometry TriangleMesh::build(RTCDevice device) const {
-    RTCGeometry geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
-    // Embree may read 16 bytes at the last vertex; the extra padding keeps that in bounds.
-    auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0,
-                                                                 RTC_FORMAT_FLOAT3, 3 * sizeof(float),
-                                                                 m_data.P.size() + 1));
-    std::memcpy(vertices, m_data.P.data(), m_data.P.size() * sizeof(Vec3));
-    auto* indices = static_cast<unsigned*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0,
-                                                                   RTC_FORMAT_UINT3, 3 * sizeof(unsigned),
-                                                                   m_data.triangleCount()));
-    std::memcpy(indices, m_data.indices.data(), m_data.indices.size() * sizeof(unsigned));
-    rtcCommitGeometry(geometry);
-    return geometry;
-}
-
 Vec2 TriangleMesh::parameters(unsigned prim, float b1, float b2) const {
     if (!m_data.uv.empty()) return interpolate(m_data.uv, prim, b1, b2);
     return Vec2(b1, b2);

@@ -51,7 +51,7 @@ public:
     TriangleMesh(MeshData data, const char* kindName, bool flipNormals);
 
     const char* kind() const override { return m_kind; }
-    RTCGeometry build(RTCDevice device) const override;
+    void accept(ShapeVisitor& visitor) const override { visitor.visit(*this); }
     SurfaceBasics basics(HitRecord const& hit) const override;
     SurfaceTangents tangents(HitRecord const& hit) const override;
     void primvar(Primvar const& var, HitRecord const& hit, float* out) const override;

@@ -1,0 +1,206 @@
+#include "accel/EmbreeGeometry.h"
+
+#include <cstring>
+#include <vector>
+
+#include "scene/shapes/Curves.h"
+#include "scene/shapes/Quadric.h"
+#include "scene/shapes/SubdivisionSurface.h"
+#include "scene/shapes/TriangleMesh.h"
+
+namespace bxdflab {
+namespace {
+
+// Embree callbacks: the geometry's user pointer is the Quadric.
+void quadricBounds(const RTCBoundsFunctionArguments* args) {
+    auto const* quadric = static_cast<Quadric const*>(args->geometryUserPtr);
+    Vec3 lo, hi;
+    quadric->boundsLocal(lo, hi);
+    Vec3 worldLo(kInfinity), worldHi(-kInfinity);
+    for (int corner = 0; corner < 8; ++corner) {
+        Vec3 p((corner & 1) ? hi.x : lo.x, (corner & 2) ? hi.y : lo.y, (corner & 4) ? hi.z : lo.z);
+        Vec3 w = transformPoint(quadric->objectToWorld(), p);
+        worldLo = glm::min(worldLo, w);
+        worldHi = glm::max(worldHi, w);
+    }
+    // Pad by a relative epsilon so rays grazing the box are not lost.
+    Vec3 pad = 1e-5f * (glm::abs(worldLo) + glm::abs(worldHi)) + Vec3(1e-6f);
+    worldLo -= pad;
+    worldHi += pad;
+    args->bounds_o->lower_x = worldLo.x;
+    args->bounds_o->lower_y = worldLo.y;
+    args->bounds_o->lower_z = worldLo.z;
+    args->bounds_o->upper_x = worldHi.x;
+    args->bounds_o->upper_y = worldHi.y;
+    args->bounds_o->upper_z = worldHi.z;
+}
+
+struct LocalRay {
+    DVec3 org, dir;
+};
+
+LocalRay toObjectSpace(Mat4 const& worldToObject, RTCRayN* ray, unsigned n, unsigned i) {
+    glm::dmat4 m(worldToObject);
+    DVec3 org(RTCRayN_org_x(ray, n, i), RTCRayN_org_y(ray, n, i), RTCRayN_org_z(ray, n, i));
+    DVec3 dir(RTCRayN_dir_x(ray, n, i), RTCRayN_dir_y(ray, n, i), RTCRayN_dir_z(ray, n, i));
+    return {DVec3(m * glm::dvec4(org, 1.0)), glm::dmat3(m) * dir};
+}
+
+void quadricIntersect(const RTCIntersectFunctionNArguments* args) {
+    auto const* quadric = static_cast<Quadric const*>(args->geometryUserPtr);
+    RTCRayN* ray = RTCRayHitN_RayN(args->rayhit, args->N);
+    RTCHitN* hit = RTCRayHitN_HitN(args->rayhit, args->N);
+    Mat4 const& worldToObject = quadric->worldToObject();
+    for (unsigned i = 0; i < args->N; ++i) {
+        if (args->valid[i] != -1) continue;
+        LocalRay local = toObjectSpace(worldToObject, ray, args->N, i);
+        auto found = quadric->intersectLocal(local.org, local.dir, RTCRayN_tnear(ray, args->N, i),
+                                             RTCRayN_tfar(ray, args->N, i));
+        if (!found) continue;
+        RTCRayN_tfar(ray, args->N, i) = static_cast<float>(found->t);
+        RTCHitN_Ng_x(hit, args->N, i) = 0.0f;  // the shading context recomputes normals
+        RTCHitN_Ng_y(hit, args->N, i) = 0.0f;
+        RTCHitN_Ng_z(hit, args->N, i) = 1.0f;
+        RTCHitN_u(hit, args->N, i) = found->u;
+        RTCHitN_v(hit, args->N, i) = found->v;
+        RTCHitN_primID(hit, args->N, i) = args->primID;
+        RTCHitN_geomID(hit, args->N, i) = args->geomID;
+        RTCHitN_instID(hit, args->N, i, 0) = args->context->instID[0];
+    }
+}
+
+void quadricOccluded(const RTCOccludedFunctionNArguments* args) {
+    auto const* quadric = static_cast<Quadric const*>(args->geometryUserPtr);
+    Mat4 const& worldToObject = quadric->worldToObject();
+    for (unsigned i = 0; i < args->N; ++i) {
+        if (args->valid[i] != -1) continue;
+        LocalRay local = toObjectSpace(worldToObject, args->ray, args->N, i);
+        if (quadric->intersectLocal(local.org, local.dir, RTCRayN_tnear(args->ray, args->N, i),
+                                    RTCRayN_tfar(args->ray, args->N, i)))
+            RTCRayN_tfar(args->ray, args->N, i) = -kInfinity;
+    }
+}
+
+/// Embree subdivides each face until its edges span about this many segments
+/// on screen-independent terms: enough for smooth silhouettes at course sizes.
+constexpr float kTessellationRate = 6.0f;
+
+template <typename T>
+void copyBuffer(RTCGeometry geometry, RTCBufferType type, RTCFormat format, std::vector<T> const& values,
+                size_t components = 1) {
+    if (values.empty()) return;
+    size_t count = values.size() / components;
+    void* buffer = rtcSetNewGeometryBuffer(geometry, type, 0, format, sizeof(T) * components, count);
+    std::memcpy(buffer, values.data(), values.size() * sizeof(T));
+}
+
+RTCGeometry pointGeometry(RTCDevice device, RTCGeometryType type, std::vector<Vec4> const& points) {
+    RTCGeometry geometry = rtcNewGeometry(device, type);
+    void* buffer = rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT4, sizeof(Vec4),
+                                           points.size());
+    std::memcpy(buffer, points.data(), points.size() * sizeof(Vec4));
+    return geometry;
+}
+
+/// rtcInterpolate on a geometry it keeps alive: what curves and subdivision
+/// surfaces evaluate their exact surface with.
+class EmbreeEvaluator final : public SurfaceEvaluator {
+public:
+    explicit EmbreeEvaluator(RTCGeometry geometry) : m_geometry(geometry) { rtcRetainGeometry(m_geometry); }
+    ~EmbreeEvaluator() override { rtcReleaseGeometry(m_geometry); }
+    EmbreeEvaluator(EmbreeEvaluator const&) = delete;
+    EmbreeEvaluator& operator=(EmbreeEvaluator const&) = delete;
+    void evaluate(unsigned primID, float u, float v, float* value, float* dPdu, float* dPdv,
+                  unsigned count) const override {
+        rtcInterpolate1(m_geometry, primID, u, v, RTC_BUFFER_TYPE_VERTEX, 0, value, dPdu, dPdv, count);
+    }
+
+private:
+    RTCGeometry m_geometry;
+};
+
+class GeometryBuilder final : public ShapeVisitor {
+public:
+    explicit GeometryBuilder(RTCDevice device) : m_device(device) {}
+    RTCGeometry geometry() const { return m_geometry; }
+
+    void visit(TriangleMesh const& mesh) override {
+        MeshData const& data = mesh.data();
+        m_geometry = rtcNewGeometry(m_device, RTC_GEOMETRY_TYPE_TRIANGLE);
+        // Embree may read 16 bytes at the last vertex; the extra padding keeps that in bounds.
+        auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
+            m_geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), data.P.size() + 1));
+        std::memcpy(vertices, data.P.data(), data.P.size() * sizeof(Vec3));
+        auto* indices = static_cast<unsigned*>(rtcSetNewGeometryBuffer(
+            m_geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), data.triangleCount()));
+        std::memcpy(indices, data.indices.data(), data.indices.size() * sizeof(unsigned));
+        rtcCommitGeometry(m_geometry);
+    }
+
+    void visit(Quadric const& quadric) override {
+        m_geometry = rtcNewGeometry(m_device, RTC_GEOMETRY_TYPE_USER);
+        rtcSetGeometryUserPrimitiveCount(m_geometry, 1);
+        rtcSetGeometryUserData(m_geometry, const_cast<Quadric*>(&quadric));
+        rtcSetGeometryBoundsFunction(m_geometry, quadricBounds, nullptr);
+        rtcSetGeometryIntersectFunction(m_geometry, quadricIntersect);
+        rtcSetGeometryOccludedFunction(m_geometry, quadricOccluded);
+        rtcCommitGeometry(m_geometry);
+    }
+
+    void visit(Curves const& curves) override {
+        CurveData const& data = curves.data();
+        m_geometry = pointGeometry(
+            m_device, data.cubic ? RTC_GEOMETRY_TYPE_ROUND_BEZIER_CURVE : RTC_GEOMETRY_TYPE_ROUND_LINEAR_CURVE, data.points);
+        void* index = rtcSetNewGeometryBuffer(m_geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT, sizeof(unsigned),
+                                              data.segments.size());
+        std::memcpy(index, data.segments.data(), data.segments.size() * sizeof(unsigned));
+        rtcCommitGeometry(m_geometry);
+        curves.attach(std::make_shared<EmbreeEvaluator>(m_geometry));
+    }
+
+    void visit(Points const& points) override {
+        m_geometry = pointGeometry(m_device, RTC_GEOMETRY_TYPE_SPHERE_POINT, points.spheres());
+        rtcCommitGeometry(m_geometry);
+    }
+
+    void visit(SubdivisionSurface const& surface) override {
+        SubdivisionData const& data = surface.data();
+        m_geometry = rtcNewGeometry(m_device, RTC_GEOMETRY_TYPE_SUBDIVISION);
+        copyBuffer(m_geometry, RTC_BUFFER_TYPE_FACE, RTC_FORMAT_UINT, data.faceSizes);
+        copyBuffer(m_geometry, RTC_BUFFER_TYPE_INDEX, RTC_FORMAT_UINT, data.indices);
+        // Embree reads each vertex as four floats and checks all four are finite:
+        // a 16-byte stride with a zero fourth float keeps those reads inside the data.
+        std::vector<Vec4> padded(data.P.size());
+        for (size_t i = 0; i < padded.size(); ++i) padded[i] = Vec4(data.P[i], 0.0f);
+        void* vertices = rtcSetNewGeometryBuffer(m_geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
+                                                 sizeof(Vec4), padded.size());
+        std::memcpy(vertices, padded.data(), padded.size() * sizeof(Vec4));
+        copyBuffer(m_geometry, RTC_BUFFER_TYPE_EDGE_CREASE_INDEX, RTC_FORMAT_UINT2, data.creaseEdges, 2);
+        copyBuffer(m_geometry, RTC_BUFFER_TYPE_EDGE_CREASE_WEIGHT, RTC_FORMAT_FLOAT, data.creaseWeights);
+        copyBuffer(m_geometry, RTC_BUFFER_TYPE_VERTEX_CREASE_INDEX, RTC_FORMAT_UINT, data.corners);
+        copyBuffer(m_geometry, RTC_BUFFER_TYPE_VERTEX_CREASE_WEIGHT, RTC_FORMAT_FLOAT, data.cornerWeights);
+        copyBuffer(m_geometry, RTC_BUFFER_TYPE_HOLE, RTC_FORMAT_UINT, data.holes);
+        // RenderMan drops the faces along a boundary unless interpolateboundary says otherwise.
+        RTCSubdivisionMode mode = data.boundary == SubdivisionData::Boundary::EdgesAndCorners ? RTC_SUBDIVISION_MODE_PIN_CORNERS
+                                  : data.boundary == SubdivisionData::Boundary::Edges        ? RTC_SUBDIVISION_MODE_SMOOTH_BOUNDARY
+                                                                                             : RTC_SUBDIVISION_MODE_NO_BOUNDARY;
+        rtcSetGeometrySubdivisionMode(m_geometry, 0, mode);
+        rtcSetGeometryTessellationRate(m_geometry, kTessellationRate);
+        rtcCommitGeometry(m_geometry);
+        surface.attach(std::make_shared<EmbreeEvaluator>(m_geometry));
+    }
+
+private:
+    RTCDevice m_device;
+    RTCGeometry m_geometry = nullptr;
+};
+
+}  // namespace
+
+RTCGeometry buildEmbreeGeometry(RTCDevice device, Shape const& shape) {
+    GeometryBuilder builder(device);
+    shape.accept(builder);
+    return builder.geometry();
+}
+
+}  // namespace bxdflab
