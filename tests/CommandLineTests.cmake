@@ -129,6 +129,14 @@ add_test(NAME readme.lists_every_rib_request
          COMMAND ${BXDFLAB_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_readme_requests.py ${PROJECT_SOURCE_DIR})
 set_tests_properties(readme.lists_every_rib_request PROPERTIES PASS_REGULAR_EXPRESSION "requests handled, 0 mismatches")
 
+# Chapter 7's gdb session prints the shading context and the directions.
+add_test(NAME chapters.ch07_gdb_walkthrough
+         COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/check_gdb_walkthrough.sh ${PROJECT_SOURCE_DIR} $<TARGET_FILE:rixrender>
+                 ${CMAKE_CURRENT_BINARY_DIR}/gdb-walkthrough)
+set_tests_properties(chapters.ch07_gdb_walkthrough PROPERTIES
+  PASS_REGULAR_EXPRESSION "\\$1 = [1-9][0-9]*\n\\$2 = {<RtFloat3> = {x = "
+  FAIL_REGULAR_EXPRESSION "There is no member|incomplete type")
+
 # Every command the chapters show runs, and every figure they link exists.
 add_test(NAME chapters.commands_and_figures COMMAND ${BXDFLAB_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_chapters.py ${PROJECT_SOURCE_DIR})
 set_tests_properties(chapters.commands_and_figures PROPERTIES PASS_REGULAR_EXPRESSION "command blocks run; 0 problems" RUN_SERIAL TRUE)
