@@ -11,8 +11,10 @@ mkdir -p "$out"
 
 # Chapter 4: uniform against cosine-weighted hemisphere sampling of a diffuse surface.
 $converge scenes/ch04/estimators.rib --spp $spp --repeats 3 --out $out/ch04-uniform-vs-cosine \
-  --variant cosine='Bxdf "diffuse" "white" "color diffuseColor" [0.9 0.9 0.9] "int samplingMode" [0]' \
-  --variant uniform='Bxdf "diffuse" "white" "color diffuseColor" [0.9 0.9 0.9] "int samplingMode" [1]'
+  --variant cosine='Bxdf "diffuse" "white" "color diffuseColor" [0.9 0.9 0.9] "int samplingMode" [0]
+                    Bxdf "diffuse" "floor" "color diffuseColor" [0.5 0.5 0.5] "int samplingMode" [0]' \
+  --variant uniform='Bxdf "diffuse" "white" "color diffuseColor" [0.9 0.9 0.9] "int samplingMode" [1]
+                     Bxdf "diffuse" "floor" "color diffuseColor" [0.5 0.5 0.5] "int samplingMode" [1]'
 
 # Chapters 6 and 8: cosine sampling against importance sampling, narrower and narrower lobes.
 for gloss in 10 100 1000; do
