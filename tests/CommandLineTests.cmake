@@ -118,6 +118,18 @@ set_tests_properties(tools.rixconverge PROPERTIES
   PASS_REGULAR_EXPRESSION "cosine: slope -?[0-9.]+.*uniform: slope -?[0-9.]+.*wrote converge-test/convergence.csv"
   FAIL_REGULAR_EXPRESSION "plotting failed")
 
+# rixrender maps OpenImageIO only when a scene reads or writes an image: --help
+# (and the grader's renders, which report pixels over a descriptor) start without it.
+add_test(NAME cli.rixrender_starts_without_openimageio
+         COMMAND sh -c "LD_DEBUG=libs \"$0\" --help 2>&1" $<TARGET_FILE:rixrender>)
+set_tests_properties(cli.rixrender_starts_without_openimageio PROPERTIES
+  PASS_REGULAR_EXPRESSION "Usage:" FAIL_REGULAR_EXPRESSION "libOpenImageIO")
+add_test(NAME cli.rixrender_loads_openimageio_to_write
+         COMMAND sh -c "rm -f \"$1\"; log=$(LD_DEBUG=libs \"$0\" --quiet --spp 1 --resolution-scale 0.1 -o \"$1\" \"$2\" 2>&1); echo \"$log\" | grep -q 'calling init: .*/libOpenImageIO.so' && test -s \"$1\" && echo 'loaded OpenImageIO and wrote the image'"
+                 $<TARGET_FILE:rixrender> ${CLI_OUT}/oiio-module.png ${PROJECT_SOURCE_DIR}/scenes/ch06/diffuse.rib)
+set_tests_properties(cli.rixrender_loads_openimageio_to_write PROPERTIES
+  PASS_REGULAR_EXPRESSION "loaded OpenImageIO and wrote the image")
+
 # The renderer's folders include one another only along the data flow (docs/architecture.md).
 add_test(NAME architecture.includes_follow_the_data_flow
          COMMAND ${BXDFLAB_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_include_direction.py ${PROJECT_SOURCE_DIR})

@@ -1,6 +1,9 @@
 # Memory must not grow with samples per pixel: for every integrator, the peak
 # resident memory of a 64-spp render stays within 10% of a 4-spp render of the
-# same scene (the renderer shades in fixed-size chunks, whatever the spp).
+# same scene (the renderer shades in fixed-size chunks, whatever the spp), or
+# within 4 MiB: rixrender now starts at about 15 MiB (OpenImageIO is loaded
+# only to write the image), and worker threads starting up move that by a
+# MiB or two from run to run. The bug this guards against grew by gigabytes.
 # Usage: cmake -DRIXRENDER=... -DOUT=dir -DINTEGRATORS="A;B" -P check-bounded-memory.cmake
 file(MAKE_DIRECTORY ${OUT})
 foreach(integrator ${INTEGRATORS})
@@ -35,6 +38,10 @@ WorldEnd
   endforeach()
   string(REGEX REPLACE "\\..*" "" whole4 "${peak4}")
   math(EXPR limit "${whole4} * 110 / 100")
+  math(EXPR floor "${whole4} + 4")
+  if(limit LESS floor)
+    set(limit ${floor})
+  endif()
   message(STATUS "${integrator}: peak ${peak4} MiB at 4 spp, ${peak64} MiB at 64 spp (limit ${limit})")
   if(peak64 GREATER limit)
     message(FATAL_ERROR "${integrator}: peak memory grew with spp: ${peak4} MiB at 4 spp, ${peak64} MiB at 64 spp")

@@ -112,6 +112,7 @@ SandboxLayout Course::layout(std::string const& scratch) const {
                       {m_root + "/scenes", "scenes"},
                       {m_binDir + "/rixmeasure", "bin/rixmeasure"},
                       {m_binDir + "/rixrender", "bin/rixrender"},
+                      {m_binDir + "/../lib/rixoiio.so", "lib/rixoiio.so"},  // rixrender's image files
                       {plugins + "/integrators", "plugins/integrators"},
                       {plugins + "/stock", "plugins/stock"}};
     return l;

@@ -62,7 +62,8 @@ namespace {
 
 void hostileAct() {
 #if defined(HOSTILE_SEGFAULT)
-    *reinterpret_cast<volatile int*>(static_cast<std::uintptr_t>(64)) = 1;
+    volatile std::uintptr_t nowhere = 64;  // read at run time, so the compiler does not object to the write
+    *reinterpret_cast<volatile int*>(nowhere) = 1;
 #elif defined(HOSTILE_ABORT)
     std::abort();
 #elif defined(HOSTILE_ENDLESS_LOOP)

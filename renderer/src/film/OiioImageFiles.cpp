@@ -73,9 +73,11 @@ public:
 
 }  // namespace
 
-void useOpenImageIO() {
+ImageFiles const& openImageIOFiles() {
     static OiioImageFiles const files;
-    installImageFiles(&files);
+    return files;
 }
+
+void useOpenImageIO() { installImageFiles(&openImageIOFiles()); }
 
 }  // namespace bxdflab

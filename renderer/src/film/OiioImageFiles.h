@@ -11,7 +11,9 @@ namespace bxdflab {
 constexpr int kMaxImageSide = 16384;
 constexpr long long kMaxImagePixels = 1ll << 28;
 
-/// Installs the OpenImageIO implementation of ImageFiles.
+/// The OpenImageIO implementation of ImageFiles.
+ImageFiles const& openImageIOFiles();
+/// Installs it (programs linked with OpenImageIO call this at the top of main).
 void useOpenImageIO();
 
 }  // namespace bxdflab
