@@ -1,5 +1,7 @@
 #include "ToolSupport.h"
 
+#include <iostream>
+
 #include <OpenImageIO/imagebufalgo.h>
 
 #include <stdexcept>
@@ -10,6 +12,14 @@ void writeDisplayImage(OIIO::ImageBuf const& image, std::string const& path) {
     OIIO::ImageBuf out = image;
     out.set_write_format(OIIO::TypeDesc::UINT8);
     if (!out.write(path)) throw std::runtime_error("cannot write \"" + path + "\": " + out.geterror());
+}
+
+void label(OIIO::ImageBuf& image, int x, int y, std::string const& text, std::vector<float> const& colour, int size) {
+    if (!OIIO::ImageBufAlgo::render_text(image, x, y, text, size, "DejaVuSans", colour)) {
+        static bool warned = false;
+        if (!warned) std::cerr << "warning: figure labels left out (" << image.geterror() << "; install fonts-dejavu-core)\n";
+        warned = true;
+    }
 }
 
 OIIO::ImageBuf heatmap(std::vector<double> const& values, int width, int height, double maxValue, int cell) {

@@ -47,7 +47,7 @@ void drawPolar(BxdfProbe& probe, float theta, float phi, std::string const& path
     }
     std::vector<float> r = lobe(probe, point, L);
     float top = *std::max_element(r.begin(), r.end());
-    float scale = top > 0 ? 0.9f * static_cast<float>(height - 40) / top : 1.0f;
+    float scale = top > 0 ? 0.9f * static_cast<float>(height - 64) / top : 1.0f;
 
     OIIO::ImageBuf canvas(OIIO::ImageSpec(width, height, 3, OIIO::TypeDesc::FLOAT));
     OIIO::ImageBufAlgo::fill(canvas, {1.0f, 1.0f, 1.0f});
@@ -55,7 +55,7 @@ void drawPolar(BxdfProbe& probe, float theta, float phi, std::string const& path
         float a = glm::radians(angleDegrees);
         return std::pair<int, int>(cx + static_cast<int>(radius * std::sin(a)), cy - static_cast<int>(radius * std::cos(a)));
     };
-    float reach = static_cast<float>(height - 40);
+    float reach = static_cast<float>(height - 64);
     OIIO::ImageBufAlgo::render_line(canvas, 10, cy, width - 10, cy, {0.6f, 0.6f, 0.6f});  // the surface
     OIIO::ImageBufAlgo::render_line(canvas, cx, cy, cx, cy - static_cast<int>(reach), {0.6f, 0.6f, 0.6f});  // N
     auto [vx, vy] = at(-theta, reach);
@@ -67,6 +67,15 @@ void drawPolar(BxdfProbe& probe, float theta, float phi, std::string const& path
         auto [x1, y1] = at(angles[k], r[k] * scale);
         OIIO::ImageBufAlgo::render_line(canvas, x0, y0, x1, y1, {0.9f, 0.35f, 0.05f});
     }
+    tools::label(canvas, cx + 6, cy - static_cast<int>(reach) + 14, "N");
+    tools::label(canvas, vx - 10, vy - 6, "V", {0.2f, 0.4f, 1.0f});
+    tools::label(canvas, mx - 30, my - 6, "mirror", {0.55f, 0.55f, 0.55f});
+    // (OpenImageIO draws ASCII only: the Greek letters are spelled out.)
+    tools::label(canvas, 12, cy - 6, "-90 deg");
+    tools::label(canvas, width - 72, cy - 6, "+90 deg");
+    tools::label(canvas, 12, 22, "W(V, L) for L in the plane of incidence, V at theta " + tools::number(theta) +
+                                     " deg; radius W / " + tools::number(top),
+                 {0.9f, 0.35f, 0.05f});
     tools::writeDisplayImage(canvas, path);
     std::cout << "polar slice: largest W = " << top << " -> " << path << '\n';
 }

@@ -60,14 +60,30 @@ int main(int argc, char** argv) {
 
         double top = 0.0;
         for (size_t i = 0; i < observed.size(); ++i) top = std::max({top, observed[i], expected[i]});
-        const int cell = 6, gap = 12;
+        // Two maps of the hemisphere (cos theta up, phi across) under their
+        // titles, with the axes labelled once on the left and below.
+        const int cell = 6, gap = 24, marginLeft = 40, marginTop = 26, marginBottom = 40;
         OIIO::ImageBuf left = tools::heatmap(observed, cells.phiCells, cells.cosCells, top, cell);
         OIIO::ImageBuf right = tools::heatmap(expected, cells.phiCells, cells.cosCells, top, cell);
         int w = cells.phiCells * cell, ht = cells.cosCells * cell;
-        OIIO::ImageBuf canvas(OIIO::ImageSpec(2 * w + gap, ht, 3, OIIO::TypeDesc::FLOAT));
+        OIIO::ImageBuf canvas(
+            OIIO::ImageSpec(marginLeft + 2 * w + gap + 10, marginTop + ht + marginBottom, 3, OIIO::TypeDesc::FLOAT));
         OIIO::ImageBufAlgo::fill(canvas, {1.0f, 1.0f, 1.0f});
-        OIIO::ImageBufAlgo::paste(canvas, 0, 0, 0, 0, left);
-        OIIO::ImageBufAlgo::paste(canvas, w + gap, 0, 0, 0, right);
+        int const rightX = marginLeft + w + gap;
+        OIIO::ImageBufAlgo::paste(canvas, marginLeft, marginTop, 0, 0, left);
+        OIIO::ImageBufAlgo::paste(canvas, rightX, marginTop, 0, 0, right);
+        tools::label(canvas, marginLeft, marginTop - 8, "sampled directions (GenerateSample)");
+        tools::label(canvas, rightX, marginTop - 8, "expected from FPdf");
+        // (OpenImageIO draws ASCII only: the Greek letters are spelled out.)
+        tools::label(canvas, 8, marginTop + 12, "1");
+        tools::label(canvas, 8, marginTop + ht, "0");
+        for (int x : {marginLeft, rightX}) {
+            tools::label(canvas, x, marginTop + ht + 16, "0");
+            tools::label(canvas, x + w - 28, marginTop + ht + 16, "360");
+        }
+        tools::label(canvas, marginLeft, marginTop + ht + 34,
+                     "up: cos(theta) 0..1, across: phi 0..360 deg; viewer at theta " + tools::number(theta) +
+                         " deg, phi " + tools::number(phi) + " deg; one colour scale");
         tools::writeDisplayImage(canvas, out);
 
         // No valid sample at all proves nothing: that is a failure, not a pass.
