@@ -1,6 +1,8 @@
 // PxrDebugShadingContext: shows one builtin of the shading context as a
 // colour. "string viewchannel": Nn, Ngn, Vn, Tn, P, dPdu, dPdv map x, y, z to
-// red, green, blue with 0 at mid-grey; VLen is grey; UV and ST map (u, v) to
+// red, green, blue with 0 at mid-grey (P, dPdu and dPdv, which are not unit
+// vectors, as v / (1 + |v|): their direction shows without saturating, and
+// where they vanish the colour is mid-grey); VLen is grey; UV and ST map (u, v) to
 // (red, green); InsideOutside is green where the viewer is on the outside
 // (the side Ngn points to) and red inside.
 #include <string>
@@ -32,6 +34,11 @@ public:
             ctx.GetBuiltinVar(id, &values);
             for (int i = 0; i < n; ++i) radiance[i] = asColor(values[i]);
         };
+        auto showLongVector = [&](RixShadingContext::BuiltinId id) {
+            RtVector3 const* values;
+            ctx.GetBuiltinVar(id, &values);
+            for (int i = 0; i < n; ++i) radiance[i] = asColor(values[i] / (1.0f + values[i].Length()));
+        };
         auto showPair = [&](RixShadingContext::BuiltinId a, RixShadingContext::BuiltinId b) {
             float const *x, *y;
             ctx.GetBuiltinVar(a, &x);
@@ -42,9 +49,9 @@ public:
         else if (m_channel == "Ngn") showVector(RixShadingContext::k_Ngn);
         else if (m_channel == "Vn") showVector(RixShadingContext::k_Vn);
         else if (m_channel == "Tn") showVector(RixShadingContext::k_Tn);
-        else if (m_channel == "P") showVector(RixShadingContext::k_P);
-        else if (m_channel == "dPdu") showVector(RixShadingContext::k_dPdu);
-        else if (m_channel == "dPdv") showVector(RixShadingContext::k_dPdv);
+        else if (m_channel == "P") showLongVector(RixShadingContext::k_P);
+        else if (m_channel == "dPdu") showLongVector(RixShadingContext::k_dPdu);
+        else if (m_channel == "dPdv") showLongVector(RixShadingContext::k_dPdv);
         else if (m_channel == "UV") showPair(RixShadingContext::k_u, RixShadingContext::k_v);
         else if (m_channel == "ST") showPair(RixShadingContext::k_s, RixShadingContext::k_t);
         else if (m_channel == "VLen") {
