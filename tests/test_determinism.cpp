@@ -1,24 +1,13 @@
 // The same scene, seed and spp give the same image bit for bit, whatever the
 // thread count; another seed gives another (equally valid) image.
 #include <catch2/catch.hpp>
-#include <fstream>
-#include <sstream>
 
 #include "support/RenderHelpers.h"
 
 using namespace bxdflab;
 
-namespace {
-std::string chapter6Scene() {
-    std::ifstream in(std::string(SCENES_DIR) + "/ch06/diffuse.rib");
-    std::stringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
-}  // namespace
-
 TEST_CASE("renders are bit-identical for 1 and 2 threads, and across runs", "[determinism]") {
-    std::string rib = chapter6Scene();
+    std::string rib = test::readScene("ch06/diffuse.rib");
     REQUIRE_FALSE(rib.empty());
     RenderSettings settings;
     settings.spp = 4;
@@ -39,4 +28,17 @@ TEST_CASE("renders are bit-identical for 1 and 2 threads, and across runs", "[de
     // ...but it is the same picture: the means agree closely.
     auto all = [](int, int) { return true; };
     CHECK(test::meanChannel(reseeded, 0, all) == Approx(test::meanChannel(two, 0, all)).epsilon(0.01));
+}
+
+TEST_CASE("path tracing is bit-identical for 1 and 2 threads", "[determinism][integrators]") {
+    std::string rib = test::withIntegrator(test::readScene("ch06/diffuse.rib"),
+                                           "Integrator \"PxrPathTracer\" \"p\" \"int maxPathLength\" [5]");
+    rib.replace(rib.find("Format 800 700 1"), 16, "Format 120 100 1");
+    RenderSettings settings;
+    settings.spp = 4;
+    settings.threads = 1;
+    auto one = test::renderRib(rib, settings);
+    settings.threads = 2;
+    auto two = test::renderRib(rib, settings);
+    CHECK(one.rgba == two.rgba);
 }

@@ -10,18 +10,8 @@ using namespace bxdflab;
 
 namespace {
 
-std::string readScene(std::string const& relative) {
-    std::ifstream in(std::string(SCENES_DIR) + "/" + relative);
-    std::stringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
-
-std::string withIntegrator(std::string rib, std::string const& integrator) {
-    size_t start = rib.find("Integrator ");
-    size_t end = rib.find('\n', start);
-    return rib.replace(start, end - start, integrator);
-}
+using test::readScene;
+using test::withIntegrator;
 
 auto const kAll = [](int, int) { return true; };
 
@@ -77,17 +67,6 @@ TEST_CASE("light-only, Bxdf-only and MIS estimates agree on a glossy surface", "
     CHECK(means[2] == Approx(means[0]).epsilon(0.03));
 }
 
-TEST_CASE("path tracing is deterministic across thread counts", "[integrators][determinism]") {
-    std::string rib = withIntegrator(readScene("ch06/diffuse.rib"), "Integrator \"PxrPathTracer\" \"p\" \"int maxPathLength\" [5]");
-    rib.replace(rib.find("Format 800 700 1"), 16, "Format 120 100 1");
-    RenderSettings settings;
-    settings.spp = 4;
-    settings.threads = 1;
-    auto one = test::renderRib(rib, settings);
-    settings.threads = 2;
-    auto two = test::renderRib(rib, settings);
-    CHECK(one.rgba == two.rgba);
-}
 
 TEST_CASE("chapter 7: PxrValidateBxdf shows the planted bugs and equal channels after the fix", "[integrators][ch07]") {
     std::string rib = readScene("ch07/validate.rib");

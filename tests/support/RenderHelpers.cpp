@@ -1,6 +1,8 @@
 #include "support/RenderHelpers.h"
 
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 
 #include "scene/SceneBuilder.h"
 
@@ -52,6 +54,19 @@ double meanChannel(RenderOutcome const& r, int c, std::function<bool(int, int)> 
 std::string outputDir() {
     std::filesystem::create_directories(TEST_OUTPUT_DIR);
     return TEST_OUTPUT_DIR;
+}
+
+std::string readScene(std::string const& relative) {
+    std::ifstream in(std::string(SCENES_DIR) + "/" + relative);
+    std::stringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+std::string withIntegrator(std::string rib, std::string const& integrator) {
+    size_t start = rib.find("Integrator ");
+    size_t end = rib.find('\n', start);
+    return rib.replace(start, end - start, integrator);
 }
 
 }  // namespace bxdflab::test

@@ -35,6 +35,12 @@ Scene parseRib(std::string const& rib, Diagnostics& diagnostics, std::string con
 /// Mean of channel c over the pixels for which keep(x, y) is true.
 double meanChannel(RenderOutcome const& r, int c, std::function<bool(int, int)> const& keep);
 
+/// The text of a course scene, by its path under scenes/ (e.g. "ch06/diffuse.rib"); empty if missing.
+std::string readScene(std::string const& relative);
+
+/// `rib` with its Integrator line replaced by `integrator`.
+std::string withIntegrator(std::string rib, std::string const& integrator);
+
 /// A folder under the build tree for files a test must write.
 std::string outputDir();
 
