@@ -6,24 +6,28 @@
 
 using namespace bxdflab;
 
+namespace {
+/// `rib` at 4 spp with `threads` worker threads and `seed`.
+test::RenderOutcome render(std::string const& rib, int threads, uint32_t seed = 0) {
+    RenderSettings settings;
+    settings.spp = 4;
+    settings.threads = threads;
+    settings.seed = seed;
+    return test::renderRib(rib, settings);
+}
+}  // namespace
+
 TEST_CASE("renders are bit-identical for 1 and 2 threads, and across runs", "[determinism]") {
     std::string rib = test::readScene("ch06/diffuse.rib");
     REQUIRE_FALSE(rib.empty());
-    RenderSettings settings;
-    settings.spp = 4;
-    settings.threads = 1;
-    auto one = test::renderRib(rib, settings);
-    settings.threads = 2;
-    auto two = test::renderRib(rib, settings);
-    auto again = test::renderRib(rib, settings);
+    auto one = render(rib, 1), two = render(rib, 2), again = render(rib, 2);
     REQUIRE(one.rgba.size() == two.rgba.size());
     CHECK(one.rgba == two.rgba);
     CHECK(one.variance == two.variance);
     CHECK(two.rgba == again.rgba);
     CHECK(one.stats.shadowRays == two.stats.shadowRays);
 
-    settings.seed = 7;
-    auto reseeded = test::renderRib(rib, settings);
+    auto reseeded = render(rib, 2, 7);
     CHECK(reseeded.rgba != two.rgba);
     // ...but it is the same picture: the means agree closely.
     auto all = [](int, int) { return true; };
@@ -34,11 +38,5 @@ TEST_CASE("path tracing is bit-identical for 1 and 2 threads", "[determinism][in
     std::string rib = test::withIntegrator(test::readScene("ch06/diffuse.rib"),
                                            "Integrator \"PxrPathTracer\" \"p\" \"int maxPathLength\" [5]");
     rib.replace(rib.find("Format 800 700 1"), 16, "Format 120 100 1");
-    RenderSettings settings;
-    settings.spp = 4;
-    settings.threads = 1;
-    auto one = test::renderRib(rib, settings);
-    settings.threads = 2;
-    auto two = test::renderRib(rib, settings);
-    CHECK(one.rgba == two.rgba);
+    CHECK(render(rib, 1).rgba == render(rib, 2).rgba);
 }
