@@ -10,7 +10,6 @@ namespace bxdflab {
 using quadric::solveQuadratic;
 using quadric::sweepRadians;
 
-
 Cone::Cone(float height, float radius, float thetaMaxDegrees, Mat4 const& toWorld, bool reverse)
     : Quadric(toWorld, reverse), m_height(height), m_radius(radius), m_phiMax(sweepRadians(thetaMaxDegrees)) {}
 

@@ -9,7 +9,6 @@ namespace bxdflab {
 
 using quadric::sweepRadians;
 
-
 Disk::Disk(float height, float radius, float thetaMaxDegrees, Mat4 const& toWorld, bool reverse)
     : Quadric(toWorld, reverse), m_height(height), m_radius(radius), m_phiMax(sweepRadians(thetaMaxDegrees)) {}
 

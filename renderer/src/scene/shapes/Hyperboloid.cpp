@@ -11,7 +11,6 @@ using quadric::kTwoPi;
 using quadric::solveQuadratic;
 using quadric::sweepRadians;
 
-
 Hyperboloid::Hyperboloid(Vec3 const& p1, Vec3 const& p2, float thetaMaxDegrees, Mat4 const& toWorld, bool reverse)
     : Quadric(toWorld, reverse), m_p1(p1), m_p2(p2), m_phiMax(sweepRadians(thetaMaxDegrees)) {}
 

@@ -10,7 +10,6 @@ namespace bxdflab {
 using quadric::solveQuadratic;
 using quadric::sweepRadians;
 
-
 Paraboloid::Paraboloid(float rmax, float zmin, float zmax, float thetaMaxDegrees, Mat4 const& toWorld, bool reverse)
     : Quadric(toWorld, reverse),
       m_rmax(rmax),

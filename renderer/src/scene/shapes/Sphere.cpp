@@ -10,7 +10,6 @@ namespace bxdflab {
 using quadric::solveQuadratic;
 using quadric::sweepRadians;
 
-
 Sphere::Sphere(float radius, float zmin, float zmax, float thetaMaxDegrees, Mat4 const& toWorld, bool reverse)
     : Quadric(toWorld, reverse), m_radius(radius), m_phiMax(sweepRadians(thetaMaxDegrees)) {
     m_zMin = std::clamp(static_cast<double>(std::min(zmin, zmax)), -m_radius, m_radius);
