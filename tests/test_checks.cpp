@@ -96,3 +96,38 @@ TEST_CASE("render comparison: noise passes, a thin bias fails on the mean, a cla
     for (float& v : wrong.variance) v = 1e6f;  // "my noise is enormous, so anything agrees"
     CHECK_FALSE(compareRenders(wrong, reference).passed());
 }
+
+TEST_CASE("render comparison: a pixel whose few samples all missed a rare light is noisy, not exact", "[checks][render]") {
+    // A penumbra at 8 spp: each sample sees the light with probability 1/16 and then adds 1/8.
+    // Many pixels get no hit at all and report a variance of exactly 0; their neighbours show the noise.
+    int const w = 64, h = 64, spp = 8;
+    auto render = [&](unsigned seed, float hitProbability) {
+        std::mt19937 random(seed);
+        std::uniform_real_distribution<float> u(0.0f, 1.0f);
+        RenderImage image;
+        image.width = w;
+        image.height = h;
+        for (int p = 0; p < w * h; ++p) {
+            int hits = 0;
+            for (int s = 0; s < spp; ++s) hits += u(random) < hitProbability;
+            float mean = static_cast<float>(hits) / spp, q = static_cast<float>(hits) / spp;
+            float varianceOfMean = q * (1 - q) / (spp - 1);  // of samples that are 0 or 1, scaled to the mean
+            for (int c = 0; c < 3; ++c) {
+                image.rgb.push_back(mean);
+                image.variance.push_back(varianceOfMean);
+            }
+        }
+        return image;
+    };
+    RenderImage reference = render(1, 1.0f / 16);
+    int reportedExact = 0;
+    for (size_t i = 0; i < reference.variance.size(); i += 3) reportedExact += reference.variance[i] == 0.0f;
+    REQUIRE(reportedExact > 1000);  // the situation this test is about
+    for (unsigned seed : {2u, 3u, 4u}) CHECK(compareRenders(render(seed, 1.0f / 16), reference).passed());
+    // Where the whole neighbourhood is noise-free, any difference still fails.
+    RenderImage dark = render(5, 0.0f), lit = render(6, 0.0f);
+    for (int y = 24; y < 40; ++y)
+        for (int x = 24; x < 40; ++x) lit.rgb[3 * (static_cast<size_t>(y) * w + x)] = 0.01f;
+    CHECK(compareRenders(dark, dark).passed());
+    CHECK_FALSE(compareRenders(lit, dark).pixelsAgree);
+}

@@ -1,7 +1,9 @@
 // Are two renders of one scene the same image up to Monte Carlo noise?
 // For each pixel a two-sample z test on the difference of the means, with
 // each render's per-pixel variance of the mean, at alpha = 0.01 with Sidak's
-// correction over the pixels; the renders agree when at least 99.75% of the
+// correction over the pixels (the reference's variance is at least the mean
+// of its 5 x 5 neighbourhood's, so that a pixel whose few samples all agreed
+// by chance is not taken as noise-free); the renders agree when at least 99.75% of the
 // pixels pass (the render-regression rule of Mitsuba's test suite) and the
 // image means agree (a z test on the sums, which catches a bias spread too
 // thinly for any one pixel to show).
