@@ -152,6 +152,10 @@ set_tests_properties(chapters.ch07_gdb_walkthrough PROPERTIES
   PASS_REGULAR_EXPRESSION "\\$1 = [1-9][0-9]*\n\\$2 = {<RtFloat3> = {x = "
   FAIL_REGULAR_EXPRESSION "There is no member|incomplete type")
 
+# The plugin ABI version moves with the Rix headers (stale plugin builds are refused, not run).
+add_test(NAME api.version_tracks_the_headers COMMAND ${BXDFLAB_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_api_version.py ${PROJECT_SOURCE_DIR})
+set_tests_properties(api.version_tracks_the_headers PROPERTIES PASS_REGULAR_EXPRESSION "the headers are as recorded")
+
 # Every command the chapters show runs, and every figure they link exists.
 add_test(NAME chapters.commands_and_figures COMMAND ${BXDFLAB_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_chapters.py ${PROJECT_SOURCE_DIR})
 set_tests_properties(chapters.commands_and_figures PROPERTIES PASS_REGULAR_EXPRESSION "command blocks run; 0 problems" RUN_SERIAL TRUE)

@@ -31,6 +31,14 @@ typedef const char* RtConstString;
 /// Makes a symbol visible outside the shared object (plugins are built with
 /// hidden visibility, so only the create/destroy entry points are exported).
 #define PRMANEXPORT __attribute__((visibility("default")))
+
+/// The version of the plugin ABI these headers describe (class layouts and
+/// virtual tables). Every plugin that includes them exports it, and the
+/// renderer refuses a plugin built against another version with a message
+/// instead of crashing inside it. tests/check_api_version.py fails when the
+/// headers change without this number being reconsidered.
+#define RIX_PLUGIN_API_VERSION 3
+extern "C" PRMANEXPORT __attribute__((weak)) int RixPluginApiVersion() { return RIX_PLUGIN_API_VERSION; }
 /// Stack memory that vanishes when the calling function returns. Use it for
 /// small per-call scratch arrays (e.g. random numbers for one batch).
 #define RixAlloca(nbytes) alloca(nbytes)

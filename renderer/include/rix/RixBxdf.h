@@ -35,9 +35,6 @@
 #include "RixRNG.h"
 #include "RixShading.h"
 
-/// Version of this API; the renderer refuses plugins built against another one.
-#define RIX_BXDF_API_VERSION 1
-
 /// Which side(s) of the surface a Bxdf scatters on, relative to the geometric
 /// normal: "outside" is the side Ngn points to.
 enum RixBXEvaluateDomain {
@@ -181,10 +178,6 @@ public:
         PIXAR_ARGUSED(paramIds);
     }
 };
-
-/// Every plugin built with these headers reports the API version it saw, so
-/// the renderer can refuse a stale build with a clear message.
-extern "C" PRMANEXPORT __attribute__((weak)) int RixBxdfPluginApiVersion() { return RIX_BXDF_API_VERSION; }
 
 /// Write `RIX_BXDFPLUGINCREATE { return new MyFactory(); }` in your plugin.
 #define RIX_BXDFPLUGINCREATE extern "C" PRMANEXPORT RixBxdfFactory* CreateRixBxdfFactory(const char* hint)

@@ -100,10 +100,6 @@ PRMAN_INLINE float RixPowerHeuristic(float nf, float pdfF, float ng, float pdfG)
     return denominator > 0.0f ? (f * f) / denominator : 0.0f;
 }
 
-/// Version of this API; the renderer refuses integrators built against another one.
-#define RIX_INTEGRATOR_API_VERSION 2
-extern "C" PRMANEXPORT __attribute__((weak)) int RixIntegratorPluginApiVersion() { return RIX_INTEGRATOR_API_VERSION; }
-
 /// Create an integrator from the RIB's parameters. Return null (after saying
 /// why with messages->Error) when the parameters are unusable.
 #define RIX_INTEGRATORCREATE \

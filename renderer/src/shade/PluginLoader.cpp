@@ -10,6 +10,20 @@ namespace bxdflab {
 namespace fs = std::filesystem;
 namespace {
 constexpr size_t kMaxParams = 1024;  // a table longer than this has lost its end marker
+
+/// Why a plugin built against other Rix headers cannot be used, or empty.
+/// Calling into a plugin whose classes have another layout crashes or
+/// silently corrupts memory, so a stale build is refused before any call.
+std::string apiMismatch(SharedObject const& library) {
+    using VersionFn = int (*)();
+    auto version = reinterpret_cast<VersionFn>(library.ownSymbol("RixPluginApiVersion"));
+    if (!version)
+        return "was built against older Rix headers (it does not export RixPluginApiVersion); rebuild it";
+    if (int v = version(); v != RIX_PLUGIN_API_VERSION)
+        return "was built against Rix API version " + std::to_string(v) + ", this renderer provides version " +
+               std::to_string(RIX_PLUGIN_API_VERSION) + "; rebuild it";
+    return "";
+}
 }  // namespace
 
 ShadingPlugin::ShadingPlugin(Kind kind, std::string name, std::string path, Diagnostics& diagnostics)
@@ -36,13 +50,8 @@ ShadingPlugin::ShadingPlugin(Kind kind, std::string name, std::string path, Diag
              ", or extern \"C\" PRMANEXPORT)" + (bxdf && m_library.symbol("CreateRixPattern") ? "; it is a pattern" : "") +
              (!bxdf && m_library.symbol("CreateRixBxdfFactory") ? "; it is a Bxdf" : ""));
     if (!destroy) fail(std::string("does not export ") + destroyName + " (define it with " + destroyMacro + ")");
+    if (std::string why = apiMismatch(m_library); !why.empty()) fail(why);
     if (bxdf) {
-        if (auto version = reinterpret_cast<VersionFn>(m_library.symbol("RixBxdfPluginApiVersion"))) {
-            int v = version();
-            if (v != RIX_BXDF_API_VERSION)
-                fail("was built against Rix API version " + std::to_string(v) + ", this renderer provides version " +
-                     std::to_string(RIX_BXDF_API_VERSION) + "; rebuild the plugin");
-        }
         m_destroyBxdf = reinterpret_cast<void (*)(RixBxdfFactory*)>(destroy);
         m_factory = reinterpret_cast<RixBxdfFactory* (*)(const char*)>(create)(m_name.c_str());
     } else {
@@ -178,10 +187,7 @@ IntegratorPlugin::IntegratorPlugin(std::string name, std::string path, ParamList
     if (!create || !m_destroy)
         throw RenderError(what + ": does not export CreateRixIntegrator and DestroyRixIntegrator "
                                  "(define them with RIX_INTEGRATORCREATE and RIX_INTEGRATORDESTROY)");
-    using VersionFn = int (*)();
-    if (auto version = reinterpret_cast<VersionFn>(m_library.symbol("RixIntegratorPluginApiVersion")))
-        if (version() != RIX_INTEGRATOR_API_VERSION)
-            throw RenderError(what + ": built against another version of RixIntegrator.h; rebuild it");
+    if (std::string why = apiMismatch(m_library); !why.empty()) throw RenderError(what + ": " + why);
     CapturingMessages messages(diagnostics, m_name);
     RibParameterList list(params);
     m_integrator = create(&list, &messages);

@@ -43,7 +43,6 @@ public:
     RixMessages& messages() { return m_messages; }
 
 private:
-    using VersionFn = int (*)();
     /// Finalizes and destroys the factory (a failed constructor's clean-up too).
     void release();
     void destroyFactory();

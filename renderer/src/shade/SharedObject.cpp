@@ -1,6 +1,9 @@
 #include "shade/SharedObject.h"
 
 #include <dlfcn.h>
+#include <link.h>
+
+#include <cstring>
 
 #include "core/Error.h"
 
@@ -20,5 +23,14 @@ SharedObject::~SharedObject() {
 }
 
 void* SharedObject::symbol(const char* name) const { return dlsym(m_handle, name); }
+
+void* SharedObject::ownSymbol(const char* name) const {
+    void* address = symbol(name);
+    link_map* self = nullptr;
+    Dl_info where;
+    if (!address || dlinfo(m_handle, RTLD_DI_LINKMAP, &self) != 0 || !self || !dladdr(address, &where)) return nullptr;
+    // dladdr names the object that contains the address by the same link-map name.
+    return where.dli_fname && self->l_name && std::strcmp(where.dli_fname, self->l_name) == 0 ? address : nullptr;
+}
 
 }  // namespace bxdflab

@@ -15,6 +15,9 @@ public:
 
     /// The address of an exported symbol, or nullptr.
     void* symbol(const char* name) const;
+    /// The symbol only if this object defines it itself (not one of the
+    /// libraries it depends on, nor the program that loaded it), or nullptr.
+    void* ownSymbol(const char* name) const;
 
 private:
     void* m_handle = nullptr;
