@@ -44,9 +44,18 @@ int main(int argc, char** argv) {
         cells.cosCells = 32;
         cells.phiCells = 64;
         DirectionCounts counts(cells);
+        // What each valid sample contributes to an estimate, W / FPdf (averaged
+        // over r, g, b): a good sampler keeps it close to constant and small.
+        double weightSum = 0.0, weightLargest = 0.0;
         for (auto const& g : probe.generate(std::vector<ProbePoint>(static_cast<size_t>(samples), point),
-                                            independentSamples(static_cast<size_t>(samples), 7u)))
+                                            independentSamples(static_cast<size_t>(samples), 7u))) {
             counts.add(g.valid, g.L, g.FPdf);
+            if (g.valid && g.FPdf > 0.0f) {
+                double weight = (g.W.r + g.W.g + g.W.b) / (3.0 * g.FPdf);
+                weightSum += weight;
+                weightLargest = std::max(weightLargest, weight);
+            }
+        }
         auto mass = integrateCells(cells, [&](std::vector<Vec3> const& L) {
             std::vector<double> pdf;
             for (auto const& r : probe.evaluate(std::vector<ProbePoint>(L.size(), point), L)) pdf.push_back(r.FPdf);
@@ -91,6 +100,7 @@ int main(int argc, char** argv) {
         std::printf("%s at theta %.1f phi %.1f: %ld of %ld samples valid, FPdf integrates to %.4f over the hemisphere\n",
                     plugin.c_str(), theta, phi, valid, counts.total, t.pdfMass);
         if (valid == 0) std::printf("no sample was valid: GenerateSample never called SetValid(true)\n");
+        else std::printf("sample weight W/FPdf: mean %.4g, largest %.4g\n", weightSum / valid, weightLargest);
         if (counts.nonFinite) std::printf("%ld valid samples had a NaN or infinite direction or pdf\n", counts.nonFinite);
         std::printf("chi-squared %.2f with %d degrees of freedom: p = %.4g -> %s\n", chi.statistic,
                     chi.degreesOfFreedom, chi.pValue, pass ? "PASS" : "FAIL");
