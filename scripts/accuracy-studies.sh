@@ -28,6 +28,13 @@ for alpha in 0.3 0.1 0.03; do
     --variant cosine="Bxdf \"ward\" \"glossy\" \"float uRoughness\" [$alpha] \"float vRoughness\" [$alpha] \"int samplingMode\" [0]"
 done
 
+# Chapter 9: GGX sampled by cosine, by its distribution of normals, and by the normals the viewer sees.
+for alpha in 0.3 0.1; do
+  ggx="Bxdf \"ggx\" \"glossy\" \"float uRoughness\" [$alpha] \"float vRoughness\" [$alpha] \"int samplingMode\""
+  $converge scenes/studies/glossy.rib --spp $spp --repeats 3 --out $out/ch09-ggx-a$alpha \
+    --variant visible="$ggx [2]" --variant normals="$ggx [1]" --variant cosine="$ggx [0]"
+done
+
 # Chapters 4 and 6: light sampling, Bxdf sampling and MIS (after Veach).
 $converge scenes/studies/veach.rib --spp $spp --repeats 3 --out $out/ch06-light-bxdf-mis \
   --variant MIS='Integrator "PxrDirectLighting" "i" "int numLightSamples" [1] "int numBxdfSamples" [1]' \

@@ -38,4 +38,11 @@ sed 's/^Rotate -30 1 0 0/Rotate -18 1 0 0/; s/^Translate 0 -2.2 0/Translate 0 -1
   scenes/ch08/wood.rib > out/wood-view2.rib
 render out/wood-view2.rib -o $fig/ch08-wood-view2.png
 render scenes/ch05/texture.rib -o $fig/ch05-texture.png
+render scenes/ch09/ggx_spheres.rib -o $fig/ch09-ggx.png
+render scenes/ch09/ggx_vs_ward.rib -o $fig/ch09-ggx-vs-ward.png
+$bin/rixlobe ggx --params '"float uRoughness" [0.3] "float vRoughness" [0.3]' --theta 60 --polar $fig/ch09-lobe-ggx-polar.png --sphere ''
+for mode in 1 2; do
+  $bin/rixwarp ggx --params "\"float uRoughness\" [0.3] \"float vRoughness\" [0.3] \"int samplingMode\" [$mode]" \
+    --theta 85 --out $fig/ch09-warp-ggx-mode$mode.png
+done
 echo "figures written to $fig"

@@ -44,6 +44,10 @@ const std::vector<Model> kModels = {
     {"ward", "\"float uRoughness\" [0.3] \"float vRoughness\" [0.1]", true},
     {"ward", "\"float uRoughness\" [0.3] \"float vRoughness\" [0.1] \"int samplingMode\" [0]", false},
     {"ward", "\"float uRoughness\" [0.2] \"float vRoughness\" [0.2] \"color diffuseColor\" [0.4 0.4 0.4]", true},
+    {"ggx", "\"float uRoughness\" [0.3] \"float vRoughness\" [0.1]", true},
+    {"ggx", "\"float uRoughness\" [0.3] \"float vRoughness\" [0.1] \"int samplingMode\" [1]", true},
+    {"ggx", "\"float uRoughness\" [0.3] \"float vRoughness\" [0.1] \"int samplingMode\" [0]", false},
+    {"ggx", "\"float uRoughness\" [0.02] \"float vRoughness\" [0.02]", true},
     {"finishedwood", "", false},
     {"finishedwood", "\"vector fiberAxis\" [0.6 0.8 0] \"float beta\" [0.3] \"float eta\" [1.3]", false},
 };
@@ -128,6 +132,38 @@ TEST_CASE("solutions: values at fixed directions match hand-computed numbers", "
         CHECK(weightAt(*p, viewFrom(0), direction(20, 0)).r == Approx(alongU).epsilon(1e-4));
         CHECK(weightAt(*p, viewFrom(0), direction(20, 90)).r == Approx(alongV).epsilon(1e-4));
     }
+    SECTION("ggx: peak value, an anisotropic fall-off with Smith masking, Schlick's Fresnel and both pdfs") {
+        auto p = probe("ggx", "\"color specularColor\" [1 1 1] \"float uRoughness\" [0.2] \"float vRoughness\" [0.4]");
+        // V = L = N: H = N, D = 1 / (pi au av), no masking, F = 1, W = D / 4.
+        CHECK(weightAt(*p, viewFrom(0), Vec3(0, 0, 1)).r == Approx(1.0 / (4 * pi * 0.2 * 0.4)).epsilon(1e-4));
+        // V = N, L tilted by 20 degrees toward u: H is tilted by 10 degrees the same way.
+        double h = 10 * pi / 180, l = 20 * pi / 180;
+        auto ggxD = [&](double alpha) {  // with H in the plane of N and one tangent
+            double s = std::pow(std::sin(h) / alpha, 2) + std::pow(std::cos(h), 2);
+            return 1.0 / (pi * 0.2 * 0.4 * s * s);
+        };
+        auto lambda = [](double alpha, double theta) {
+            return (std::sqrt(1 + std::pow(alpha * std::tan(theta), 2)) - 1) / 2;
+        };
+        CHECK(weightAt(*p, viewFrom(0), direction(20, 0)).r ==
+              Approx(ggxD(0.2) / (1 + lambda(0.2, l)) / 4).epsilon(1e-4));
+        CHECK(weightAt(*p, viewFrom(0), direction(20, 90)).r ==
+              Approx(ggxD(0.4) / (1 + lambda(0.4, l)) / 4).epsilon(1e-4));
+
+        // V and L mirrored at 60 degrees: H = N, V.H = 1/2, F = F0 + (1 - F0) / 32.
+        std::string const plastic = "\"color specularColor\" [0.04 0.04 0.04] \"float uRoughness\" [0.3] "
+                                    "\"float vRoughness\" [0.3]";
+        double t = 60 * pi / 180, D = 1 / (pi * 0.09), F = 0.04 + 0.96 / 32, G1 = 1 / (1 + lambda(0.3, t));
+        double G2 = 1 / (1 + 2 * lambda(0.3, t));
+        for (int mode : {1, 2}) {
+            auto q = probe("ggx", plastic + " \"int samplingMode\" [" + std::to_string(mode) + "]");
+            auto r = q->evaluate({viewFrom(60)}, {direction(60, 180)})[0];
+            CAPTURE(mode);
+            CHECK(r.W.g == Approx(F * D * G2 / (4 * std::cos(t))).epsilon(1e-4));
+            // distribution of normals: D (N.H) / (4 V.H); visible normals: G1(V) D / (4 cos theta_V)
+            CHECK(r.FPdf == Approx(mode == 1 ? D / (4 * 0.5) : G1 * D / (4 * std::cos(t))).epsilon(1e-4));
+        }
+    }
     SECTION("finishedwood with eta = 1: no coat, diffuse and fiber lobes through a clear boundary") {
         auto p = probe("finishedwood", "\"float eta\" [1] \"color diffuseColor\" [0.5 0.5 0.5] "
                                        "\"color fiberColor\" [1 1 1] \"float beta\" [0.1] \"vector fiberAxis\" [1 0 0]");
@@ -197,6 +233,28 @@ TEST_CASE("solutions: FPdf integrates to 1 over the hemisphere, or to the valid 
     int valid = 0;
     for (auto const& g : p->generate(points, stratifiedSamples(points.size(), 0))) valid += g.valid;
     CHECK(valid / 20000.0 == Approx(integral).margin(0.01));
+}
+
+TEST_CASE("chapter 9: sampling visible normals bounds every sample's weight by 1; sampling D does not", "[solutions][ch09]") {
+    // With F0 = 1 the weight a visible-normal sample carries is W / FPdf = G2(V, L) / G1(V) <= 1 at every
+    // view and roughness, grazing included; sampling D(m) cos(theta_m) lets it grow at grazing views.
+    auto const alpha = GENERATE(0.01, 0.3, 1.0);
+    auto const viewTheta = GENERATE(0.0, 60.0, 85.0, 89.5);
+    CAPTURE(alpha, viewTheta);
+    std::string const roughness = "\"float uRoughness\" [" + std::to_string(alpha) + "] \"float vRoughness\" [" +
+                                  std::to_string(alpha) + "]";
+    auto largestWeight = [&](int mode) {
+        auto p = probe("ggx", roughness + " \"int samplingMode\" [" + std::to_string(mode) + "]");
+        std::vector<ProbePoint> points(4096, viewFrom(viewTheta, 30.0));
+        double largest = 0.0;
+        for (auto const& g : p->generate(points, stratifiedSamples(points.size(), 3)))
+            if (g.valid) largest = std::max(largest, static_cast<double>(g.W.g / g.FPdf));
+        return largest;
+    };
+    double visible = largestWeight(2);
+    CHECK(visible <= 1.0 + 1e-4);
+    CHECK(visible > 0.0);
+    if (viewTheta >= 85.0 && alpha >= 0.3) CHECK(largestWeight(1) > 1.5);
 }
 
 TEST_CASE("chapter 7: the buggydiffuse starter's GenerateSample and EvaluateSample disagree; the solution's agree",

@@ -69,6 +69,24 @@ Ward, alpha = 0.03:
 
 ![Ward, alpha = 0.03: relMSE against time](figures/studies/ch08-ward-a0.03/error_vs_time.png)
 
+## Three ways to sample GGX (chapter 9)
+
+The same scene with a GGX sphere. Sampling the distribution of normals puts
+samples where D is large but ignores which normals the viewer can see: at
+the sphere's silhouette, where the view grazes the surface, most of its
+samples fall below the horizon and the few left carry large weights. The
+normals the viewer sees give every sample a weight of at most 1.
+
+GGX, alpha = 0.3:
+
+{table(folder, "ch09-ggx-a0.3")}
+
+GGX, alpha = 0.1:
+
+{table(folder, "ch09-ggx-a0.1")}
+
+![GGX, alpha = 0.1: relMSE against time](figures/studies/ch09-ggx-a0.1/error_vs_time.png)
+
 ## Light sampling, Bxdf sampling and MIS (after Veach)
 
 A glossy floor under a small and a large sphere light. Sampling the Bxdf

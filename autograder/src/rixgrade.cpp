@@ -53,7 +53,7 @@ int main(int argc, char** argv) {
     one->excludes(many);
     prebuilt->excludes(many);
     one->excludes(prebuilt);
-    app.add_option("--chapter", chapters, "grade only these chapters (2, 6, 7, 8)");
+    app.add_option("--chapter", chapters, "grade only these chapters (e.g. 6 9: those with exercise manifests in starter/)");
     std::vector<std::string> only;
     app.add_option("--only", only, "grade only these plugins (e.g. diffuse)");
     app.add_option("--out", out, "where the reports go (default: grade, or grades for --class)");
