@@ -3,6 +3,7 @@
 #include "RiTypesHelper.h"
 #include "RixBxdf.h"
 #include "RixBxdfLobe.h"
+#include "RixBxdfScratch.h"
 #include "RixIntegrator.h"
 #include "RixInterfaces.h"
 #include "RixPattern.h"

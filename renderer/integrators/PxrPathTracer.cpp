@@ -17,7 +17,7 @@
 #include <cmath>
 #include <string>
 
-#include "common/BxdfScratch.h"
+#include "RixBxdfScratch.h"
 #include "common/DirectLighting.h"
 #include "common/Params.h"
 
@@ -92,7 +92,7 @@ private:
         float const nL = static_cast<float>(ictx.GetNumLights() == 0 ? 0 : m_numLightSamples);
         float const nB = static_cast<float>(m_numBxdfSamples);
         bool const continues = depth < m_maxPathLength;
-        BxdfScratch q(ctx);
+        RixBxdfScratch q(ctx);
         // The continuation rays (the first Bxdf sample of each point).
         int* index = pool.AllocFor<int>(n);
         RtVector3* dir = pool.AllocFor<RtVector3>(n);

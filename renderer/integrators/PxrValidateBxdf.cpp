@@ -12,7 +12,7 @@
 //   int numSamples [4]
 #include <cmath>
 
-#include "common/BxdfScratch.h"
+#include "RixBxdfScratch.h"
 #include "common/Params.h"
 
 using namespace bxdflab;
@@ -36,7 +36,7 @@ public:
                    RtColorRGB* radiance) override {
         int const n = ctx.numPts;
         if (!bxdf.GetAllLobeTraits().HasAny()) return;
-        BxdfScratch generated(ctx), evaluated(ctx);
+        RixBxdfScratch generated(ctx), evaluated(ctx);
         RtNormal3 const* Nn;
         RtVector3 const* Vn;
         ctx.GetBuiltinVar(RixShadingContext::k_Nn, &Nn);

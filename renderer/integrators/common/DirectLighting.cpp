@@ -18,7 +18,7 @@
 #include <cmath>
 #include <string>
 
-#include "BxdfScratch.h"
+#include "RixBxdfScratch.h"
 
 namespace bxdflab {
 namespace {
@@ -44,7 +44,7 @@ void addLightSamples(RixShadingContext const& ctx, RixBxdf& bxdf, RixRNG& rng, R
     RixShadingContext::Allocator pool(&ctx);
     RtFloat2* xi = pool.AllocFor<RtFloat2>(n);
     RixLightSample* lightSample = pool.AllocFor<RixLightSample>(n);
-    BxdfScratch q(ctx);
+    RixBxdfScratch q(ctx);
     float const nL = static_cast<float>(numLightSamples), nB = static_cast<float>(numBxdfSamples);
 
     // For each light, pick points on it and ask the Bxdf how much of that
@@ -112,7 +112,7 @@ void DirectLighting::Integrate(RixShadingContext const& ctx, RixBxdf& bxdf, RixR
     addLightSamples(ctx, bxdf, rng, ictx, m_numLightSamples, m_numBxdfSamples, nullptr, radiance);
 
     // 4. Bxdf sampling: let the Bxdf choose directions, and see which reach a light.
-    BxdfScratch q(ctx);
+    RixBxdfScratch q(ctx);
     float const nL = static_cast<float>(m_numLightSamples), nB = static_cast<float>(m_numBxdfSamples);
     for (int s = 0; s < m_numBxdfSamples; ++s) {
         q.generate(bxdf, rng, ictx);

@@ -1,13 +1,17 @@
-// The per-point arrays an integrator passes to a Bxdf's GenerateSample and
-// EvaluateSample, allocated from the batch's memory pool.
+// For integrator writers: the per-point arrays an integrator passes to a
+// Bxdf's GenerateSample and EvaluateSample, allocated from the batch's memory
+// pool, with the two calls made the way the renderer's own integrators make
+// them (arrays cleared first, invalid pdfs reported and dropped).
+//
+//     RixBxdfScratch q(ctx);
+//     q.generate(bxdf, rng, ictx);      // q.Ln[i], q.W.SumAtPoint(i), q.FPdf[i], q.lobeSampled[i]
+//     q.Ln[i] = ...; q.evaluate(bxdf, rng, ictx);
 #pragma once
 
 #include "RixBxdf.h"
 #include "RixIntegrator.h"
 
-namespace bxdflab {
-
-struct BxdfScratch {
+struct RixBxdfScratch {
     int numPts;
     RixBXLobeTraits* lobesWanted;     ///< all lobes, for every point
     RixBXLobeTraits* lobesEvaluated;
@@ -17,7 +21,7 @@ struct BxdfScratch {
     float* RPdf;
     RixBXLobeWeights W;
 
-    explicit BxdfScratch(RixShadingContext const& ctx)
+    explicit RixBxdfScratch(RixShadingContext const& ctx)
         : numPts(ctx.numPts),
           lobesWanted(RixShadingContext::Allocator(&ctx).AllocFor<RixBXLobeTraits>(ctx.numPts)),
           lobesEvaluated(RixShadingContext::Allocator(&ctx).AllocFor<RixBXLobeTraits>(ctx.numPts)),
@@ -67,5 +71,3 @@ struct BxdfScratch {
             }
     }
 };
-
-}  // namespace bxdflab
