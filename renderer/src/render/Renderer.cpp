@@ -264,6 +264,7 @@ Renderer::Renderer(Scene& scene, RenderSettings settings, Diagnostics& diagnosti
     }
     r.integratorPlugin = r.loader.integrator(integrator.name, integrator.params, integrator.where);
     r.integrator = &r.integratorPlugin->integrator();
+    m_stats.plugins.insert(m_stats.plugins.begin(), r.integratorPlugin->name() + " (" + r.integratorPlugin->path() + ")");
     if (r.integrator->WantsHeadlight()) {
         r.headlight = std::make_unique<HeadLight>(r.camera->position());
         r.shadingLights.push_back(r.headlight.get());
