@@ -32,6 +32,11 @@ int main(int argc, char** argv) {
         std::vector<Exercise> exercises = loadExercises(BXDFLAB_SOURCE_DIR);
         Exercise const* exercise = findExercise(exercises, plugin);
         if (!exercise) throw std::runtime_error("no exercise has a plugin named \"" + plugin + "\"");
+        if (exercise->kind == "integrator") {
+            std::cout << plugin << " is an integrator: it is graded by rendering, which rixgrade does:\n  rixgrade --plugins "
+                      << pluginDir << " --chapter " << exercise->chapter << " --only " << plugin << "\n";
+            return 0;
+        }
         Diagnostics diagnostics;
         ProbeMeasurer mine(plugin, {pluginDir}, diagnostics);
         Diagnostics quiet(false);
@@ -39,7 +44,7 @@ int main(int argc, char** argv) {
         CheckContext context{*exercise, mine, reference, seed};
         bool allPassed = true;
         for (auto const& [check, points] : exercise->checks) {
-            if (check == "renders" || (!only.empty() && check != only)) continue;
+            if (Exercise::isRenderCheck(check) || (!only.empty() && check != only)) continue;
             CheckOutcome outcome;
             try {
                 outcome = runCheck(check, context);

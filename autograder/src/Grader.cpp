@@ -4,8 +4,10 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <optional>
 #include <regex>
 #include <sstream>
 
@@ -207,53 +209,120 @@ void writeRenderImages(OutputFolder const& out, std::string const& plugin, Rende
     out.writePng(dir + "failing-pixels.png", failing, mine.width, mine.height);
 }
 
-CheckResult renderCheck(Exercise const& e, double points, Course& course, SandboxLayout const& layout,
-                        nlohmann::json const& rubric, OutputFolder const& out) {
-    CheckResult r = CheckResult::start(e, "renders", points);
-    int spp = rubric.value("render_spp", 8);
+/// One scene rendered with the student's plugin and compared with the solution's render.
+struct SceneRender {
+    std::string problem;                  ///< why there is no image to compare, or empty
+    std::string rendererSaid;             ///< the end of the renderer's messages
+    RenderImage mine;
+    RenderImage const* theirs = nullptr;
+    RenderVerdict verdict;
+};
+
+SceneRender renderScene(Exercise const& e, std::string const& scene, Course& course, SandboxLayout const& layout,
+                        nlohmann::json const& rubric) {
+    SceneRender out;
+    int spp = e.renderSpp > 0 ? e.renderSpp : rubric.value("render_spp", 8);
     double seconds = rubric.value("render_timeout_s", 300.0);
-    auto start = Clock::now();
     RenderImage const* theirs;
     try {
-        theirs = &course.referenceRender(e.scene, spp, seconds);
+        theirs = &course.referenceRender(scene, spp, seconds);
     } catch (std::exception const& error) {
-        r.summary = std::string("could not be graded: ") + error.what();
-        return r;
+        out.problem = std::string("could not be graded: ") + error.what();
+        return out;
+    }
+    // An integrator exercise renders without the course's integrators in reach,
+    // so a submission cannot hand its work to PxrDirectLighting or PxrPathTracer.
+    SandboxLayout renderLayout = layout;
+    std::string pluginPath = "/course/plugins/integrators:/course/plugins/stock:/scratch/build/plugins";
+    if (e.kind == "integrator") {
+        auto& mounts = renderLayout.courseMounts;
+        mounts.erase(std::remove_if(mounts.begin(), mounts.end(), [](auto const& m) { return m.second == "plugins/integrators"; }),
+                     mounts.end());
+        pluginPath = "/course/plugins/stock:/scratch/build/plugins";
     }
     Launch launch;
     launch.argv = {"/course/bin/rixrender", "--quiet", "--spp", std::to_string(spp), "--seed", "1", "--raw-out-fd", "3",
-                   "--plugin-path", "/course/plugins/integrators:/course/plugins/stock:/scratch/build/plugins",
-                   "/course/scenes/" + e.scene};
+                   "--plugin-path", pluginPath, "/course/scenes/" + scene};
     launch.outputs = {3};
     launch.limits.wallSeconds = seconds;
     launch.limits.processes = 256;
-    Child child(layout, launch);
+    Child child(renderLayout, launch);
     std::string bytes;
     auto deadline = Clock::now() + ms(seconds);
     size_t expected = sizeof(RawImageHeader) + static_cast<size_t>(theirs->width) * theirs->height * RawImageHeader::kChannels * 4;
     child.readAll(3, bytes, expected + 1, deadline);
     ExitStatus status = child.wait(deadline);
-    r.seconds = std::chrono::duration<double>(Clock::now() - start).count();
-    r.details = tail(child.err(), 2000);
+    out.rendererSaid = tail(child.err(), 2000);
     if (!status.ok()) {
-        r.summary = "rendering " + e.scene + " with your plugin " + status.describe(launch.limits) +
-                    (child.err().empty() ? "" : "; the renderer said: " + tail(child.err(), 400));
-        return r;
+        out.problem = "rendering " + scene + " with your plugin " + status.describe(launch.limits) +
+                      (child.err().empty() ? "" : "; the renderer said: " + tail(child.err(), 400));
+        return out;
     }
-    RenderImage mine;
     try {
-        mine = parseRawImage(bytes, theirs->width, theirs->height);
+        out.mine = parseRawImage(bytes, theirs->width, theirs->height);
     } catch (std::exception const& error) {
-        r.summary = std::string("your render did not come back as an image: ") + error.what();
-        return r;
+        out.problem = std::string("your render did not come back as an image: ") + error.what();
+        return out;
     }
-    RenderVerdict v = compareRenders(mine, *theirs);
-    writeRenderImages(out, e.plugin, mine, *theirs, v);
-    r.hasImages = true;
-    r.status = v.passed() ? CheckOutcome::Status::Passed : CheckOutcome::Status::Failed;
-    r.score = v.passed() ? points : 0.0;
-    r.summary = v.message;
-    return r;
+    out.theirs = theirs;
+    out.verdict = compareRenders(out.mine, *theirs, 16.0, e.compareBlock);
+    return out;
+}
+
+/// A render check's result, and the first scene's two images (for the noise check that follows it).
+struct RenderOutcome {
+    CheckResult result;
+    RenderImage mine;
+    RenderImage const* theirs = nullptr;  ///< set once the student's render came back as an image
+};
+
+/// Renders every scene of the exercise; the check passes when each agrees with
+/// the solution's. The report shows the images of the first scene that does
+/// not (or of the first scene).
+RenderOutcome renderCheck(Exercise const& e, double points, Course& course, SandboxLayout const& layout,
+                          nlohmann::json const& rubric, OutputFolder const& out) {
+    RenderOutcome outcome{CheckResult::start(e, "renders", points), {}, nullptr};
+    CheckResult& r = outcome.result;
+    auto start = Clock::now();
+    std::optional<SceneRender> shown;
+    std::string failure, agreements;
+    for (std::string const& scene : e.scenes) {
+        SceneRender one = renderScene(e, scene, course, layout, rubric);
+        std::string prefix = e.scenes.size() > 1 ? scene + ": " : "";
+        if (!one.problem.empty()) {
+            failure = prefix + one.problem;
+            r.details = one.rendererSaid;
+            break;
+        }
+        if (!outcome.theirs) {
+            outcome.mine = one.mine;
+            outcome.theirs = one.theirs;
+        }
+        agreements += prefix + one.verdict.message + "\n";
+        bool const failed = !one.verdict.passed();
+        if (failed || !shown) {
+            shown = std::move(one);
+            r.details = shown->rendererSaid;
+        }
+        if (failed) {
+            failure = prefix + shown->verdict.message;
+            break;
+        }
+    }
+    r.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    if (shown) {
+        writeRenderImages(out, e.plugin, shown->mine, *shown->theirs, shown->verdict);
+        r.hasImages = true;
+    }
+    if (!failure.empty()) {
+        r.summary = failure;
+        return outcome;
+    }
+    r.status = CheckOutcome::Status::Passed;
+    r.score = points;
+    r.summary = e.scenes.size() > 1 ? "all " + std::to_string(e.scenes.size()) + " scenes agree with the solution's" : agreements.substr(0, agreements.size() - 1);
+    if (e.scenes.size() > 1) r.details = agreements + r.details;
+    return outcome;
 }
 
 }  // namespace
@@ -355,13 +424,24 @@ Grade grade(GradeOptions const& options, Course& course, OutputFolder const& out
         }
         RemoteMeasurer student(layout, e.plugin, "/scratch/build/plugins", checkLimits);
         std::string stopped;  // why the remaining checks are not run (a plugin that hung once)
+        std::optional<RenderOutcome> rendered;  // the "renders" check's images, for "noise"
         for (auto const& [check, max] : points) {
             CheckResult r = CheckResult::start(e, check, max);
             auto checkStart = Clock::now();
             if (!stopped.empty()) {
                 r.summary = "not run: " + stopped;
             } else if (check == "renders") {
-                r = renderCheck(e, max, course, layout, rubric, out);
+                rendered = renderCheck(e, max, course, layout, rubric, out);
+                r = rendered->result;
+            } else if (check == "noise") {
+                if (!rendered || !rendered->theirs) {
+                    r.summary = "not run: it compares the images of the renders check, which must come first and "
+                                "produce an image";
+                } else {
+                    NoiseVerdict v = compareNoise(rendered->mine, *rendered->theirs, e.noiseLimit);
+                    r.status = v.passed ? CheckOutcome::Status::Passed : CheckOutcome::Status::Failed;
+                    r.summary = v.message;
+                }
             } else {
                 try {
                     CheckContext context{e, student, course.reference(e.plugin), options.seed};

@@ -115,6 +115,8 @@ SimilarityReport compareSubmissions(std::vector<Submission> const& submissions, 
     for (auto const& e : exercises) {
         std::string folder = courseRoot + "/" + e.solutionFolder;
         for (auto const& relative : sourcesIn(folder)) add("reference solution", "ref", folder, e.solutionFolder + "/" + relative, oldFiles);
+        // Course code that already does what the exercise asks (the stock integrators for ch11).
+        for (auto const& relative : e.similarTo) add("course source " + relative, "course", courseRoot, relative, oldFiles);
     }
     if (newFiles.empty()) {
         report.note = "no submission has source files of its own to compare";

@@ -23,6 +23,8 @@ std::string const& checkHint(std::string const& check) {
         {"hardcases", "Guard grazing angles, zero tangents, extreme parameters and xi = 0 against NaN, infinity and "
                       "negative pdfs; mark a sample invalid instead of returning garbage."},
         {"renders", "Diff your render with the solution's (rixdiff --heatmap); the heatmap shows where they disagree."},
+        {"noise", "Render the scene at the same spp with your plugin and the solution's and compare the noise: a "
+                  "missing sampling strategy or MIS weight shows where one of them is weak."},
     };
     static std::string const none;
     auto found = hints.find(check);

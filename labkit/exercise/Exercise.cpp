@@ -10,6 +10,8 @@ namespace fs = std::filesystem;
 
 namespace bxdflab {
 
+bool Exercise::isRenderCheck(std::string const& check) { return check == "renders" || check == "noise"; }
+
 bool Exercise::gradedWith(std::string const& check) const {
     return std::any_of(checks.begin(), checks.end(), [&](auto const& c) { return c.first == check; });
 }
@@ -49,7 +51,14 @@ Exercise loadExercise(std::string const& courseRoot, std::string const& manifest
         e.solutionFolder = j.value("solution", "solutions/" + fs::path(e.folder).lexically_relative("starter").generic_string());
         e.sources = field("sources").get<std::vector<std::string>>();
         e.identicalToSolution = j.value("identicalToSolution", std::vector<std::string>{});
-        e.scene = j.value("scene", std::string());
+        e.scenes = j.value("scenes", std::vector<std::string>{});
+        e.scene = j.value("scene", e.scenes.empty() ? std::string() : e.scenes.front());
+        if (e.scenes.empty() && !e.scene.empty()) e.scenes.push_back(e.scene);
+        e.noiseLimit = j.value("noiseLimit", e.noiseLimit);
+        e.compareBlock = j.value("compareBlock", e.compareBlock);
+        e.renderSpp = j.value("renderSpp", e.renderSpp);
+        if (e.compareBlock < 1 || e.compareBlock > 64) throw std::runtime_error("\"compareBlock\" must be 1 to 64");
+        e.similarTo = j.value("similarTo", std::vector<std::string>{});
         e.params = j.value("params", std::string());
         e.colorParams = j.value("colorParams", e.params);
         e.hardCaseParams = j.value("hardCaseParams", std::vector<std::string>{});
@@ -73,6 +82,11 @@ Exercise loadExercise(std::string const& courseRoot, std::string const& manifest
         nlohmann::json const notApplicable = j.value("notApplicable", nlohmann::json::object());
         for (auto const& [check, because] : notApplicable.items()) e.notApplicable.push_back({check, because.get<std::string>()});
         for (auto const& c : field("checks")) e.checks.emplace_back(c.at(0).get<std::string>(), c.at(1).get<double>());
+        if (e.kind != "bxdf" && e.kind != "sampling" && e.kind != "integrator")
+            throw std::runtime_error("\"kind\" must be \"bxdf\", \"sampling\" or \"integrator\"");
+        for (auto const& [check, points] : e.checks)
+            if (Exercise::isRenderCheck(check) && e.scene.empty())
+                throw std::runtime_error("the check \"" + check + "\" needs a \"scene\"");
     } catch (nlohmann::json::exception const& error) {
         throw std::runtime_error(manifestPath + ": " + error.what());
     }

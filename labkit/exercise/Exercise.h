@@ -34,12 +34,17 @@ struct Exercise {
     std::string chapter;  ///< "6", "7", "8", ...
     std::string title;
     int order = 0;        ///< place within its chapter (the order the chapter teaches them)
-    std::string kind;     ///< "bxdf", or "sampling" (the ch08 sampling functions)
+    std::string kind;     ///< "bxdf", "sampling" (the ch08 sampling functions) or "integrator" (ch11)
     std::string folder;   ///< the starter folder, relative to the course root ("starter/ch06/diffuse")
     std::string solutionFolder;  ///< relative to the course root ("solutions/ch06/diffuse")
     std::vector<std::string> sources;              ///< files the plugin is built from
     std::vector<std::string> identicalToSolution;  ///< starter files that must equal the solution's
     std::string scene;    ///< rendered for the "renders" check (relative to scenes/), or empty
+    std::vector<std::string> scenes;  ///< every scene the "renders" check compares ("scenes", or just "scene")
+    std::vector<std::string> similarTo;  ///< course files (from the root) a copy of which the similarity report flags
+    int renderSpp = 0;        ///< samples per pixel of the "renders" check's images (0: the rubric's render_spp)
+    int compareBlock = 1;     ///< the "renders" check compares squares of this many pixels a side (see compareRenders)
+    double noiseLimit = 1.5;  ///< the "noise" check: the render's variance at most this times the solution's
 
     std::string params;       ///< parameters every check uses (white where energy matters)
     std::string colorParams;  ///< a second, coloured set the values check also compares
@@ -55,6 +60,9 @@ struct Exercise {
 
     std::vector<std::pair<std::string, double>> checks;  ///< check name -> default points, in report order
 
+    /// Whether `check` is one rixgrade runs by rendering the exercise's scene
+    /// ("renders", "noise") rather than by probing the plugin.
+    static bool isRenderCheck(std::string const& check);
     /// Whether the exercise is graded with `check`.
     bool gradedWith(std::string const& check) const;
     /// The reason `check` does not apply, or empty.

@@ -53,7 +53,53 @@ double relativeMse(std::vector<float> const& a, std::vector<float> const& b) {
     return n ? sum / static_cast<double>(n) : 0.0;
 }
 
-RenderVerdict compareRenders(RenderImage const& a, RenderImage const& b, double varianceCap) {
+RenderImage averageBlocks(RenderImage const& image, int block) {
+    RenderImage out;
+    out.width = (image.width + block - 1) / block;
+    out.height = (image.height + block - 1) / block;
+    out.rgb.assign(3 * static_cast<size_t>(out.width) * out.height, 0.0f);
+    out.variance.assign(out.rgb.size(), 0.0f);
+    for (int by = 0; by < out.height; ++by)
+        for (int bx = 0; bx < out.width; ++bx) {
+            int x1 = std::min(image.width, (bx + 1) * block), y1 = std::min(image.height, (by + 1) * block);
+            double count = static_cast<double>(x1 - bx * block) * (y1 - by * block);
+            for (int c = 0; c < 3; ++c) {
+                double sum = 0.0, variance = 0.0;
+                for (int y = by * block; y < y1; ++y)
+                    for (int x = bx * block; x < x1; ++x) {
+                        size_t i = 3 * (static_cast<size_t>(y) * image.width + x) + c;
+                        sum += image.rgb[i];
+                        variance += image.variance[i];
+                    }
+                size_t o = 3 * (static_cast<size_t>(by) * out.width + bx) + c;
+                out.rgb[o] = static_cast<float>(sum / count);
+                out.variance[o] = static_cast<float>(variance / (count * count));  // of the mean of independent pixels
+            }
+        }
+    return out;
+}
+
+RenderVerdict compareRenders(RenderImage const& tested, RenderImage const& reference, double varianceCap, int block) {
+    if (block > 1 && tested.width == reference.width && tested.height == reference.height &&
+        tested.rgb.size() == reference.rgb.size() && tested.variance.size() == reference.variance.size()) {
+        RenderVerdict v = compareRenders(averageBlocks(tested, block), averageBlocks(reference, block), varianceCap, 1);
+        // The map the report draws stays at full resolution: each pixel shows its square's z.
+        std::vector<float> full(static_cast<size_t>(tested.width) * tested.height);
+        int const blocksWide = (tested.width + block - 1) / block;
+        for (int y = 0; y < tested.height; ++y)
+            for (int x = 0; x < tested.width; ++x)
+                full[static_cast<size_t>(y) * tested.width + x] = v.zMap[static_cast<size_t>(y / block) * blocksWide + x / block];
+        v.zMap = std::move(full);
+        std::string const squares = "of the " + std::to_string(block) + "x" + std::to_string(block) + " squares of pixels";
+        for (std::string const pixels : {"of the pixels", "every pixel is"}) {
+            size_t at = v.message.find(pixels);
+            if (at != std::string::npos)
+                v.message.replace(at, pixels.size(), pixels[0] == 'o' ? squares : "every square is");
+        }
+        return v;
+    }
+    RenderImage const& a = tested;
+    RenderImage const& b = reference;
     RenderVerdict v;
     size_t const pixels = static_cast<size_t>(a.width) * static_cast<size_t>(a.height);
     if (a.width != b.width || a.height != b.height || a.rgb.size() != 3 * pixels || b.rgb.size() != 3 * pixels ||
@@ -122,6 +168,36 @@ RenderVerdict compareRenders(RenderImage const& a, RenderImage const& b, double 
                       "image means agree (%.5g and %.5g, z = %.1f); relMSE %.3g",
                       100.0 * v.passFraction, v.meanTested, v.meanReference, v.meanZ, v.relMse);
     }
+    v.message = text;
+    return v;
+}
+
+NoiseVerdict compareNoise(RenderImage const& tested, RenderImage const& reference, double limit) {
+    NoiseVerdict v;
+    // The sum of the per-pixel variances without each image's largest 1%: a
+    // few pixels whose handful of samples caught a rare bright path would
+    // otherwise decide the ratio (two renders by the same estimator then
+    // differ by up to a third; trimmed, by a few percent).
+    auto trimmedSum = [](std::vector<float> const& variance) {
+        std::vector<double> values;
+        values.reserve(variance.size());
+        for (float x : variance) values.push_back(std::isfinite(x) ? std::max(0.0, static_cast<double>(x)) : 1e30);
+        size_t keep = values.size() - values.size() / 100;
+        std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(keep), values.end());
+        double sum = 0.0;
+        for (size_t i = 0; i < keep; ++i) sum += values[i];
+        return sum;
+    };
+    double const mine = trimmedSum(tested.variance), theirs = trimmedSum(reference.variance);
+    v.ratio = theirs > 0.0 ? mine / theirs : (mine > 0.0 ? 1e30 : 1.0);
+    v.passed = v.ratio <= limit;
+    char text[256];
+    std::snprintf(text, sizeof text,
+                  "your image's variance is %.3g times the solution's at the same samples per pixel (at most %.3g "
+                  "allowed)%s",
+                  std::min(v.ratio, 1e6), limit,
+                  v.passed ? "" : ": the estimate is right on average but converges slower; is a sampling "
+                                  "strategy or a MIS weight missing?");
     v.message = text;
     return v;
 }

@@ -37,7 +37,28 @@ struct RenderVerdict {
 /// `tested` is judged against `reference`. A tested variance larger than
 /// `varianceCap` times the reference's (plus a little) is not believed: it
 /// is taken at that cap, so claiming a huge variance gains nothing.
-RenderVerdict compareRenders(RenderImage const& tested, RenderImage const& reference, double varianceCap = 16.0);
+/// With block > 1 both images are first averaged over block x block squares
+/// (the variance of a square's mean from its pixels'): for scenes whose light
+/// arrives as rare fireflies, whose single pixels at a few samples are far
+/// from the normal distribution the test assumes.
+RenderVerdict compareRenders(RenderImage const& tested, RenderImage const& reference, double varianceCap = 16.0,
+                             int block = 1);
+
+/// The image averaged over block x block squares (a partial square at the
+/// right or bottom edge averages what it has).
+RenderImage averageBlocks(RenderImage const& image, int block);
+
+/// How noisy `tested` is against `reference`, rendered with the same samples
+/// per pixel: the ratio of their summed per-pixel variances of the mean
+/// (each image's largest 1% left out, see compareNoise in the .cpp). An
+/// integrator that leaves out a sampling strategy (or weights it badly) can
+/// still converge to the right image, but slower: this ratio shows it.
+struct NoiseVerdict {
+    double ratio = 0.0;  ///< tested / reference (1 for the same estimator)
+    bool passed = false;
+    std::string message;
+};
+NoiseVerdict compareNoise(RenderImage const& tested, RenderImage const& reference, double limit);
 
 /// Relative mean squared error, mean((a - b)^2 / (b^2 + 0.01)), over every value.
 double relativeMse(std::vector<float> const& a, std::vector<float> const& b);
