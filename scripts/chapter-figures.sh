@@ -45,4 +45,8 @@ for mode in 1 2; do
   $bin/rixwarp ggx --params "\"float uRoughness\" [0.3] \"float vRoughness\" [0.3] \"int samplingMode\" [$mode]" \
     --theta 85 --out $fig/ch09-warp-ggx-mode$mode.png
 done
+for scene in mis_light mis_bxdf mis; do
+  render scenes/ch11/$scene.rib --spp 4 -o $fig/ch11-${scene//_/-}-4spp.png
+done
+render scenes/ch11/box.rib -o $fig/ch11-box.png
 echo "figures written to $fig"

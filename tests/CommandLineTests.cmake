@@ -71,7 +71,8 @@ set_tests_properties(cli.tiff_output PROPERTIES WORKING_DIRECTORY ${CLI_OUT} PAS
 # no non-finite values, and (until the TODOs are done) a message saying which
 # body is missing.
 foreach(pair emissive:ch06/emissive diffuse:ch06/diffuse specular:ch06/specular plastic:ch06/plastic
-             ward:ch08/ward_teapot finishedwood:ch08/wood buggydiffuse:ch07/buggydiffuse ggx:ch09/ggx_spheres)
+             ward:ch08/ward_teapot finishedwood:ch08/wood buggydiffuse:ch07/buggydiffuse ggx:ch09/ggx_spheres
+             mydirect:ch11/mis mypath:ch11/box)
   string(REPLACE ":" ";" parts ${pair})
   list(GET parts 0 plugin)
   list(GET parts 1 scene)
