@@ -15,14 +15,24 @@
 
 #include "RixShading.h"
 
-inline void ReportTodo(RixShadingContext const* sCtx, const char* what) {
+/// Whether `what` is reported for the first time (each TODO is reported once).
+inline bool FirstTodoReport(const char* what) {
     static std::mutex lock;
     static std::set<std::string> reported;
-    {
-        std::lock_guard<std::mutex> guard(lock);
-        if (!reported.insert(what).second) return;
-    }
+    std::lock_guard<std::mutex> guard(lock);
+    return reported.insert(what).second;
+}
+
+inline void ReportTodo(RixShadingContext const* sCtx, const char* what) {
+    if (!FirstTodoReport(what)) return;
     if (auto* messages = static_cast<RixMessages*>(sCtx->GetRixInterface(k_RixMessages)))
+        messages->Warning("TODO: %s is not implemented yet", what);
+}
+
+/// The same from factory code (Synchronize has a RixContext, not a shading context).
+inline void ReportTodo(RixContext const& ctx, const char* what) {
+    if (!FirstTodoReport(what)) return;
+    if (auto* messages = static_cast<RixMessages*>(ctx.GetRixInterface(k_RixMessages)))
         messages->Warning("TODO: %s is not implemented yet", what);
 }
 

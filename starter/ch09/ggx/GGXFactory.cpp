@@ -3,6 +3,7 @@
 #include <new>
 
 #include "GGX.h"
+#include "Todo.h"
 
 int GGXFactory::Init(RixContext& ctx, RtUString const pluginPath) {
     PIXAR_ARGUSED(ctx);
@@ -14,11 +15,11 @@ void GGXFactory::Finalize(RixContext& ctx) { PIXAR_ARGUSED(ctx); }
 
 RixSCParamInfo const* GGXFactory::GetParamTable() {
     // In the order of ParamId (GGXFactory.h): EvalParam finds a parameter by its place here.
+    // TODO (exercise 4): one entry per parameter of GGX.h, in that order, each a
+    //   RixSCParamInfo(RtUString(name), type, k_RixSCScatterInput)
+    // with the type k_RixSCColor, k_RixSCFloat or k_RixSCInteger. (ward's factory is a model.)
+    // Until then the renderer knows no parameter of ggx: the RIB's values are ignored.
     static RixSCParamInfo s_ptable[] = {
-        RixSCParamInfo(RtUString("specularColor"), k_RixSCColor, k_RixSCScatterInput),
-        RixSCParamInfo(RtUString("uRoughness"), k_RixSCFloat, k_RixSCScatterInput),
-        RixSCParamInfo(RtUString("vRoughness"), k_RixSCFloat, k_RixSCScatterInput),
-        RixSCParamInfo(RtUString("samplingMode"), k_RixSCInteger, k_RixSCScatterInput),
         RixSCParamInfo()  // end of table
     };
     return s_ptable;
@@ -27,9 +28,11 @@ RixSCParamInfo const* GGXFactory::GetParamTable() {
 void GGXFactory::Synchronize(RixContext& ctx, RixSCSyncMsg syncMsg, RixParameterList const* parameterList) {
     PIXAR_ARGUSED(parameterList);
     if (syncMsg == k_RixSCRenderBegin) {
-        // One glossy reflection lobe (not discrete: the mirror limit is only approached).
-        g_ggxSpecularLobe = RixBXLookupLobeByName(ctx, false, true, true, false, 0, "Specular");
-        g_ggxTraits = RixBXLobeTraits(g_ggxSpecularLobe);
+        // TODO (exercise 4): look up the one lobe ggx has, a glossy (not discrete) reflection lobe
+        //   named "Specular", into g_ggxSpecularLobe, and make g_ggxTraits the traits of that lobe
+        //   (RixBXLookupLobeByName(ctx, discrete, specular, reflect, user, id, name); chapter 5).
+        //   Until then ggx declares no lobe, and the integrator never samples it.
+        ReportTodo(ctx, "GGXFactory::Synchronize (the lobe lookup)");
     }
 }
 
@@ -42,11 +45,13 @@ RixBxdf* GGXFactory::BeginScatter(RixShadingContext const* sCtx, RixBXLobeTraits
 
     GGXParams params;
     sCtx->EvalParam(k_specularColor, -1, &params.specularColor, &m_defaultSpecularColor, true);
-    sCtx->EvalParam(k_uRoughness, -1, &params.uRoughness, &m_defaultRoughness, true);
-    sCtx->EvalParam(k_vRoughness, -1, &params.vRoughness, &m_defaultRoughness, true);
-    int const* samplingMode;
-    sCtx->EvalParam(k_samplingMode, -1, &samplingMode, &m_defaultSamplingMode, false);
-    params.samplingMode = *samplingMode;
+    // TODO (exercise 4): the roughnesses, one value per point as for specularColor above
+    //   (the last argument, true, asks for an array of numPts values), and the sampling mode,
+    //   one value for the whole batch (false). Until then every point has the defaults.
+    sCtx->EvalParam(k_numParams, -1, &params.uRoughness, &m_defaultRoughness, true);  // no such parameter: defaults
+    params.vRoughness = params.uRoughness;
+    params.samplingMode = m_defaultSamplingMode;
+    RIX_TODO(sCtx, "GGXFactory::BeginScatter (the roughness and sampling-mode parameters)");
 
     RixShadingContext::Allocator pool(sCtx);
     void* mem = pool.AllocForBxdf<GGX>(1);
