@@ -437,6 +437,10 @@ Grade grade(GradeOptions const& options, Course& course, OutputFolder const& out
                 if (!rendered || !rendered->theirs) {
                     r.summary = "not run: it compares the images of the renders check, which must come first and "
                                 "produce an image";
+                } else if (!rendered->result.passed()) {
+                    // A wrong image earns nothing for being smooth (a black one has no noise at all).
+                    r.summary = "not graded: the noise of an image counts only once the image is right (the renders "
+                                "check failed)";
                 } else {
                     NoiseVerdict v = compareNoise(rendered->mine, *rendered->theirs, e.noiseLimit);
                     r.status = v.passed ? CheckOutcome::Status::Passed : CheckOutcome::Status::Failed;

@@ -401,7 +401,8 @@ def test_solutions(ctx):
 
 
 def test_starter(ctx):
-    status, output, _ = ctx.grade("starter", "--plugins", os.path.join(ctx.build, "plugins/starter"), "--chapter", "6")
+    status, output, _ = ctx.grade("starter", "--plugins", os.path.join(ctx.build, "plugins/starter"), "--chapter", "6",
+                                  "11")
     print(output[-4000:])
     if expect(status == 0, f"rixgrade exited with {status}"):
         results = ctx.results("starter")
@@ -409,6 +410,10 @@ def test_starter(ctx):
         expect(checks["ch6 diffuse: loads"]["status"] == "passed", "the untouched starter does not load")
         expect(checks["ch6 diffuse: values"]["status"] == "failed", "the untouched starter passes values")
         expect(any("TODO bodies" in t["output"] for t in results["tests"]), "no message points at the TODO bodies")
+        # An untouched integrator renders black: it must not earn the noise points for being smooth.
+        for name, t in checks.items():
+            if name.startswith("ch11 "):
+                expect(t["status"] == "failed", f"the untouched starter passes {name}")
 
 
 def test_unsafe(ctx):
