@@ -12,6 +12,7 @@
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
+#include <sstream>
 #include <stdexcept>
 
 namespace fs = std::filesystem;
@@ -135,13 +136,20 @@ Child::Child(SandboxLayout const& layout, Launch const& launch) : m_limits(launc
         args.push_back("--");
     }
     for (auto const& a : launch.argv) {
-        // "-DNAME=/course/..." maps its value like a plain path.
+        // "-DNAME=/course/..." maps its value like a plain path; "/a:/b:/c" (a plugin
+        // path) maps each folder -- left as it was, the student's folder would not be
+        // searched and rixrender would fall back to its own folders, the solutions'.
         size_t equals = a.find("=/");
         if (sandboxed)
             args.push_back(a);
         else if (equals != std::string::npos && a.rfind("-D", 0) == 0)
             args.push_back(a.substr(0, equals + 1) + layout.realPath(a.substr(equals + 1)));
-        else
+        else if (a.rfind("/", 0) == 0 && a.find(':') != std::string::npos) {
+            std::string mapped, folder;
+            std::istringstream folders(a);
+            while (std::getline(folders, folder, ':')) mapped += (mapped.empty() ? "" : ":") + layout.realPath(folder);
+            args.push_back(mapped);
+        } else
             args.push_back(layout.realPath(a));
     }
     std::string const workdir = layout.realPath(launch.workdir);

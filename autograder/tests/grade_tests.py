@@ -426,6 +426,14 @@ def test_unsafe(ctx):
         expect("--unsafe-no-sandbox" in results["output"], "results.json does not say the sandbox was off")
         expect("--unsafe-no-sandbox" in open(os.path.join(ctx.out, "unsafe", "report.html")).read(),
                "the report does not say the sandbox was off")
+    # Without the sandbox the render must still use the student's plugin: the planted bugs
+    # of the untouched buggydiffuse starter fail the render check there as they do inside it.
+    status, output, _ = ctx.grade("unsafe-buggy", "--plugins", os.path.join(ctx.build, "plugins/starter"), "--only",
+                                  "buggydiffuse", "--unsafe-no-sandbox")
+    if expect(status == 0, f"rixgrade exited with {status}:\n{output[-2000:]}"):
+        checks = checks_of(ctx.results("unsafe-buggy"))
+        expect(checks.get("renders", {}).get("status") == "failed",
+               "without the sandbox the buggy starter passes the render check (the solution was rendered instead)")
 
 
 def test_repeat(ctx):
