@@ -79,27 +79,30 @@ RenderImage averageBlocks(RenderImage const& image, int block) {
     return out;
 }
 
+namespace {
+RenderVerdict compareUnits(RenderImage const& a, RenderImage const& b, double varianceCap, char const* unit);
+}  // namespace
+
 RenderVerdict compareRenders(RenderImage const& tested, RenderImage const& reference, double varianceCap, int block) {
-    if (block > 1 && tested.width == reference.width && tested.height == reference.height &&
-        tested.rgb.size() == reference.rgb.size() && tested.variance.size() == reference.variance.size()) {
-        RenderVerdict v = compareRenders(averageBlocks(tested, block), averageBlocks(reference, block), varianceCap, 1);
-        // The map the report draws stays at full resolution: each pixel shows its square's z.
-        std::vector<float> full(static_cast<size_t>(tested.width) * tested.height);
-        int const blocksWide = (tested.width + block - 1) / block;
-        for (int y = 0; y < tested.height; ++y)
-            for (int x = 0; x < tested.width; ++x)
-                full[static_cast<size_t>(y) * tested.width + x] = v.zMap[static_cast<size_t>(y / block) * blocksWide + x / block];
-        v.zMap = std::move(full);
-        std::string const squares = "of the " + std::to_string(block) + "x" + std::to_string(block) + " squares of pixels";
-        for (std::string const pixels : {"of the pixels", "every pixel is"}) {
-            size_t at = v.message.find(pixels);
-            if (at != std::string::npos)
-                v.message.replace(at, pixels.size(), pixels[0] == 'o' ? squares : "every square is");
-        }
-        return v;
-    }
-    RenderImage const& a = tested;
-    RenderImage const& b = reference;
+    if (block <= 1 || tested.width != reference.width || tested.height != reference.height ||
+        tested.rgb.size() != reference.rgb.size() || tested.variance.size() != reference.variance.size())
+        return compareUnits(tested, reference, varianceCap, "pixel");
+    std::string const unit = std::to_string(block) + "x" + std::to_string(block) + " square";
+    RenderVerdict v = compareUnits(averageBlocks(tested, block), averageBlocks(reference, block), varianceCap, unit.c_str());
+    // The map the report draws stays at full resolution: each pixel shows its square's z.
+    std::vector<float> full(static_cast<size_t>(tested.width) * tested.height);
+    int const blocksWide = (tested.width + block - 1) / block;
+    for (int y = 0; y < tested.height; ++y)
+        for (int x = 0; x < tested.width; ++x)
+            full[static_cast<size_t>(y) * tested.width + x] = v.zMap[static_cast<size_t>(y / block) * blocksWide + x / block];
+    v.zMap = std::move(full);
+    return v;
+}
+
+namespace {
+
+/// The comparison itself, over the units of an image (pixels, or squares of them).
+RenderVerdict compareUnits(RenderImage const& a, RenderImage const& b, double varianceCap, char const* unit) {
     RenderVerdict v;
     size_t const pixels = static_cast<size_t>(a.width) * static_cast<size_t>(a.height);
     if (a.width != b.width || a.height != b.height || a.rgb.size() != 3 * pixels || b.rgb.size() != 3 * pixels ||
@@ -152,25 +155,27 @@ RenderVerdict compareRenders(RenderImage const& tested, RenderImage const& refer
     char text[512];
     if (!v.pixelsAgree) {
         std::snprintf(text, sizeof text,
-                      "%.2f%% of the pixels differ from the solution's by more than the noise allows (at most 0.25%% may); "
+                      "%.2f%% of the %ss differ from the solution's by more than the noise allows (at most 0.25%% may); "
                       "image means %.4g (yours) and %.4g; relMSE %.3g",
-                      100.0 * (1.0 - v.passFraction), v.meanTested, v.meanReference, v.relMse);
+                      100.0 * (1.0 - v.passFraction), unit, v.meanTested, v.meanReference, v.relMse);
     } else if (!v.meansAgree) {
         double percent = v.meanReference != 0 ? 100.0 * (v.meanTested - v.meanReference) / v.meanReference : 0.0;
         std::snprintf(text, sizeof text,
                       "your image is %.2f%% %s than the solution's on average (means %.5g and %.5g, z = %.1f): a bias "
-                      "too spread out for single pixels to show; every pixel is within its noise; relMSE %.3g",
+                      "too spread out for single %ss to show; every %s is within its noise; relMSE %.3g",
                       std::fabs(percent), v.meanTested > v.meanReference ? "brighter" : "darker", v.meanTested,
-                      v.meanReference, std::min(std::fabs(v.meanZ), 1e6), v.relMse);
+                      v.meanReference, std::min(std::fabs(v.meanZ), 1e6), unit, unit, v.relMse);
     } else {
         std::snprintf(text, sizeof text,
-                      "%.2f%% of the pixels agree with the solution's within their noise (99.75%% needed), and the "
+                      "%.2f%% of the %ss agree with the solution's within their noise (99.75%% needed), and the "
                       "image means agree (%.5g and %.5g, z = %.1f); relMSE %.3g",
-                      100.0 * v.passFraction, v.meanTested, v.meanReference, v.meanZ, v.relMse);
+                      100.0 * v.passFraction, unit, v.meanTested, v.meanReference, v.meanZ, v.relMse);
     }
     v.message = text;
     return v;
 }
+
+}  // namespace
 
 NoiseVerdict compareNoise(RenderImage const& tested, RenderImage const& reference, double limit) {
     NoiseVerdict v;
