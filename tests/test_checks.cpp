@@ -4,6 +4,7 @@
 #include <cmath>
 #include <random>
 
+#include "exercise/Exercise.h"
 #include "image/RenderComparison.h"
 #include "stats/DirectionTest.h"
 
@@ -42,6 +43,48 @@ TEST_CASE("cell integration matches closed forms for the cosine and Phong densit
             CHECK(std::fabs(mass[static_cast<size_t>(c)] - exact) <= 0.06 * std::sqrt(std::max(exact, 1e-6) / 1e6));
         }
     }
+}
+
+TEST_CASE("a cell whose samples the adaptive rule cannot explain is integrated finely; an empty one is left alone",
+          "[checks][stats]") {
+    // A density that lives in a thin band of phi inside one cell (like the edge of the
+    // directions a refraction can reach), missed by every node of the first passes.
+    DirectionCells cells;
+    cells.fullSphere = true;
+    int const target = 37;
+    double z0, z1, phi0, phi1;
+    cells.bounds(target, z0, z1, phi0, phi1);
+    double const band0 = phi0 + 0.375 * (phi1 - phi0), band1 = phi0 + 0.625 * (phi1 - phi0);  // on grid lines
+    double const density = 50.0;
+    BatchPdf pdf = [&](std::vector<Vec3> const& w) {
+        std::vector<double> p;
+        for (auto const& d : w) {
+            double phi = std::atan2(d.y, d.x);
+            if (phi < 0) phi += 2 * M_PI;
+            p.push_back(d.z > z0 && d.z < z1 && phi > band0 && phi < band1 ? density : 0.0);
+        }
+        return p;
+    };
+    std::vector<double> mass(static_cast<size_t>(cells.count()), 0.0), observed(mass.size(), 0.0);
+    observed[target] = 3.0;
+    integrateEmptyCellsFinely(cells, observed, pdf, mass);
+    double const exact = density * (z1 - z0) * (band1 - band0);
+    CHECK(mass[target] == Approx(exact).epsilon(1e-3));
+    observed[target] = 0.0;
+    std::vector<double> untouched(mass.size(), 0.0);
+    integrateEmptyCellsFinely(cells, observed, pdf, untouched);
+    CHECK(untouched[target] == 0.0);  // no sample fell there: nothing to explain
+}
+
+TEST_CASE("a transmitting exercise reads its refractive index from its own parameters", "[checks][exercise]") {
+    Exercise e;
+    e.transmits = true;
+    e.iorParam = "ior";
+    CHECK(e.ior("\"float ior\" [1.33] \"float roughness\" [0.1]") == Approx(1.33));
+    CHECK(e.ior("\"float ior\" [1.5] \"float ior\" [2.4]") == Approx(2.4));  // the last one wins, as in RIB
+    CHECK_THROWS_WITH(e.ior("\"float roughness\" [0]"), Catch::Contains("do not set \"float ior\""));
+    e.transmits = false;
+    CHECK(e.ior("") == 1.0);
 }
 
 TEST_CASE("chi-squared: uniform draws pass, a 3% tilt of a million fails, rare cells do not decide", "[checks][stats]") {

@@ -1,12 +1,16 @@
 // rixwarp: does a plugin sample the directions its pdf promises?
 //
-//   rixwarp PLUGIN [--params "..."] [--theta 45] [--phi 0] [--samples 200000] [--out warp.png]
+//   rixwarp PLUGIN [--params "..."] [--theta 45] [--phi 0] [--samples 200000] [--out warp.png] [--sphere]
 //
 // Draws GenerateSample directions at one shade point (N = +z, the viewer at
 // theta, phi), bins them over equal-area cells (cos(theta) up, phi across),
 // and puts the histogram beside the same cells filled by integrating FPdf.
 // The two pictures must look alike; the chi-squared test says whether they
-// do (p-value above 0.01: pass, exit status 0; otherwise 1).
+// do (p-value above 0.01: pass, exit status 0; otherwise 1). --sphere maps
+// the whole sphere of directions, for a model that transmits (chapter 10),
+// and lets the viewer look from below (theta up to 180). Samples from
+// discrete lobes (a mirror, a smooth refraction) have no density to compare:
+// they are counted and the verdict is skipped, which the output says.
 #include <OpenImageIO/imagebufalgo.h>
 
 #include <algorithm>
@@ -27,14 +31,21 @@ int main(int argc, char** argv) {
     std::string plugin, params, out = "warp.png", pluginPath;
     float theta = 45.0f, phi = 0.0f;
     int samples = 200000;
+    bool sphere = false;
     app.add_option("plugin", plugin, "the Bxdf plugin's name (e.g. diffuse)")->required();
     app.add_option("--params", params, "parameters as on a RIB Bxdf line, e.g. '\"float gloss\" [50]'");
-    app.add_option("--theta", theta, "viewer's angle from the normal, degrees")->check(CLI::Range(0.0f, 90.0f));
+    app.add_option("--theta", theta, "viewer's angle from the normal, degrees (up to 180 with --sphere)")
+        ->check(CLI::Range(0.0f, 180.0f));
     app.add_option("--phi", phi, "viewer's azimuth, degrees");
     app.add_option("--samples", samples, "number of sampled directions")->check(CLI::Range(1000, 50000000));
     app.add_option("--out", out, "the side-by-side image");
     app.add_option("--plugin-path", pluginPath, "colon-separated folders searched first");
+    app.add_flag("--sphere", sphere, "map the whole sphere of directions (a model that transmits)");
     BXDFLAB_PARSE_COMMAND_LINE(app, argc, argv);
+    if (theta > 90.0f && !sphere) {
+        std::cerr << "rixwarp: a view from below the surface (--theta above 90) needs --sphere\n";
+        return 1;
+    }
 
     try {
         Diagnostics diagnostics;
@@ -43,6 +54,8 @@ int main(int argc, char** argv) {
         DirectionCells cells;
         cells.cosCells = 32;
         cells.phiCells = 64;
+        cells.fullSphere = sphere;
+        long discrete = 0;
         DirectionCounts counts(cells);
         // What each valid sample contributes to an estimate, W / FPdf (averaged
         // over r, g, b): a good sampler keeps it close to constant and small.
@@ -50,17 +63,20 @@ int main(int argc, char** argv) {
         for (auto const& g : probe.generate(std::vector<ProbePoint>(static_cast<size_t>(samples), point),
                                             independentSamples(static_cast<size_t>(samples), 7u))) {
             counts.add(g.valid, g.L, g.FPdf);
+            discrete += g.valid && g.discrete;
             if (g.valid && g.FPdf > 0.0f) {
                 double weight = (g.W.r + g.W.g + g.W.b) / (3.0 * g.FPdf);
                 weightSum += weight;
                 weightLargest = std::max(weightLargest, weight);
             }
         }
-        auto mass = integrateCells(cells, [&](std::vector<Vec3> const& L) {
-            std::vector<double> pdf;
-            for (auto const& r : probe.evaluate(std::vector<ProbePoint>(L.size(), point), L)) pdf.push_back(r.FPdf);
-            return pdf;
-        }, toleranceForSamples(samples));
+        BatchPdf const pdf = [&](std::vector<Vec3> const& L) {
+            std::vector<double> values;
+            for (auto const& r : probe.evaluate(std::vector<ProbePoint>(L.size(), point), L)) values.push_back(r.FPdf);
+            return values;
+        };
+        auto mass = integrateCells(cells, pdf, toleranceForSamples(samples));
+        integrateEmptyCellsFinely(cells, counts.observed, pdf, mass);
         DirectionTestResult t = testDirections(counts, mass);
         ChiSquaredResult const& chi = t.chi;
         std::vector<double> observed = counts.observed, expected;
@@ -85,26 +101,34 @@ int main(int argc, char** argv) {
         tools::label(canvas, rightX, marginTop - 8, "expected from FPdf");
         // (OpenImageIO draws ASCII only: the Greek letters are spelled out.)
         tools::label(canvas, 8, marginTop + 12, "1");
-        tools::label(canvas, 8, marginTop + ht, "0");
+        tools::label(canvas, 8, marginTop + ht, sphere ? "-1" : "0");
         for (int x : {marginLeft, rightX}) {
             tools::label(canvas, x, marginTop + ht + 16, "0");
             tools::label(canvas, x + w - 28, marginTop + ht + 16, "360");
         }
         tools::label(canvas, marginLeft, marginTop + ht + 34,
-                     "up: cos(theta) 0..1, across: phi 0..360 deg; viewer at theta " + tools::number(theta) +
+                     std::string("up: cos(theta) ") + (sphere ? "-1" : "0") + "..1, across: phi 0..360 deg; viewer at theta " + tools::number(theta) +
                          " deg, phi " + tools::number(phi) + " deg; one colour scale");
         tools::writeDisplayImage(canvas, out);
 
         // No valid sample at all proves nothing: that is a failure, not a pass.
         bool pass = valid > 0 && chi.pValue > 0.01 && t.impossible == 0 && counts.nonFinite == 0;
-        std::printf("%s at theta %.1f phi %.1f: %ld of %ld samples valid, FPdf integrates to %.4f over the hemisphere\n",
-                    plugin.c_str(), theta, phi, valid, counts.total, t.pdfMass);
+        std::printf("%s at theta %.1f phi %.1f: %ld of %ld samples valid, FPdf integrates to %.4f over the %s\n",
+                    plugin.c_str(), theta, phi, valid, counts.total, t.pdfMass, sphere ? "sphere" : "hemisphere");
         if (valid == 0) std::printf("no sample was valid: GenerateSample never called SetValid(true)\n");
         else std::printf("sample weight W/FPdf: mean %.4g, largest %.4g\n", weightSum / valid, weightLargest);
         if (counts.nonFinite) std::printf("%ld valid samples had a NaN or infinite direction or pdf\n", counts.nonFinite);
+        if (discrete > 0) {
+            std::printf("%ld of the valid samples came from discrete lobes (one exact direction each, no density): "
+                        "chi-squared skipped; rixcheck's \"smooth\" check tests such lobes\n", discrete);
+            std::printf("left: sampled directions, right: FPdf (cos(theta) upward, phi across) -> %s\n", out.c_str());
+            return 0;
+        }
         std::printf("chi-squared %.2f with %d degrees of freedom: p = %.4g -> %s\n", chi.statistic,
                     chi.degreesOfFreedom, chi.pValue, pass ? "PASS" : "FAIL");
         if (t.impossible) std::printf("%ld samples fell where the pdf is zero (or below the surface)\n", t.impossible);
+        if (counts.outside > 0)
+            std::printf("%ld samples went below the surface: for a model that transmits, add --sphere\n", counts.outside);
         std::printf("left: sampled directions, right: FPdf (cos(theta) upward, phi across) -> %s\n", out.c_str());
         return pass ? 0 : 1;
     } catch (std::exception const& e) {

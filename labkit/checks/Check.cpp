@@ -7,7 +7,7 @@ namespace bxdflab {
 
 std::vector<std::string> const& checkNames() {
     static std::vector<std::string> const names = {"loads",       "values", "chi2",   "jacobian", "consistency",
-                                                   "reciprocity", "energy", "hardcases"};
+                                                   "reciprocity", "energy", "hardcases", "smooth"};
     return names;
 }
 
@@ -22,6 +22,8 @@ std::string const& checkHint(std::string const& check) {
         {"energy", "The surface reflects more (or less) light than the reference: check the normalisation constants."},
         {"hardcases", "Guard grazing angles, zero tangents, extreme parameters and xi = 0 against NaN, infinity and "
                       "negative pdfs; mark a sample invalid instead of returning garbage."},
+        {"smooth", "With roughness 0 a sample must be exactly the mirror or the refracted direction (Snell's law), from a "
+                   "discrete lobe, weighted by Fresnel and by (eta_V / eta_L)^2 for the light that crosses."},
         {"renders", "Diff your render with the solution's (rixdiff --heatmap); the heatmap shows where they disagree."},
         {"noise", "Render the scene at the same spp with your plugin and the solution's and compare the noise: a "
                   "missing sampling strategy or MIS weight shows where one of them is weak."},
@@ -43,6 +45,7 @@ CheckOutcome runCheck(std::string const& check, CheckContext& context) {
     if (check == "reciprocity") return checkReciprocity(context);
     if (check == "energy") return checkEnergy(context);
     if (check == "hardcases") return checkHardCases(context);
+    if (check == "smooth") return checkSmooth(context);
     throw std::invalid_argument("no check named \"" + check + "\"");
 }
 

@@ -60,6 +60,7 @@ CheckOutcome checkConsistency(CheckContext& context);
 CheckOutcome checkReciprocity(CheckContext& context);
 CheckOutcome checkEnergy(CheckContext& context);
 CheckOutcome checkHardCases(CheckContext& context);
+CheckOutcome checkSmooth(CheckContext& context);
 /// The ch08 sampling exercise (kind "sampling"): the same check names.
 CheckOutcome checkSamplingFunctions(std::string const& check, CheckContext& context);
 

@@ -55,6 +55,10 @@ std::string notAttempted(CheckContext& context);
 std::vector<RtFloat2> const& jacobianOffsets();
 bool jacobianDensity(Vec3 const* directions, double& density);
 
+/// The refractive index on the side of a local direction for a transmitting
+/// model: 1 above the surface (outside), ior below it.
+inline double indexOfSide(double ior, Vec3 const& local) { return local.z >= 0.0f ? 1.0 : ior; }
+
 /// Joins parameter sets for messages: "with [params]".
 std::string withParams(std::string const& params);
 

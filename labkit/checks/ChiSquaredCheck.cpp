@@ -23,6 +23,7 @@ struct View {
 std::vector<View> viewsFor(Exercise const& e) {
     std::vector<View> views = {{0, 20}, {45, 20}, {80, 20}};
     if (e.anisotropic) views.insert(views.end(), {{45, 110}, {80, 65}});
+    if (e.transmits) views.insert(views.end(), {{130, 20}, {165, 20}});  // from inside: one beyond the critical angle
     return views;
 }
 
@@ -37,6 +38,7 @@ CheckOutcome checkChiSquared(CheckContext& c) {
     double const alphaEach = sidak(c.alpha, tests);
     long const samples = c.chiSquaredSamples;
     DirectionCells cells;
+    cells.fullSphere = e.transmits;
     std::string details;
     int testIndex = 0;
     for (SamplingMode const& mode : e.samplingModes) {
@@ -65,6 +67,7 @@ CheckOutcome checkChiSquared(CheckContext& c) {
                 return out;
             };
             auto mass = integrateCells(cells, pdf, toleranceForSamples(static_cast<double>(samples)));
+            integrateEmptyCellsFinely(cells, counts.observed, pdf, mass);
             DirectionTestResult t = testDirections(counts, mass);
 
             std::string where = "with the viewer at " + describeDirection(localV) + " and sampling mode \"" +
@@ -95,7 +98,8 @@ CheckOutcome checkChiSquared(CheckContext& c) {
                                           details);
             if (t.pdfMass > 1.0 + 1e-3)
                 return CheckOutcome::fail(where + ": your FPdf integrates to " + number(t.pdfMass) +
-                                              " over the hemisphere, but a probability density integrates to at most 1",
+                                              (e.transmits ? " over the sphere" : " over the hemisphere") +
+                                              ", but a probability density integrates to at most 1",
                                           details);
             if (!(t.chi.pValue > alphaEach))
                 return CheckOutcome::fail(where + ": your samples do not follow your FPdf (chi-squared " +

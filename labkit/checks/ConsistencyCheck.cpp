@@ -17,7 +17,9 @@ CheckOutcome checkConsistency(CheckContext& c) {
     int compared = 0;
     for (SamplingMode const& mode : e.samplingModes) {
         std::string const params = e.withMode(e.params, mode);
-        for (double view : {10.0, 50.0, 85.0}) {
+        std::vector<double> views = {10.0, 50.0, 85.0};
+        if (e.transmits) views.insert(views.end(), {120.0, 160.0});  // from inside
+        for (double view : views) {
             Vec3 localV = direction(view, 20);
             ProbePoint point = f.point(localV);
             size_t const n = 512;

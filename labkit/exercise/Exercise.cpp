@@ -27,6 +27,18 @@ std::string Exercise::withMode(std::string const& base, SamplingMode const& mode
     return base.empty() ? mode.params : base + " " + mode.params;
 }
 
+double Exercise::ior(std::string const& parameters) const {
+    if (!transmits) return 1.0;
+    // The last "float <iorParam>" [value] in the string wins, as in a RIB parameter list.
+    std::string const key = "\"float " + iorParam + "\"";
+    size_t at = parameters.rfind(key);
+    if (at == std::string::npos)
+        throw std::runtime_error("the parameters [" + parameters + "] do not set \"float " + iorParam + "\"");
+    size_t open = parameters.find('[', at + key.size());
+    if (open == std::string::npos) throw std::runtime_error("no value after " + key + " in [" + parameters + "]");
+    return std::stod(parameters.substr(open + 1));
+}
+
 Exercise loadExercise(std::string const& courseRoot, std::string const& manifestPath) {
     std::ifstream in(manifestPath);
     if (!in) throw std::runtime_error("cannot read the exercise manifest " + manifestPath);
@@ -79,16 +91,31 @@ Exercise loadExercise(std::string const& courseRoot, std::string const& manifest
         e.anisotropic = j.value("anisotropic", false);
         e.reciprocal = j.value("reciprocal", true);
         e.conservesEnergy = j.value("conservesEnergy", true);
+        if (j.contains("transmission")) {
+            nlohmann::json const& t = j.at("transmission");
+            e.transmits = true;
+            e.iorParam = t.at("iorParam").get<std::string>();
+            e.smoothParams = t.value("smoothParams", std::string());
+            e.ior(e.params);  // the checks' parameters must say the index they test
+        }
         nlohmann::json const notApplicable = j.value("notApplicable", nlohmann::json::object());
         for (auto const& [check, because] : notApplicable.items()) e.notApplicable.push_back({check, because.get<std::string>()});
         for (auto const& c : field("checks")) e.checks.emplace_back(c.at(0).get<std::string>(), c.at(1).get<double>());
         if (e.kind != "bxdf" && e.kind != "sampling" && e.kind != "integrator")
             throw std::runtime_error("\"kind\" must be \"bxdf\", \"sampling\" or \"integrator\"");
         for (auto const& [check, points] : e.checks)
+            if (check == "smooth" && e.smoothParams.empty())
+                throw std::runtime_error("the check \"smooth\" needs \"transmission\": {\"smoothParams\": ...}");
+        for (auto const& [check, points] : e.checks)
             if (Exercise::isRenderCheck(check) && e.scene.empty())
                 throw std::runtime_error("the check \"" + check + "\" needs a \"scene\"");
     } catch (nlohmann::json::exception const& error) {
         throw std::runtime_error(manifestPath + ": " + error.what());
+    } catch (std::invalid_argument const& error) {  // std::stod on a value that is not a number
+        throw std::runtime_error(manifestPath + ": the refractive index in \"params\" is not a number");
+    } catch (std::runtime_error const& error) {
+        std::string what = error.what();
+        throw std::runtime_error(what.rfind(manifestPath, 0) == 0 ? what : manifestPath + ": " + what);
     }
     return e;
 }

@@ -58,6 +58,13 @@ struct Exercise {
     bool conservesEnergy = true; ///< directional albedo <= 1 for white parameters
     std::vector<NotApplicable> notApplicable;  ///< checks skipped for this model, with the reason
 
+    /// A model that also transmits (chapter 10): its directions fill the whole
+    /// sphere, and radiance crossing the boundary scales by the square of the
+    /// ratio of refractive indices, which reciprocity and energy account for.
+    bool transmits = false;
+    std::string iorParam;      ///< the float parameter holding the refractive index inside (e.g. "ior")
+    std::string smoothParams;  ///< parameters that make the boundary smooth (discrete lobes), for the "smooth" check
+
     std::vector<std::pair<std::string, double>> checks;  ///< check name -> default points, in report order
 
     /// Whether `check` is one rixgrade runs by rendering the exercise's scene
@@ -67,6 +74,9 @@ struct Exercise {
     bool gradedWith(std::string const& check) const;
     /// The reason `check` does not apply, or empty.
     std::string notApplicableReason(std::string const& check) const;
+    /// The refractive index inside that a parameter string sets (iorParam's
+    /// value), 1 for a model that does not transmit. Throws when it is missing.
+    double ior(std::string const& params) const;
     /// params + a sampling mode's parameters.
     std::string withMode(std::string const& base, SamplingMode const& mode) const;
 };

@@ -64,7 +64,7 @@ ResultItem toWire(ProbeResult const& r) {
     }
     w.FPdf = r.FPdf;
     w.RPdf = r.RPdf;
-    w.valid = r.valid ? 1u : 0u;
+    w.valid = (r.valid ? 1u : 0u) | (r.discrete ? 2u : 0u);
     return w;
 }
 
@@ -74,7 +74,8 @@ ProbeResult fromWire(ResultItem const& w) {
     r.W = RtColorRGB(w.W[0], w.W[1], w.W[2]);
     r.FPdf = w.FPdf;
     r.RPdf = w.RPdf;
-    r.valid = w.valid != 0;
+    r.valid = (w.valid & 1u) != 0;
+    r.discrete = (w.valid & 2u) != 0;
     return r;
 }
 

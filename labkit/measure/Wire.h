@@ -65,7 +65,7 @@ struct GenerateItem {
 };
 struct ResultItem {
     float L[3], W[3], FPdf, RPdf;
-    uint32_t valid;
+    uint32_t valid;  ///< bit 0: valid, bit 1: discrete
 };
 struct ColorItem {
     float rgb[3];

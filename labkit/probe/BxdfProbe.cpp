@@ -162,7 +162,8 @@ std::vector<ProbeResult> BxdfProbe::generate(std::vector<ProbePoint> const& poin
         m_impl->announce("GenerateSample");
         bxdf.GenerateSample(k_RixBXDirectLighting, wanted, &rng, sampled, Ln, W, FPdf, RPdf);
         for (int i = 0; i < n; ++i)
-            out[static_cast<size_t>(i)] = {toVec3(Ln[i]), W.SumAtPoint(i), FPdf[i], RPdf[i], sampled[i].GetValid()};
+            out[static_cast<size_t>(i)] = {toVec3(Ln[i]), W.SumAtPoint(i), FPdf[i], RPdf[i], sampled[i].GetValid(),
+                                           sampled[i].GetValid() && sampled[i].GetDiscrete()};
     });
     return out;
 }

@@ -29,6 +29,7 @@ struct ProbeResult {
     float FPdf = 0.0f;
     float RPdf = 0.0f;
     bool valid = false;  ///< GenerateSample: lobeSampled valid; EvaluateSample: some lobe evaluated
+    bool discrete = false;  ///< GenerateSample: the sampled lobe is discrete (a single direction, like a mirror)
 };
 
 class BxdfProbe {

@@ -106,7 +106,12 @@ std::vector<double> integrateCells(DirectionCells const& cells, BatchPdf const& 
                 split += child.whole;
             }
             Rect const& r = level[k];
-            if (std::fabs(split - r.whole) <= tolerance(std::fabs(split)) || r.depth + 1 >= maxDepth) {
+            // A pdf that is zero at every node may still be non-zero in a sliver of
+            // the rectangle (the edge of the directions a refraction can reach):
+            // zero is believed only after two splits.
+            bool const zeroTooEarly = split == 0.0 && r.whole == 0.0 && r.depth < 2;
+            bool const agrees = std::fabs(split - r.whole) <= tolerance(std::fabs(split)) && !zeroTooEarly;
+            if (agrees || r.depth + 1 >= maxDepth) {
                 result[static_cast<size_t>(r.cell)] += split;
             } else {
                 for (int q = 0; q < 4; ++q) next.push_back(children[4 * k + static_cast<size_t>(q)]);
@@ -115,6 +120,23 @@ std::vector<double> integrateCells(DirectionCells const& cells, BatchPdf const& 
         level = std::move(next);
     }
     return result;
+}
+
+void integrateEmptyCellsFinely(DirectionCells const& cells, std::vector<double> const& observed, BatchPdf const& pdf,
+                               std::vector<double>& mass, int resolution) {
+    for (size_t cell = 0; cell < mass.size(); ++cell) {
+        if (mass[cell] != 0.0 || !(observed[cell] > 0.0)) continue;
+        double z0, z1, phi0, phi1;
+        cells.bounds(static_cast<int>(cell), z0, z1, phi0, phi1);
+        std::vector<Vec3> points;
+        for (int i = 0; i < resolution; ++i)
+            for (int j = 0; j < resolution; ++j)
+                points.push_back(directionAt(z0 + (z1 - z0) * (i + 0.5) / resolution,
+                                             phi0 + (phi1 - phi0) * (j + 0.5) / resolution));
+        double sum = 0.0;
+        for (double v : pdf(points)) sum += std::isfinite(v) ? v : 0.0;
+        mass[cell] = sum * (z1 - z0) * (phi1 - phi0) / (static_cast<double>(resolution) * resolution);
+    }
 }
 
 std::function<double(double)> toleranceForSamples(double samples) {

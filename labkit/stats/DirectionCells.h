@@ -37,6 +37,13 @@ using BatchPdf = std::function<std::vector<double>(std::vector<Vec3> const&)>;
 std::vector<double> integrateCells(DirectionCells const& cells, BatchPdf const& pdf,
                                    std::function<double(double)> const& tolerance, int maxDepth = 7);
 
+/// Cells whose adaptive integral came out zero although samples fell in them
+/// are integrated again by the midpoint rule on a fine grid (resolution^2
+/// points): the pdf may be non-zero only in a sliver of such a cell (the edge of
+/// the directions a refraction can reach) that every node of the rule missed.
+void integrateEmptyCellsFinely(DirectionCells const& cells, std::vector<double> const& observed, BatchPdf const& pdf,
+                               std::vector<double>& mass, int resolution = 64);
+
 /// For a chi-squared test on `samples` draws: splitting stops when the cell's
 /// error is below a twentieth of the sampling noise of its count.
 std::function<double(double)> toleranceForSamples(double samples);
