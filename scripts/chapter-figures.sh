@@ -45,6 +45,9 @@ for mode in 1 2; do
   $bin/rixwarp ggx --params "\"float uRoughness\" [0.3] \"float vRoughness\" [0.3] \"int samplingMode\" [$mode]" \
     --theta 85 --out $fig/ch09-warp-ggx-mode$mode.png
 done
+render scenes/ch10/glass_spheres.rib -o $fig/ch10-glass.png
+render scenes/ch10/furnace.rib -o $fig/ch10-furnace.png
+$bin/rixwarp glass --params '"float roughness" [0.3]' --sphere --theta 130 --out $fig/ch10-warp-glass.png
 for scene in mis_light mis_bxdf mis; do
   render scenes/ch11/$scene.rib --spp 4 -o $fig/ch11-${scene//_/-}-4spp.png
 done

@@ -35,6 +35,32 @@ TEST_CASE("path tracer furnace: an emitting, reflecting enclosure converges to E
     CHECK(r.stats.shadowRays == 0u);  // no lights: nothing to sample
 }
 
+TEST_CASE("chapter 10 furnace: a smooth glass sphere in a white sky vanishes; a rough one loses light", "[integrators][ch10]") {
+    // Radiance / eta^2 crosses a lossless boundary unchanged, so inside a sky of
+    // radiance 1 the smooth sphere is 1 everywhere; the single-scattering rough
+    // one is darker. The inner disks (0.7 of the radius) keep the rim, where
+    // paths trapped by total internal reflection grow long, out of the mean.
+    std::string rib = readScene("ch10/furnace.rib");
+    rib.replace(rib.find("Format 400 200 1"), 16, "Format 200 100 1");
+    RenderSettings settings;
+    settings.spp = 64;
+    auto r = test::renderRib(rib, settings);
+    double const pixelsPerUnit = 50.0 / (6.0 * std::tan(15.0 * kPi / 180.0));
+    auto disk = [&](double centreX) {
+        return [=](int x, int y) {
+            double dx = x + 0.5 - (100.0 + centreX * pixelsPerUnit), dy = y + 0.5 - 50.0;
+            return std::sqrt(dx * dx + dy * dy) < 0.7 * pixelsPerUnit;
+        };
+    };
+    auto sky = [&](int x, int) { return x < 10 || x >= 190; };
+    CHECK(test::meanChannel(r, 1, sky) == Approx(1.0).epsilon(1e-6));
+    CHECK(test::meanChannel(r, 1, disk(-1.2)) == Approx(1.0).epsilon(0.005));
+    double rough = test::meanChannel(r, 1, disk(1.2));
+    CHECK(rough < 0.95);
+    CHECK(rough > 0.6);
+    CHECK(r.stats.indirectRays > 0u);
+}
+
 TEST_CASE("PxrPathTracer with maxPathLength 1 is PxrDirectLighting", "[integrators][pathtracer]") {
     std::string rib = readScene("ch06/plastic.rib");
     RenderSettings settings;

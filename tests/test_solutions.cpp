@@ -257,6 +257,60 @@ TEST_CASE("chapter 9: sampling visible normals bounds every sample's weight by 1
     if (viewTheta >= 85.0 && alpha >= 0.3) CHECK(largestWeight(1) > 1.5);
 }
 
+TEST_CASE("chapter 10: glass by hand, and a lossless smooth boundary", "[solutions][ch10]") {
+    SECTION("smooth, normal incidence: F = ((1.5 - 1) / (1.5 + 1))^2 = 0.04; radiance / eta^2 crosses unchanged") {
+        auto p = probe("glass", "\"float ior\" [1.5] \"float roughness\" [0]");
+        for (double theta : {0.0, 180.0}) {
+            CAPTURE(theta);
+            double const etaV = theta > 90 ? 1.5 : 1.0, etaL = theta > 90 ? 1.0 : 1.5;
+            std::vector<ProbePoint> points(4000, viewFrom(theta));
+            int reflected = 0, refracted = 0;
+            for (auto const& g : p->generate(points, stratifiedSamples(points.size(), 7))) {
+                REQUIRE(g.valid);
+                REQUIRE(g.discrete);
+                bool reflects = (g.L.z > 0) == (theta < 90);
+                CHECK(g.FPdf == Approx(reflects ? 0.04 : 0.96).epsilon(1e-4));
+                CHECK(g.W.g / g.FPdf == Approx(reflects ? 1.0 : (etaV * etaV) / (etaL * etaL)).epsilon(1e-4));
+                (reflects ? reflected : refracted) += 1;
+            }
+            CHECK(reflected / 4000.0 == Approx(0.04).margin(0.005));
+            CHECK(refracted + reflected == 4000);
+        }
+    }
+    SECTION("rough, straight through at normal incidence: H = N, (eta_V V.H + eta_L L.H)^2 = 0.25") {
+        double const alpha = 0.3, D = 1.0 / (kPi * alpha * alpha), F = 0.04;
+        auto p = probe("glass", "\"float ior\" [1.5] \"float roughness\" [0.3]");
+        auto r = p->evaluate({viewFrom(0)}, {Vec3(0, 0, -1)})[0];
+        // W = |V.H| |L.H| eta_V^2 (1 - F) D G2 / (cos(theta_V) 0.25), G2 = 1 along the normal
+        CHECK(r.W.g == Approx((1 - F) * D / 0.25).epsilon(1e-4));
+        // FPdf = (1 - F) G1(V) D(H) (V.H / cos(theta_V)) eta_L^2 |L.H| / 0.25
+        CHECK(r.FPdf == Approx((1 - F) * D * 2.25 / 0.25).epsilon(1e-4));
+        // From inside: the mirror image of the same pair, with the indices swapped.
+        auto back = p->evaluate({viewFrom(180)}, {Vec3(0, 0, 1)})[0];
+        CHECK(back.W.g == Approx((1 - F) * D * 2.25 / 0.25).epsilon(1e-4));
+        CHECK(back.FPdf == Approx((1 - F) * D * 1.0 / 0.25).epsilon(1e-4));
+    }
+    SECTION("rough: the scattered radiance / eta^2 is at most 1, and nearly 1 for a nearly smooth boundary") {
+        // A single-scattering microfacet model loses the light that would scatter
+        // again among the microfacets (a refraction through a tilted microfacet that
+        // leaves on the wrong side): more for rough glass, more from inside.
+        auto const alpha = GENERATE(0.02, 0.3);
+        auto const viewTheta = GENERATE(0.0, 60.0, 85.0, 150.0, 120.0);
+        CAPTURE(alpha, viewTheta);
+        auto p = probe("glass", "\"float ior\" [1.5] \"float roughness\" [" + std::to_string(alpha) + "]");
+        std::vector<ProbePoint> points(100000, viewFrom(viewTheta, 10.0));
+        double etaV = viewTheta > 90 ? 1.5 : 1.0, sum = 0.0;
+        for (auto const& g : p->generate(points, stratifiedSamples(points.size(), 11))) {
+            if (!g.valid) continue;
+            double etaL = g.L.z < 0 ? 1.5 : 1.0;
+            sum += g.W.g / g.FPdf * (etaL * etaL) / (etaV * etaV);
+        }
+        double albedo = sum / static_cast<double>(points.size());
+        CHECK(albedo <= 1.0);
+        CHECK(albedo >= (alpha < 0.1 ? 0.97 : 0.75));
+    }
+}
+
 TEST_CASE("chapter 7: the buggydiffuse starter's GenerateSample and EvaluateSample disagree; the solution's agree",
           "[solutions][ch07]") {
     Diagnostics diagnostics(false);

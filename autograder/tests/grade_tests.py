@@ -402,7 +402,7 @@ def test_solutions(ctx):
 
 def test_starter(ctx):
     status, output, _ = ctx.grade("starter", "--plugins", os.path.join(ctx.build, "plugins/starter"), "--chapter", "6",
-                                  "11")
+                                  "10", "11")
     print(output[-4000:])
     if expect(status == 0, f"rixgrade exited with {status}"):
         results = ctx.results("starter")
@@ -413,6 +413,11 @@ def test_starter(ctx):
         # An untouched integrator renders black: it must not earn the noise points for being smooth.
         for name, t in checks.items():
             if name.startswith("ch11 "):
+                expect(t["status"] == "failed", f"the untouched starter passes {name}")
+        # Chapter 10's starter gives the plumbing but no physics: only "loads" may pass.
+        expect(any(name.startswith("ch10 ") for name in checks), "chapter 10 was not graded")
+        for name, t in checks.items():
+            if name.startswith("ch10 ") and name != "ch10 glass: loads":
                 expect(t["status"] == "failed", f"the untouched starter passes {name}")
 
 
