@@ -3,12 +3,16 @@
 // rixgrade --unsafe-no-sandbox):
 //
 //   rixjail [--no-processes] [--cpu S] [--memory B] [--file-size B]
-//           [--processes N] [--writable DIR]... -- PROGRAM ARGS...
+//           [--processes N] [--writable DIR]... [--readable PATH]... -- PROGRAM ARGS...
 //
 //   limits     CPU seconds, address space, size of any file written, number
 //              of processes/threads, open files, no core files;
 //   files      writes only beneath the --writable folders and /dev/null
 //              (Landlock, Linux 5.13+; skipped with a note when missing);
+//              with --readable, reads and runs only beneath the --readable
+//              and --writable paths too (without the bubblewrap sandbox, that
+//              is what keeps the reference solutions and classmates' work
+//              out of reach; a --readable path that does not exist is skipped);
 //   processes  with --no-processes a seccomp filter kills the program when it
 //              tries to start another one (threads stay allowed) and refuses
 //              changes of file modes, owners, times and attributes.
@@ -20,6 +24,7 @@
 #include <seccomp.h>
 #include <sys/prctl.h>
 #include <sys/resource.h>
+#include <sys/stat.h>
 #include <sys/syscall.h>
 #include <unistd.h>
 
@@ -51,7 +56,7 @@ int landlockAbi() {
     return abi < 0 ? 0 : static_cast<int>(abi);
 }
 
-void confineWrites(std::vector<std::string> const& folders) {
+void confineFiles(std::vector<std::string> const& folders, std::vector<std::string> const& readable) {
     int abi = landlockAbi();
     if (abi < 1) {
         std::fprintf(stderr, "rixjail: note: no Landlock in this kernel; writes are confined by the sandbox's mounts only\n");
@@ -63,20 +68,29 @@ void confineWrites(std::vector<std::string> const& folders) {
                    LANDLOCK_ACCESS_FS_MAKE_SYM;
     if (abi >= 2) rights |= LANDLOCK_ACCESS_FS_REFER;
     if (abi >= 3) rights |= LANDLOCK_ACCESS_FS_TRUNCATE;
+    __u64 const reads = readable.empty() ? 0 : LANDLOCK_ACCESS_FS_READ_FILE | LANDLOCK_ACCESS_FS_READ_DIR |
+                                                   LANDLOCK_ACCESS_FS_EXECUTE;
     landlock_ruleset_attr attributes{};
-    attributes.handled_access_fs = rights;
+    attributes.handled_access_fs = rights | reads;
     int ruleset = static_cast<int>(syscall(SYS_landlock_create_ruleset, &attributes, sizeof attributes, 0));
     if (ruleset < 0) fail("cannot create a Landlock ruleset");
     auto allow = [&](std::string const& path, __u64 allowed) {
         int fd = open(path.c_str(), O_PATH | O_CLOEXEC);
-        if (fd < 0) fail("cannot open \"" + path + "\" to allow writes beneath it");
+        if (fd < 0 && reads && allowed == reads && errno == ENOENT) return;  // a --readable path this machine lacks
+        if (fd < 0) fail("cannot open \"" + path + "\" to allow access beneath it");
+        struct stat info {};
+        if (fstat(fd, &info) == 0 && !S_ISDIR(info.st_mode))
+            allowed &= LANDLOCK_ACCESS_FS_READ_FILE | LANDLOCK_ACCESS_FS_EXECUTE | LANDLOCK_ACCESS_FS_WRITE_FILE |
+                       LANDLOCK_ACCESS_FS_TRUNCATE;  // the rights a file (not a folder) can carry
         landlock_path_beneath_attr rule{allowed, fd};
         if (syscall(SYS_landlock_add_rule, ruleset, LANDLOCK_RULE_PATH_BENEATH, &rule, 0) != 0)
-            fail("cannot allow writes beneath \"" + path + "\"");
+            fail("cannot allow access beneath \"" + path + "\"");
         close(fd);
     };
-    for (auto const& folder : folders) allow(folder, rights);
-    allow("/dev/null", rights & (LANDLOCK_ACCESS_FS_WRITE_FILE | LANDLOCK_ACCESS_FS_TRUNCATE));
+    for (auto const& folder : folders) allow(folder, rights | reads);
+    for (auto const& path : readable) allow(path, reads);
+    allow("/dev/null", (rights | reads) & (LANDLOCK_ACCESS_FS_WRITE_FILE | LANDLOCK_ACCESS_FS_TRUNCATE |
+                                           LANDLOCK_ACCESS_FS_READ_FILE));
     if (syscall(SYS_landlock_restrict_self, ruleset, 0) != 0) fail("cannot enter the Landlock ruleset");
     close(ruleset);
 }
@@ -115,7 +129,7 @@ unsigned long long number(char const* text, char const* option) {
 int main(int argc, char** argv) {
     bool noProcesses = false;
     unsigned long long cpu = 0, memory = 0, fileSize = 0, processes = 0;
-    std::vector<std::string> writable;
+    std::vector<std::string> writable, readable;
     int i = 1;
     for (; i < argc; ++i) {
         std::string arg = argv[i];
@@ -138,6 +152,8 @@ int main(int argc, char** argv) {
             processes = number(value(), "--processes");
         } else if (arg == "--writable") {
             writable.push_back(value());
+        } else if (arg == "--readable") {
+            readable.push_back(value());
         } else {
             fail("unknown option " + arg);
         }
@@ -151,7 +167,7 @@ int main(int argc, char** argv) {
     if (fileSize) limit(RLIMIT_FSIZE, fileSize, "file size");
     if (processes) limit(RLIMIT_NPROC, processes, "processes");
     if (prctl(PR_SET_NO_NEW_PRIVS, 1, 0, 0, 0) != 0) fail("cannot set no_new_privs");
-    if (!writable.empty()) confineWrites(writable);
+    if (!writable.empty() || !readable.empty()) confineFiles(writable, readable);
     if (noProcesses) forbidProcesses();
     execvp(argv[i], argv + i);
     std::fprintf(stderr, "rixjail: cannot run %s: %s\n", argv[i], std::strerror(errno));

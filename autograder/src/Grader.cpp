@@ -342,9 +342,10 @@ Grade grade(GradeOptions const& options, Course& course, OutputFolder const& out
                         ? "Student code ran in a bubblewrap sandbox: no network, nothing of this machine but the "
                           "system and the course's API visible, only its scratch folder writable, Landlock, seccomp "
                           "and resource limits inside."
-                        : "WARNING: graded with --unsafe-no-sandbox. Student code ran without namespaces: it could "
-                          "read this machine's files and signal the grader; only Landlock, seccomp and resource "
-                          "limits confined it.";
+                        : "WARNING: graded with --unsafe-no-sandbox. Student code ran without namespaces: Landlock "
+                          "kept its reads to the system, the course's API and its scratch folder and its writes to "
+                          "the scratch folder, but it could reach the network and signal the grader's processes; "
+                          "seccomp and resource limits confined it too.";
     Scratch scratch(options.scratchParent);
     if (options.keepScratch) scratch.keep();
     SandboxLayout const layout = course.layout(scratch.path());

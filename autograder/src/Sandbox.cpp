@@ -133,6 +133,16 @@ Child::Child(SandboxLayout const& layout, Launch const& launch) : m_limits(launc
                                  "--file-size", std::to_string(m_limits.fileBytes), "--processes",
                                  std::to_string(m_limits.processes)});
         if (!layout.scratch.empty()) args.insert(args.end(), {"--writable", scratchInside, "--writable", tmpInside});
+        if (!sandboxed) {
+            // Without the sandbox's mounts, Landlock keeps reads to what a sandbox would
+            // see: the system, the course's mounts, the scratch folder -- not the
+            // reference solutions, not other submissions, not the grader's output.
+            for (char const* system : {"/usr", "/bin", "/sbin", "/lib", "/lib32", "/lib64", "/libx32", "/etc/ld.so.cache",
+                                       "/etc/ld.so.conf", "/etc/ld.so.conf.d", "/etc/alternatives", "/proc", "/dev"})
+                args.insert(args.end(), {"--readable", system});
+            for (auto const& [real, under] : layout.courseMounts) args.insert(args.end(), {"--readable", real});
+            args.insert(args.end(), {"--readable", layout.jail});
+        }
         args.push_back("--");
     }
     for (auto const& a : launch.argv) {

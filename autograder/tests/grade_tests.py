@@ -400,6 +400,30 @@ def test_solutions(ctx):
         print(f"solutions: {results['score']} / {results['max_score']} in {seconds:.1f} s")
 
 
+def test_borrows_reference(ctx):
+    """A ch11 submission whose mypath loads the course's PxrPathTracer earns nothing for it, in the
+    sandbox (not mounted) and without it (Landlock keeps reads to what a sandbox would see)."""
+    plugins = os.path.join(ctx.build, "plugins/hostile/borrows_reference")
+    for confinement in ([], ["--unsafe-no-sandbox"]):
+        name = "borrows-reference" + ("-unsafe" if confinement else "")
+        status, output, _ = ctx.grade(name, "--plugins", plugins, "--only", "mypath", *confinement)
+        print(output[-2000:])
+        if not expect(status == 0, f"rixgrade exited with {status}"):
+            continue
+        results = ctx.results(name)
+        checks = checks_of(results)
+        expect("renders" in checks, "renders was not graded")
+        for check in ("renders", "noise"):
+            if check in checks:
+                expect(checks[check]["status"] == "failed",
+                       f"{' '.join(confinement) or 'in the sandbox'}: the borrowed reference integrator passes {check}")
+        # Its CreateRixIntegrator finds nothing to load and returns null: the failure is isolation,
+        # not a small difference between the reference and the exercise's solution.
+        renders = checks.get("renders", {}).get("output", "")
+        expect("refused its parameters" in renders,
+               f"{' '.join(confinement) or 'in the sandbox'}: the reference integrator was within reach: {renders[:300]}")
+
+
 def test_starter(ctx):
     status, output, _ = ctx.grade("starter", "--plugins", os.path.join(ctx.build, "plugins/starter"), "--chapter", "6",
                                   "10", "11")
@@ -500,6 +524,7 @@ def main():
     ctx = Context(args)
     os.makedirs(ctx.out, exist_ok=True)
     tests = {"variant": lambda: test_variant(ctx, args.name), "hostile": lambda: test_hostile(ctx, args.name),
+             "borrows_reference": lambda: test_borrows_reference(ctx),
              "attack": lambda: test_attack(ctx, args.name), "solutions": lambda: test_solutions(ctx),
              "starter": lambda: test_starter(ctx), "repeat": lambda: test_repeat(ctx),
              "gradescope": lambda: test_gradescope(ctx), "unsafe": lambda: test_unsafe(ctx)}
