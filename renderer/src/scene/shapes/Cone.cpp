@@ -8,10 +8,9 @@
 namespace bxdflab {
 
 using quadric::solveQuadratic;
-using quadric::sweepRadians;
 
 Cone::Cone(float height, float radius, float thetaMaxDegrees, Mat4 const& toWorld, bool reverse)
-    : Quadric(toWorld, reverse), m_height(height), m_radius(radius), m_phiMax(sweepRadians(thetaMaxDegrees)) {}
+    : Quadric(toWorld, reverse, thetaMaxDegrees), m_height(height), m_radius(radius) {}
 
 std::optional<Quadric::LocalHit> Cone::intersectLocal(DVec3 const& o, DVec3 const& d, double tnear, double tfar) const {
     // x^2 + y^2 = (r (1 - z/h))^2
@@ -21,24 +20,21 @@ std::optional<Quadric::LocalHit> Cone::intersectLocal(DVec3 const& o, DVec3 cons
     double c = o.x * o.x + o.y * o.y - k * (o.z - m_height) * (o.z - m_height);
     double t0, t1;
     if (!solveQuadratic(a, b, c, t0, t1)) return std::nullopt;
-    for (double t : {t0, t1}) {
-        if (t <= tnear || t >= tfar) continue;
+    return firstRoot(t0, t1, tnear, tfar, [&](double t) -> std::optional<Uv> {
         DVec3 p = o + t * d;
         double v = p.z / m_height;
-        double phi = azimuth(p.x, p.y);
-        if (v < 0.0 || v > 1.0 || phi > m_phiMax) continue;
-        return LocalHit{t, static_cast<float>(phi / m_phiMax), static_cast<float>(v)};
-    }
-    return std::nullopt;
+        if (v < 0.0 || v > 1.0) return std::nullopt;
+        return swept(azimuth(p.x, p.y), v);
+    });
 }
 
 Quadric::LocalSurface Cone::surfaceLocal(float u, float v) const {
-    double phi = u * m_phiMax, cosPhi = std::cos(phi), sinPhi = std::sin(phi);
+    double phi = u * phiMax(), cosPhi = std::cos(phi), sinPhi = std::sin(phi);
     double rho = m_radius * (1.0 - v);
     DVec3 p(rho * cosPhi, rho * sinPhi, v * m_height);
     LocalSurface s;
     s.P = Vec3(p);
-    s.dPdu = Vec3(-m_phiMax * p.y, m_phiMax * p.x, 0.0);
+    s.dPdu = sweepTangent(p);
     s.dPdv = Vec3(DVec3(-m_radius * cosPhi, -m_radius * sinPhi, m_height));
     // The outward normal does not depend on v (so it is defined at the apex too).
     s.N = safeNormalize(Vec3(DVec3(m_height * cosPhi, m_height * sinPhi, m_radius)));

@@ -3,14 +3,11 @@
 #include <algorithm>
 #include <cmath>
 
-#include "scene/shapes/QuadricMath.h"
 
 namespace bxdflab {
 
-using quadric::sweepRadians;
-
 Disk::Disk(float height, float radius, float thetaMaxDegrees, Mat4 const& toWorld, bool reverse)
-    : Quadric(toWorld, reverse), m_height(height), m_radius(radius), m_phiMax(sweepRadians(thetaMaxDegrees)) {}
+    : Quadric(toWorld, reverse, thetaMaxDegrees), m_height(height), m_radius(radius) {}
 
 std::optional<Quadric::LocalHit> Disk::intersectLocal(DVec3 const& o, DVec3 const& d, double tnear,
                                                       double tfar) const {
@@ -20,21 +17,20 @@ std::optional<Quadric::LocalHit> Disk::intersectLocal(DVec3 const& o, DVec3 cons
     DVec3 p = o + t * d;
     double distSq = p.x * p.x + p.y * p.y;
     if (distSq > m_radius * m_radius) return std::nullopt;
-    double phi = azimuth(p.x, p.y);
-    if (phi > m_phiMax) return std::nullopt;
-    double v = 1.0 - std::sqrt(distSq) / m_radius;
-    return LocalHit{t, static_cast<float>(phi / m_phiMax), static_cast<float>(v)};
+    std::optional<Uv> uv = swept(azimuth(p.x, p.y), 1.0 - std::sqrt(distSq) / m_radius);
+    if (!uv) return std::nullopt;
+    return LocalHit{t, uv->u, uv->v};
 }
 
 Quadric::LocalSurface Disk::surfaceLocal(float u, float v) const {
-    double phi = u * m_phiMax;
+    double phi = u * phiMax();
     double cosPhi = std::cos(phi), sinPhi = std::sin(phi);
     double rho = m_radius * (1.0 - v);
     DVec3 p(rho * cosPhi, rho * sinPhi, m_height);
     LocalSurface s;
     s.P = Vec3(p);
     s.N = Vec3(0.0f, 0.0f, 1.0f);
-    s.dPdu = Vec3(-m_phiMax * p.y, m_phiMax * p.x, 0.0);
+    s.dPdu = sweepTangent(p);
     s.dPdv = Vec3(-m_radius * cosPhi, -m_radius * sinPhi, 0.0);
     return s;
 }

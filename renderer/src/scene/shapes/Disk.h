@@ -14,7 +14,7 @@ public:
     void boundsLocal(Vec3& lower, Vec3& upper) const override;
 
 private:
-    double m_height, m_radius, m_phiMax;
+    double m_height, m_radius;
 };
 
 }  // namespace bxdflab

@@ -9,10 +9,9 @@ namespace bxdflab {
 
 using quadric::kTwoPi;
 using quadric::solveQuadratic;
-using quadric::sweepRadians;
 
 Hyperboloid::Hyperboloid(Vec3 const& p1, Vec3 const& p2, float thetaMaxDegrees, Mat4 const& toWorld, bool reverse)
-    : Quadric(toWorld, reverse), m_p1(p1), m_p2(p2), m_phiMax(sweepRadians(thetaMaxDegrees)) {}
+    : Quadric(toWorld, reverse, thetaMaxDegrees), m_p1(p1), m_p2(p2) {}
 
 std::optional<Quadric::LocalHit> Hyperboloid::intersectLocal(DVec3 const& o, DVec3 const& d, double tnear,
                                                              double tfar) const {
@@ -27,28 +26,25 @@ std::optional<Quadric::LocalHit> Hyperboloid::intersectLocal(DVec3 const& o, DVe
     double c = o.x * o.x + o.y * o.y - A * v0 * v0 - B * v0 - C;
     double t0, t1;
     if (!solveQuadratic(a, b, c, t0, t1)) return std::nullopt;
-    for (double t : {t0, t1}) {
-        if (t <= tnear || t >= tfar) continue;
+    return firstRoot(t0, t1, tnear, tfar, [&](double t) -> std::optional<Uv> {
         DVec3 p = o + t * d;
         double v = v0 + t * vd;
-        if (v < 0.0 || v > 1.0) continue;
+        if (v < 0.0 || v > 1.0) return std::nullopt;
         DVec3 line = m_p1 + v * e;
-        double phi = azimuth(p.x, p.y) - azimuth(line.x, line.y);
+        double phi = azimuth(p.x, p.y) - azimuth(line.x, line.y);  // measured from the line's own azimuth
         if (phi < 0.0) phi += kTwoPi;
-        if (phi > m_phiMax) continue;
-        return LocalHit{t, static_cast<float>(phi / m_phiMax), static_cast<float>(v)};
-    }
-    return std::nullopt;
+        return swept(phi, v);
+    });
 }
 
 Quadric::LocalSurface Hyperboloid::surfaceLocal(float u, float v) const {
-    double phi = u * m_phiMax, cosPhi = std::cos(phi), sinPhi = std::sin(phi);
+    double phi = u * phiMax(), cosPhi = std::cos(phi), sinPhi = std::sin(phi);
     DVec3 line = m_p1 + static_cast<double>(v) * (m_p2 - m_p1);
     DVec3 e = m_p2 - m_p1;
     DVec3 p(line.x * cosPhi - line.y * sinPhi, line.x * sinPhi + line.y * cosPhi, line.z);
     LocalSurface s;
     s.P = Vec3(p);
-    s.dPdu = Vec3(-m_phiMax * p.y, m_phiMax * p.x, 0.0);
+    s.dPdu = sweepTangent(p);
     s.dPdv = Vec3(DVec3(e.x * cosPhi - e.y * sinPhi, e.x * sinPhi + e.y * cosPhi, e.z));
     Vec3 n = glm::cross(s.dPdu, s.dPdv);
     if (glm::length(n) < 1e-12f) n = Vec3(float(cosPhi), float(sinPhi), 0.0f);  // on the axis

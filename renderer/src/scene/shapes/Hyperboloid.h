@@ -17,7 +17,6 @@ public:
 
 private:
     DVec3 m_p1, m_p2;
-    double m_phiMax;
 };
 
 }  // namespace bxdflab

@@ -8,14 +8,12 @@
 namespace bxdflab {
 
 using quadric::solveQuadratic;
-using quadric::sweepRadians;
 
 Paraboloid::Paraboloid(float rmax, float zmin, float zmax, float thetaMaxDegrees, Mat4 const& toWorld, bool reverse)
-    : Quadric(toWorld, reverse),
+    : Quadric(toWorld, reverse, thetaMaxDegrees),
       m_rmax(rmax),
       m_zMin(std::min(zmin, zmax)),
-      m_zMax(std::max(zmin, zmax)),
-      m_phiMax(sweepRadians(thetaMaxDegrees)) {}
+      m_zMax(std::max(zmin, zmax)) {}
 
 std::optional<Quadric::LocalHit> Paraboloid::intersectLocal(DVec3 const& o, DVec3 const& d, double tnear,
                                                             double tfar) const {
@@ -24,25 +22,21 @@ std::optional<Quadric::LocalHit> Paraboloid::intersectLocal(DVec3 const& o, DVec
     if (!solveQuadratic(k * (d.x * d.x + d.y * d.y), 2.0 * k * (o.x * d.x + o.y * d.y) - d.z,
                         k * (o.x * o.x + o.y * o.y) - o.z, t0, t1))
         return std::nullopt;
-    for (double t : {t0, t1}) {
-        if (t <= tnear || t >= tfar) continue;
+    return firstRoot(t0, t1, tnear, tfar, [&](double t) -> std::optional<Uv> {
         DVec3 p = o + t * d;
-        double phi = azimuth(p.x, p.y);
-        if (p.z < m_zMin || p.z > m_zMax || phi > m_phiMax) continue;
-        double height = m_zMax - m_zMin;
-        return LocalHit{t, static_cast<float>(phi / m_phiMax), static_cast<float>(height > 0 ? (p.z - m_zMin) / height : 0)};
-    }
-    return std::nullopt;
+        if (p.z < m_zMin || p.z > m_zMax) return std::nullopt;
+        return swept(azimuth(p.x, p.y), heightFraction(p.z, m_zMin, m_zMax));
+    });
 }
 
 Quadric::LocalSurface Paraboloid::surfaceLocal(float u, float v) const {
-    double phi = u * m_phiMax, cosPhi = std::cos(phi), sinPhi = std::sin(phi);
+    double phi = u * phiMax(), cosPhi = std::cos(phi), sinPhi = std::sin(phi);
     double z = m_zMin + v * (m_zMax - m_zMin);
     double rho = m_rmax * std::sqrt(std::max(0.0, z / m_zMax));
     DVec3 p(rho * cosPhi, rho * sinPhi, z);
     LocalSurface s;
     s.P = Vec3(p);
-    s.dPdu = Vec3(-m_phiMax * p.y, m_phiMax * p.x, 0.0);
+    s.dPdu = sweepTangent(p);
     // d rho / dz = rho / (2 z); at the tip (z = 0) the tangent is horizontal.
     double slope = z > 1e-12 ? 0.5 / z : 0.0;
     s.dPdv = Vec3((m_zMax - m_zMin) * DVec3(p.x * slope, p.y * slope, 1.0));

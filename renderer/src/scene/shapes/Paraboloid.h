@@ -15,7 +15,7 @@ public:
     void boundsLocal(Vec3& lower, Vec3& upper) const override;
 
 private:
-    double m_rmax, m_zMin, m_zMax, m_phiMax;
+    double m_rmax, m_zMin, m_zMax;
 };
 
 }  // namespace bxdflab

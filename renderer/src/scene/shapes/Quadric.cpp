@@ -7,10 +7,11 @@
 
 namespace bxdflab {
 
-Quadric::Quadric(Mat4 const& objectToWorld, bool reverseOrientation)
+Quadric::Quadric(Mat4 const& objectToWorld, bool reverseOrientation, float thetaMaxDegrees)
     : m_objectToWorld(objectToWorld),
       m_worldToObject(glm::inverse(objectToWorld)),
-      m_orientation(reverseOrientation ? -1.0f : 1.0f) {}
+      m_orientation(reverseOrientation ? -1.0f : 1.0f),
+      m_phiMax(quadric::sweepRadians(thetaMaxDegrees)) {}
 
 double Quadric::azimuth(double x, double y) {
     double phi = std::atan2(y, x);

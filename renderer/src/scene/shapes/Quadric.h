@@ -5,6 +5,7 @@
 // normals and dPdu/dPdv are the true ones.
 #pragma once
 
+#include <initializer_list>
 #include <optional>
 
 #include "scene/shapes/Shape.h"
@@ -13,7 +14,8 @@ namespace bxdflab {
 
 class Quadric : public Shape {
 public:
-    Quadric(Mat4 const& objectToWorld, bool reverseOrientation);
+    /// thetaMaxDegrees: the sweep about z (RenderMan's thetamax), clamped to 0..360.
+    Quadric(Mat4 const& objectToWorld, bool reverseOrientation, float thetaMaxDegrees);
 
     void accept(ShapeVisitor& visitor) const override { visitor.visit(*this); }
     SurfaceBasics basics(HitRecord const& hit) const override;
@@ -41,11 +43,43 @@ public:
 protected:
     /// Angle of a point in [0, 2 pi).
     static double azimuth(double x, double y);
+    /// The sweep angle in radians.
+    double phiMax() const { return m_phiMax; }
+    /// dP/du of a surface of revolution at its point p: u sweeps phi over phiMax.
+    Vec3 sweepTangent(DVec3 const& p) const { return Vec3(-m_phiMax * p.y, m_phiMax * p.x, 0.0); }
+
+    /// Surface parameters of a hit.
+    struct Uv {
+        float u, v;
+    };
+    /// (u, v) of a point at azimuth phi (radians, in [0, 2 pi)) and parameter v, or
+    /// nothing where phi lies past the sweep.
+    std::optional<Uv> swept(double phi, double v) const {
+        if (phi > m_phiMax) return std::nullopt;
+        return Uv{static_cast<float>(phi / m_phiMax), static_cast<float>(v)};
+    }
+    /// Where z lies from zMin (0) to zMax (1); 0 for a surface of no height.
+    static double heightFraction(double z, double zMin, double zMax) {
+        double height = zMax - zMin;
+        return height > 0.0 ? (z - zMin) / height : 0.0;
+    }
+    /// The nearer of the roots t0 <= t1 in (tnear, tfar) whose point is on the
+    /// surface: onSurface(t) gives that point's (u, v), or nothing where it lies
+    /// outside the surface's range or sweep.
+    template <class OnSurface>
+    static std::optional<LocalHit> firstRoot(double t0, double t1, double tnear, double tfar, OnSurface onSurface) {
+        for (double t : {t0, t1}) {
+            if (t <= tnear || t >= tfar) continue;
+            if (std::optional<Uv> uv = onSurface(t)) return LocalHit{t, uv->u, uv->v};
+        }
+        return std::nullopt;
+    }
 
 private:
     Mat4 m_objectToWorld;
     Mat4 m_worldToObject;
     float m_orientation;  ///< +1, or -1 under ReverseOrientation
+    double m_phiMax;
 };
 
 }  // namespace bxdflab

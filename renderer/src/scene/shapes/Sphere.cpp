@@ -8,10 +8,9 @@
 namespace bxdflab {
 
 using quadric::solveQuadratic;
-using quadric::sweepRadians;
 
 Sphere::Sphere(float radius, float zmin, float zmax, float thetaMaxDegrees, Mat4 const& toWorld, bool reverse)
-    : Quadric(toWorld, reverse), m_radius(radius), m_phiMax(sweepRadians(thetaMaxDegrees)) {
+    : Quadric(toWorld, reverse, thetaMaxDegrees), m_radius(radius) {
     m_zMin = std::clamp(static_cast<double>(std::min(zmin, zmax)), -m_radius, m_radius);
     m_zMax = std::clamp(static_cast<double>(std::max(zmin, zmax)), -m_radius, m_radius);
     m_thetaZMin = std::acos(m_zMin / m_radius);
@@ -23,23 +22,19 @@ std::optional<Quadric::LocalHit> Sphere::intersectLocal(DVec3 const& o, DVec3 co
     double t0, t1;
     if (!solveQuadratic(glm::dot(d, d), 2.0 * glm::dot(o, d), glm::dot(o, o) - m_radius * m_radius, t0, t1))
         return std::nullopt;
-    for (double t : {t0, t1}) {
-        if (t <= tnear || t >= tfar) continue;
+    return firstRoot(t0, t1, tnear, tfar, [&](double t) -> std::optional<Uv> {
         DVec3 p = o + t * d;
         p *= m_radius / glm::length(p);  // reproject onto the surface
         if (p.x == 0.0 && p.y == 0.0) p.x = 1e-9 * m_radius;
-        double phi = azimuth(p.x, p.y);
-        if ((m_zMin > -m_radius && p.z < m_zMin) || (m_zMax < m_radius && p.z > m_zMax) || phi > m_phiMax)
-            continue;
+        if ((m_zMin > -m_radius && p.z < m_zMin) || (m_zMax < m_radius && p.z > m_zMax)) return std::nullopt;
         double theta = std::acos(std::clamp(p.z / m_radius, -1.0, 1.0));
         double v = (theta - m_thetaZMin) / (m_thetaZMax - m_thetaZMin);
-        return LocalHit{t, static_cast<float>(phi / m_phiMax), static_cast<float>(std::clamp(v, 0.0, 1.0))};
-    }
-    return std::nullopt;
+        return swept(azimuth(p.x, p.y), std::clamp(v, 0.0, 1.0));
+    });
 }
 
 Quadric::LocalSurface Sphere::surfaceLocal(float u, float v) const {
-    double phi = u * m_phiMax;
+    double phi = u * phiMax();
     double deltaTheta = m_thetaZMax - m_thetaZMin;
     double theta = m_thetaZMin + v * deltaTheta;
     double sinTheta = std::sin(theta), cosTheta = std::cos(theta);
@@ -48,7 +43,7 @@ Quadric::LocalSurface Sphere::surfaceLocal(float u, float v) const {
     LocalSurface s;
     s.P = Vec3(p);
     s.N = Vec3(p / m_radius);
-    s.dPdu = Vec3(-m_phiMax * p.y, m_phiMax * p.x, 0.0);
+    s.dPdu = sweepTangent(p);
     s.dPdv = Vec3(deltaTheta * DVec3(p.z * cosPhi, p.z * sinPhi, -m_radius * sinTheta));
     return s;
 }

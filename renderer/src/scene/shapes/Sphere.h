@@ -15,7 +15,7 @@ public:
     void boundsLocal(Vec3& lower, Vec3& upper) const override;
 
 private:
-    double m_radius, m_zMin, m_zMax, m_thetaZMin, m_thetaZMax, m_phiMax;
+    double m_radius, m_zMin, m_zMax, m_thetaZMin, m_thetaZMax;
 };
 
 }  // namespace bxdflab
