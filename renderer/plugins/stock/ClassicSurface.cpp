@@ -31,6 +31,7 @@
 #include "Emissive.h"
 #include "Plastic.h"
 #include "RixShadingUtils.h"
+#include "StockBxdf.h"
 
 namespace {
 
@@ -55,12 +56,10 @@ private:
     RtColorRGB const* m_glow;
 };
 
-class ClassicSurfaceFactory : public RixBxdfFactory {
+class ClassicSurfaceFactory : public stockbxdfs::StockBxdfFactory {
 public:
     enum Param { k_shader, k_surfaceColor, k_surfaceOpacity, k_ambient, k_Ka, k_Kd, k_Ks, k_roughness, k_specularcolor };
 
-    int Init(RixContext&, RtUString const) override { return 0; }
-    void Finalize(RixContext&) override {}
     RixSCParamInfo const* GetParamTable() override {
         static RixSCParamInfo table[] = {
             RixSCParamInfo(RtUString("shader"), k_RixSCString, k_RixSCScatterInput),
@@ -132,7 +131,6 @@ public:
         params.normalize = 0;
         return new (pool.AllocForBxdf<ClassicBxdf>(1)) ClassicBxdf(sCtx, this, params, glow);
     }
-    void EndScatter(RixBxdf*) override {}
 
 private:
     static Shader shaderNamed(char const* name) {
@@ -145,8 +143,4 @@ private:
 
 }  // namespace
 
-RIX_BXDFPLUGINCREATE {
-    PIXAR_ARGUSED(hint);
-    return new ClassicSurfaceFactory();
-}
-RIX_BXDFPLUGINDESTROY { delete static_cast<ClassicSurfaceFactory*>(bxdf); }
+STOCK_BXDF_PLUGIN(ClassicSurfaceFactory)

@@ -4,19 +4,17 @@
 #include <new>
 
 #include "Emissive.h"
+#include "StockBxdf.h"
 
 namespace {
 
-class PxrConstantFactory : public RixBxdfFactory {
+class PxrConstantFactory : public stockbxdfs::StockBxdfFactory {
 public:
-    int Init(RixContext&, RtUString const) override { return 0; }
-    void Finalize(RixContext&) override {}
     RixSCParamInfo const* GetParamTable() override {
         static RixSCParamInfo table[] = {RixSCParamInfo(RtUString("emitColor"), k_RixSCColor, k_RixSCScatterInput),
                                          RixSCParamInfo()};
         return table;
     }
-    void Synchronize(RixContext&, RixSCSyncMsg, RixParameterList const*) override {}
     RixBxdf* BeginScatter(RixShadingContext const* sCtx, RixBXLobeTraits const&, RixSCShadingMode, void*,
                           RtPointer) override {
         RtColorRGB const* color;
@@ -24,7 +22,6 @@ public:
         RixShadingContext::Allocator pool(sCtx);
         return new (pool.AllocForBxdf<Emissive>(1)) Emissive(sCtx, this, color);
     }
-    void EndScatter(RixBxdf*) override {}
 
 private:
     RtColorRGB m_default{1.0f, 1.0f, 1.0f};
@@ -32,8 +29,4 @@ private:
 
 }  // namespace
 
-RIX_BXDFPLUGINCREATE {
-    PIXAR_ARGUSED(hint);
-    return new PxrConstantFactory();
-}
-RIX_BXDFPLUGINDESTROY { delete static_cast<PxrConstantFactory*>(bxdf); }
+STOCK_BXDF_PLUGIN(PxrConstantFactory)

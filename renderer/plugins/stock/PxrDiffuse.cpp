@@ -5,13 +5,12 @@
 #include <new>
 
 #include "Diffuse.h"
+#include "StockBxdf.h"
 
 namespace {
 
-class PxrDiffuseFactory : public RixBxdfFactory {
+class PxrDiffuseFactory : public stockbxdfs::StockBxdfFactory {
 public:
-    int Init(RixContext&, RtUString const) override { return 0; }
-    void Finalize(RixContext&) override {}
     RixSCParamInfo const* GetParamTable() override {
         static RixSCParamInfo table[] = {RixSCParamInfo(RtUString("diffuseColor"), k_RixSCColor, k_RixSCScatterInput),
                                          RixSCParamInfo()};
@@ -29,7 +28,6 @@ public:
         RixShadingContext::Allocator pool(sCtx);
         return new (pool.AllocForBxdf<Diffuse>(1)) Diffuse(sCtx, this, color);
     }
-    void EndScatter(RixBxdf*) override {}
 
 private:
     RtColorRGB m_default{0.5f, 0.5f, 0.5f};
@@ -37,8 +35,4 @@ private:
 
 }  // namespace
 
-RIX_BXDFPLUGINCREATE {
-    PIXAR_ARGUSED(hint);
-    return new PxrDiffuseFactory();
-}
-RIX_BXDFPLUGINDESTROY { delete static_cast<PxrDiffuseFactory*>(bxdf); }
+STOCK_BXDF_PLUGIN(PxrDiffuseFactory)

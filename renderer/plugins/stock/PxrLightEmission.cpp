@@ -6,14 +6,13 @@
 #include <new>
 
 #include "Emissive.h"
+#include "StockBxdf.h"
 
 namespace {
 
-class PxrLightEmissionFactory : public RixBxdfFactory {
+class PxrLightEmissionFactory : public stockbxdfs::StockBxdfFactory {
 public:
     enum ParamId { k_lightColor, k_intensity, k_exposure };
-    int Init(RixContext&, RtUString const) override { return 0; }
-    void Finalize(RixContext&) override {}
     RixSCParamInfo const* GetParamTable() override {
         static RixSCParamInfo table[] = {RixSCParamInfo(RtUString("lightColor"), k_RixSCColor, k_RixSCScatterInput),
                                          RixSCParamInfo(RtUString("intensity"), k_RixSCFloat, k_RixSCScatterInput),
@@ -21,7 +20,6 @@ public:
                                          RixSCParamInfo()};
         return table;
     }
-    void Synchronize(RixContext&, RixSCSyncMsg, RixParameterList const*) override {}
     RixBxdf* BeginScatter(RixShadingContext const* sCtx, RixBXLobeTraits const&, RixSCShadingMode, void*,
                           RtPointer) override {
         RtColorRGB const* color;
@@ -34,7 +32,6 @@ public:
         for (int i = 0; i < sCtx->numPts; ++i) emission[i] = color[i] * (intensity[i] * std::exp2(exposure[i]));
         return new (pool.AllocForBxdf<Emissive>(1)) Emissive(sCtx, this, emission);
     }
-    void EndScatter(RixBxdf*) override {}
 
 private:
     RtColorRGB const m_white{1.0f, 1.0f, 1.0f};
@@ -43,8 +40,4 @@ private:
 
 }  // namespace
 
-RIX_BXDFPLUGINCREATE {
-    PIXAR_ARGUSED(hint);
-    return new PxrLightEmissionFactory();
-}
-RIX_BXDFPLUGINDESTROY { delete static_cast<PxrLightEmissionFactory*>(bxdf); }
+STOCK_BXDF_PLUGIN(PxrLightEmissionFactory)

@@ -2,19 +2,18 @@
 // Disney Bxdf per shading context (the model is in Disney.h).
 #include <new>
 
+#include "../StockBxdf.h"
 #include "Disney.h"
 
 namespace {
 
-class PxrDisneyFactory : public RixBxdfFactory {
+class PxrDisneyFactory : public stockbxdfs::StockBxdfFactory {
 public:
     enum ParamId {
         k_baseColor, k_emitColor, k_subsurface, k_metallic, k_specular, k_specularTint, k_roughness,
         k_anisotropic, k_sheen, k_sheenTint, k_clearcoat, k_clearcoatGloss
     };
 
-    int Init(RixContext&, RtUString const) override { return 0; }
-    void Finalize(RixContext&) override {}
     RixSCParamInfo const* GetParamTable() override {
         static RixSCParamInfo table[] = {
             RixSCParamInfo(RtUString("baseColor"), k_RixSCColor, k_RixSCScatterInput),
@@ -61,7 +60,6 @@ public:
         RixShadingContext::Allocator pool(sCtx);
         return new (pool.AllocForBxdf<Disney>(1)) Disney(sCtx, this, p);
     }
-    void EndScatter(RixBxdf*) override {}
 
 private:
     RtColorRGB const m_baseColor{0.2f, 0.5f, 0.8f}, m_black{0.0f, 0.0f, 0.0f};
@@ -70,8 +68,4 @@ private:
 
 }  // namespace
 
-RIX_BXDFPLUGINCREATE {
-    PIXAR_ARGUSED(hint);
-    return new PxrDisneyFactory();
-}
-RIX_BXDFPLUGINDESTROY { delete static_cast<PxrDisneyFactory*>(bxdf); }
+STOCK_BXDF_PLUGIN(PxrDisneyFactory)

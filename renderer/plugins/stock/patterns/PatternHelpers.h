@@ -18,6 +18,14 @@ public:
     void Synchronize(RixContext&, RixSCSyncMsg, RixParameterList const*) override {}
 };
 
+/// Exports the create/destroy pair the renderer looks up in a pattern plugin.
+#define STOCK_PATTERN_PLUGIN(Pattern)           \
+    RIX_PATTERNCREATE {                         \
+        PIXAR_ARGUSED(hint);                    \
+        return new Pattern();                   \
+    }                                           \
+    RIX_PATTERNDESTROY { delete static_cast<Pattern*>(pattern); }
+
 /// Adds output `paramId` with one value per point to `out` (which has room)
 /// and returns the array to fill.
 template <typename T>

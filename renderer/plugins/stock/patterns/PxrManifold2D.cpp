@@ -68,8 +68,4 @@ public:
 
 }  // namespace
 
-RIX_PATTERNCREATE {
-    PIXAR_ARGUSED(hint);
-    return new PxrManifold2D();
-}
-RIX_PATTERNDESTROY { delete static_cast<PxrManifold2D*>(pattern); }
+STOCK_PATTERN_PLUGIN(PxrManifold2D)

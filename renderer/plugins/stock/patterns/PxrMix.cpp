@@ -53,8 +53,4 @@ public:
 
 }  // namespace
 
-RIX_PATTERNCREATE {
-    PIXAR_ARGUSED(hint);
-    return new PxrMix();
-}
-RIX_PATTERNDESTROY { delete static_cast<PxrMix*>(pattern); }
+STOCK_PATTERN_PLUGIN(PxrMix)

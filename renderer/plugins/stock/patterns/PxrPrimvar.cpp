@@ -67,8 +67,4 @@ public:
 
 }  // namespace
 
-RIX_PATTERNCREATE {
-    PIXAR_ARGUSED(hint);
-    return new PxrPrimvar();
-}
-RIX_PATTERNDESTROY { delete static_cast<PxrPrimvar*>(pattern); }
+STOCK_PATTERN_PLUGIN(PxrPrimvar)

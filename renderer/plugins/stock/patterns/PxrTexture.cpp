@@ -105,8 +105,4 @@ public:
 
 }  // namespace
 
-RIX_PATTERNCREATE {
-    PIXAR_ARGUSED(hint);
-    return new PxrTexture();
-}
-RIX_PATTERNDESTROY { delete static_cast<PxrTexture*>(pattern); }
+STOCK_PATTERN_PLUGIN(PxrTexture)

@@ -71,8 +71,4 @@ public:
 
 }  // namespace
 
-RIX_PATTERNCREATE {
-    PIXAR_ARGUSED(hint);
-    return new PxrVariable();
-}
-RIX_PATTERNDESTROY { delete static_cast<PxrVariable*>(pattern); }
+STOCK_PATTERN_PLUGIN(PxrVariable)
