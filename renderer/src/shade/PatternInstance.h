@@ -8,6 +8,7 @@
 #include <string>
 
 #include "RixPattern.h"
+#include "shade/NodeInstance.h"
 #include "shade/NodeParams.h"
 
 namespace bxdflab {
@@ -18,27 +19,14 @@ struct PatternCounters {
     std::atomic<uint64_t> points{0};       ///< points they computed
 };
 
-class PatternInstance {
+class PatternInstance : public NodeInstance {
 public:
     PatternInstance(PatternDesc const& desc, ShadingPlugin& plugin, NodeParams::PatternLookup const& patternOf,
                     PatternCounters& counters, Diagnostics& diagnostics);
-    ~PatternInstance();
-    PatternInstance(PatternInstance const&) = delete;
-    PatternInstance& operator=(PatternInstance const&) = delete;
 
-    ShadingPlugin& plugin() const { return m_plugin; }
-    std::string const& handle() const { return m_handle; }
-    SourceLocation const& where() const { return m_where; }
-    NodeParams const& params() const { return m_params; }
-    RtPointer instanceData() const { return m_instance.data; }
     PatternCounters& counters() const { return m_counters; }
 
 private:
-    ShadingPlugin& m_plugin;
-    std::string m_handle;
-    SourceLocation m_where;
-    NodeParams m_params;
-    RixShadingPlugin::InstanceData m_instance;
     PatternCounters& m_counters;
 };
 
