@@ -60,6 +60,34 @@ std::string errorsAbout(std::string const& log, std::string const& folder) {
     return out;
 }
 
+/// One run of rixrender that sends a scene's raw image (the mean and variance
+/// of every pixel) back through descriptor 3.
+struct RawRender {
+    std::string bytes;  ///< the image, as rixrender wrote it (at most the limit read)
+    ExitStatus status;
+    std::string said;   ///< what rixrender wrote to stderr
+};
+
+/// Renders `scene` at `spp` with `seed`, searching `pluginPath` first, inside
+/// `layout`; reads at most `maxBytes` of the image before `limits.wallSeconds`.
+RawRender renderRaw(SandboxLayout const& layout, std::string const& rixrender, std::string const& pluginPath,
+                    std::string const& scene, int spp, int seed, Limits const& limits, size_t maxBytes,
+                    std::string const& workdir = "/scratch") {
+    Launch launch;
+    launch.argv = {rixrender,        "--quiet",  "--spp", std::to_string(spp), "--seed", std::to_string(seed),
+                   "--raw-out-fd",   "3",        "--plugin-path", pluginPath, scene};
+    launch.workdir = workdir;
+    launch.outputs = {3};
+    launch.limits = limits;
+    Child child(layout, launch);
+    RawRender out;
+    auto deadline = Clock::now() + ms(limits.wallSeconds);
+    child.readAll(3, out.bytes, maxBytes, deadline);
+    out.status = child.wait(deadline);
+    out.said = child.err();
+    return out;
+}
+
 }  // namespace
 
 RenderImage parseRawImage(std::string const& bytes, int expectWidth, int expectHeight) {
@@ -146,22 +174,15 @@ RenderImage const& Course::referenceRender(std::string const& scene, int spp, do
     }
     SandboxLayout trusted;
     trusted.confinement = Confinement::Trusted;
-    Launch launch;
-    launch.argv = {m_binDir + "/rixrender", "--quiet", "--spp", std::to_string(spp), "--seed", "2", "--raw-out-fd", "3",
-                   "--plugin-path", m_binDir + "/../plugins/solutions", m_root + "/scenes/" + scene};
-    launch.workdir = m_root;
-    launch.outputs = {3};
-    launch.limits.wallSeconds = seconds;
-    launch.limits.memoryBytes = 0;
-    Child child(trusted, launch);
-    std::string bytes;
-    auto deadline = Clock::now() + ms(seconds);
-    child.readAll(3, bytes, 1u << 30, deadline);
-    ExitStatus status = child.wait(deadline);
-    if (!status.ok())
-        throw std::runtime_error("the reference render of " + scene + " " + status.describe(launch.limits) + ": " +
-                                 tail(child.err()));
-    auto image = std::make_unique<RenderImage>(parseRawImage(bytes));
+    Limits limits;
+    limits.wallSeconds = seconds;
+    limits.memoryBytes = 0;
+    RawRender render = renderRaw(trusted, m_binDir + "/rixrender", m_binDir + "/../plugins/solutions",
+                                 m_root + "/scenes/" + scene, spp, 2, limits, 1u << 30, m_root);
+    if (!render.status.ok())
+        throw std::runtime_error("the reference render of " + scene + " " + render.status.describe(limits) + ": " +
+                                 tail(render.said));
+    auto image = std::make_unique<RenderImage>(parseRawImage(render.bytes));
     std::lock_guard<std::mutex> g(m_lock);
     return *(m_renders[key] = std::move(image));
 }
@@ -240,26 +261,19 @@ SceneRender renderScene(Exercise const& e, std::string const& scene, Course& cou
                      mounts.end());
         pluginPath = "/course/plugins/stock:/scratch/build/plugins";
     }
-    Launch launch;
-    launch.argv = {"/course/bin/rixrender", "--quiet", "--spp", std::to_string(spp), "--seed", "1", "--raw-out-fd", "3",
-                   "--plugin-path", pluginPath, "/course/scenes/" + scene};
-    launch.outputs = {3};
-    launch.limits.wallSeconds = seconds;
-    launch.limits.processes = 256;
-    Child child(renderLayout, launch);
-    std::string bytes;
-    auto deadline = Clock::now() + ms(seconds);
+    Limits limits;
+    limits.wallSeconds = seconds;
     size_t expected = sizeof(RawImageHeader) + static_cast<size_t>(theirs->width) * theirs->height * RawImageHeader::kChannels * 4;
-    child.readAll(3, bytes, expected + 1, deadline);
-    ExitStatus status = child.wait(deadline);
-    out.rendererSaid = tail(child.err(), 2000);
-    if (!status.ok()) {
-        out.problem = "rendering " + scene + " with your plugin " + status.describe(launch.limits) +
-                      (child.err().empty() ? "" : "; the renderer said: " + tail(child.err(), 400));
+    RawRender render = renderRaw(renderLayout, "/course/bin/rixrender", pluginPath, "/course/scenes/" + scene, spp, 1,
+                                 limits, expected + 1);
+    out.rendererSaid = tail(render.said, 2000);
+    if (!render.status.ok()) {
+        out.problem = "rendering " + scene + " with your plugin " + render.status.describe(limits) +
+                      (render.said.empty() ? "" : "; the renderer said: " + tail(render.said, 400));
         return out;
     }
     try {
-        out.mine = parseRawImage(bytes, theirs->width, theirs->height);
+        out.mine = parseRawImage(render.bytes, theirs->width, theirs->height);
     } catch (std::exception const& error) {
         out.problem = std::string("your render did not come back as an image: ") + error.what();
         return out;

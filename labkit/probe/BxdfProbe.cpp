@@ -1,5 +1,6 @@
 #include "probe/BxdfProbe.h"
 
+#include "RixBxdfScratch.h"
 #include "scene/SceneBuilder.h"
 #include "shade/BxdfInstance.h"
 #include "shade/MemoryArena.h"
@@ -145,25 +146,22 @@ std::vector<ProbeResult> BxdfProbe::generate(std::vector<ProbePoint> const& poin
     std::vector<ProbeResult> out(points.size());
     int n = static_cast<int>(points.size());
     m_impl->withBxdf(points, [&](RixShadingContext const& ctx, RixBxdf& bxdf) {
-        RixShadingContext::Allocator pool(&ctx);
         RixRNG rng(samples.data(), n);
-        auto* wanted = pool.AllocFor<RixBXLobeTraits>(n);
-        auto* sampled = pool.AllocFor<RixBXLobeSampled>(n);
-        auto* Ln = pool.AllocFor<RtVector3>(n);
-        auto* FPdf = pool.AllocFor<float>(n);
-        auto* RPdf = pool.AllocFor<float>(n);
+        // The integrators' arrays, cleared as they clear them; unlike them, the
+        // probe hands back what the Bxdf wrote as it is (a bad pdf is for the checks to judge).
+        RixBxdfScratch q(ctx);
         for (int i = 0; i < n; ++i) {
-            wanted[i] = RixBXLobeTraits::All();
-            sampled[i] = RixBXLobeSampled();
-            Ln[i] = RtVector3(0.0f, 0.0f, 0.0f);
-            FPdf[i] = RPdf[i] = 0.0f;
+            q.lobeSampled[i] = RixBXLobeSampled();
+            q.Ln[i] = RtVector3(0.0f, 0.0f, 0.0f);
+            q.FPdf[i] = q.RPdf[i] = 0.0f;
         }
-        RixBXLobeWeights W(n, &ctx);
         m_impl->announce("GenerateSample");
-        bxdf.GenerateSample(k_RixBXDirectLighting, wanted, &rng, sampled, Ln, W, FPdf, RPdf);
-        for (int i = 0; i < n; ++i)
-            out[static_cast<size_t>(i)] = {toVec3(Ln[i]), W.SumAtPoint(i), FPdf[i], RPdf[i], sampled[i].GetValid(),
-                                           sampled[i].GetValid() && sampled[i].GetDiscrete()};
+        bxdf.GenerateSample(k_RixBXDirectLighting, q.lobesWanted, &rng, q.lobeSampled, q.Ln, q.W, q.FPdf, q.RPdf);
+        for (int i = 0; i < n; ++i) {
+            RixBXLobeSampled const& lobe = q.lobeSampled[i];
+            out[static_cast<size_t>(i)] = {toVec3(q.Ln[i]), q.W.SumAtPoint(i), q.FPdf[i], q.RPdf[i], lobe.GetValid(),
+                                           lobe.GetValid() && lobe.GetDiscrete()};
+        }
     });
     return out;
 }
@@ -172,27 +170,20 @@ std::vector<ProbeResult> BxdfProbe::evaluate(std::vector<ProbePoint> const& poin
     std::vector<ProbeResult> out(points.size());
     int n = static_cast<int>(points.size());
     m_impl->withBxdf(points, [&](RixShadingContext const& ctx, RixBxdf& bxdf) {
-        RixShadingContext::Allocator pool(&ctx);
-        auto* samples = pool.AllocFor<RixRNG::SampleCtx>(n);
-        auto* wanted = pool.AllocFor<RixBXLobeTraits>(n);
-        auto* evaluated = pool.AllocFor<RixBXLobeTraits>(n);
-        auto* Ln = pool.AllocFor<RtVector3>(n);
-        auto* FPdf = pool.AllocFor<float>(n);
-        auto* RPdf = pool.AllocFor<float>(n);
+        auto* samples = RixShadingContext::Allocator(&ctx).AllocFor<RixRNG::SampleCtx>(n);
+        RixBxdfScratch q(ctx);
         for (int i = 0; i < n; ++i) {
             samples[i] = {0u, static_cast<uint32_t>(i), 0, -1.0f};
-            wanted[i] = RixBXLobeTraits::All();
-            evaluated[i] = RixBXLobeTraits();
-            Ln[i] = toRt(L[static_cast<size_t>(i)]);
-            FPdf[i] = RPdf[i] = 0.0f;
+            q.lobesEvaluated[i] = RixBXLobeTraits();
+            q.Ln[i] = toRt(L[static_cast<size_t>(i)]);
+            q.FPdf[i] = q.RPdf[i] = 0.0f;
         }
         RixRNG rng(samples, n);
-        RixBXLobeWeights W(n, &ctx);
         m_impl->announce("EvaluateSample");
-        bxdf.EvaluateSample(k_RixBXDirectLighting, wanted, &rng, evaluated, Ln, W, FPdf, RPdf);
+        bxdf.EvaluateSample(k_RixBXDirectLighting, q.lobesWanted, &rng, q.lobesEvaluated, q.Ln, q.W, q.FPdf, q.RPdf);
         for (int i = 0; i < n; ++i)
-            out[static_cast<size_t>(i)] = {L[static_cast<size_t>(i)], W.SumAtPoint(i), FPdf[i], RPdf[i],
-                                           evaluated[i].GetValid() || evaluated[i].HasAny()};
+            out[static_cast<size_t>(i)] = {L[static_cast<size_t>(i)], q.W.SumAtPoint(i), q.FPdf[i], q.RPdf[i],
+                                           q.lobesEvaluated[i].GetValid() || q.lobesEvaluated[i].HasAny()};
     });
     return out;
 }
