@@ -104,6 +104,16 @@ add_test(NAME tools.rixwarp_finds_the_planted_bug
          COMMAND sh ${CMAKE_CURRENT_SOURCE_DIR}/expect-failure.sh "-> FAIL" $<TARGET_FILE:rixwarp> buggydiffuse
                  --plugin-path ${CMAKE_BINARY_DIR}/plugins/starter --samples 100000 --out warp-buggy.png
          WORKING_DIRECTORY ${CLI_OUT})
+# Bad input is status 1; the two tools whose status 1 is a verdict (rixdiff, rixwarp) say it with 2, as diff does.
+add_test(NAME tools.rixlobe_missing_plugin
+         COMMAND sh ${CMAKE_CURRENT_SOURCE_DIR}/expect-failure.sh "no-such-plugin" $<TARGET_FILE:rixlobe> no-such-plugin
+         WORKING_DIRECTORY ${CLI_OUT})
+add_test(NAME tools.rixwarp_missing_plugin
+         COMMAND env EXPECT_STATUS=2 sh ${CMAKE_CURRENT_SOURCE_DIR}/expect-failure.sh "no-such-plugin"
+                 $<TARGET_FILE:rixwarp> no-such-plugin WORKING_DIRECTORY ${CLI_OUT})
+add_test(NAME tools.rixdiff_missing_image
+         COMMAND env EXPECT_STATUS=2 sh ${CMAKE_CURRENT_SOURCE_DIR}/expect-failure.sh "no-such-image"
+                 $<TARGET_FILE:rixdiff> no-such-image.exr no-such-image.exr WORKING_DIRECTORY ${CLI_OUT})
 add_test(NAME tools.rixlobe COMMAND rixlobe ward --params "\"float uRoughness\" [0.3] \"float vRoughness\" [0.1]"
          --theta 40 --polar lobe-polar.png --sphere lobe-sphere.png WORKING_DIRECTORY ${CLI_OUT})
 set_tests_properties(tools.rixlobe PROPERTIES PASS_REGULAR_EXPRESSION "polar slice: largest W = [0-9.]+.*spherical lobe")

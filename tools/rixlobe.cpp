@@ -149,6 +149,6 @@ int main(int argc, char** argv) {
         return 0;
     } catch (std::exception const& e) {
         std::cerr << "rixlobe: " << e.what() << '\n';
-        return 2;
+        return 1;
     }
 }
