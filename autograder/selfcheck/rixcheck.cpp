@@ -6,8 +6,11 @@
 // in --plugin-dir, against the course's reference solution, and prints each
 // verdict with its numbers. `ctest` in your exercise build runs it once per
 // check. Exit status 0 when every check passed (or does not apply), 1 when
-// one failed, 2 for a command-line mistake. The grader runs the same checks,
-// with your plugin in a sandbox (rixgrade), plus the renders.
+// one failed, 2 for a command-line mistake, 77 (ctest's "skipped") when the
+// one check asked for is one rixgrade runs by rendering (it says how to run
+// it). The grader runs the same checks, with your plugin in a sandbox
+// (rixgrade), plus the renders.
+#include <filesystem>
 #include <iostream>
 
 #include "CommandLine.h"
@@ -15,6 +18,11 @@
 #include "measure/ProbeMeasurer.h"
 
 using namespace bxdflab;
+
+namespace {
+/// The exit status ctest reports as "skipped" (SKIP_RETURN_CODE in starter/CMakeLists.txt).
+constexpr int kSkipped = 77;
+}  // namespace
 
 int main(int argc, char** argv) {
     CLI::App app{"rixcheck: the autograder's checks on your own plugin"};
@@ -32,9 +40,18 @@ int main(int argc, char** argv) {
         std::vector<Exercise> exercises = loadExercises(BXDFLAB_SOURCE_DIR);
         Exercise const* exercise = findExercise(exercises, plugin);
         if (!exercise) throw std::runtime_error("no exercise has a plugin named \"" + plugin + "\"");
+        std::error_code noPath;  // rixgrade sits beside rixcheck
+        std::filesystem::path const rixgrade = std::filesystem::read_symlink("/proc/self/exe", noPath).parent_path() / "rixgrade";
+        std::string const gradeCommand = rixgrade.string() + " --plugins " + pluginDir + " --chapter " +
+                                         exercise->chapter + " --only " + plugin;
+        if (Exercise::isRenderCheck(only)) {
+            std::cout << "SKIP " << plugin << " " << only << ": rixgrade runs this check by rendering the chapter's "
+                      << "scene with your plugin and the solution's; rixcheck does not render:\n  " << gradeCommand << "\n";
+            return kSkipped;
+        }
         if (exercise->kind == "integrator") {
-            std::cout << plugin << " is an integrator: it is graded by rendering, which rixgrade does:\n  rixgrade --plugins "
-                      << pluginDir << " --chapter " << exercise->chapter << " --only " << plugin << "\n";
+            std::cout << plugin << " is an integrator: it is graded by rendering, which rixgrade does:\n  " << gradeCommand
+                      << "\n";
             return 0;
         }
         Diagnostics diagnostics;
