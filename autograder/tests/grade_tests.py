@@ -424,6 +424,50 @@ def test_borrows_reference(ctx):
                f"{' '.join(confinement) or 'in the sandbox'}: the reference integrator was within reach: {renders[:300]}")
 
 
+def test_render_cache(ctx):
+    """Reference renders kept between runs: the same grade from the cache, a damaged entry rendered again,
+    a rebuilt solution never served from an entry made with the old one, one entry per scene, spp and seed."""
+    cache = os.path.join(ctx.build, "grader-cache")
+    scene = os.path.join(ctx.root, "scenes", "ch06", "diffuse.rib")
+
+    def entries():
+        """subject ("scene ...; spp ...; seed ...;") -> [(file, key)] for the scene."""
+        found = {}
+        for leaf in sorted(os.listdir(cache)) if os.path.isdir(cache) else []:
+            with open(os.path.join(cache, leaf), "rb") as f:
+                key = f.readline().decode("utf-8", "replace").rstrip("\n")
+            if key.startswith("scene " + scene + ";"):
+                subject = ";".join(key.split(";")[:3]) + ";"
+                found.setdefault(subject, []).append((leaf, key))
+        return found
+
+    def grade(name):
+        status, output, _ = ctx.grade(name, "--plugins", os.path.join(ctx.build, "plugins/solutions"), "--only", "diffuse")
+        expect(status == 0, f"rixgrade exited with {status}:\n{output[-1500:]}")
+        return {check: (t["status"], t["output"]) for check, t in checks_of(ctx.results(name)).items()}
+
+    for subject, found in entries().items():  # start from nothing for this scene (a cache may always be emptied)
+        for leaf, _ in found:
+            os.remove(os.path.join(cache, leaf))
+    first = grade("cache-first")
+    made = entries()
+    expect(made and all(len(v) == 1 for v in made.values()), f"not one cache entry per scene and spp: {made}")
+    expect(first == grade("cache-again"), "grading from the cached reference render changed the grade")
+
+    for subject, [(leaf, key)] in made.items():  # damage every image, keep the keys
+        with open(os.path.join(cache, leaf), "r+b") as f:
+            f.seek(len(key) + 1 + 40)
+            f.truncate()
+    expect(first == grade("cache-damaged"), "a damaged cache entry changed the grade")
+
+    os.utime(os.path.join(ctx.build, "plugins/solutions/diffuse.so"))  # as a rebuild would
+    grade("cache-rebuilt")
+    after = entries()
+    for subject, [(leaf, key)] in made.items():
+        now = after.get(subject, [])
+        expect(len(now) == 1 and now[0][1] != key, f"{subject}: the entry made with the old solution was not replaced")
+
+
 def test_starter(ctx):
     status, output, _ = ctx.grade("starter", "--plugins", os.path.join(ctx.build, "plugins/starter"), "--chapter", "6",
                                   "10", "11")
@@ -524,7 +568,7 @@ def main():
     ctx = Context(args)
     os.makedirs(ctx.out, exist_ok=True)
     tests = {"variant": lambda: test_variant(ctx, args.name), "hostile": lambda: test_hostile(ctx, args.name),
-             "borrows_reference": lambda: test_borrows_reference(ctx),
+             "borrows_reference": lambda: test_borrows_reference(ctx), "render_cache": lambda: test_render_cache(ctx),
              "attack": lambda: test_attack(ctx, args.name), "solutions": lambda: test_solutions(ctx),
              "starter": lambda: test_starter(ctx), "repeat": lambda: test_repeat(ctx),
              "gradescope": lambda: test_gradescope(ctx), "unsafe": lambda: test_unsafe(ctx)}
