@@ -26,6 +26,13 @@ public:
     }                                           \
     RIX_PATTERNDESTROY { delete static_cast<Pattern*>(pattern); }
 
+/// The three outputs of a pattern that hands one value out as every type
+/// (outputAsEveryType): write it last in the parameter table, before the end.
+#define STOCK_PATTERN_OUTPUTS_OF_EVERY_TYPE                              \
+    RixSCParamInfo(RtUString("resultF"), k_RixSCFloat, k_RixSCOutput),   \
+        RixSCParamInfo(RtUString("resultRGB"), k_RixSCColor, k_RixSCOutput), \
+        RixSCParamInfo(RtUString("resultP"), k_RixSCPoint, k_RixSCOutput)
+
 /// Adds output `paramId` with one value per point to `out` (which has room)
 /// and returns the array to fill.
 template <typename T>

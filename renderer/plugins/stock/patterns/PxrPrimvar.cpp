@@ -21,9 +21,7 @@ public:
                                          RixSCParamInfo(RtUString("type"), k_RixSCString),
                                          RixSCParamInfo(RtUString("defaultFloat"), k_RixSCFloat),
                                          RixSCParamInfo(RtUString("defaultColor"), k_RixSCColor),
-                                         RixSCParamInfo(RtUString("resultF"), k_RixSCFloat, k_RixSCOutput),
-                                         RixSCParamInfo(RtUString("resultRGB"), k_RixSCColor, k_RixSCOutput),
-                                         RixSCParamInfo(RtUString("resultP"), k_RixSCPoint, k_RixSCOutput),
+                                         STOCK_PATTERN_OUTPUTS_OF_EVERY_TYPE,
                                          RixSCParamInfo()};
         return table;
     }

@@ -32,9 +32,7 @@ public:
 
     RixSCParamInfo const* GetParamTable() override {
         static RixSCParamInfo table[] = {RixSCParamInfo(RtUString("variable"), k_RixSCString),
-                                         RixSCParamInfo(RtUString("resultF"), k_RixSCFloat, k_RixSCOutput),
-                                         RixSCParamInfo(RtUString("resultRGB"), k_RixSCColor, k_RixSCOutput),
-                                         RixSCParamInfo(RtUString("resultP"), k_RixSCPoint, k_RixSCOutput),
+                                         STOCK_PATTERN_OUTPUTS_OF_EVERY_TYPE,
                                          RixSCParamInfo()};
         return table;
     }
