@@ -106,10 +106,9 @@ RTCScene RayTracer::embreeScene(RayKind kind) const {
     return m_camera;
 }
 
-HitRecord RayTracer::intersect(Vec3 const& org, Vec3 const& dir, float tnear, float tfar, RayKind kind,
-                               RayCounts& counts) const {
-    RTCIntersectContext context;
-    rtcInitIntersectContext(&context);
+namespace {
+
+RTCRayHit makeRayHit(Vec3 const& org, Vec3 const& dir, float tnear, float tfar) {
     RTCRayHit rayhit;
     rayhit.ray = makeRay(org, dir, tnear, tfar);
     rayhit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
@@ -117,10 +116,10 @@ HitRecord RayTracer::intersect(Vec3 const& org, Vec3 const& dir, float tnear, fl
     rayhit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
     rayhit.hit.u = rayhit.hit.v = 0.0f;
     rayhit.hit.Ng_x = rayhit.hit.Ng_y = rayhit.hit.Ng_z = 0.0f;
-    if (m_observer) m_observer->traced(org, dir, tnear, tfar, kind, false);
-    rtcIntersect1(embreeScene(kind), &context, &rayhit);
-    ++(kind == RayKind::Camera ? counts.camera : kind == RayKind::Indirect ? counts.indirect : counts.shadow);
+    return rayhit;
+}
 
+HitRecord toHitRecord(Vec3 const& org, Vec3 const& dir, RTCRayHit const& rayhit) {
     HitRecord hit;
     hit.org = org;
     hit.dir = dir;
@@ -133,6 +132,39 @@ HitRecord RayTracer::intersect(Vec3 const& org, Vec3 const& dir, float tnear, fl
         hit.Ng = Vec3(rayhit.hit.Ng_x, rayhit.hit.Ng_y, rayhit.hit.Ng_z);
     }
     return hit;
+}
+
+uint64_t& counterOf(RayCounts& counts, RayKind kind) {
+    return kind == RayKind::Camera ? counts.camera : kind == RayKind::Indirect ? counts.indirect : counts.shadow;
+}
+
+}  // namespace
+
+HitRecord RayTracer::intersect(Vec3 const& org, Vec3 const& dir, float tnear, float tfar, RayKind kind,
+                               RayCounts& counts) const {
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    RTCRayHit rayhit = makeRayHit(org, dir, tnear, tfar);
+    if (m_observer) m_observer->traced(org, dir, tnear, tfar, kind, false);
+    rtcIntersect1(embreeScene(kind), &context, &rayhit);
+    ++counterOf(counts, kind);
+    return toHitRecord(org, dir, rayhit);
+}
+
+void RayTracer::intersectCoherent(Vec3 const* org, Vec3 const* dir, int count, RayKind kind, HitRecord* hits,
+                                  RayCounts& counts) const {
+    thread_local std::vector<RTCRayHit> rays;
+    rays.resize(static_cast<size_t>(count));
+    for (int i = 0; i < count; ++i) {
+        rays[static_cast<size_t>(i)] = makeRayHit(org[i], dir[i], 0.0f, kInfinity);
+        if (m_observer) m_observer->traced(org[i], dir[i], 0.0f, kInfinity, kind, false);
+    }
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+    rtcIntersect1M(embreeScene(kind), &context, rays.data(), static_cast<unsigned>(count), sizeof(RTCRayHit));
+    counterOf(counts, kind) += static_cast<uint64_t>(count);
+    for (int i = 0; i < count; ++i) hits[i] = toHitRecord(org[i], dir[i], rays[static_cast<size_t>(i)]);
 }
 
 bool RayTracer::occluded(Vec3 const& org, Vec3 const& dir, float tnear, float tfar, RayCounts& counts) const {

@@ -47,6 +47,11 @@ public:
     /// Nearest hit along the ray within (tnear, tfar); hit.geomID is
     /// RTC_INVALID_GEOMETRY_ID on a miss.
     HitRecord intersect(Vec3 const& org, Vec3 const& dir, float tnear, float tfar, RayKind kind, RayCounts& counts) const;
+    /// The nearest hits of many coherent rays at once (a stream, as Embree's
+    /// rtcIntersect1M traces them: camera rays of neighbouring pixels share
+    /// most of their traversal), each within (0, infinity). hits[i] as intersect() gives it.
+    void intersectCoherent(Vec3 const* org, Vec3 const* dir, int count, RayKind kind, HitRecord* hits,
+                           RayCounts& counts) const;
     /// True if anything blocks the segment (tnear, tfar).
     bool occluded(Vec3 const& org, Vec3 const& dir, float tnear, float tfar, RayCounts& counts) const;
 

@@ -57,6 +57,7 @@ int tileSizeFor(int baseSize, int spp) {
 struct Worker {
     MemoryArena arena;
     std::vector<HitRecord> hits;
+    std::vector<Vec3> rayOrigins, rayDirections;
     std::vector<RixRNG::SampleCtx> samples;
     std::vector<RtColorRGB> radiance, groupRadiance;
     std::vector<float> alpha;
@@ -320,6 +321,8 @@ void Renderer::Impl::renderTile(int tileX, int tileY, int spp, Film& film, Worke
         int s1 = std::min(spp, s0 + chunk);
         int count = pixels * (s1 - s0);
         w.hits.resize(static_cast<size_t>(count));
+        w.rayOrigins.resize(static_cast<size_t>(count));
+        w.rayDirections.resize(static_cast<size_t>(count));
         w.samples.resize(static_cast<size_t>(count));
         w.radiance.assign(static_cast<size_t>(count), RtColorRGB(0.0f));
         w.alpha.assign(static_cast<size_t>(count), 0.0f);
@@ -334,11 +337,12 @@ void Renderer::Impl::renderTile(int tileX, int tileY, int spp, Film& film, Worke
                     RixRNG::SampleCtx& sample = w.samples[static_cast<size_t>(k)];
                     sample = {patternid, static_cast<uint32_t>(s), 0, -1.0f};
                     RtFloat2 jitter = RixRNG::Sample2D(sample);
-                    Vec3 org, dir;
-                    camera->generateRay(static_cast<float>(x) + jitter.x, static_cast<float>(y) + jitter.y, org, dir);
-                    w.hits[static_cast<size_t>(k)] = tracer->intersect(org, dir, 0.0f, kInfinity, RayKind::Camera, counts);
+                    camera->generateRay(static_cast<float>(x) + jitter.x, static_cast<float>(y) + jitter.y,
+                                        w.rayOrigins[static_cast<size_t>(k)], w.rayDirections[static_cast<size_t>(k)]);
                 }
             }
+        tracer->intersectCoherent(w.rayOrigins.data(), w.rayDirections.data(), count, RayKind::Camera, w.hits.data(),
+                                  counts);
 
         // Lights the camera sees directly, in front of any geometry.
         for (int i = 0; i < count; ++i) {
