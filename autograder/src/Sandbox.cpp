@@ -179,6 +179,9 @@ Child::Child(SandboxLayout const& layout, Launch const& launch) : m_limits(launc
         int p[2];
         if (pipe2(p, O_CLOEXEC) != 0) throw std::runtime_error("cannot create a pipe");
         int childEnd = childReads ? p[0] : p[1], parentEnd = childReads ? p[1] : p[0];
+        // Measurements move megabytes at a time: a 1 MiB pipe (the unprivileged
+        // limit) saves the two processes a switch every 64 KiB. Best effort.
+        fcntl(p[0], F_SETPIPE_SZ, 1 << 20);
         childEnds.emplace_back(target, childEnd);
         fcntl(parentEnd, F_SETFL, O_NONBLOCK);
         return parentEnd;
