@@ -44,10 +44,15 @@ std::string signalName(int signal) {
     }
 }
 
-/// The system folders every sandbox sees read-only (merged /usr: most are links into it).
+/// The system folders student code sees (merged /usr: the others are mostly links into it).
+constexpr char const* kSystemFolders[] = {"/bin", "/sbin", "/lib", "/lib32", "/lib64", "/libx32"};
+/// What the dynamic loader and the compiler drivers need of /etc, and nothing else of it.
+constexpr char const* kSystemFiles[] = {"/etc/ld.so.cache", "/etc/ld.so.conf", "/etc/ld.so.conf.d", "/etc/alternatives"};
+
+/// The system every sandbox sees read-only.
 void addSystem(std::vector<std::string>& args) {
     args.insert(args.end(), {"--ro-bind", "/usr", "/usr"});
-    for (char const* top : {"/bin", "/sbin", "/lib", "/lib32", "/lib64", "/libx32"}) {
+    for (char const* top : kSystemFolders) {
         std::error_code error;
         if (fs::is_symlink(top, error)) {
             args.insert(args.end(), {"--symlink", fs::read_symlink(top, error).string(), top});
@@ -55,9 +60,7 @@ void addSystem(std::vector<std::string>& args) {
             args.insert(args.end(), {"--ro-bind", top, top});
         }
     }
-    // What the dynamic loader and the compiler drivers need of /etc, and nothing else of it.
-    for (char const* file : {"/etc/ld.so.cache", "/etc/ld.so.conf", "/etc/ld.so.conf.d", "/etc/alternatives"})
-        args.insert(args.end(), {"--ro-bind-try", file, file});
+    for (char const* file : kSystemFiles) args.insert(args.end(), {"--ro-bind-try", file, file});
     args.insert(args.end(), {"--proc", "/proc", "--dev", "/dev", "--size", std::to_string(64 << 20), "--tmpfs", "/tmp"});
 }
 
@@ -137,9 +140,9 @@ Child::Child(SandboxLayout const& layout, Launch const& launch) : m_limits(launc
             // Without the sandbox's mounts, Landlock keeps reads to what a sandbox would
             // see: the system, the course's mounts, the scratch folder -- not the
             // reference solutions, not other submissions, not the grader's output.
-            for (char const* system : {"/usr", "/bin", "/sbin", "/lib", "/lib32", "/lib64", "/libx32", "/etc/ld.so.cache",
-                                       "/etc/ld.so.conf", "/etc/ld.so.conf.d", "/etc/alternatives", "/proc", "/dev"})
-                args.insert(args.end(), {"--readable", system});
+            for (char const* system : {"/usr", "/proc", "/dev"}) args.insert(args.end(), {"--readable", system});
+            for (char const* top : kSystemFolders) args.insert(args.end(), {"--readable", top});
+            for (char const* file : kSystemFiles) args.insert(args.end(), {"--readable", file});
             for (auto const& [real, under] : layout.courseMounts) args.insert(args.end(), {"--readable", real});
             args.insert(args.end(), {"--readable", layout.jail});
         }
