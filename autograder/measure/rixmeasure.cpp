@@ -7,7 +7,6 @@
 // random numbers it chose) and reads back raw measurements; it judges them
 // itself. Nothing here decides a grade. What the plugin prints goes to
 // stdout/stderr, which the grader keeps apart (and caps).
-#include <malloc.h>
 #include <cstdio>
 #include <exception>
 #include <string>
@@ -16,10 +15,7 @@
 #include "measure/Wire.h"
 
 int main(int argc, char** argv) {
-    // Measurements come in batches of megabytes, allocated and freed again and again:
-    // kept on the heap (not mapped and unmapped each time) they cost no page faults.
-    mallopt(M_MMAP_THRESHOLD, 32 << 20);
-    mallopt(M_TRIM_THRESHOLD, 256 << 20);
+    bxdflab::wire::keepBatchBuffersOnHeap();
     if (argc != 3) {
         std::fprintf(stderr, "usage: rixmeasure PLUGIN FOLDER (requests on fd 3, answers on fd 4)\n");
         return 2;

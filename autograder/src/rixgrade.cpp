@@ -10,7 +10,6 @@
 // here, in a process that never loads student code. Reports go to --out,
 // which no sandbox sees. Points and time limits: autograder/rubric.json
 // (--rubric); each exercise's checks and default points: its exercise.json.
-#include <malloc.h>
 #include <signal.h>
 
 #include <filesystem>
@@ -22,6 +21,7 @@
 #include "Grader.h"
 #include "OutputFolder.h"
 #include "Reports.h"
+#include "measure/Wire.h"
 
 namespace fs = std::filesystem;
 using namespace rixgrade;
@@ -42,10 +42,7 @@ bool inside(fs::path const& child, fs::path const& parent) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    // Measurements come in batches of megabytes, allocated and freed again and again:
-    // kept on the heap (not mapped and unmapped each time) they cost no page faults.
-    mallopt(M_MMAP_THRESHOLD, 32 << 20);
-    mallopt(M_TRIM_THRESHOLD, 256 << 20);
+    bxdflab::wire::keepBatchBuffersOnHeap();
     CLI::App app{"rixgrade: grade Bxdf exercises (a student's own work, or a whole class)"};
     std::string submission, plugins, classDir, out, rubricPath = std::string(BXDFLAB_SOURCE_DIR) + "/autograder/rubric.json";
     std::vector<std::string> chapters;

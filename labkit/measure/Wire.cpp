@@ -1,5 +1,6 @@
 #include "measure/Wire.h"
 
+#include <malloc.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -229,6 +230,11 @@ void serve(int in, int out, BxdfMeasurer& measurer) {
         ReplyHeader done{kReplyMagic, header.op, replyCount, 0u};
         if (!writeAll(out, &done, sizeof done) || !writeAll(out, reply.data(), reply.size())) return;
     }
+}
+
+void keepBatchBuffersOnHeap() {
+    mallopt(M_MMAP_THRESHOLD, 32 << 20);
+    mallopt(M_TRIM_THRESHOLD, 256 << 20);
 }
 
 }  // namespace bxdflab::wire

@@ -113,6 +113,11 @@ bool parseSamplingParams(std::string const& text, SamplingFunction& f, float& ex
 /// ends, using `measurer` (the plugin loaded in this process). Call records
 /// are written through announceCall, which the measurer's probe calls.
 void serve(int in, int out, BxdfMeasurer& measurer);
+
+/// For both ends of the wire: measurements come in batches of megabytes,
+/// allocated and freed again and again; kept on the heap (not mapped and
+/// unmapped each time) they cost no page faults. Call once, first thing in main.
+void keepBatchBuffersOnHeap();
 /// Writes a call record to the reply stream `serve` is using (for the probe's call observer).
 void announceCall(char const* call);
 
