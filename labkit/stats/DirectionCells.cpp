@@ -106,12 +106,7 @@ std::vector<double> integrateCells(DirectionCells const& cells, BatchPdf const& 
                 split += child.whole;
             }
             Rect const& r = level[k];
-            // A pdf that is zero at every node may still be non-zero in a sliver of
-            // the rectangle (the edge of the directions a refraction can reach):
-            // zero is believed only after two splits.
-            bool const zeroTooEarly = split == 0.0 && r.whole == 0.0 && r.depth < 2;
-            bool const agrees = std::fabs(split - r.whole) <= tolerance(std::fabs(split)) && !zeroTooEarly;
-            if (agrees || r.depth + 1 >= maxDepth) {
+            if (std::fabs(split - r.whole) <= tolerance(std::fabs(split)) || r.depth + 1 >= maxDepth) {
                 result[static_cast<size_t>(r.cell)] += split;
             } else {
                 for (int q = 0; q < 4; ++q) next.push_back(children[4 * k + static_cast<size_t>(q)]);
