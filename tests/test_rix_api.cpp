@@ -101,6 +101,29 @@ TEST_CASE("RNG: deterministic, batch and per-point draws agree, stratified per p
     CHECK(RixRNG::Sample2D(other).x != xi[0].x);
 }
 
+TEST_CASE("RNG: the first 2^m samples of a pixel are a (0,m,2)-net for every shape of cell", "[api][rng]") {
+    // Scrambled Sobol' points in two dimensions: every box [i/2^a, (i+1)/2^a) x
+    // [j/2^(m-a), (j+1)/2^(m-a)) holds exactly one of the first 2^m samples,
+    // for every split a. A wrong second dimension breaks this at some (m, a).
+    for (uint32_t pixel : {7u, 12345u, 0xdeadbeefu})
+        for (int m = 1; m <= 12; ++m) {
+            uint32_t const n = 1u << m;
+            std::vector<RtFloat2> xi(n);
+            for (uint32_t i = 0; i < n; ++i) {
+                RixRNG::SampleCtx ctx{pixel, i, 0, -1.0f};
+                xi[i] = RixRNG::Sample2D(ctx);
+            }
+            for (int a = 0; a <= m; ++a) {
+                std::set<uint32_t> boxes;
+                for (RtFloat2 const& p : xi)
+                    boxes.insert((static_cast<uint32_t>(p.x * static_cast<float>(1u << a)) << (m - a)) |
+                                 static_cast<uint32_t>(p.y * static_cast<float>(1u << (m - a))));
+                INFO("pixel " << pixel << ", m " << m << ", a " << a);
+                CHECK(boxes.size() == n);
+            }
+        }
+}
+
 TEST_CASE("shading basis is orthonormal for any tangent, including degenerate ones", "[api][hard]") {
     RtNormal3 N(0.0f, 0.6f, 0.8f);
     RtVector3 TX, TY;

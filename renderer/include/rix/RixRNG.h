@@ -67,8 +67,10 @@ public:
             return RtFloat2(ctx.fixedValue, ctx.fixedValue2 >= 0.0f ? ctx.fixedValue2 : ctx.fixedValue);
         uint32_t seed = Hash(ctx.patternid ^ Hash(ctx.draw++ * 0x9e3779b9u + 0x632be5abu));
         uint32_t index = NestedUniformScramble(ctx.sampleid, seed);
-        uint32_t x = NestedUniformScramble(ReverseBits(index), Hash(seed ^ 0xa511e9b3u));
-        uint32_t y = NestedUniformScramble(SobolSecondDimension(index), Hash(seed ^ 0x63d83595u));
+        // Sobol's first dimension is the index with its bits reversed, and the
+        // scramble reverses them again: the two reversals cancel.
+        uint32_t x = ReverseBits(LaineKarrasPermutation(index, Hash(seed ^ 0xa511e9b3u)));
+        uint32_t y = ReverseBits(LaineKarrasPermutation(SobolSecondDimensionReversed(index), Hash(seed ^ 0x63d83595u)));
         return RtFloat2(ToUnitFloat(x), ToUnitFloat(y));
     }
     /// The next 1-D sample of a context (advances its draw counter).
@@ -76,7 +78,7 @@ public:
         if (ctx.fixedValue >= 0.0f) return ctx.fixedValue;
         uint32_t seed = Hash(ctx.patternid ^ Hash(ctx.draw++ * 0x9e3779b9u + 0x1b873593u));
         uint32_t index = NestedUniformScramble(ctx.sampleid, seed);
-        return ToUnitFloat(NestedUniformScramble(ReverseBits(index), Hash(seed ^ 0x85ebca6bu)));
+        return ToUnitFloat(ReverseBits(LaineKarrasPermutation(index, Hash(seed ^ 0x85ebca6bu))));
     }
 
     /// A well-mixed 32-bit hash (lowbias32 by C. Wellons).
@@ -95,13 +97,20 @@ private:
         v = ((v >> 8) & 0x00ff00ffu) | ((v & 0x00ff00ffu) << 8);
         return (v >> 16) | (v << 16);
     }
-    // The second dimension of Sobol's sequence: its direction numbers are the
-    // rows of Pascal's triangle mod 2 (1, 11, 101, 1111, ...), MSB first.
-    static uint32_t SobolSecondDimension(uint32_t index) {
-        uint32_t result = 0;
-        for (uint32_t v = 1u << 31; index != 0; index >>= 1, v ^= v >> 1)
-            if (index & 1u) result ^= v;
-        return result;
+    // The second dimension of Sobol's sequence, with its bits reversed (bit k
+    // of the result is the k-th binary digit after the point). Its direction
+    // numbers are the rows of Pascal's triangle mod 2 (1, 11, 101, 1111, ...),
+    // and C(j, k) is odd exactly when the bits of k are a subset of those of j
+    // (Lucas): so bit k is the XOR of the index bits j that contain k. Five
+    // shift-and-XOR steps sum over those supersets, one bit position at a time,
+    // with no loop over the index's bits and no branch.
+    static uint32_t SobolSecondDimensionReversed(uint32_t index) {
+        index ^= (index >> 1) & 0x55555555u;
+        index ^= (index >> 2) & 0x33333333u;
+        index ^= (index >> 4) & 0x0f0f0f0fu;
+        index ^= (index >> 8) & 0x00ff00ffu;
+        index ^= (index >> 16) & 0x0000ffffu;
+        return index;
     }
     // Laine-Karras style permutation: an Owen scramble of a bit-reversed value.
     static uint32_t LaineKarrasPermutation(uint32_t x, uint32_t seed) {
