@@ -7,7 +7,8 @@
 //    price of everything that is not ray tracing (target: at most 1.3).
 // 2. Thread scaling: 2 threads against 1 (target: at least 1.85).
 // 3. Cost against samples per pixel, resolution and triangle count.
-// 4. A textured colour against a uniform one; 5. start-up of rixrender and rixcheck.
+// 4. A textured colour against a uniform one; 5. start-up of rixrender and rixcheck,
+//    and what writing an image adds; 6. peak memory at 4 and 64 spp.
 // Times are the best of three runs. It prints ratios; it asserts nothing.
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>
@@ -19,6 +20,7 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <nlohmann/json.hpp>
 #include <sstream>
 
 #include "CommandLine.h"
@@ -100,6 +102,30 @@ std::string writeCheckerTexture(int size) {
     return path;
 }
 
+void runQuietly(std::string const& command) {
+    if (std::system((command + " > /dev/null 2>&1").c_str()) != 0) std::fprintf(stderr, "rixbench: %s failed\n", command.c_str());
+}
+
+/// Peak resident memory of a whole rixrender process, from its stats JSON.
+double peakMemoryMB(fs::path const& rixrender, std::string const& scene, int spp) {
+    fs::path const stats = fs::temp_directory_path() / "rixbench_memory.json";
+    runQuietly(rixrender.string() + " --quiet --resolution-scale 0.5 --spp " + std::to_string(spp) + " --stats-json " +
+               stats.string() + " " + scene + " -o " + (fs::temp_directory_path() / "rixbench_memory.exr").string());
+    std::ifstream in(stats);
+    return nlohmann::json::parse(in, nullptr, false).value("peak_memory_mb", 0.0);
+}
+
+/// How the render's shade points were grouped into batches (one shading
+/// context each): large batches amortise every per-batch cost.
+void printBatchStatistics(RenderStats const& stats) {
+    double const batches = static_cast<double>(std::max<uint64_t>(1, stats.batches));
+    std::printf("shading: %llu points in %llu batches, %.0f points per batch; %.0f%% of the points asked for tangents\n",
+                static_cast<unsigned long long>(stats.shadePoints), static_cast<unsigned long long>(stats.batches),
+                static_cast<double>(stats.shadePoints) / batches,
+                stats.surfacePoints ? 100.0 * static_cast<double>(stats.tangentPoints) / static_cast<double>(stats.surfacePoints)
+                                    : 0.0);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -122,6 +148,7 @@ int main(int argc, char** argv) {
     // 1. Shading overhead against raw Embree, one thread each.
     RayRecording rays;
     double render1 = 0.0, raw = 0.0;
+    RenderStats batches;
     {
         RenderSettings settings;
         settings.spp = spp;
@@ -132,12 +159,14 @@ int main(int argc, char** argv) {
         renderer.tracer().observe(nullptr);
         render1 = bestOf(3, [&] { renderer.render(); });
         raw = bestOf(3, [&] { rays.replay(renderer.tracer()); });
+        batches = renderer.stats();
     }
     size_t shadow = rays.occlusionRays();
     std::printf("scene %s, %dx%d, %d spp\n", sceneFile.c_str(), scene.xres, scene.yres, spp);
     std::printf("rays recorded: %zu camera + %zu shadow\n", rays.rays().size() - shadow, shadow);
     std::printf("raw Embree: %.3f s   full render: %.3f s   overhead ratio: %.2f (target <= 1.30)\n", raw, render1,
                 render1 / raw);
+    printBatchStatistics(batches);
 
     // 2. Thread scaling.
     double render2 = renderSeconds(scene, spp, 2, diagnostics);
@@ -189,6 +218,22 @@ int main(int argc, char** argv) {
             if (std::system(command.c_str()) != 0) std::fprintf(stderr, "rixbench: %s failed\n", command.c_str());
         });
         std::printf("%-11s %.1f ms (target <= 30 ms)\n", program, 1000.0 * seconds);
+    }
+    // What writing an image adds: the same 8 x 7 render with and without an
+    // image file (only programs that write images load OpenImageIO).
+    std::string const tiny = (bin / "rixrender").string() + " --quiet --spp 1 --threads 1 --resolution-scale 0.01 " +
+                             defaultScene;
+    double const noImage = bestOf(10, [&] { runQuietly(tiny + " --raw-out-fd 9 9>/dev/null"); });
+    double const exr = bestOf(10, [&] { runQuietly(tiny + " -o " + (fs::temp_directory_path() / "rixbench_tiny.exr").string()); });
+    std::printf("rixrender, an 8x7 render: %.1f ms; written as EXR: %.1f ms (OpenImageIO's load)\n", 1000.0 * noImage,
+                1000.0 * exr);
+
+    // 6. Memory: peak resident memory of whole renders at 4 and 64 spp (half
+    //    resolution, separate processes); it must not grow with samples.
+    if (sceneFile == defaultScene) {
+        std::printf("\npeak memory (rixrender, half resolution)\n");
+        double peak4 = peakMemoryMB(bin / "rixrender", sceneFile, 4), peak64 = peakMemoryMB(bin / "rixrender", sceneFile, 64);
+        std::printf("4 spp: %.1f MiB   64 spp: %.1f MiB   ratio: %.3f (target <= 1.10)\n", peak4, peak64, peak64 / peak4);
     }
     return 0;
 }
