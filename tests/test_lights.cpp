@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
+#include "scene/Camera.h"
 #include "support/RenderHelpers.h"
 
 using namespace bxdflab;
@@ -136,5 +137,36 @@ TEST_CASE("the camera sees the nearest light: a rect light in front of the sky h
                                  "WorldBegin\n" + (skyFirst ? sky + panel : panel + sky) + "WorldEnd\n",
                                  settings);
         CHECK(r.channel(4, 4, 0) == Approx(3.0f).epsilon(1e-4));
+    }
+}
+
+TEST_CASE("camera rays skip lights out of view, and still see a light that is only partly in view", "[lights]") {
+    // The chapter-6 key light sits beside the camera, outside its 15-degree view.
+    CameraDesc desc;
+    desc.projection = "perspective";
+    desc.fov = 15.0f;
+    Camera camera(desc, 800, 700, 1.0f);
+    CHECK_FALSE(camera.mightSee(Vec3(-2.0f, 2.0f, 0.0f), 1.0f));
+    CHECK_FALSE(camera.mightSee(Vec3(0.0f, 0.0f, -3.0f), 1.0f));  // behind
+    CHECK(camera.mightSee(Vec3(0.0f, 0.0f, 8.0f), 0.5f));
+    CHECK(camera.mightSee(Vec3(0.0f, 0.0f, 0.0f), 0.1f));  // around the eye
+
+    // A disk light whose centre lies outside the frame but whose edge reaches
+    // into the last column of pixels: those pixels see it (1 spp, radiance 3).
+    for (char const* projection : {"\"perspective\" \"fov\" [40]", "\"orthographic\""}) {
+        bool const perspective = std::string(projection).find("perspective") != std::string::npos;
+        // Half the view at z = 5 is 5 tan 20 = 1.82 (perspective) or 1 (orthographic).
+        std::string const x = perspective ? "1.95" : "1.13";
+        RenderSettings settings;
+        settings.spp = 1;
+        auto r = test::renderRib("Format 16 16 1\nProjection " + std::string(projection) +
+                                     "\nIntegrator \"PxrDirectLighting\" \"d\"\nWorldBegin\nTranslate " + x +
+                                     " 0 5\nRotate 180 0 1 0\nLight \"PxrDiskLight\" \"edge\" \"float intensity\" [3]\n"
+                                     "WorldEnd\n",
+                                 settings);
+        INFO(projection);
+        CHECK(r.channel(15, 7, 0) == Approx(3.0f).epsilon(1e-4));
+        CHECK(r.channel(15, 8, 0) == Approx(3.0f).epsilon(1e-4));
+        CHECK(r.channel(0, 7, 0) == 0.0f);
     }
 }

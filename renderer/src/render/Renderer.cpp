@@ -272,8 +272,14 @@ Renderer::Renderer(Scene& scene, RenderSettings settings, Diagnostics& diagnosti
     } else {
         for (auto const& light : scene.lights) r.shadingLights.push_back(light.get());
     }
-    for (auto const& light : scene.lights)
-        if (light->visibility.camera) r.cameraLights.push_back(light.get());
+    // The lights camera rays must test: those the camera can see and that lie
+    // (at least partly) inside its view.
+    for (auto const& light : scene.lights) {
+        Vec3 center;
+        float radius;
+        bool bounded = light->boundingSphere(center, radius);
+        if (light->visibility.camera && (!bounded || r.camera->mightSee(center, radius))) r.cameraLights.push_back(light.get());
+    }
     r.tracer = std::make_unique<RayTracer>(scene);
     warnIfNothingInFront(*r.tracer, scene, diagnostics);
     r.shader = std::make_unique<BatchShader>(scene, r.materials, r.camera->pixelSpread(), r.counters, diagnostics,

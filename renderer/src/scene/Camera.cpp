@@ -6,6 +6,7 @@ namespace bxdflab {
 
 Camera::Camera(CameraDesc const& desc, int xres, int yres, float pixelAspect)
     : m_cameraToWorld(glm::inverse(desc.worldToCamera)),
+      m_worldToCamera(desc.worldToCamera),
       m_perspective(desc.projection != "orthographic"),
       m_tanHalfFov(std::tan(0.5f * desc.fov * kPi / 180.0f)),
       m_xres(xres),
@@ -36,6 +37,25 @@ void Camera::generateRay(float rasterX, float rasterY, Vec3& org, Vec3& dir) con
         org = transformPoint(m_cameraToWorld, Vec3(sx, sy, 0.0f));
         dir = glm::normalize(transformVector(m_cameraToWorld, Vec3(0.0f, 0.0f, 1.0f)));
     }
+}
+
+bool Camera::mightSee(Vec3 const& center, float radius) const {
+    // In camera space, where the rays are made. A transform that scales makes
+    // the sphere an ellipsoid: the Frobenius norm bounds how much it grows.
+    Mat3 linear(m_worldToCamera);
+    float growth = std::sqrt(glm::dot(linear[0], linear[0]) + glm::dot(linear[1], linear[1]) + glm::dot(linear[2], linear[2]));
+    Vec3 c = transformPoint(m_worldToCamera, center);
+    // A margin for rounding: only a sphere clearly outside is ruled out.
+    float r = 1.01f * radius * growth + 1e-4f * (1.0f + glm::length(c));
+    if (c.z < -r) return false;  // behind the camera (every ray goes toward +z)
+    float const left = m_screen[0], right = m_screen[1], bottom = m_screen[2], top = m_screen[3];
+    if (!m_perspective)  // parallel rays through the screen window
+        return c.x + r >= left && c.x - r <= right && c.y + r >= bottom && c.y - r <= top;
+    // Four planes through the eye bound the rays' directions (x, y, 1) * tan:
+    // each inward normal n; the sphere is outside when dot(n, c) < -r.
+    auto inside = [&](Vec3 const& n) { return glm::dot(glm::normalize(n), c) >= -r; };
+    return inside(Vec3(1.0f, 0.0f, -left * m_tanHalfFov)) && inside(Vec3(-1.0f, 0.0f, right * m_tanHalfFov)) &&
+           inside(Vec3(0.0f, 1.0f, -bottom * m_tanHalfFov)) && inside(Vec3(0.0f, -1.0f, top * m_tanHalfFov));
 }
 
 }  // namespace bxdflab

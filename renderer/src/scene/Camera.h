@@ -13,12 +13,16 @@ public:
     Camera(CameraDesc const& desc, int xres, int yres, float pixelAspect);
     /// The world-space ray through raster position (x, y) (pixels, fractional).
     void generateRay(float rasterX, float rasterY, Vec3& org, Vec3& dir) const;
+    /// False only when no camera ray can reach the sphere (center, radius):
+    /// it lies behind the camera or wholly outside the image's frustum.
+    bool mightSee(Vec3 const& center, float radius) const;
     /// The angle (radians) one pixel subtends at the image centre.
     float pixelSpread() const { return m_pixelSpread; }
     Vec3 position() const { return m_position; }
 
 private:
     Mat4 m_cameraToWorld;
+    Mat4 m_worldToCamera;
     Vec3 m_position;
     bool m_perspective;
     float m_tanHalfFov;

@@ -17,6 +17,12 @@ public:
     const char* kind() const override { return m_shape == Shape::Disk ? "PxrDiskLight" : "PxrRectLight"; }
     LightSample sample(Vec3 const& P, Vec2 const& xi) const override;
     bool intersect(Vec3 const& org, Vec3 const& dir, float& distance, RtColorRGB& radiance, float& pdf) const override;
+    bool boundingSphere(Vec3& center, float& radius) const override {
+        // Every point is center + a axisX + b axisY with |a|, |b| <= 1.
+        center = m_center;
+        radius = glm::length(m_axisX) + glm::length(m_axisY);
+        return true;
+    }
     float area() const { return m_area; }
 
 private:
@@ -34,6 +40,11 @@ public:
     const char* kind() const override { return "PxrSphereLight"; }
     LightSample sample(Vec3 const& P, Vec2 const& xi) const override;
     bool intersect(Vec3 const& org, Vec3 const& dir, float& distance, RtColorRGB& radiance, float& pdf) const override;
+    bool boundingSphere(Vec3& center, float& radius) const override {
+        center = m_center;
+        radius = m_radius;
+        return true;
+    }
     float radius() const { return m_radius; }
 
 private:

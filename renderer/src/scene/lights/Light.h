@@ -39,6 +39,13 @@ public:
     virtual bool isDelta() const { return false; }
     /// Lights at infinity are seen by rays that miss all geometry.
     virtual bool isInfinite() const { return false; }
+    /// A sphere holding every point of the light, or false when there is none
+    /// (lights at infinity). It lets the camera skip lights out of its view.
+    virtual bool boundingSphere(Vec3& center, float& radius) const {
+        (void)center;
+        (void)radius;
+        return false;
+    }
 
     RtColorRGB color;  ///< intensity * 2^exposure * lightColor
     Visibility visibility;
