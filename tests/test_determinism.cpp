@@ -2,6 +2,7 @@
 // thread count; another seed gives another (equally valid) image.
 #include <catch2/catch.hpp>
 
+#include "render/Renderer.h"
 #include "support/RenderHelpers.h"
 
 using namespace bxdflab;
@@ -39,4 +40,24 @@ TEST_CASE("path tracing is bit-identical for 1 and 2 threads", "[determinism][in
                                            "Integrator \"PxrPathTracer\" \"p\" \"int maxPathLength\" [5]");
     rib.replace(rib.find("Format 800 700 1"), 16, "Format 120 100 1");
     CHECK(render(rib, 1).rgba == render(rib, 2).rgba);
+}
+
+TEST_CASE("a renderer that renders twice gives the same image and reports each render's own counts", "[determinism]") {
+    Diagnostics diagnostics(false);
+    Scene scene = test::parseRib(test::readScene("ch06/diffuse.rib"), diagnostics);
+    RenderSettings settings;
+    settings.spp = 2;
+    settings.pluginPath = TEST_PLUGIN_DIR;
+    Renderer renderer(scene, settings, diagnostics);
+    std::vector<float> const first = renderer.render().rgba();
+    RenderStats const once = renderer.stats();
+    std::vector<float> const second = renderer.render().rgba();
+    RenderStats const twice = renderer.stats();
+    CHECK(first == second);
+    REQUIRE(once.cameraRays == static_cast<uint64_t>(scene.xres) * static_cast<uint64_t>(scene.yres) * 2u);
+    CHECK(twice.cameraRays == once.cameraRays);
+    CHECK(twice.shadowRays == once.shadowRays);
+    CHECK(twice.shadePoints == once.shadePoints);
+    CHECK(twice.batches == once.batches);
+    CHECK(twice.surfacePoints == once.surfacePoints);
 }

@@ -34,6 +34,11 @@ struct RayCounters {
         indirect.fetch_add(c.indirect, std::memory_order_relaxed);
         shadow.fetch_add(c.shadow, std::memory_order_relaxed);
     }
+    void reset() {
+        camera = 0;
+        indirect = 0;
+        shadow = 0;
+    }
 };
 
 class RayTracer {

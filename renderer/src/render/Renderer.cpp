@@ -400,6 +400,13 @@ Film Renderer::render() {
     Impl& r = *m_impl;
     auto start = Clock::now();
     int spp = m_stats.spp;
+    // The stats describe this render alone, however many came before it.
+    r.tracer->counters().reset();
+    for (auto* counter : {&r.counters.shadePoints, &r.counters.batches, &r.counters.builtins.surfacePoints,
+                          &r.counters.builtins.tangentPoints, &r.patternCounters.evaluations,
+                          &r.patternCounters.points, &r.nonFinite, &r.invalidPdf})
+        *counter = 0;
+    uint64_t const lookupsBefore = r.textures ? r.textures->lookups() : 0;
     Film film(r.scene.xres, r.scene.yres);
     int size = tileSizeFor(r.settings.tileSize, spp);
     int tilesX = (r.scene.xres + size - 1) / size, tilesY = (r.scene.yres + size - 1) / size;
@@ -426,7 +433,7 @@ Film Renderer::render() {
     m_stats.tangentPoints = r.counters.builtins.tangentPoints.load();
     m_stats.patternEvaluations = r.patternCounters.evaluations.load();
     m_stats.patternPoints = r.patternCounters.points.load();
-    m_stats.textureLookups = r.textures ? r.textures->lookups() : 0;
+    m_stats.textureLookups = r.textures ? r.textures->lookups() - lookupsBefore : 0;
     m_stats.nonFiniteSamples = r.nonFinite.load();
     m_stats.invalidPdfSamples = r.invalidPdf.load();
     m_stats.peakMemoryMB = peakResidentMB();
