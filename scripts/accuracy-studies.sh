@@ -54,6 +54,11 @@ echo "studies written to $out"
 build/bin/rixbench > $out/bench.txt
 echo "bench written to $out/bench.txt"
 
+# Against Blender's Cycles on the chapter-6 scene (about six minutes; it says
+# "skipped" when Blender is not installed).
+bench/vs-cycles.sh --out out/vs-cycles > $out/vs-cycles.txt
+echo "Cycles comparison written to $out/vs-cycles.txt"
+
 # The appendix that collects the headline numbers.
 python3 tools/accuracy_appendix.py $out > chapters/appendix-accuracy-cost.md
 echo "wrote chapters/appendix-accuracy-cost.md"

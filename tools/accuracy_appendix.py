@@ -11,6 +11,8 @@ def table(folder, name):
 
 def main(folder):
     bench = (Path(folder) / "bench.txt").read_text().strip()
+    cycles_file = Path(folder) / "vs-cycles.txt"
+    cycles = cycles_file.read_text().strip() if cycles_file.exists() else "skipped: not measured"
     print(f"""# Appendix: what accuracy costs
 
 Every number on this page comes from `scripts/accuracy-studies.sh`, which
@@ -114,6 +116,19 @@ stops improving however many samples it takes.
 
 ```
 {bench}
+```
+
+## Against another renderer: Blender's Cycles
+
+`bench/vs-cycles.sh` renders the chapter-6 scene in rixrender and in Cycles
+(the same camera, sphere and disk light; direct lighting only). Each renderer
+is measured against its own converged reference, and the two references must
+agree in mean within 2% before anything is compared. Cycles meshes the
+sphere; rixrender intersects it exactly. rixrender's time is its whole
+process, Cycles' its render call without Blender's start-up.
+
+```
+{cycles}
 ```
 """)
 
