@@ -272,13 +272,14 @@ Renderer::Renderer(Scene& scene, RenderSettings settings, Diagnostics& diagnosti
     } else {
         for (auto const& light : scene.lights) r.shadingLights.push_back(light.get());
     }
-    // The lights camera rays must test: those the camera can see and that lie
-    // (at least partly) inside its view.
+    // The lights camera rays must test: those visible to the camera, less
+    // those that lie wholly outside its view.
     for (auto const& light : scene.lights) {
+        if (!light->visibility.camera) continue;
         Vec3 center;
         float radius;
-        bool bounded = light->boundingSphere(center, radius);
-        if (light->visibility.camera && (!bounded || r.camera->mightSee(center, radius))) r.cameraLights.push_back(light.get());
+        if (light->boundingSphere(center, radius) && !r.camera->mightSee(center, radius)) continue;
+        r.cameraLights.push_back(light.get());
     }
     r.tracer = std::make_unique<RayTracer>(scene);
     warnIfNothingInFront(*r.tracer, scene, diagnostics);
