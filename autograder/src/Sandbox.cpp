@@ -96,6 +96,7 @@ std::string ExitStatus::describe(Limits const& limits) const {
 Child::Child(SandboxLayout const& layout, Launch const& launch) : m_limits(launch.limits) {
     m_scratch = layout.scratch;
     bool const sandboxed = layout.confinement == Confinement::Sandbox;
+    bool const dropToNobody = geteuid() == 0 && layout.confinement != Confinement::Trusted;
     std::string const scratchInside = sandboxed ? kScratch : layout.scratch;
     std::string const tmpInside = sandboxed ? "/tmp" : layout.scratch + "/tmp";
 
@@ -107,10 +108,12 @@ Child::Child(SandboxLayout const& layout, Launch const& launch) : m_limits(launc
                 "--new-session", "--cap-drop",     "ALL",            "--uid",            std::to_string(kNobody),
                 "--gid",         std::to_string(kNobody), "--hostname", "sandbox"};
         addSystem(args);
-        args.insert(args.end(), {"--bind", layout.scratch, kScratch});
-        for (auto const& [real, under] : layout.courseMounts)
-            args.insert(args.end(), {"--ro-bind", real, std::string(kCourse) + "/" + under});
-        if (!layout.jail.empty()) args.insert(args.end(), {"--ro-bind", layout.jail, std::string(kCourse) + "/bin/rixjail"});
+        auto bind = [&](char const* how, std::string const& real, std::string const& inside) {
+            args.insert(args.end(), {how, dropToNobody ? m_staging.stage(real) : real, inside});
+        };
+        bind("--bind", layout.scratch, kScratch);
+        for (auto const& [real, under] : layout.courseMounts) bind("--ro-bind", real, std::string(kCourse) + "/" + under);
+        if (!layout.jail.empty()) bind("--ro-bind", layout.jail, std::string(kCourse) + "/bin/rixjail");
         args.insert(args.end(), {"--chdir", launch.workdir, "--clearenv"});
     }
     std::map<std::string, std::string> env = {{"PATH", "/usr/bin:/bin"},
@@ -195,7 +198,6 @@ Child::Child(SandboxLayout const& layout, Launch const& launch) : m_limits(launc
     for (int fd : launch.outputs) m_fds[fd] = makePipe(fd, false);
     int highest = 2;
     for (auto const& [target, end] : childEnds) highest = std::max(highest, target);
-    bool const dropToNobody = geteuid() == 0 && layout.confinement != Confinement::Trusted;
 
     m_start = m_lastScratchCheck = Clock::now();
     m_pid = fork();
@@ -210,6 +212,7 @@ Child::Child(SandboxLayout const& layout, Launch const& launch) : m_limits(launc
         if (devnull >= 0) dup2(devnull, STDIN_FILENO);
         syscall(SYS_close_range, highest + 1, ~0u, 0);
         setpgid(0, 0);
+        if (!m_staging.mountAll()) _exit(125);
         if (dropToNobody && (setgroups(0, nullptr) != 0 || setgid(kNobody) != 0 || setuid(kNobody) != 0)) _exit(125);
         if (!sandboxed && chdir(workdir.c_str()) != 0) _exit(126);
         execve(program.c_str(), argv.data(), envp.data());
@@ -382,29 +385,55 @@ Finished runToEnd(SandboxLayout const& layout, Launch const& launch) {
     return f;
 }
 
-bool sandboxAvailable(std::string& why) {
-    char folder[] = "/tmp/rixgrade-probe-XXXXXX";
-    if (!mkdtemp(folder)) {
-        why = "cannot create a temporary folder";
+bool sandboxAvailable(SandboxLayout layout, std::string& why) {
+    std::string folder = layout.scratch + "/rixgrade-probe-XXXXXX";
+    if (!mkdtemp(folder.data())) {
+        why = "cannot create a temporary folder in " + layout.scratch;
         return false;
     }
-    if (geteuid() == 0 && chown(folder, kNobody, kNobody) != 0) {
+    if (geteuid() == 0 && chown(folder.c_str(), kNobody, kNobody) != 0) {
         why = "cannot hand a folder to nobody";
         return false;
     }
-    SandboxLayout layout;  // no jail: bubblewrap alone runs /bin/true
+    // The grading's own mounts, so that a folder bubblewrap cannot bind stops grading
+    // here, with bubblewrap's words, rather than failing every student's checks.
     layout.scratch = folder;
     layout.confinement = Confinement::Sandbox;
     Launch launch;
     launch.argv = {"/bin/true"};
+    launch.workdir = "/";
     launch.limits.wallSeconds = 20;
     Finished f = runToEnd(layout, launch);
     std::error_code error;
     fs::remove_all(folder, error);
     if (f.status.ok()) return true;
-    why = "bubblewrap (/usr/bin/bwrap) could not create its namespaces: " + f.status.describe(launch.limits) +
+    why = "bubblewrap (/usr/bin/bwrap) could not start a sandbox: " + f.status.describe(launch.limits) +
           (f.err.empty() ? "" : ": " + f.err.substr(0, 300));
     return false;
+}
+
+std::string unusableByNobody(std::vector<std::pair<std::string, int>> const& paths) {
+    if (geteuid() != 0 || paths.empty()) return "";
+    int answer[2];
+    if (pipe2(answer, O_CLOEXEC) != 0) throw std::runtime_error("cannot create a pipe");
+    pid_t pid = fork();
+    if (pid < 0) throw std::runtime_error("cannot fork");
+    if (pid == 0) {
+        // access(2) checks the real user: after setuid, nobody's own view of each path.
+        if (setgroups(0, nullptr) != 0 || setgid(kNobody) != 0 || setuid(kNobody) != 0) _exit(1);
+        uint32_t first = 0;
+        while (first < paths.size() && access(paths[first].first.c_str(), paths[first].second) == 0) ++first;
+        ssize_t written = ::write(answer[1], &first, sizeof first);
+        _exit(written == sizeof first ? 0 : 1);
+    }
+    close(answer[1]);
+    uint32_t first = 0;
+    ssize_t got = ::read(answer[0], &first, sizeof first);
+    close(answer[0]);
+    int status = 0;
+    waitpid(pid, &status, 0);
+    if (got != sizeof first) throw std::runtime_error("cannot check what the user nobody can reach");
+    return first < paths.size() ? paths[first].first : "";
 }
 
 unsigned long long folderBytes(std::string const& folder) {

@@ -11,10 +11,12 @@
 // limits (CPU, address space, file size, processes). When the wall-clock
 // limit passes, the whole sandbox is killed: its PID namespace ends with it,
 // so no process of the submission survives. A grader running as root runs
-// sandboxes as "nobody".
+// sandboxes as "nobody" (MountStaging lets nobody reach what they bind).
 #pragma once
 
 #include <sys/types.h>
+
+#include "MountStaging.h"
 
 #include <chrono>
 #include <map>
@@ -118,6 +120,7 @@ private:
     Clock::time_point m_start, m_lastScratchCheck;
     bool m_exited = false, m_scratchFull = false;
     int m_status = 0;
+    MountStaging m_staging;  ///< what bubblewrap binds, reachable by nobody (a grader running as root)
 };
 
 /// Runs a launch to completion (no extra descriptors): builds, renders.
@@ -128,8 +131,15 @@ struct Finished {
 };
 Finished runToEnd(SandboxLayout const& layout, Launch const& launch);
 
-/// Whether bubblewrap can create its namespaces here; `why` says what failed.
-bool sandboxAvailable(std::string& why);
+/// Whether bubblewrap can create its namespaces here and bind everything `layout`
+/// names (its scratch field is the folder scratch folders go in); `why` says what failed.
+bool sandboxAvailable(SandboxLayout layout, std::string& why);
+
+/// Without the sandbox, a grader running as root runs student code as nobody
+/// straight from the real folders. Returns the first of `paths` (with the
+/// access(2) mode it needs) that nobody cannot use -- a folder above it closed to
+/// other users -- or "" when all are usable (or the grader is not root).
+std::string unusableByNobody(std::vector<std::pair<std::string, int>> const& paths);
 
 /// Bytes held by a folder's files (symbolic links not followed).
 unsigned long long folderBytes(std::string const& folder);

@@ -50,12 +50,14 @@ bool copyRegular(std::string const& from, std::string const& to, unsigned long l
 
 }  // namespace
 
+std::string Scratch::parentFolder(std::string const& parent) {
+    if (!parent.empty()) return parent;
+    char const* tmp = std::getenv("TMPDIR");
+    return tmp && *tmp ? tmp : "/tmp";
+}
+
 Scratch::Scratch(std::string const& parent) {
-    std::string base = parent;
-    if (base.empty()) {
-        char const* tmp = std::getenv("TMPDIR");
-        base = tmp && *tmp ? tmp : "/tmp";
-    }
+    std::string const base = parentFolder(parent);
     std::string pattern = base + "/rixgrade-XXXXXX";
     if (!mkdtemp(pattern.data())) throw std::runtime_error("cannot create a scratch folder in " + base);
     m_path = pattern;

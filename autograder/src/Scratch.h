@@ -16,6 +16,9 @@ public:
     Scratch(Scratch const&) = delete;
     Scratch& operator=(Scratch const&) = delete;
 
+    /// The folder scratch folders go in: `parent`, or else TMPDIR, or else /tmp.
+    static std::string parentFolder(std::string const& parent);
+
     std::string const& path() const { return m_path; }
     void keep() { m_keep = true; }
 

@@ -11,6 +11,7 @@
 // which no sandbox sees. Points and time limits: autograder/rubric.json
 // (--rubric); each exercise's checks and default points: its exercise.json.
 #include <signal.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -21,6 +22,8 @@
 #include "Grader.h"
 #include "OutputFolder.h"
 #include "Reports.h"
+#include "Sandbox.h"
+#include "Scratch.h"
 #include "measure/Wire.h"
 
 namespace fs = std::filesystem;
@@ -37,6 +40,18 @@ std::string binDirectory() {
 bool inside(fs::path const& child, fs::path const& parent) {
     auto c = fs::weakly_canonical(child), p = fs::weakly_canonical(parent);
     return std::mismatch(p.begin(), p.end(), c.begin(), c.end()).first == p.end();
+}
+
+/// Without the sandbox, student code runs as nobody from the real folders (as root): say
+/// up front which folder it cannot reach instead of failing every check with status 126.
+void refuseWhatNobodyCannotReach(SandboxLayout const& layout) {
+    std::vector<std::pair<std::string, int>> needed = {{layout.scratch, X_OK}, {layout.jail, X_OK}};
+    for (auto const& mount : layout.courseMounts) needed.emplace_back(mount.first, R_OK);
+    std::string blocked = unusableByNobody(needed);
+    if (blocked.empty()) return;
+    throw std::runtime_error("--unsafe-no-sandbox runs student code as the user nobody, who cannot use " + blocked +
+                             " (it, or a folder above it, is closed to other users). Grade with the sandbox, or move the "
+                             "course or TMPDIR where every user may enter.");
 }
 
 }  // namespace
@@ -82,17 +97,18 @@ int main(int argc, char** argv) {
         base.seed = seed;
         base.keepScratch = keepScratch;
 
-        Confinement confinement = Confinement::Sandbox;
+        Confinement confinement = unsafe ? Confinement::JailOnly : Confinement::Sandbox;
+        Course course(BXDFLAB_SOURCE_DIR, binDirectory(), confinement);
+        SandboxLayout const grading = course.layout(Scratch::parentFolder(base.scratchParent));
         std::string why;
         if (unsafe) {
             std::cerr << "rixgrade: WARNING: --unsafe-no-sandbox: student code runs without namespaces\n";
-            confinement = Confinement::JailOnly;
-        } else if (!sandboxAvailable(why)) {
+            refuseWhatNobodyCannotReach(grading);
+        } else if (!sandboxAvailable(grading, why)) {
             throw std::runtime_error(why + "\n  Student code is not run without its sandbox. Where namespaces cannot be "
                                            "created (some containers), --unsafe-no-sandbox grades anyway, with weaker "
                                            "confinement, and every report says so.");
         }
-        Course course(BXDFLAB_SOURCE_DIR, binDirectory(), confinement);
 
         if (classDir.empty()) {
             base.submission = submission.empty() ? "" : fs::absolute(submission).string();

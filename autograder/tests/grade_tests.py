@@ -17,6 +17,7 @@ import shutil
 import socket
 import subprocess
 import sys
+import tempfile
 import threading
 import time
 
@@ -509,6 +510,31 @@ def test_unsafe(ctx):
                "without the sandbox the buggy starter passes the render check (the solution was rendered instead)")
 
 
+def test_private_folders(ctx):
+    """A TMPDIR closed to other users (mode 0700, like /root or a mktemp folder) must not stop grading.
+
+    As root the sandboxes run as nobody, who cannot enter such a folder: the sandbox must still
+    bind its scratch folder there, and grading without the sandbox must refuse up front, naming
+    the folder, instead of failing every check of correct work."""
+    private = tempfile.mkdtemp(prefix="private-tmp-", dir=ctx.out)
+    os.chmod(private, 0o700)
+    env = dict(os.environ, TMPDIR=private)
+    solutions = os.path.join(ctx.build, "plugins/solutions")
+    status, output, _ = ctx.grade("private-tmp", "--plugins", solutions, "--only", "diffuse", env=env)
+    if expect(status == 0, f"rixgrade exited with {status}:\n{output[-2000:]}"):
+        failed = [t["name"] for t in ctx.results("private-tmp")["tests"] if t["status"] != "passed"]
+        expect(not failed, f"the solution fails with a private TMPDIR: {failed}")
+    status, output, _ = ctx.grade("private-tmp-unsafe", "--plugins", solutions, "--only", "diffuse",
+                                  "--unsafe-no-sandbox", env=env)
+    if os.geteuid() == 0:
+        expect(status == 1 and private in output and "nobody" in output,
+               f"without the sandbox, a TMPDIR nobody cannot enter is not refused by name ({status}):\n{output[-2000:]}")
+    else:
+        print("not root: the sandboxes run as this user, who owns the private folder (nobody is not involved)")
+        expect(status == 0, f"rixgrade --unsafe-no-sandbox exited with {status}:\n{output[-2000:]}")
+    shutil.rmtree(private, ignore_errors=True)
+
+
 def test_repeat(ctx):
     plugins = os.path.join(ctx.build, "plugins/variants/diffuse_pdf_doubled")
     runs = []
@@ -571,7 +597,8 @@ def main():
              "borrows_reference": lambda: test_borrows_reference(ctx), "render_cache": lambda: test_render_cache(ctx),
              "attack": lambda: test_attack(ctx, args.name), "solutions": lambda: test_solutions(ctx),
              "starter": lambda: test_starter(ctx), "repeat": lambda: test_repeat(ctx),
-             "gradescope": lambda: test_gradescope(ctx), "unsafe": lambda: test_unsafe(ctx)}
+             "gradescope": lambda: test_gradescope(ctx), "unsafe": lambda: test_unsafe(ctx),
+             "private_folders": lambda: test_private_folders(ctx)}
     tests[args.kind]()
     if problems:
         return 1
