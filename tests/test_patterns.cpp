@@ -185,6 +185,17 @@ TEST_CASE("bad networks: located errors for wrong handles, outputs and types; wa
         CHECK(r.anyMessageContains("Pattern \"osl\" cannot be used"));
         CHECK(r.channel(8, 8, 0) == Approx(1.0f));  // PxrConstant's default emitColor is white
     }
+    SECTION("a missing pattern plugin used by three Patterns: said once in full, the others counted") {
+        std::string threeUses;
+        for (char const* handle : {"a", "b", "c"})
+            threeUses += std::string("Pattern \"PxrOSL\" \"") + handle + "\"\nBxdf \"PxrConstant\" \"c" + handle +
+                         "\" \"reference color emitColor\" [\"" + handle + ":Cout\"]\n" + kSquare;
+        auto r = test::renderRib(kHead + threeUses, fewSamples());
+        int full = 0;
+        for (auto const& m : r.messages) full += m.text.find("not found") != std::string::npos ? 1 : 0;
+        CHECK(full == 1);
+        CHECK(r.anyMessageContains("2 more Patterns of the missing plugin \"PxrOSL\" cannot be used either"));
+    }
 }
 
 TEST_CASE("a primvar named like a parameter gives that parameter per-point values", "[patterns][primvars]") {

@@ -11,6 +11,7 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <map>
 #include <mutex>
 #include <optional>
 #include <set>
@@ -177,16 +178,28 @@ void Renderer::Impl::loadPatterns(std::vector<MaterialDesc> const& usedMaterials
 
     patterns.resize(scene.patterns.size());
     auto patternOf = [this](int index) -> PatternInstance const* { return patterns[static_cast<size_t>(index)].get(); };
+    // A missing plugin is said once, in full, at its first Pattern; exporters write
+    // one Pattern per object, and the same five-line message per object is noise.
+    struct Missing {
+        PatternDesc const* first;
+        int more;
+    };
+    std::map<std::string, Missing> missing;
     for (size_t i = 0; i < reached.size(); ++i) {
         if (!reached[i]) continue;
         PatternDesc const& desc = scene.patterns[i];
         ShadingPlugin* plugin = nullptr;
+        if (auto known = missing.find(desc.plugin); known != missing.end()) {
+            ++known->second.more;
+            continue;
+        }
         try {
             plugin = &loader.pattern(desc.plugin, desc.where);
         } catch (RenderError const& e) {
             // Like a missing texture: the render goes on, and says what it lacks.
             diagnostics.warn(desc.where, "Pattern \"" + desc.handle + "\" cannot be used (" + e.what() +
                                              "); the parameters connected to it keep their own values");
+            missing.emplace(desc.plugin, Missing{&desc, 0});
             continue;
         }
         patterns[i] = std::make_unique<PatternInstance>(desc, *plugin, patternOf, patternCounters, diagnostics);
@@ -199,6 +212,12 @@ void Renderer::Impl::loadPatterns(std::vector<MaterialDesc> const& usedMaterials
             }
         }
     }
+    for (auto const& [name, absent] : missing)
+        if (absent.more > 0)
+            diagnostics.warn(absent.first->where, std::to_string(absent.more) + " more Pattern" + (absent.more > 1 ? "s" : "") +
+                                                      " of the missing plugin \"" + name +
+                                                      "\" cannot be used either; the parameters connected to them keep "
+                                                      "their own values");
 }
 
 std::vector<ShadingPlugin*> Renderer::Impl::usedPlugins() const {
