@@ -284,6 +284,22 @@ TEST_CASE("RenderMan's own materials and integrators that are not here get a sta
                       Catch::Matchers::Contains("not found"));
 }
 
+TEST_CASE("a stand-in whose textured colour cannot be loaded keeps the original's untextured colour", "[rib][plugins]") {
+    // PxrSurface's diffuse colour from an absent pattern: the surface is PxrSurface's grey 0.18 (times
+    // its gain), not the stand-in PxrDisney's own default base colour (0.2, 0.5, 0.8).
+    std::string rib = "Format 8 8 1\nProjection \"perspective\" \"fov\" [30]\nWorldBegin\nLight \"PxrDomeLight\" \"sky\"\n"
+                      "Translate 0 0 5\nPattern \"NoSuchPattern\" \"tex\"\n"
+                      "Bxdf \"PxrSurface\" \"s\" \"reference color diffuseColor\" [\"tex:resultRGB\"] \"float diffuseGain\" [0.5]\n"
+                      "Sphere 1 -1 1 360\nWorldEnd\n";
+    RenderSettings settings;
+    settings.spp = 16;
+    auto r = test::renderRib(rib, settings);
+    CHECK(r.anyMessageContains("Pattern \"tex\" cannot be used"));
+    float red = r.channel(4, 4, 0), blue = r.channel(4, 4, 2);
+    CHECK(red == Approx(blue).epsilon(0.02));       // grey, not blue
+    CHECK(red == Approx(0.09f).epsilon(0.1));       // 0.18 x 0.5 under a white sky of radiance 1
+}
+
 TEST_CASE("primvars reach plugins (GetPrimVar): constant, per-face, per-vertex and per-corner values", "[rib][primvars]") {
     std::string const head = "Format 16 16 1\nProjection \"orthographic\"\nScreenWindow -1 1 -1 1\n"
                              "Integrator \"PxrDefault\" \"d\"\nWorldBegin\nTranslate 0 0 5\n";

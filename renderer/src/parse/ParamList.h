@@ -58,6 +58,9 @@ struct Param {
     std::vector<float> floats;  ///< Float, Int (as floats too), Color, Point, Vector, Normal
     std::vector<int> ints;      ///< Int
     std::vector<std::string> strings;
+    /// A reference's value where its pattern cannot be loaded (a stand-in material
+    /// sets it to what the original would have had); empty: the plugin's default.
+    std::vector<float> fallback;
     SourceLocation location;
     mutable bool used = false;
 

@@ -44,7 +44,14 @@ NodeParams::NodeParams(std::string const& kind, ShadingPlugin const& plugin, Par
         if (p.decl.reference) {
             Connection const& link = connections.at(p.name());
             PatternInstance const* source = patternOf(link.pattern);
-            if (!source) continue;  // not loaded: already warned; the default stands
+            if (!source) {
+                // Not loaded (already warned): the reference's fallback, or else the plugin's default.
+                if (!p.fallback.empty()) {
+                    m_values[static_cast<size_t>(id)].set = true;
+                    m_values[static_cast<size_t>(id)].floats = p.fallback;
+                }
+                continue;
+            }
             ShadingPlugin const& from = source->plugin();
             int output = from.paramId(link.output);
             if (output < 0 || from.paramTable()[static_cast<size_t>(output)].access != k_RixSCOutput)

@@ -37,8 +37,11 @@ Param floatParam(std::string const& name, float value) {
 }
 
 /// Connects the stand-in's `to` where the material connects `from` to a
-/// pattern (a textured diffuse colour stays textured); true if it did.
-bool carryConnection(MaterialDesc const& material, char const* from, MaterialDesc& standIn, std::string const& to) {
+/// pattern (a textured diffuse colour stays textured); true if it did. Where
+/// the pattern cannot be loaded, `to` takes `unconnected`: the original's value
+/// without the connection, not the stand-in's own default.
+bool carryConnection(MaterialDesc const& material, char const* from, MaterialDesc& standIn, std::string const& to,
+                     Vec3 const& unconnected) {
     auto found = material.connections.find(from);
     if (found == material.connections.end()) return false;
     for (Param const& p : material.params.all())
@@ -46,6 +49,7 @@ bool carryConnection(MaterialDesc const& material, char const* from, MaterialDes
             p.used = true;
             Param link = p;
             link.decl.name = to;
+            link.fallback = {unconnected.x, unconnected.y, unconnected.z};
             standIn.params.add(link);
             standIn.connections[to] = found->second;
             return true;
@@ -71,14 +75,16 @@ std::optional<StandIn> standInFor(MaterialDesc const& material) {
         // Diffuse colour times gain; the artistic specular's face colour as a dielectric's reflectance.
         Vec3 diffuse = colorOf(in, {"diffuseColor"}).value_or(Vec3(0.18f)) * floatOf(in, "diffuseGain").value_or(1.0f);
         Vec3 face = colorOf(in, {"specularFaceColor"}).value_or(Vec3(0.0f));
-        if (!carryConnection(material, "diffuseColor", s.material, "baseColor")) out.add(colorParam("baseColor", diffuse));
+        if (!carryConnection(material, "diffuseColor", s.material, "baseColor", diffuse))
+            out.add(colorParam("baseColor", diffuse));
         out.add(floatParam("specular", std::clamp(luminance(face) / 0.08f, 0.0f, 1.0f)));
         out.add(floatParam("roughness", std::sqrt(std::clamp(floatOf(in, "specularRoughness").value_or(0.2f), 0.0f, 1.0f))));
         if (auto coat = colorOf(in, {"clearcoatFaceColor"})) out.add(floatParam("clearcoat", std::min(1.0f, luminance(*coat) / 0.04f)));
         s.note = "PxrDisney with its diffuse colour and specular face colour (no layering, transmission or subsurface)";
     } else if (name == "PxrLMPlastic") {
-        if (!carryConnection(material, "diffuseColor", s.material, "baseColor"))
-            out.add(colorParam("baseColor", colorOf(in, {"diffuseColor"}).value_or(Vec3(0.5f))));
+        Vec3 const diffuse = colorOf(in, {"diffuseColor"}).value_or(Vec3(0.5f));
+        if (!carryConnection(material, "diffuseColor", s.material, "baseColor", diffuse))
+            out.add(colorParam("baseColor", diffuse));
         out.add(floatParam("roughness", std::sqrt(std::clamp(floatOf(in, "specularRoughness").value_or(0.01f), 0.0f, 1.0f))));
         s.note = "PxrDisney with its diffuse colour";
     } else if (name == "PxrLMMetal") {
@@ -97,7 +103,7 @@ std::optional<StandIn> standInFor(MaterialDesc const& material) {
         s.material.plugin = "PxrDiffuse";
         bool connected = false;
         for (char const* from : {"diffuseColor", "baseColor", "frontColor"})
-            if (!connected) connected = carryConnection(material, from, s.material, "diffuseColor");
+            if (!connected) connected = carryConnection(material, from, s.material, "diffuseColor", Vec3(0.5f));
         std::optional<Vec3> color = colorOf(in, {"diffuseColor", "baseColor", "frontColor", "color", "emitColor"});
         if (color && !connected) out.add(colorParam("diffuseColor", *color));
         s.note = color || connected ? "PxrDiffuse in its colour" : "PxrDiffuse";
