@@ -221,6 +221,21 @@ TEST_CASE("free-form shapes: subdivision surface, NURBS patch, curves, points an
                               "\"P\" [-1 -1 -1  1 -1 -1  -1 1 -1  1 1 -1  -1 -1 1  1 -1 1  -1 1 1  1 1 1]\n";
         CHECK(hitDistance(creased, Vec3(0.3f, 0.2f, 0.0f)) == Approx(4.0f).margin(0.02));
     }
+    SECTION("a hole is not rendered but keeps shaping the faces around it, as in RenderMan") {
+        // The cube with its +x face a hole: the -z face in front of the ray keeps the shape the whole
+        // cube gives it (exporters split meshes into pieces that hold their neighbours as holes, and
+        // the pieces must meet), and a ray through the hole reaches the inside of the far face.
+        std::string const faces = "[4 4 4 4 4 4] [0 1 3 2  2 3 7 6  6 7 5 4  4 5 1 0  1 5 7 3  4 0 2 6] ";
+        std::string const cage = "\"P\" [-1 -1 -1  1 -1 -1  -1 1 -1  1 1 -1  -1 -1 1  1 -1 1  -1 1 1  1 1 1]\n";
+        std::string const whole = "Translate 0 0 5\nSubdivisionMesh \"catmull-clark\" " + faces +
+                                  "[\"interpolateboundary\"] [0 0] [] [] " + cage;
+        std::string const holed = "Translate 0 0 5\nSubdivisionMesh \"catmull-clark\" " + faces +
+                                  "[\"interpolateboundary\" \"hole\"] [0 0 1 0] [4] [] " + cage;
+        for (float x : {0.0f, 0.6f})
+            CHECK(hitDistance(holed, Vec3(x, 0.0f, 0.0f)) == Approx(hitDistance(whole, Vec3(x, 0.0f, 0.0f))).epsilon(1e-5));
+        CHECK(hitDistance(holed, Vec3(5.0f, 0.0f, 5.0f), Vec3(-1, 0, 0)) > 5.5f);  // through the hole to the -x face
+        CHECK(hitDistance(whole, Vec3(5.0f, 0.0f, 5.0f), Vec3(-1, 0, 0)) < 4.5f);
+    }
     SECTION("a NuPatch of order 2 is its control quad; Pw divides by w") {
         CHECK(hitDistance("NuPatch 2 2 [0 0 1 1] 0 1 2 2 [0 0 1 1] 0 1 \"P\" [-1 -1 5  1 -1 5  -1 1 5  1 1 5]\n") ==
               Approx(5.0f).epsilon(1e-4));

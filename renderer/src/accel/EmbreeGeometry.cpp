@@ -1,5 +1,6 @@
 #include "accel/EmbreeGeometry.h"
 
+#include <algorithm>
 #include <cstring>
 #include <vector>
 
@@ -79,6 +80,17 @@ void quadricOccluded(const RTCOccludedFunctionNArguments* args) {
                                     RTCRayN_tfar(args->ray, args->N, i)))
             RTCRayN_tfar(args->ray, args->N, i) = -kInfinity;
     }
+}
+
+/// RenderMan's subdivision holes are not rendered but still shape the faces
+/// around them (exporters split a mesh into pieces, each holding its
+/// neighbours as holes, and the pieces meet). Embree's holes leave the
+/// topology instead, so the faces stay in the mesh and their hits are refused.
+void refuseHoleHits(const RTCFilterFunctionNArguments* args) {
+    auto const* holes = static_cast<std::vector<unsigned> const*>(args->geometryUserPtr);  // sorted
+    for (unsigned i = 0; i < args->N; ++i)
+        if (args->valid[i] == -1 && std::binary_search(holes->begin(), holes->end(), RTCHitN_primID(args->hit, args->N, i)))
+            args->valid[i] = 0;
 }
 
 /// Embree subdivides each face until its edges span about this many segments
@@ -179,7 +191,11 @@ public:
         copyBuffer(m_geometry, RTC_BUFFER_TYPE_EDGE_CREASE_WEIGHT, RTC_FORMAT_FLOAT, data.creaseWeights);
         copyBuffer(m_geometry, RTC_BUFFER_TYPE_VERTEX_CREASE_INDEX, RTC_FORMAT_UINT, data.corners);
         copyBuffer(m_geometry, RTC_BUFFER_TYPE_VERTEX_CREASE_WEIGHT, RTC_FORMAT_FLOAT, data.cornerWeights);
-        copyBuffer(m_geometry, RTC_BUFFER_TYPE_HOLE, RTC_FORMAT_UINT, data.holes);
+        if (!data.holes.empty()) {
+            rtcSetGeometryUserData(m_geometry, const_cast<std::vector<unsigned>*>(&data.holes));
+            rtcSetGeometryIntersectFilterFunction(m_geometry, refuseHoleHits);
+            rtcSetGeometryOccludedFilterFunction(m_geometry, refuseHoleHits);
+        }
         // RenderMan drops the faces along a boundary unless interpolateboundary says otherwise.
         RTCSubdivisionMode mode = data.boundary == SubdivisionData::Boundary::EdgesAndCorners ? RTC_SUBDIVISION_MODE_PIN_CORNERS
                                   : data.boundary == SubdivisionData::Boundary::Edges        ? RTC_SUBDIVISION_MODE_SMOOTH_BOUNDARY

@@ -1,5 +1,6 @@
 // Free-form shapes: subdivision meshes, NURBS patches, blobby implicit
 // surfaces, curves and points.
+#include <algorithm>
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -137,7 +138,9 @@ void SceneBuilder::readSubdivisionMesh(RequestReader& in, bool hierarchical) {
                 data.cornerWeights.push_back(floatargs[floats + std::min(k, nf > 0 ? nf - 1 : 0)]);
             }
         } else if (tag == "hole") {
-            for (size_t k = 0; k < ni; ++k) data.holes.push_back(static_cast<unsigned>(std::max(0, intargs[ints + k])));
+            for (size_t k = 0; k < ni; ++k)
+                if (intargs[ints + k] >= 0 && static_cast<size_t>(intargs[ints + k]) < nverts.size())
+                    data.holes.push_back(static_cast<unsigned>(intargs[ints + k]));
         } else if (tag == "interpolateboundary") {
             int mode = ni > 0 ? intargs[ints] : 1;
             data.boundary = mode == 2 ? SubdivisionData::Boundary::Edges
@@ -149,6 +152,8 @@ void SceneBuilder::readSubdivisionMesh(RequestReader& in, bool hierarchical) {
         ints += ni;
         floats += nf;
     }
+    std::sort(data.holes.begin(), data.holes.end());
+    data.holes.erase(std::unique(data.holes.begin(), data.holes.end()), data.holes.end());
     bool flip = state().reverseOrientation != mirrors(state().transform);
     addShape(std::make_unique<SubdivisionSurface>(std::move(data), flip), in.where(), std::move(vars));
 }

@@ -46,27 +46,36 @@ void SceneBuilder::readArchive(RequestReader& in) {
             return;
         }
     }
-    if (path.is_absolute()) {
-        // Exporters write absolute paths of the machine they ran on: the same
-        // files are often beside the scene, under the end of that path.
-        std::vector<fs::path> parts(path.begin(), path.end());
-        fs::path scene = fs::path(m_fileStack.front()).parent_path();
-        std::vector<fs::path> roots = {fs::path(currentDirectory()), scene.empty() ? fs::path(".") : scene};
+    // Exporters write absolute paths of the machine they ran on, as the archive's
+    // name or as search-path folders: the same files are often beside the scene,
+    // under the end of such a path. The longest end that exists wins.
+    std::vector<fs::path> absolutes;
+    if (path.is_absolute())
+        absolutes.push_back(path);
+    else
+        for (std::string const& folder : m_archiveSearchPath)
+            if (fs::path(folder).is_absolute()) absolutes.push_back(fs::path(folder) / path);
+    fs::path scene = fs::path(m_fileStack.front()).parent_path();
+    std::vector<fs::path> roots = {fs::path(currentDirectory()), scene.empty() ? fs::path(".") : scene};
+    for (fs::path const& absolute : absolutes) {
+        std::vector<fs::path> parts(absolute.begin(), absolute.end());
         for (size_t first = 1; first < parts.size(); ++first) {
             fs::path tail;
             for (size_t k = first; k < parts.size(); ++k) tail /= parts[k];
             for (fs::path const& root : roots) {
                 fs::path candidate = root / tail;
                 if (!exists(candidate)) continue;
+                std::string const whose = absolute == path ? "its path" : "its path on the search path (" + absolute.string() + ")";
                 warnOnce("archive by tail", in.where(),
-                         "archive \"" + name + "\" not found; reading \"" + candidate.string() +
-                             "\", the end of its path found beside the scene (and so for the other absolute paths)");
+                         "archive \"" + name + "\" not found; reading \"" + candidate.string() + "\", the end of " + whose +
+                             " found beside the scene (and so for the other absolute paths)");
                 readFile(candidate.string());
                 return;
             }
         }
-        tried += "\n    (and every end of that path under " + roots[0].string() + " and " + roots[1].string() + ")";
     }
+    if (!absolutes.empty())
+        tried += "\n    (and every end of the absolute paths under " + roots[0].string() + " and " + roots[1].string() + ")";
     // RenderMan renders on without a missing archive; so does this renderer, unless --strict.
     missingFile(in.where(), "archive \"" + name + "\" not found; tried:" + tried);
 }

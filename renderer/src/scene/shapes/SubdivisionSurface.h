@@ -18,7 +18,7 @@ struct SubdivisionData {
     std::vector<float> creaseWeights;  ///< one per pair
     std::vector<unsigned> corners;     ///< vertex indices
     std::vector<float> cornerWeights;  ///< one per corner
-    std::vector<unsigned> holes;       ///< face indices
+    std::vector<unsigned> holes;       ///< face indices, sorted, each once
     enum class Boundary { None, EdgesAndCorners, Edges } boundary = Boundary::None;
 };
 
