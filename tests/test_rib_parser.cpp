@@ -1,5 +1,7 @@
 // The RIB front end: tokens, requests, the graphics state, and located errors.
 #include <catch2/catch.hpp>
+#include <filesystem>
+#include <fstream>
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "parse/RibLexer.h"
@@ -258,6 +260,27 @@ TEST_CASE("attributes scope visibility, names and materials", "[rib]") {
     CHECK(scene.shapes[1]->visibility.camera);
     CHECK(scene.materials[static_cast<size_t>(scene.shapes[1]->material)].plugin == "PxrDiffuse");  // default material
     REQUIRE(scene.dropped.size() == 1);
+}
+
+TEST_CASE("an archive named relative to an absolute search-path folder of another machine is found beside the scene",
+          "[rib]") {
+    // The exporter ran in /exporter-machine/project; the files now sit in <out>/project. The scene,
+    // project/shot/scene.rib, reads "shot/geometry/geo.rib" through that search path.
+    namespace fs = std::filesystem;
+    fs::path const project = fs::path(test::outputDir()) / "archive-search-tail" / "project";
+    fs::create_directories(project / "shot" / "geometry");
+    std::ofstream(project / "shot" / "geometry" / "geo.rib") << "Sphere 1 -1 1 360\n";
+    std::ofstream(project / "shot" / "scene.rib")
+        << "Option \"searchpath\" \"archive\" [\"/exporter-machine/project\"]\nWorldBegin\n"
+           "ReadArchive \"shot/geometry/geo.rib\"\nWorldEnd\n";
+    Diagnostics diagnostics(false);
+    Scene scene = loadScene((project / "shot" / "scene.rib").string(), diagnostics);
+    CHECK(scene.shapes.size() == 1u);
+    bool said = false;
+    for (auto const& m : diagnostics.entries())
+        said = said || m.text.find("the end of its path on the search path (/exporter-machine/project/shot/geometry/geo.rib) "
+                                   "found beside the scene") != std::string::npos;
+    CHECK(said);
 }
 
 TEST_CASE("a missing archive or sky image is a warning naming what was tried; --strict makes it an error", "[rib]") {
