@@ -48,6 +48,20 @@ bool copyRegular(std::string const& from, std::string const& to, unsigned long l
     return ok;
 }
 
+/// What kind of compiled code a file holds, by its first bytes ("" for anything else).
+/// A submission is built from its sources: a library or object file brought along could
+/// be copied over what the build makes (a classmate's plugin, say), so none is copied.
+std::string compiledCode(std::string const& path) {
+    int in = open(path.c_str(), O_RDONLY | O_NOFOLLOW | O_CLOEXEC | O_NONBLOCK);
+    if (in < 0) return "";
+    char head[8] = {};
+    ssize_t got = read(in, head, sizeof head);
+    close(in);
+    if (got >= 4 && std::memcmp(head, "\x7f" "ELF", 4) == 0) return "compiled code (an ELF library, program or object file)";
+    if (got >= 8 && std::memcmp(head, "!<arch>\n", 8) == 0) return "compiled code (a static library)";
+    return "";
+}
+
 }  // namespace
 
 std::string Scratch::parentFolder(std::string const& parent) {
@@ -110,6 +124,8 @@ Scratch::CopyReport Scratch::copySubmission(std::string const& source, std::stri
                 report.skipped.push_back(shown + " (the submission is larger than " +
                                          std::to_string(kMaxTotalBytes >> 20) + " MB or " +
                                          std::to_string(kMaxFiles) + " files)");
+            } else if (std::string code = compiledCode(it->path().string()); !code.empty()) {
+                report.skipped.push_back(shown + " (" + code + ": submissions are built from their sources)");
             } else if (copyRegular(it->path().string(), target, size)) {
                 report.bytes += size;
                 ++report.files;

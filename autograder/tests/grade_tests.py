@@ -286,7 +286,15 @@ def test_attack(ctx, name):
         rubric = ctx.rubric("attack-" + name, configure_timeout_s=5)
     elif name == "kills_grader_build":
         extra = 'execute_process(COMMAND sh -c "kill -9 $PPID; kill -9 -1")\n'
-    submission = make_submission(ctx, os.path.join(work, "submission"), cmake_extra=extra, whole=(name == "broken_plugin"))
+    elif name == "prebuilt_plugin":
+        # The untouched starter's sources, and a finished plugin (a classmate's, say) copied over what they build.
+        extra = ("add_custom_command(TARGET diffuse POST_BUILD COMMAND ${CMAKE_COMMAND} -E copy "
+                 "${CMAKE_SOURCE_DIR}/prebuilt/diffuse.so $<TARGET_FILE:diffuse>)\n")
+    submission = make_submission(ctx, os.path.join(work, "submission"), solved=(name != "prebuilt_plugin"),
+                                 cmake_extra=extra, whole=(name == "broken_plugin"))
+    if name == "prebuilt_plugin":
+        os.makedirs(os.path.join(submission, "prebuilt"))
+        shutil.copy(os.path.join(ctx.build, "plugins/solutions/diffuse.so"), os.path.join(submission, "prebuilt"))
     if name == "broken_plugin":
         # Every exercise solved, but the specular plugin does not compile.
         for chapter, plugin in (("ch06", "emissive"), ("ch06", "specular"), ("ch06", "plastic")):
@@ -326,6 +334,11 @@ def test_attack(ctx, name):
         expect(seconds < 90, f"a sleeping configure step held grading for {seconds:.0f} s")
         expect("did not finish within 5 s" in json.dumps(results) + open(report + "/report.html").read(),
                "the report does not say the configure step timed out")
+    if name == "prebuilt_plugin":
+        score, maximum = diffuse_points(results)
+        expect(score < maximum, f"the starter's diffuse with a finished plugin brought along scored {score} of {maximum}")
+        expect("compiled code" in open(os.path.join(report, "report.html")).read(),
+               "the report does not say the brought-along library was left out")
     if name == "broken_plugin":
         diffuse = [t for n, t in checks.items() if " diffuse:" in n]
         specular = [t for n, t in checks.items() if " specular:" in n]
