@@ -418,7 +418,12 @@ def test_borrows_reference(ctx):
     """A ch11 submission whose mypath loads the course's PxrPathTracer earns nothing for it, in the
     sandbox (not mounted) and without it (Landlock keeps reads to what a sandbox would see)."""
     plugins = os.path.join(ctx.build, "plugins/hostile/borrows_reference")
-    for confinement in ([], ["--unsafe-no-sandbox"]):
+    confinements = [[], ["--unsafe-no-sandbox"]]
+    if os.geteuid() == 0 and not (nobody_can_enter(ctx.root) and nobody_can_enter(ctx.build)):
+        print("skipped without the sandbox: the course lies below a folder closed to other users, where rixgrade "
+              "refuses --unsafe-no-sandbox (autograder.unsafe checks that refusal)")
+        confinements = [[]]
+    for confinement in confinements:
         name = "borrows-reference" + ("-unsafe" if confinement else "")
         status, output, _ = ctx.grade(name, "--plugins", plugins, "--only", "mypath", *confinement)
         print(output[-2000:])
