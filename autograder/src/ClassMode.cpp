@@ -41,10 +41,17 @@ std::string classReport(std::vector<Grade> const& grades, std::vector<Student> c
         html << "</p>\n";
     }
     html << "<table><tr><th>student</th><th>score</th><th>report</th><th>notes</th></tr>\n";
-    for (size_t k = 0; k < grades.size(); ++k)
+    for (size_t k = 0; k < grades.size(); ++k) {
+        // Compiled code in a source submission is a reason to look (a plugin built elsewhere?).
+        std::string notes = grades[k].error;
+        if (!grades[k].compiledCode.empty()) {
+            notes += (notes.empty() ? "" : "; ") + std::string("brought compiled code (left out of its build):");
+            for (auto const& file : grades[k].compiledCode) notes += " " + file;
+        }
         html << "<tr><td>" << escapeHtml(students[k].name, 200) << "</td><td>" << grades[k].score() << " / "
              << grades[k].maxScore() << "</td><td><a href=\"students/" << escapeHtml(students[k].outName)
-             << "/report.html\">report</a></td><td>" << escapeHtml(grades[k].error, 500) << "</td></tr>\n";
+             << "/report.html\">report</a></td><td>" << escapeHtml(notes, 1000) << "</td></tr>\n";
+    }
     html << "</table>\n<h2>Similarity</h2>\n";
     if (!similarity.note.empty()) html << "<p>" << escapeHtml(similarity.note) << "</p>\n";
     html << "<p>Each file is compared by the lines its author wrote (the starter's lines taken out), with sim_c++. "

@@ -126,6 +126,7 @@ Scratch::CopyReport Scratch::copySubmission(std::string const& source, std::stri
                                          std::to_string(kMaxFiles) + " files)");
             } else if (std::string code = compiledCode(it->path().string()); !code.empty()) {
                 report.skipped.push_back(shown + " (" + code + ": submissions are built from their sources)");
+                report.compiled.push_back(shown);
             } else if (copyRegular(it->path().string(), target, size)) {
                 report.bytes += size;
                 ++report.files;

@@ -23,7 +23,8 @@ public:
     void keep() { m_keep = true; }
 
     struct CopyReport {
-        std::vector<std::string> skipped;  ///< what was left out, and why
+        std::vector<std::string> skipped;   ///< what was left out, and why
+        std::vector<std::string> compiled;  ///< of those, the files of compiled code (for the instructor)
         unsigned long long bytes = 0;
         int files = 0;
     };

@@ -366,6 +366,12 @@ def test_class_attack(ctx, name, work, env):
         text = open(alice_source).read().replace("NdL", "cosLight").replace("weight", "w")
         with open(os.path.join(carol, "ch06/diffuse/Diffuse.cpp"), "w") as f:
             f.write(text)
+        # eve brings a finished plugin and copies it over what her untouched starter builds.
+        eve = make_submission(ctx, os.path.join(klass, "eve"), solved=False,
+                              cmake_extra="add_custom_command(TARGET diffuse POST_BUILD COMMAND ${CMAKE_COMMAND} -E copy "
+                                          "${CMAKE_SOURCE_DIR}/lib/libdiffuse.so $<TARGET_FILE:diffuse>)\n")
+        os.makedirs(os.path.join(eve, "lib"))
+        shutil.copy(os.path.join(ctx.build, "plugins/solutions/diffuse.so"), os.path.join(eve, "lib/libdiffuse.so"))
     else:
         names = ["gradebook.csv", "a,b", 'quote"name', '=HYPERLINK("http://x")', "new\nline", "+1", "@sum", "ok"]
         for n in names:
@@ -394,6 +400,9 @@ def test_class_attack(ctx, name, work, env):
         flagged = [r for r in similar[1:] if {r[0], r[1]} == {"alice", "carol"} and int(r[4]) >= 60]
         expect(flagged, "the similarity report does not flag carol's copy of alice's code")
         expect("carol" in open(os.path.join(out, "report.html")).read(), "the class report does not show the copy")
+        expect(score("eve") <= 1, f"eve earned {score('eve')} with a plugin built elsewhere")
+        expect("brought compiled code (left out of its build): lib/libdiffuse.so" in
+               open(os.path.join(out, "report.html")).read(), "the class report does not say eve brought compiled code")
     else:
         for n in ("gradebook.csv", "a,b", 'quote"name', "'+1", "'@sum", "ok"):
             expect(n in by_name, f"no gradebook row for {n!r}")
