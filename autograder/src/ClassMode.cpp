@@ -42,12 +42,9 @@ std::string classReport(std::vector<Grade> const& grades, std::vector<Student> c
     }
     html << "<table><tr><th>student</th><th>score</th><th>report</th><th>notes</th></tr>\n";
     for (size_t k = 0; k < grades.size(); ++k) {
-        // Compiled code in a source submission is a reason to look (a plugin built elsewhere?).
+        // Compiled code or a blob of data in a source submission: a plugin built elsewhere?
         std::string notes = grades[k].error;
-        if (!grades[k].compiledCode.empty()) {
-            notes += (notes.empty() ? "" : "; ") + std::string("brought compiled code (left out of its build):");
-            for (auto const& file : grades[k].compiledCode) notes += " " + file;
-        }
+        for (auto const& file : grades[k].lookAt) notes += (notes.empty() ? "look at: " : "; look at: ") + file;
         html << "<tr><td>" << escapeHtml(students[k].name, 200) << "</td><td>" << grades[k].score() << " / "
              << grades[k].maxScore() << "</td><td><a href=\"students/" << escapeHtml(students[k].outName)
              << "/report.html\">report</a></td><td>" << escapeHtml(notes, 1000) << "</td></tr>\n";

@@ -396,7 +396,8 @@ Grade grade(GradeOptions const& options, Course& course, OutputFolder const& out
         Scratch::CopyReport copied = scratch.copySubmission(options.submission, "submission");
         std::string log;
         for (auto const& s : copied.skipped) log += "left out of the build: " + s + "\n";
-        g.compiledCode = copied.compiled;
+        g.lookAt = copied.lookAt;
+        for (auto const& file : copied.lookAt) log += "to look at: " + file + "\n";
         scratch.handOver();
         Launch configure;
         configure.argv = {"cmake", "-S", "/scratch/submission", "-B", "/scratch/build", "-DBXDFLAB_ROOT=/course",

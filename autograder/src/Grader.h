@@ -44,7 +44,7 @@ struct Grade {
     std::vector<CheckResult> checks;
     std::string buildLog;
     int buildWarnings = 0;
-    std::vector<std::string> compiledCode;  ///< files of compiled code it brought (left out of its build)
+    std::vector<std::string> lookAt;  ///< its files an instructor should look at, and why (compiled code, embedded data)
     bool built = false;              ///< CMake configured and built at least part of it
     std::string confinement;         ///< how student code was confined, for the reports
     std::string error;               ///< why grading stopped, when it did (the student gets 0 and this reason)

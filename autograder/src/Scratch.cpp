@@ -9,6 +9,8 @@
 #include <filesystem>
 #include <stdexcept>
 
+#include "SubmissionContents.h"
+
 namespace fs = std::filesystem;
 
 namespace rixgrade {
@@ -46,20 +48,6 @@ bool copyRegular(std::string const& from, std::string const& to, unsigned long l
     close(in);
     close(out);
     return ok;
-}
-
-/// What kind of compiled code a file holds, by its first bytes ("" for anything else).
-/// A submission is built from its sources: a library or object file brought along could
-/// be copied over what the build makes (a classmate's plugin, say), so none is copied.
-std::string compiledCode(std::string const& path) {
-    int in = open(path.c_str(), O_RDONLY | O_NOFOLLOW | O_CLOEXEC | O_NONBLOCK);
-    if (in < 0) return "";
-    char head[8] = {};
-    ssize_t got = read(in, head, sizeof head);
-    close(in);
-    if (got >= 4 && std::memcmp(head, "\x7f" "ELF", 4) == 0) return "compiled code (an ELF library, program or object file)";
-    if (got >= 8 && std::memcmp(head, "!<arch>\n", 8) == 0) return "compiled code (a static library)";
-    return "";
 }
 
 }  // namespace
@@ -126,8 +114,9 @@ Scratch::CopyReport Scratch::copySubmission(std::string const& source, std::stri
                                          std::to_string(kMaxFiles) + " files)");
             } else if (std::string code = compiledCode(it->path().string()); !code.empty()) {
                 report.skipped.push_back(shown + " (" + code + ": submissions are built from their sources)");
-                report.compiled.push_back(shown);
+                report.lookAt.push_back(shown + " (" + code + ", left out of its build)");
             } else if (copyRegular(it->path().string(), target, size)) {
+                if (std::string data = embeddedData(target); !data.empty()) report.lookAt.push_back(shown + " (" + data + ")");
                 report.bytes += size;
                 ++report.files;
             }

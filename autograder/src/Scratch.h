@@ -24,7 +24,7 @@ public:
 
     struct CopyReport {
         std::vector<std::string> skipped;   ///< what was left out, and why
-        std::vector<std::string> compiled;  ///< of those, the files of compiled code (for the instructor)
+        std::vector<std::string> lookAt;    ///< files for the instructor to look at (compiled code, embedded data), and why
         unsigned long long bytes = 0;
         int files = 0;
     };

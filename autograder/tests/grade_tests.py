@@ -8,6 +8,7 @@ KIND is variant, hostile, attack, solutions, starter, repeat or class. Prints
 what it checked; exits 1 with lines starting PROBLEM when something is wrong.
 """
 import argparse
+import base64
 import csv
 import hashlib
 import io
@@ -372,6 +373,11 @@ def test_class_attack(ctx, name, work, env):
                                           "${CMAKE_SOURCE_DIR}/lib/libdiffuse.so $<TARGET_FILE:diffuse>)\n")
         os.makedirs(os.path.join(eve, "lib"))
         shutil.copy(os.path.join(ctx.build, "plugins/solutions/diffuse.so"), os.path.join(eve, "lib/libdiffuse.so"))
+        # frank carries the same plugin as base64 text in a header (to write out and load at run time).
+        frank = make_submission(ctx, os.path.join(klass, "frank"), solved=False)
+        encoded = base64.encodebytes(open(os.path.join(ctx.build, "plugins/solutions/diffuse.so"), "rb").read()).decode()
+        with open(os.path.join(frank, "ch06/diffuse/Payload.h"), "w") as f:
+            f.write("static const char* kPayload =\n" + "".join(f'"{line}"\n' for line in encoded.split()) + ";\n")
     else:
         names = ["gradebook.csv", "a,b", 'quote"name', '=HYPERLINK("http://x")', "new\nline", "+1", "@sum", "ok"]
         for n in names:
@@ -401,8 +407,12 @@ def test_class_attack(ctx, name, work, env):
         expect(flagged, "the similarity report does not flag carol's copy of alice's code")
         expect("carol" in open(os.path.join(out, "report.html")).read(), "the class report does not show the copy")
         expect(score("eve") <= 1, f"eve earned {score('eve')} with a plugin built elsewhere")
-        expect("brought compiled code (left out of its build): lib/libdiffuse.so" in
-               open(os.path.join(out, "report.html")).read(), "the class report does not say eve brought compiled code")
+        report_text = open(os.path.join(out, "report.html")).read()
+        expect("look at: lib/libdiffuse.so (compiled code" in report_text,
+               "the class report does not say eve brought compiled code")
+        expect("look at: ch06/diffuse/Payload.h (" in report_text and "characters of base64 or hex text" in report_text,
+               "the class report does not point at frank's plugin carried as base64 text")
+        expect(report_text.count("look at:") == 2, "the class report points at files of honest submissions")
     else:
         for n in ("gradebook.csv", "a,b", 'quote"name', "'+1", "'@sum", "ok"):
             expect(n in by_name, f"no gradebook row for {n!r}")
