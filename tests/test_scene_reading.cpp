@@ -315,6 +315,24 @@ TEST_CASE("a stand-in whose textured colour cannot be loaded keeps the original'
     CHECK(red == Approx(0.09f).epsilon(0.1));       // 0.18 x 0.5 under a white sky of radiance 1
 }
 
+TEST_CASE("a stand-in keeps the gain on a textured colour: PxrSurface's diffuseGain scales its connected diffuseColor",
+          "[rib][plugins]") {
+    auto centre = [](float gain) {
+        std::string rib = "Format 8 8 1\nProjection \"perspective\" \"fov\" [30]\nWorldBegin\nLight \"PxrDomeLight\" \"sky\"\n"
+                          "Translate 0 0 5\nPattern \"PxrMix\" \"tex\" \"color color1\" [1 0.2 0.2] \"float mix\" [0]\n"
+                          "Bxdf \"PxrSurface\" \"s\" \"reference color diffuseColor\" [\"tex:resultRGB\"] \"float diffuseGain\" [" +
+                          std::to_string(gain) + "]\nSphere 1 -1 1 360\nWorldEnd\n";
+        RenderSettings settings;
+        settings.spp = 16;
+        auto r = test::renderRib(rib, settings);
+        return Vec3(r.channel(4, 4, 0), r.channel(4, 4, 1), r.channel(4, 4, 2));
+    };
+    Vec3 full = centre(1.0f), half = centre(0.5f);
+    CHECK(full.x > 4.0f * full.y);  // still the texture's red
+    CHECK(half.x == Approx(0.5f * full.x).epsilon(1e-4));
+    CHECK(half.y == Approx(0.5f * full.y).epsilon(1e-4));
+}
+
 TEST_CASE("primvars reach plugins (GetPrimVar): constant, per-face, per-vertex and per-corner values", "[rib][primvars]") {
     std::string const head = "Format 16 16 1\nProjection \"orthographic\"\nScreenWindow -1 1 -1 1\n"
                              "Integrator \"PxrDefault\" \"d\"\nWorldBegin\nTranslate 0 0 5\n";

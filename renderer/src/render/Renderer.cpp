@@ -242,7 +242,7 @@ Renderer::Renderer(Scene& scene, RenderSettings settings, Diagnostics& diagnosti
     std::vector<MaterialDesc> used;
     for (MaterialDesc const& material : scene.materials) {
         std::optional<StandIn> standIn;
-        if (!r.loader.has(material.plugin)) standIn = standInFor(material);
+        if (!r.loader.has(material.plugin)) standIn = standInFor(material, scene.patterns);
         if (standIn && standInsWarned.insert(material.plugin).second) {
             diagnostics.warn(material.where, "Bxdf \"" + material.plugin + "\" is one of RenderMan's materials and no " +
                                                  material.plugin + ".so is on the plugin search path: rendered as " +

@@ -59,9 +59,38 @@ bool carryConnection(MaterialDesc const& material, char const* from, MaterialDes
 
 float luminance(Vec3 const& c) { return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z; }
 
+/// Where the stand-in's `to` is connected, puts a gain between it and its pattern:
+/// a PxrMix of the pattern's colour toward black, (1 - gain) * colour, added to the
+/// scene's patterns. The stand-in has no gain of its own, and a textured diffuse
+/// colour times diffuseGain must stay both.
+void applyGain(MaterialDesc& standIn, std::string const& to, float gain, std::vector<PatternDesc>& patterns) {
+    auto connected = standIn.connections.find(to);
+    if (connected == standIn.connections.end() || gain == 1.0f) return;
+    PatternDesc mix;
+    mix.plugin = "PxrMix";
+    mix.handle = standIn.handle + ":" + to + " gain";
+    mix.where = standIn.where;
+    for (Param const& p : standIn.params.all())
+        if (p.name() == to) {
+            Param input = p;
+            input.decl.name = "color1";
+            for (float& c : input.fallback) c /= gain == 0.0f ? 1.0f : gain;  // the colour before the gain
+            mix.params.add(input);
+        }
+    mix.params.add(colorParam("color2", Vec3(0.0f)));
+    mix.params.add(floatParam("mix", 1.0f - gain));
+    Param noClamp = floatParam("clampMix", 0.0f);  // a gain above 1 brightens
+    noClamp.decl.type = ParamType::Int;
+    noClamp.ints = {0};
+    mix.params.add(noClamp);
+    mix.connections["color1"] = connected->second;
+    patterns.push_back(std::move(mix));
+    connected->second = Connection{static_cast<int>(patterns.size()) - 1, "resultRGB", standIn.where};
+}
+
 }  // namespace
 
-std::optional<StandIn> standInFor(MaterialDesc const& material) {
+std::optional<StandIn> standInFor(MaterialDesc const& material, std::vector<PatternDesc>& patterns) {
     std::string const& name = material.plugin;
     if (!isRenderMansOwn(name)) return std::nullopt;
     ParamList const& in = material.params;
@@ -73,9 +102,12 @@ std::optional<StandIn> standInFor(MaterialDesc const& material) {
 
     if (name == "PxrSurface" || name == "PxrLayerSurface") {
         // Diffuse colour times gain; the artistic specular's face colour as a dielectric's reflectance.
-        Vec3 diffuse = colorOf(in, {"diffuseColor"}).value_or(Vec3(0.18f)) * floatOf(in, "diffuseGain").value_or(1.0f);
+        float const gain = floatOf(in, "diffuseGain").value_or(1.0f);
+        Vec3 diffuse = colorOf(in, {"diffuseColor"}).value_or(Vec3(0.18f)) * gain;
         Vec3 face = colorOf(in, {"specularFaceColor"}).value_or(Vec3(0.0f));
-        if (!carryConnection(material, "diffuseColor", s.material, "baseColor", diffuse))
+        if (carryConnection(material, "diffuseColor", s.material, "baseColor", diffuse))
+            applyGain(s.material, "baseColor", gain, patterns);
+        else
             out.add(colorParam("baseColor", diffuse));
         out.add(floatParam("specular", std::clamp(luminance(face) / 0.08f, 0.0f, 1.0f)));
         out.add(floatParam("roughness", std::sqrt(std::clamp(floatOf(in, "specularRoughness").value_or(0.2f), 0.0f, 1.0f))));

@@ -6,6 +6,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "scene/Scene.h"
 
@@ -17,7 +18,8 @@ struct StandIn {
 };
 
 /// The stand-in for `material`, or nothing when its plugin is not one of
-/// RenderMan's (then a missing plugin stays an error).
-std::optional<StandIn> standInFor(MaterialDesc const& material);
+/// RenderMan's (then a missing plugin stays an error). A stand-in may add
+/// patterns of its own to `patterns` (the scene's): a gain on a textured colour.
+std::optional<StandIn> standInFor(MaterialDesc const& material, std::vector<PatternDesc>& patterns);
 
 }  // namespace bxdflab
