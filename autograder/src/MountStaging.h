@@ -28,7 +28,8 @@ public:
 
     /// In the forked child, as root, before it drops to nobody: the namespace, the
     /// tmpfs and the binds. Makes system calls only (a multi-threaded parent's child
-    /// may not allocate). True when everything was mounted, or nothing was staged.
+    /// may not allocate). True when everything was mounted; false leaves the real
+    /// paths to be bound (nothing of the child's view is hidden by a partial attempt).
     bool mountAll() const noexcept;
 
 private:

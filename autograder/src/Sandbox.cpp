@@ -103,13 +103,15 @@ Child::Child(SandboxLayout const& layout, Launch const& launch) : m_limits(launc
     // Everything that allocates happens before fork: a multi-threaded parent's
     // child may only make system calls until it execs.
     std::vector<std::string> args;
+    std::vector<size_t> sources;  // where in args the folders bubblewrap binds are
     if (sandboxed) {
         args = {"bwrap",         "--unshare-all",  "--unshare-user", "--disable-userns", "--die-with-parent",
                 "--new-session", "--cap-drop",     "ALL",            "--uid",            std::to_string(kNobody),
                 "--gid",         std::to_string(kNobody), "--hostname", "sandbox"};
         addSystem(args);
         auto bind = [&](char const* how, std::string const& real, std::string const& inside) {
-            args.insert(args.end(), {how, dropToNobody ? m_staging.stage(real) : real, inside});
+            sources.push_back(args.size() + 1);
+            args.insert(args.end(), {how, real, inside});
         };
         bind("--bind", layout.scratch, kScratch);
         for (auto const& [real, under] : layout.courseMounts) bind("--ro-bind", real, std::string(kCourse) + "/" + under);
@@ -172,9 +174,18 @@ Child::Child(SandboxLayout const& layout, Launch const& launch) : m_limits(launc
 
     std::vector<std::string> envStrings;
     for (auto const& [key, value] : env) envStrings.push_back(key + "=" + value);
-    std::vector<char*> argv, envp;
+    // Running as nobody, bubblewrap binds the staged paths; where the child cannot
+    // stage them (no CAP_SYS_ADMIN in a container), it binds the real ones.
+    std::vector<std::string> stagedArgs;
+    if (dropToNobody && sandboxed) {
+        stagedArgs = args;
+        for (size_t at : sources) stagedArgs[at] = m_staging.stage(args[at]);
+    }
+    std::vector<char*> argv, stagedArgv, envp;
     for (auto& a : args) argv.push_back(a.data());
     argv.push_back(nullptr);
+    for (auto& a : stagedArgs) stagedArgv.push_back(a.data());
+    stagedArgv.push_back(nullptr);
     for (auto& e : envStrings) envp.push_back(e.data());
     envp.push_back(nullptr);
     std::string program = sandboxed ? "/usr/bin/bwrap" : args[0];
@@ -212,10 +223,10 @@ Child::Child(SandboxLayout const& layout, Launch const& launch) : m_limits(launc
         if (devnull >= 0) dup2(devnull, STDIN_FILENO);
         syscall(SYS_close_range, highest + 1, ~0u, 0);
         setpgid(0, 0);
-        if (!m_staging.mountAll()) _exit(125);
+        char* const* chosen = !stagedArgs.empty() && m_staging.mountAll() ? stagedArgv.data() : argv.data();
         if (dropToNobody && (setgroups(0, nullptr) != 0 || setgid(kNobody) != 0 || setuid(kNobody) != 0)) _exit(125);
         if (!sandboxed && chdir(workdir.c_str()) != 0) _exit(126);
-        execve(program.c_str(), argv.data(), envp.data());
+        execve(program.c_str(), chosen, envp.data());
         _exit(127);
     }
     setpgid(m_pid, m_pid);
@@ -409,6 +420,9 @@ bool sandboxAvailable(SandboxLayout layout, std::string& why) {
     if (f.status.ok()) return true;
     why = "bubblewrap (/usr/bin/bwrap) could not start a sandbox: " + f.status.describe(launch.limits) +
           (f.err.empty() ? "" : ": " + f.err.substr(0, 300));
+    if (geteuid() == 0 && f.err.find("Permission denied") != std::string::npos)
+        why += "\n  Student code runs as the user nobody, who cannot enter a folder above that path (and this "
+               "machine does not let rixgrade remount it): move the course or TMPDIR where every user may enter.";
     return false;
 }
 

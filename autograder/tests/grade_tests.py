@@ -589,6 +589,25 @@ def test_private_folders(ctx):
     else:
         print("not root: the sandboxes run as this user, who owns the private folder (nobody is not involved)")
         expect(status == 0, f"rixgrade --unsafe-no-sandbox exited with {status}:\n{output[-2000:]}")
+    if os.geteuid() == 0 and shutil.which("setpriv"):
+        # Root without CAP_SYS_ADMIN (a container) cannot remount: grading binds the real folders
+        # where nobody can reach them, and says which folder stops it where nobody cannot.
+        no_admin = ["setpriv", "--inh-caps=-sys_admin", "--bounding-set=-sys_admin", ctx.rixgrade]
+        for label, environment in (("open", None), ("private", env)):
+            folder = os.path.join(ctx.out, "private-tmp-noadmin-" + label)
+            shutil.rmtree(folder, ignore_errors=True)
+            run = subprocess.run(no_admin + ["--plugins", solutions, "--only", "diffuse", "--out", folder,
+                                             "--rubric", ctx.rubric("private-tmp-noadmin")],
+                                 stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, env=environment, timeout=900)
+            if label == "open" and nobody_can_enter(ctx.root) and nobody_can_enter(ctx.build):
+                expect(run.returncode == 0 and "total 14 / 14" in run.stdout,
+                       f"without CAP_SYS_ADMIN the solution is not graded in full ({run.returncode}):\n{run.stdout[-2000:]}")
+            elif label == "open":  # the course itself lies below a closed folder
+                expect(run.returncode == 1 and "nobody" in run.stdout,
+                       f"without CAP_SYS_ADMIN a course nobody can reach is not refused ({run.returncode}):\n{run.stdout[-2000:]}")
+            else:
+                expect(run.returncode == 1 and private in run.stdout and "nobody" in run.stdout,
+                       f"without CAP_SYS_ADMIN a private TMPDIR is not refused by name ({run.returncode}):\n{run.stdout[-2000:]}")
     shutil.rmtree(private, ignore_errors=True)
 
 
