@@ -72,9 +72,8 @@ void applyGain(MaterialDesc& standIn, std::string const& to, float gain, std::ve
     mix.where = standIn.where;
     for (Param const& p : standIn.params.all())
         if (p.name() == to) {
-            Param input = p;
+            Param input = p;  // the texture's colour, with its fallback: the untextured colour
             input.decl.name = "color1";
-            for (float& c : input.fallback) c /= gain == 0.0f ? 1.0f : gain;  // the colour before the gain
             mix.params.add(input);
         }
     mix.params.add(colorParam("color2", Vec3(0.0f)));
@@ -103,12 +102,12 @@ std::optional<StandIn> standInFor(MaterialDesc const& material, std::vector<Patt
     if (name == "PxrSurface" || name == "PxrLayerSurface") {
         // Diffuse colour times gain; the artistic specular's face colour as a dielectric's reflectance.
         float const gain = floatOf(in, "diffuseGain").value_or(1.0f);
-        Vec3 diffuse = colorOf(in, {"diffuseColor"}).value_or(Vec3(0.18f)) * gain;
+        Vec3 const colour = colorOf(in, {"diffuseColor"}).value_or(Vec3(0.18f));
         Vec3 face = colorOf(in, {"specularFaceColor"}).value_or(Vec3(0.0f));
-        if (carryConnection(material, "diffuseColor", s.material, "baseColor", diffuse))
-            applyGain(s.material, "baseColor", gain, patterns);
+        if (carryConnection(material, "diffuseColor", s.material, "baseColor", colour))
+            applyGain(s.material, "baseColor", gain, patterns);  // the gain, on the texture or its fallback
         else
-            out.add(colorParam("baseColor", diffuse));
+            out.add(colorParam("baseColor", colour * gain));
         out.add(floatParam("specular", std::clamp(luminance(face) / 0.08f, 0.0f, 1.0f)));
         out.add(floatParam("roughness", std::sqrt(std::clamp(floatOf(in, "specularRoughness").value_or(0.2f), 0.0f, 1.0f))));
         if (auto coat = colorOf(in, {"clearcoatFaceColor"})) out.add(floatParam("clearcoat", std::min(1.0f, luminance(*coat) / 0.04f)));
