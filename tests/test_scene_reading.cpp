@@ -281,9 +281,7 @@ TEST_CASE("RenderMan's own materials and integrators that are not here get a sta
                       "WorldBegin\nLight \"PxrDomeLight\" \"sky\"\nTranslate 0 0 5\n"
                       "Bxdf \"PxrSurface\" \"s\" \"color diffuseColor\" [0.8 0.2 0.1] \"float diffuseGain\" [0.5]\n"
                       "Sphere 1 -1 1 360\nBxdf \"PxrSurface\" \"t\"\nSphere 0.5 -0.5 0.5 360\nWorldEnd\n";
-    RenderSettings settings;
-    settings.spp = 4;
-    auto r = test::renderRib(rib, settings);
+    auto r = test::renderRib(rib, test::withSpp(4));
     int surfaceWarnings = 0, integratorWarnings = 0;
     for (auto const& m : r.messages) {
         surfaceWarnings += m.text.find("\"PxrSurface\" is one of RenderMan's materials") != std::string::npos;
@@ -306,9 +304,7 @@ TEST_CASE("a stand-in whose textured colour cannot be loaded keeps the original'
                       "Translate 0 0 5\nPattern \"NoSuchPattern\" \"tex\"\n"
                       "Bxdf \"PxrSurface\" \"s\" \"reference color diffuseColor\" [\"tex:resultRGB\"] \"float diffuseGain\" [0.5]\n"
                       "Sphere 1 -1 1 360\nWorldEnd\n";
-    RenderSettings settings;
-    settings.spp = 16;
-    auto r = test::renderRib(rib, settings);
+    auto r = test::renderRib(rib, test::withSpp(16));
     CHECK(r.anyMessageContains("Pattern \"tex\" cannot be used"));
     float red = r.channel(4, 4, 0), blue = r.channel(4, 4, 2);
     CHECK(red == Approx(blue).epsilon(0.02));       // grey, not blue
@@ -322,9 +318,7 @@ TEST_CASE("a stand-in keeps the gain on a textured colour: PxrSurface's diffuseG
                           "Translate 0 0 5\nPattern \"PxrMix\" \"tex\" \"color color1\" [1 0.2 0.2] \"float mix\" [0]\n"
                           "Bxdf \"PxrSurface\" \"s\" \"reference color diffuseColor\" [\"tex:resultRGB\"] \"float diffuseGain\" [" +
                           std::to_string(gain) + "]\nSphere 1 -1 1 360\nWorldEnd\n";
-        RenderSettings settings;
-        settings.spp = 16;
-        auto r = test::renderRib(rib, settings);
+        auto r = test::renderRib(rib, test::withSpp(16));
         return Vec3(r.channel(4, 4, 0), r.channel(4, 4, 1), r.channel(4, 4, 2));
     };
     Vec3 full = centre(1.0f), half = centre(0.5f);

@@ -21,6 +21,12 @@ Scene parseRib(std::string const& rib, Diagnostics& diagnostics, std::string con
     return scene;
 }
 
+RenderSettings withSpp(int spp) {
+    RenderSettings settings;
+    settings.spp = spp;
+    return settings;
+}
+
 RenderOutcome renderRib(std::string const& rib, RenderSettings settings, std::string const& name) {
     Diagnostics diagnostics(false);
     Scene scene = parseRib(rib, diagnostics, name);

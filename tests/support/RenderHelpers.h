@@ -28,6 +28,9 @@ struct RenderOutcome {
 /// is the file name used in messages.
 RenderOutcome renderRib(std::string const& rib, RenderSettings settings = {}, std::string const& name = "test.rib");
 
+/// Default settings but for the samples per pixel.
+RenderSettings withSpp(int spp);
+
 /// Parses RIB text into a scene (throws like the renderer does).
 Scene parseRib(std::string const& rib, Diagnostics& diagnostics, std::string const& name = "test.rib",
                LoadOptions options = {});
