@@ -88,6 +88,18 @@ TEST_CASE("classic light shaders: pointlight, spotlight and distantlight light w
     auto off = test::renderRib(
         head + "LightSource \"distantlight\" 1 \"intensity\" [0.7]\nIlluminate 1 0\n" + matte, settings);
     CHECK(test::meanChannel(off, 0, [](int, int) { return true; }) == 0.0);
+    // A distantlight whose "to" is its "from" has no direction: left out with a warning (a lecture
+    // scene has one beside two good lights), the others still light the surface.
+    Diagnostics diagnostics(false);
+    Scene scene = test::parseRib("WorldBegin\nLightSource \"distantlight\" 1 \"to\" [0 0 0]\n"
+                                 "LightSource \"distantlight\" 2 \"intensity\" [0.7]\n",
+                                 diagnostics, "pointless.rib");
+    CHECK(scene.lights.size() == 1u);
+    bool warned = false;
+    for (auto const& entry : diagnostics.entries())
+        warned = warned || entry.text.find("pointless.rib:2:1: LightSource \"distantlight\": \"from\" and \"to\" are the same "
+                                           "point, so the light has no direction; it is left out") != std::string::npos;
+    CHECK(warned);
 }
 
 TEST_CASE("a light given before WorldBegin is placed in camera space", "[lights]") {

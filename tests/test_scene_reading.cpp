@@ -236,6 +236,18 @@ TEST_CASE("free-form shapes: subdivision surface, NURBS patch, curves, points an
         CHECK(hitDistance(holed, Vec3(5.0f, 0.0f, 5.0f), Vec3(-1, 0, 0)) > 5.5f);  // through the hole to the -x face
         CHECK(hitDistance(whole, Vec3(5.0f, 0.0f, 5.0f), Vec3(-1, 0, 0)) < 4.5f);
     }
+    SECTION("a hierarchical mesh gives three counts per tag (integers, floats, strings), as RenderMan for Maya writes it") {
+        std::string const faces = "[4 4 4 4 4 4] [0 1 3 2  2 3 7 6  6 7 5 4  4 5 1 0  1 5 7 3  4 0 2 6] ";
+        std::string const cage = "\"P\" [-1 -1 -1  1 -1 -1  -1 1 -1  1 1 -1  -1 -1 1  1 -1 1  -1 1 1  1 1 1]\n";
+        std::string const plain = "Translate 0 0 5\nSubdivisionMesh \"catmull-clark\" " + faces +
+                                  "[\"interpolateboundary\" \"hole\"] [1 0 1 0] [1 4] [] " + cage;
+        std::string const hierarchical = "Translate 0 0 5\nHierarchicalSubdivisionMesh \"catmull-clark\" " + faces +
+                                         "[\"creasemethod\" \"interpolateboundary\" \"hole\"] [0 0 1  1 0 0  1 0 0] [1 4] [] "
+                                         "[\"chaikin\"] " + cage;
+        for (Vec3 org : {Vec3(0.0f), Vec3(0.6f, 0.0f, 0.0f)})
+            CHECK(hitDistance(hierarchical, org) == Approx(hitDistance(plain, org)).epsilon(1e-6));
+        CHECK(hitDistance(hierarchical, Vec3(5.0f, 0.0f, 5.0f), Vec3(-1, 0, 0)) > 5.5f);  // face 4 is a hole
+    }
     SECTION("a NuPatch of order 2 is its control quad; Pw divides by w") {
         CHECK(hitDistance("NuPatch 2 2 [0 0 1 1] 0 1 2 2 [0 0 1 1] 0 1 \"P\" [-1 -1 5  1 -1 5  -1 1 5  1 1 5]\n") ==
               Approx(5.0f).epsilon(1e-4));

@@ -77,8 +77,10 @@ Vec3 risLightRadiance(std::string const& type, ParamList const& params, SourceLo
 }
 
 std::unique_ptr<Light> makeClassicLight(std::string const& shader, ParamList const& params, Mat4 const& lightToWorld,
-                                        SourceLocation const& where, Vec3& ambient, bool& guessed) {
+                                        SourceLocation const& where, Vec3& ambient, bool& guessed,
+                                        std::string& leftOut) {
     guessed = false;
+    leftOut.clear();
     float intensity = params.getFloat("intensity", 1.0f);
     Vec3 lightColor = params.getColor("lightcolor", Vec3(1.0f));
     if (intensity < 0.0f) throw RibError(where, "LightSource \"" + shader + "\": intensity must not be negative");
@@ -111,7 +113,11 @@ std::unique_ptr<Light> makeClassicLight(std::string const& shader, ParamList con
         light = std::make_unique<PointLight>(worldFrom, worldTo - worldFrom, cone, delta, beam);
     } else {
         Vec3 travel = safeNormalize(worldTo - worldFrom);
-        if (glm::length(travel) == 0.0f) throw RibError(where, "distantlight: \"from\" and \"to\" are the same point");
+        if (glm::length(travel) == 0.0f) {
+            leftOut = "LightSource \"" + shader + "\": \"from\" and \"to\" are the same point, so the light has no " +
+                      "direction; it is left out";
+            return nullptr;
+        }
         Vec3 x, y;
         orthonormalBasis(travel, x, y);
         Mat4 frame(Vec4(x, 0.0f), Vec4(y, 0.0f), Vec4(travel, 0.0f), Vec4(0.0f, 0.0f, 0.0f, 1.0f));

@@ -30,10 +30,14 @@ Vec3 risLightRadiance(std::string const& type, ParamList const& params, SourceLo
 /// colour to `ambient` (the classic surface shaders' Ka term) and makes no
 /// light. Another shader name is placed by its parameters when they say
 /// enough (a cone: a spot; "from": a point; "to": a distant light); else
-/// nullptr. `guessed` tells the caller that it was placed that way.
+/// nullptr. `guessed` tells the caller that it was placed that way. A light
+/// that cannot shine (a distant light whose "from" and "to" coincide, so it
+/// has no direction) is also nullptr, with the reason in `leftOut`: the file
+/// still renders, as it does in RenderMan, where such a light adds nothing.
 /// Intensities are scaled by pi: the classic shaders' diffuse() has no 1/pi,
 /// the physically based Bxdfs do, so this keeps their images as bright.
 std::unique_ptr<Light> makeClassicLight(std::string const& shader, ParamList const& params, Mat4 const& lightToWorld,
-                                        SourceLocation const& where, Vec3& ambient, bool& guessed);
+                                        SourceLocation const& where, Vec3& ambient, bool& guessed,
+                                        std::string& leftOut);
 
 }  // namespace bxdflab

@@ -114,11 +114,17 @@ void SceneBuilder::readSubdivisionMesh(RequestReader& in, bool hierarchical) {
                                     " points)");
         data.indices.push_back(static_cast<unsigned>(v));
     }
-    // Tags: each has two counts in nargs (integers, floats) and takes them in turn.
-    if (nargs.size() < 2 * tags.size()) in.fail(in.where(), "nargs needs two counts per tag");
+    // Tags: each has two counts in nargs (integers, floats), or three in a
+    // hierarchical mesh (integers, floats, strings), and takes them in turn.
+    size_t const countsPerTag = hierarchical ? 3 : 2;
+    if (nargs.size() < countsPerTag * tags.size())
+        in.fail(in.where(), "nargs needs " + std::string(hierarchical ? "three" : "two") + " counts per tag (" +
+                                std::to_string(countsPerTag * tags.size()) + " for " + std::to_string(tags.size()) +
+                                " tags), got " + std::to_string(nargs.size()));
     size_t ints = 0, floats = 0;
     for (size_t t = 0; t < tags.size(); ++t) {
-        size_t ni = static_cast<size_t>(std::max(0, nargs[2 * t])), nf = static_cast<size_t>(std::max(0, nargs[2 * t + 1]));
+        size_t ni = static_cast<size_t>(std::max(0, nargs[countsPerTag * t]));
+        size_t nf = static_cast<size_t>(std::max(0, nargs[countsPerTag * t + 1]));
         if (ints + ni > intargs.size() || floats + nf > floatargs.size())
             in.fail(in.where(), "tag \"" + tags[t] + "\" asks for more arguments than intargs/floatargs hold");
         auto vertex = [&](size_t k) {

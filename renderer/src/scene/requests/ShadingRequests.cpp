@@ -152,7 +152,9 @@ void SceneBuilder::makeLightFrom(std::string const& request, std::string const& 
         params.warnUnused(m_diagnostics, type + " \"" + handle + "\"");
     } else {
         bool guessed = false;
-        light = makeClassicLight(type, params, lightToWorld, where, m_ambient, guessed);
+        std::string leftOut;
+        light = makeClassicLight(type, params, lightToWorld, where, m_ambient, guessed, leftOut);
+        if (!leftOut.empty()) warnOnce("light without direction", where, leftOut);
         if (guessed)
             warnOnce("light shader " + type, where,
                      "LightSource \"" + type + "\" is a shader this renderer does not have; " +
