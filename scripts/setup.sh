@@ -11,7 +11,7 @@ packages=(
   libembree-dev libopenimageio-dev openimageio-tools libglm-dev libtbb-dev
   catch2 libcli11-dev nlohmann-json3-dev python3-matplotlib
   clang libclang-rt-14-dev libseccomp-dev
-  bubblewrap similarity-tester python3 zlib1g-dev gdb fonts-dejavu-core
+  bubblewrap similarity-tester python3 zlib1g-dev libzip-dev gdb fonts-dejavu-core
 )
 
 missing=()

@@ -24,11 +24,11 @@ def main():
     with open(os.path.join(root, "README.md")) as f:
         readme = f.read()
     section = readme[readme.index("## What the renderer supports"):readme.index("## What accuracy costs")]
-    named = set(re.findall(r"`([A-Za-z]+)", section)) | set(re.findall(r"/`?([A-Za-z]+)`", section))
+    named = set(re.findall(r"`([A-Za-z][A-Za-z0-9]*)", section)) | set(re.findall(r"/`?([A-Za-z][A-Za-z0-9]*)`", section))
     bullets = section[section.index("- **RIB**"):section.index("- **Lights**")]
     problems = [f"README.md does not name the request {n}, which the scene builder handles"
                 for n in handled if n not in named]
-    for name in sorted(set(re.findall(r"`([A-Z][A-Za-z]+)", bullets))):
+    for name in sorted(set(re.findall(r"`([A-Z][A-Za-z0-9]+)", bullets))):
         if name not in handled and name not in NOT_IN_TABLE:
             problems.append(f"README.md names {name} as a request, but the scene builder has no such request")
     for p in problems:

@@ -10,6 +10,8 @@
 #include "scene/shapes/Quadrics.h"
 #include "support/RenderHelpers.h"
 
+#include <zip.h>
+
 using namespace bxdflab;
 using bxdflab::test::parseRib;
 
@@ -281,6 +283,97 @@ TEST_CASE("an archive named relative to an absolute search-path folder of anothe
         said = said || m.text.find("the end of its path on the search path (/exporter-machine/project/shot/geometry/geo.rib) "
                                    "found beside the scene") != std::string::npos;
     CHECK(said);
+}
+
+namespace {
+
+/// Writes a zip file holding `members` (name, text), as RenderMan for Maya bundles a scene's geometry.
+void writeZip(std::filesystem::path const& path, std::vector<std::pair<std::string, std::string>> const& members) {
+    std::filesystem::remove(path);
+    int error = 0;
+    zip_t* archive = zip_open(path.string().c_str(), ZIP_CREATE | ZIP_EXCL, &error);
+    REQUIRE(archive != nullptr);
+    for (auto const& [name, text] : members) {
+        zip_source_t* source = zip_source_buffer(archive, text.data(), text.size(), 0);
+        REQUIRE(source != nullptr);
+        REQUIRE(zip_file_add(archive, name.c_str(), source, ZIP_FL_ENC_UTF_8) >= 0);
+    }
+    REQUIRE(zip_close(archive) == 0);  // the buffers are read here, while `members` still holds them
+}
+
+int warningsWith(Diagnostics const& diagnostics, std::string const& text) {
+    int n = 0;
+    for (auto const& entry : diagnostics.entries())
+        n += entry.severity == Diagnostics::Severity::Warning && entry.text.find(text) != std::string::npos;
+    return n;
+}
+
+}  // namespace
+
+TEST_CASE("archives are read out of zip files (\"bundle.zip!member.rib\"), also through delayed-read procedurals",
+          "[rib]") {
+    namespace fs = std::filesystem;
+    fs::path const folder = fs::path(test::outputDir()) / "zip-archives";
+    fs::create_directories(folder / "geo");
+    writeZip(folder / "geo" / "cache.zip",
+             {{"shapes/sphere.rib", "Sphere 1 -1 1 360\n"}, {"shapes/disk.rib", "Disk 0 2 360\n"},
+              {"shapes/broken.rib", "Sphere 1 -1 1 360\nPolygon \"P\" [0 0 0 1 0\n"}});
+    auto load = [&](std::string const& world, Diagnostics& diagnostics, LoadOptions options = {}) {
+        std::ofstream(folder / "scene.rib") << "WorldBegin\n" << world << "WorldEnd\n";
+        return loadScene((folder / "scene.rib").string(), diagnostics, options);
+    };
+    SECTION("ReadArchive, Procedural \"DelayedReadArchive\" and Procedural2 \"DelayedReadArchive2\" read a member") {
+        Diagnostics diagnostics(false);
+        Scene scene = load("ReadArchive \"geo/cache.zip!shapes/sphere.rib\"\n"
+                           "Procedural \"DelayedReadArchive\" [\"geo/cache.zip!shapes/disk.rib\"] [-2 2 -2 2 0 0]\n"
+                           "Procedural2 \"DelayedReadArchive2\" \"SimpleBound\" \"string filename\" "
+                           "[\"geo/cache.zip!shapes/sphere.rib\"] \"float[6] bound\" [-1 1 -1 1 -1 1]\n",
+                           diagnostics);
+        REQUIRE(scene.shapes.size() == 3u);
+        CHECK(dynamic_cast<Sphere const*>(scene.shapes[0].get()) != nullptr);
+        CHECK(dynamic_cast<Sphere const*>(scene.shapes[1].get()) == nullptr);  // the disk
+        CHECK(dynamic_cast<Sphere const*>(scene.shapes[2].get()) != nullptr);
+        CHECK(warningsWith(diagnostics, "") == 0);
+    }
+    SECTION("an error inside a member is located in it") {
+        Diagnostics diagnostics(false);
+        std::string message;
+        try {
+            load("ReadArchive \"geo/cache.zip!shapes/broken.rib\"\n", diagnostics);
+        } catch (RenderError const& e) {
+            message = e.what();
+        }
+        CHECK_THAT(message, Catch::Matchers::Contains("cache.zip!shapes/broken.rib:2:"));
+    }
+    SECTION("a member that is not there is a warning that says what the zip file holds; --strict makes it an error") {
+        Diagnostics diagnostics(false);
+        Scene scene = load("ReadArchive \"geo/cache.zip!shapes/cube.rib\"\nSphere 1 -1 1 360\n", diagnostics);
+        CHECK(scene.shapes.size() == 1u);
+        CHECK(warningsWith(diagnostics, "scene.rib:2:1: archive \"geo/cache.zip!shapes/cube.rib\" not read") == 1);
+        CHECK(warningsWith(diagnostics, "has no member \"shapes/cube.rib\"; it holds \"shapes/sphere.rib\"") == 1);
+        LoadOptions strict;
+        strict.strict = true;
+        Diagnostics strictDiagnostics(false);
+        CHECK_THROWS_WITH(load("ReadArchive \"geo/cache.zip!shapes/cube.rib\"\n", strictDiagnostics, strict),
+                          Catch::Matchers::Contains("has no member"));
+    }
+    SECTION("a file that is not a zip file says so") {
+        std::ofstream(folder / "geo" / "fake.zip") << "Sphere 1 -1 1 360\n";
+        Diagnostics diagnostics(false);
+        load("ReadArchive \"geo/fake.zip!sphere.rib\"\n", diagnostics);
+        CHECK(warningsWith(diagnostics, "as a zip file") == 1);
+    }
+    SECTION("programs and geometry plugins a procedural names are not run: one warning, the rest renders") {
+        Diagnostics diagnostics(false);
+        Scene scene = load("Procedural \"RunProgram\" [\"spiral.py\" \"1 0.2\"] [-5 5 -5 5 -5 5]\n"
+                           "Procedural \"RunProgram\" [\"spiral.py\" \"2 0.4\"] [-5 5 -5 5 -5 5]\n"
+                           "Procedural \"DynamicLoad\" [\"sphere.so\" \"\"] [-1 1 -1 1 -1 1]\nSphere 1 -1 1 360\n",
+                           diagnostics);
+        CHECK(scene.shapes.size() == 1u);
+        CHECK(warningsWith(diagnostics, "Procedural \"RunProgram\" (\"spiral.py\"): this renderer does not run programs") == 1);
+        CHECK(warningsWith(diagnostics, "Procedural \"DynamicLoad\" (\"sphere.so\"): the plugin is not in any folder "
+                                        "searched:\n    " + folder.string()) == 1);
+    }
 }
 
 TEST_CASE("a missing archive or sky image is a warning naming what was tried; --strict makes it an error", "[rib]") {

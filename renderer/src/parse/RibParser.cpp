@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "parse/RibLexer.h"
+#include "parse/ZipMember.h"
 
 namespace bxdflab {
 namespace {
@@ -113,6 +114,12 @@ std::string gunzip(std::string const& compressed, std::string const& path) {
 }  // namespace
 
 std::string readRibFile(std::string const& path) {
+    if (std::optional<ZipMemberName> zipped = splitZipMemberName(path)) {
+        std::string bytes = readZipMember(*zipped, kMaxRibBytes);
+        if (bytes.size() >= 2 && static_cast<unsigned char>(bytes[0]) == 0x1f && static_cast<unsigned char>(bytes[1]) == 0x8b)
+            return gunzip(bytes, path);
+        return bytes;
+    }
     // A folder, a FIFO or a device would make the read misbehave (empty, block
     // forever, never end): only regular files are RIB files.
     struct stat st;

@@ -14,7 +14,8 @@ using RequestHandler = std::function<void(RibRequest const&)>;
 /// Parses all requests of `text` (named `fileName` in messages).
 void parseRib(std::string const& text, std::string const& fileName, RequestHandler const& handler);
 
-/// The bytes of a RIB file (gzip-compressed files are decompressed); throws
+/// The bytes of a RIB file (gzip-compressed files are decompressed; a name
+/// "bundle.zip!member.rib" reads a member of a zip file); throws
 /// RenderError for what cannot be read, or is not a regular file.
 std::string readRibFile(std::string const& path);
 

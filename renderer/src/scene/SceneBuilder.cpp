@@ -3,6 +3,7 @@
 #include <filesystem>
 
 #include "parse/RibParser.h"
+#include "parse/ZipMember.h"
 
 namespace bxdflab {
 namespace fs = std::filesystem;
@@ -88,6 +89,8 @@ std::map<std::string, SceneBuilder::Handler> const& SceneBuilder::handlers() {
         {"Curves", &SceneBuilder::curves},
         // Instancing.
         {"ReadArchive", &SceneBuilder::readArchive},
+        {"Procedural", &SceneBuilder::procedural},
+        {"Procedural2", &SceneBuilder::procedural2},
         {"ObjectBegin", &SceneBuilder::objectBegin},
         {"ObjectInstance", &SceneBuilder::objectInstance},
         {"ArchiveBegin", &SceneBuilder::archiveBegin},
@@ -145,7 +148,9 @@ void SceneBuilder::finishInput(std::string const& name) {
 
 std::string SceneBuilder::currentDirectory() const {
     if (m_fileStack.empty()) return ".";
-    fs::path parent = fs::path(m_fileStack.back()).parent_path();
+    // A member of a zip file is beside the zip file.
+    std::optional<ZipMemberName> zipped = splitZipMemberName(m_fileStack.back());
+    fs::path parent = fs::path(zipped ? zipped->zipFile : m_fileStack.back()).parent_path();
     return parent.empty() ? "." : parent.string();
 }
 

@@ -176,6 +176,13 @@ private:
     void curves(RequestReader& in);
     // Instancing: objects and archives (scene/requests/InstanceRequests.cpp).
     void readArchive(RequestReader& in);
+    /// Reads an archive by name: an inline archive, a file (beside the file that
+    /// names it, in the working folder, on the search path) or a zip member.
+    void readArchiveNamed(std::string const& name, SourceLocation const& where);
+    void procedural(RequestReader& in);
+    void procedural2(RequestReader& in);
+    /// The warning for a procedural that is not read (`program`: its first argument, if any).
+    void warnProcedural(std::string const& kind, std::string const& program, SourceLocation const& where);
     void objectBegin(RequestReader& in);
     void objectInstance(RequestReader& in);
     void archiveBegin(RequestReader& in);
@@ -209,6 +216,7 @@ private:
     std::vector<Block> m_blocks;
     std::vector<std::string> m_fileStack;
     std::vector<std::string> m_archiveSearchPath;
+    std::vector<std::string> m_proceduralSearchPath;  // where a DynamicLoad plugin would be looked for
     std::map<std::string, int> m_defaultMaterials;
     std::map<std::string, int> m_patternHandles;  ///< handle -> the latest Pattern of that name
     std::map<std::shared_ptr<AreaLightDesc>, int> m_emissiveMaterials;

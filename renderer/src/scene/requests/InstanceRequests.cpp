@@ -1,8 +1,10 @@
 // Instancing: archives read from files (ReadArchive), inline archives
 // (ArchiveBegin) and retained objects (ObjectBegin / ObjectInstance). Inline
 // archives and objects are recorded as requests and replayed where used.
+#include <algorithm>
 #include <filesystem>
 
+#include "parse/ZipMember.h"
 #include "scene/SceneBuilder.h"
 
 namespace bxdflab {
@@ -15,15 +17,36 @@ constexpr long kMaxReplayedRequests = 4'000'000;  // what instancing may expand 
 void SceneBuilder::readArchive(RequestReader& in) {
     std::string name = in.string("archive file name");
     in.params().warnUnused(m_diagnostics, "ReadArchive");
+    readArchiveNamed(name, in.where());
+}
+
+void SceneBuilder::readArchiveNamed(std::string const& name, SourceLocation const& where) {
     auto inlineArchive = m_inlineArchives.find(name);
     if (inlineArchive != m_inlineArchives.end()) {
-        replay("archive \"" + name + "\"", inlineArchive->second, in.where());
+        replay("archive \"" + name + "\"", inlineArchive->second, where);
         return;
     }
+    // "bundle.zip!member.rib": the zip file is looked for like any archive,
+    // then the member is read out of it.
+    std::optional<ZipMemberName> const zipped = splitZipMemberName(name);
+    std::string const fileName = zipped ? zipped->zipFile : name;
+    auto read = [&](fs::path const& found) {
+        if (!zipped) {
+            readFile(found.string());
+            return;
+        }
+        ZipMemberName const member{found.string(), zipped->member};
+        std::string const problem = zipMemberProblem(member);
+        if (!problem.empty()) {
+            missingFile(where, "archive \"" + name + "\" not read: " + problem);
+            return;
+        }
+        readFile(member.zipFile + "!" + member.member);
+    };
     // A relative name is looked for beside the file that names it, in the
     // folder the renderer runs in (as RenderMan does), then on the search path.
     std::vector<fs::path> candidates;
-    fs::path const path(name);
+    fs::path const path(fileName);
     if (path.is_absolute()) {
         candidates.push_back(path);
     } else {
@@ -40,9 +63,9 @@ void SceneBuilder::readArchive(RequestReader& in) {
         tried += "\n    " + candidate.string();
         std::error_code error;
         if (fs::exists(candidate, error) && !fs::is_regular_file(candidate, error) && !fs::is_directory(candidate, error))
-            in.fail(in.where(), "archive \"" + candidate.string() + "\" is not a regular file (a pipe or a device?)");
+            throw RibError(where, "archive \"" + candidate.string() + "\" is not a regular file (a pipe or a device?)");
         if (exists(candidate)) {
-            readFile(candidate.string());
+            read(candidate);
             return;
         }
     }
@@ -66,10 +89,10 @@ void SceneBuilder::readArchive(RequestReader& in) {
                 fs::path candidate = root / tail;
                 if (!exists(candidate)) continue;
                 std::string const whose = absolute == path ? "its path" : "its path on the search path (" + absolute.string() + ")";
-                warnOnce("archive by tail", in.where(),
+                warnOnce("archive by tail", where,
                          "archive \"" + name + "\" not found; reading \"" + candidate.string() + "\", the end of " + whose +
                              " found beside the scene (and so for the other absolute paths)");
-                readFile(candidate.string());
+                read(candidate);
                 return;
             }
         }
@@ -77,7 +100,84 @@ void SceneBuilder::readArchive(RequestReader& in) {
     if (!absolutes.empty())
         tried += "\n    (and every end of the absolute paths under " + roots[0].string() + " and " + roots[1].string() + ")";
     // RenderMan renders on without a missing archive; so does this renderer, unless --strict.
-    missingFile(in.where(), "archive \"" + name + "\" not found; tried:" + tried);
+    missingFile(where, "archive \"" + name + "\" not found; tried:" + tried);
+}
+
+void SceneBuilder::procedural(RequestReader& in) {
+    std::string kind = in.string("procedural type");
+    std::vector<std::string> arguments = in.stringArray("procedural arguments");
+    in.numberArray("bound");
+    in.finish();
+    // A delayed archive is read when a ray first reaches its bound; reading it
+    // now gives the same picture.
+    if (kind == "DelayedReadArchive" && !arguments.empty()) {
+        readArchiveNamed(arguments.front(), in.where());
+        return;
+    }
+    warnProcedural(kind, arguments.empty() ? "" : arguments.front(), in.where());
+}
+
+void SceneBuilder::procedural2(RequestReader& in) {
+    // RenderMan 21+: Procedural2 "DelayedReadArchive2" "SimpleBound" "string filename" [...] "float[6] bound" [...]
+    std::string kind = in.string("procedural type");
+    in.string("bound function");
+    ParamList params = in.params();
+    if (kind == "DelayedReadArchive2") {
+        std::string file = params.getString("filename", "");
+        params.ignore("bound");
+        params.warnUnused(m_diagnostics, "Procedural2 \"DelayedReadArchive2\"");
+        if (file.empty()) {
+            warnOnce("procedural without file", in.where(), "Procedural2 \"DelayedReadArchive2\" names no \"filename\"; skipped");
+            return;
+        }
+        readArchiveNamed(file, in.where());
+        return;
+    }
+    std::string const program = kind == "DynamicLoad" ? params.getString("dsoname", "") : "";
+    for (auto const& p : params.all()) p.used = true;  // the plugin's own parameters
+    warnProcedural(kind, program, in.where());
+}
+
+void SceneBuilder::warnProcedural(std::string const& kind, std::string const& program, SourceLocation const& where) {
+    if (kind == "RunProgram") {
+        warnOnce("procedural " + kind, where,
+                 "Procedural \"RunProgram\"" + (program.empty() ? "" : " (\"" + program + "\")") +
+                     ": this renderer does not run programs named by a scene; its geometry is skipped");
+        return;
+    }
+    if (kind != "DynamicLoad" || program.empty()) {
+        warnOnce("procedural " + kind, where, "Procedural \"" + kind + "\" is not a procedural this renderer knows; skipped");
+        return;
+    }
+    // A procedural plugin speaks RenderMan's C interface (Ri calls), which this
+    // renderer does not offer: it is never loaded. Saying where it would have
+    // been looked for still tells the reader whether the file is even there.
+    std::vector<fs::path> folders;
+    for (fs::path const& folder : {fs::path(currentDirectory()), fs::path(".")})
+        if (std::find(folders.begin(), folders.end(), folder) == folders.end()) folders.push_back(folder);
+    for (std::string const& folder : m_proceduralSearchPath)
+        if (std::find(folders.begin(), folders.end(), fs::path(folder)) == folders.end()) folders.push_back(folder);
+    fs::path found;
+    std::string searched;
+    for (fs::path const& folder : folders) {
+        fs::path const candidate = fs::path(program).is_absolute() ? fs::path(program) : folder / program;
+        searched += "\n    " + candidate.parent_path().string();
+        std::error_code error;
+        if (fs::is_regular_file(candidate, error)) {
+            found = candidate;
+            break;
+        }
+    }
+    std::string const name = "Procedural \"DynamicLoad\" (\"" + program + "\")";
+    if (found.empty())
+        warnOnce("procedural " + kind, where,
+                 name + ": the plugin is not in any folder searched:" + searched +
+                     "\n  and a RenderMan procedural plugin is not loaded here in any case; its geometry is skipped");
+    else
+        warnOnce("procedural " + kind, where,
+                 name + ": " + found.string() +
+                     " is a RenderMan procedural plugin (Ri C interface), which this renderer does not load; its "
+                     "geometry is skipped");
 }
 
 void SceneBuilder::objectBegin(RequestReader& in) {

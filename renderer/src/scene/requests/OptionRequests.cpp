@@ -151,6 +151,7 @@ void SceneBuilder::option(RequestReader& in) {
     update(m_scene.pluginSearchPath, "rixplugin");
     update(m_archiveSearchPath, "archive");
     update(m_scene.textureSearchPath, "texture");
+    update(m_proceduralSearchPath, "procedural");
     for (auto const& p : params.all())
         if (!p.used) warnOnce("searchpath " + p.name(), p.location, "Option \"searchpath\" \"" + p.name() + "\" is not used; skipped");
 }
