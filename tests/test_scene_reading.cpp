@@ -267,6 +267,31 @@ TEST_CASE("free-form shapes: subdivision surface, NURBS patch, curves, points an
     }
 }
 
+TEST_CASE("Points keep a value per particle (\"varying color Cs\"), as a lecture's particle scene gives them", "[rib]") {
+    Diagnostics diagnostics(false);
+    Scene scene = test::parseRib("WorldBegin\nPoints \"P\" [-1 0 5  1 0 5] \"constantwidth\" [0.5] "
+                                 "\"varying color Cs\" [0.2 0.9 0.3  0.8 0.1 0.6] \"uniform float id\" [7]\n",
+                                 diagnostics);
+    REQUIRE(scene.shapes.size() == 1u);
+    CHECK(diagnostics.entries().empty());  // nothing left unused
+    Shape const& points = *scene.shapes[0];
+    Primvar const* Cs = points.primvars.find("Cs");
+    Primvar const* id = points.primvars.find("id");
+    REQUIRE(Cs);
+    REQUIRE(id);
+    RayTracer tracer(scene);
+    for (int i = 0; i < 2; ++i) {
+        HitRecord hit = trace(tracer, Vec3(i == 0 ? -1.0f : 1.0f, 0.0f, 0.0f), Vec3(0, 0, 1));
+        REQUIRE(hit.hit());
+        float color[3], value = 0.0f;
+        points.primvar(*Cs, hit, color);
+        points.primvar(*id, hit, &value);
+        CHECK(color[0] == (i == 0 ? 0.2f : 0.8f));
+        CHECK(color[2] == (i == 0 ? 0.3f : 0.6f));
+        CHECK(value == 7.0f);  // one value: the whole shape's
+    }
+}
+
 TEST_CASE("area lights from geometry: AreaLightSource and PxrMeshLight shapes become lights or glow", "[rib][lights]") {
     Diagnostics diagnostics(false);
     Scene scene = test::parseRib("WorldBegin\nAttributeBegin\n"

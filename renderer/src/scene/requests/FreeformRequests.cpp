@@ -226,7 +226,7 @@ void SceneBuilder::points(RequestReader& in) {
         in.fail(in.where(), "\"width\" needs one value per point (" + std::to_string(P.size()) + "), got " +
                                 std::to_string(widths->size()));
     params.ignore("N");
-    PrimvarSet vars = shapePrimvars(params);
+    PrimvarSet vars = shapePrimvars(params, 0, P.size());  // "varying color Cs": a colour per particle
     params.warnUnused(m_diagnostics, "Points");
     if (P.empty()) return;
     float scale = lengthScale(state().transform);

@@ -48,6 +48,12 @@ SurfaceBasics Points::basics(HitRecord const& hit) const {
     return out;
 }
 
+void Points::primvar(Primvar const& var, HitRecord const& hit, float* out) const {
+    size_t const c = static_cast<size_t>(var.components);
+    size_t const first = var.detail == Primvar::Detail::Uniform && var.values.size() >= (hit.primID + 1) * c ? hit.primID * c : 0;
+    for (size_t k = 0; k < c; ++k) out[k] = var.values[first + k];
+}
+
 SurfaceTangents Points::tangents(HitRecord const&) const {
     return {};  // a particle has no parameterisation: plugins build a frame from N alone
 }

@@ -43,6 +43,8 @@ public:
     SurfaceBasics basics(HitRecord const& hit) const override;
     SurfaceTangents tangents(HitRecord const& hit) const override;
     std::vector<Vec4> const& spheres() const { return m_spheres; }
+    /// A particle's own value (uniform: one per point), else the constant one.
+    void primvar(Primvar const& var, HitRecord const& hit, float* out) const override;
 
 private:
     std::vector<Vec4> m_spheres;  ///< centre and radius, world space

@@ -21,7 +21,7 @@ int primvarComponents(Param const& param) {
     }
 }
 
-PrimvarSet shapePrimvars(ParamList const& params, size_t corners) {
+PrimvarSet shapePrimvars(ParamList const& params, size_t corners, size_t elements) {
     PrimvarSet set;
     for (Param const& p : params.all()) {
         if (isGeometryParameter(p.name())) continue;
@@ -37,6 +37,8 @@ PrimvarSet shapePrimvars(ParamList const& params, size_t corners) {
             v.detail = Primvar::Detail::Constant;
         } else if (corners > 0 && count == corners && (cls == "varying" || cls == "vertex")) {
             v.detail = Primvar::Detail::Varying;
+        } else if (elements > 0 && count == elements && cls != "constant") {
+            v.detail = Primvar::Detail::Uniform;
         } else {
             continue;
         }

@@ -52,8 +52,10 @@ int primvarComponents(Param const& param);
 /// The primvars in a shape's parameter list that are not geometry: those with
 /// one value (constant, or uniform over a shape of one face), and, when
 /// `corners` is not 0, varying or vertex ones with a value per corner (a
-/// quadric's four). Meshes find the rest themselves (MeshBuilders). Marks them used.
-PrimvarSet shapePrimvars(ParamList const& params, size_t corners = 0);
+/// quadric's four). With `elements` not 0, values given once per element
+/// (a particle of Points) are kept as uniform, one per primitive. Meshes find
+/// the rest themselves (MeshBuilders). Marks them used.
+PrimvarSet shapePrimvars(ParamList const& params, size_t corners = 0, size_t elements = 0);
 
 /// The value of `var` at parameters (u, v) of a four-corner shape, or its
 /// constant value: `out` receives var.components floats.
