@@ -35,6 +35,7 @@ set(RIX_SCENE_SOURCES
   scene/shapes/BlobbySurface.cpp
   scene/lights/AreaLights.cpp
   scene/lights/InfiniteLights.cpp
+  scene/lights/DayLight.cpp
   scene/lights/LightFactory.cpp
   scene/lights/PointLights.cpp
   scene/lights/Blackbody.cpp

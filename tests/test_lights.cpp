@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "scene/Camera.h"
+#include "scene/lights/DayLight.h"
 #include "support/RenderHelpers.h"
 
 using namespace bxdflab;
@@ -181,4 +182,74 @@ TEST_CASE("camera rays skip lights out of view, and still see a light that is on
         CHECK(r.channel(15, 8, 0) == Approx(3.0f).epsilon(1e-4));
         CHECK(r.channel(0, 7, 0) == 0.0f);
     }
+}
+
+TEST_CASE("PxrEnvDayLight: the sun and Preetham's sky light a floor as much as they shine on it", "[lights][daylight]") {
+    // A white Lambertian floor (+y up, as the day light's zenith) under an open sky reflects
+    // (E_sun cos(theta_sun) + E_sky) / pi; E_sky integrates the model's radiance over the
+    // hemisphere. Sun and sky are sampled as one light: this checks their mixture's pdf too.
+    Vec3 const sun = glm::normalize(Vec3(0.3f, 0.8f, 0.2f));
+    float const turbidity = 3.0f;
+    double skyIrradiance = 0.0;
+    int const n = 400;
+    for (int i = 0; i < n; ++i)
+        for (int j = 0; j < 4 * n; ++j) {
+            double const theta = 0.5 * kPi * (i + 0.5) / n, phi = 2.0 * kPi * (j + 0.5) / (4 * n);
+            Vec3 const dir(static_cast<float>(std::sin(theta) * std::cos(phi)), static_cast<float>(std::cos(theta)),
+                           static_cast<float>(std::sin(theta) * std::sin(phi)));
+            skyIrradiance += skyRadiance(dir, sun, turbidity).x * std::cos(theta) * std::sin(theta) *
+                             (0.5 * kPi / n) * (2.0 * kPi / (4 * n));
+        }
+    double const expected = (sunIrradiance(sun, turbidity).x * sun.y + skyIrradiance) / kPi;
+    std::string rib = "Format 16 16 1\nProjection \"perspective\" \"fov\" [30]\nIntegrator \"PxrDirectLighting\" \"d\"\n"
+                      "Rotate -90 1 0 0\nTranslate 0 -6 0\n"
+                      "WorldBegin\n  AttributeBegin\n  Attribute \"visibility\" \"int camera\" [0]\n"
+                      "  Light \"PxrEnvDayLight\" \"day\" \"vector sunDirection\" [0.3 0.8 0.2] \"float haziness\" [3]\n"
+                      "  AttributeEnd\n  Bxdf \"diffuse\" \"white\" \"color diffuseColor\" [1 1 1]\n"
+                      "  Polygon \"P\" [-4 -2 -4  4 -2 -4  4 -2 4  -4 -2 4]\nWorldEnd\n";
+    RenderSettings settings;
+    settings.spp = 64;
+    auto r = test::renderRib(rib, settings);
+    double const red = test::meanChannel(r, 0, [](int, int) { return true; });
+    CHECK(red == Approx(expected).epsilon(0.01));
+    // RenderMan's scale: daylight near noon gives an irradiance near 1, the sun most of it.
+    CHECK(expected * kPi > 0.7);
+    CHECK(expected * kPi < 1.5);
+    CHECK(sunIrradiance(sun, turbidity).x * sun.y > 2.0 * skyIrradiance);
+}
+
+TEST_CASE("PxrEnvDayLight: the sun's place by date, time and place; a bluer zenith, a redder low sun", "[lights][daylight]") {
+    // 21 June at 47.6 degrees north, local noon on the zone's own meridian: the sun stands
+    // 90 - 47.6 + 23.44 = 65.8 degrees high, due south (-z); at 8 in the morning it is east (+x).
+    DaylightParams p;
+    p.month = 6;
+    p.day = 21;
+    p.latitude = 47.6f;
+    p.longitude = -120.0f;
+    p.zone = -8.0f;
+    p.hour = 12.0f;
+    Vec3 noon = sunDirectionAt(p);
+    CHECK(glm::degrees(std::asin(noon.y)) == Approx(65.8).margin(0.6));
+    CHECK(noon.z < 0.0f);
+    CHECK(std::fabs(noon.x) < 0.05f);
+    p.hour = 8.0f;
+    Vec3 morning = sunDirectionAt(p);
+    CHECK(morning.x > 0.5f);
+    CHECK(morning.y > 0.0f);
+    p.hour = 23.0f;
+    CHECK(sunDirectionAt(p).y < 0.0f);  // night: the sun is down
+    p.month = 12;  // winter noon: 90 - 47.6 - 23.44 = 19 degrees
+    p.hour = 12.0f;
+    CHECK(glm::degrees(std::asin(sunDirectionAt(p).y)) == Approx(19.0).margin(0.6));
+
+    // Rayleigh scattering: the zenith of a high sun's sky is bluer than its horizon is, and a sun
+    // near the horizon, through more air, is redder (and weaker) than a high one.
+    Vec3 const high = glm::normalize(Vec3(0.0f, 1.0f, -0.5f)), low = glm::normalize(Vec3(0.0f, 0.08f, -1.0f));
+    Vec3 const zenith = skyRadiance(Vec3(0, 1, 0), high, 2.0f), horizon = skyRadiance(glm::normalize(Vec3(1, 0.05f, 0)), high, 2.0f);
+    CHECK(zenith.z / zenith.x > horizon.z / horizon.x);
+    Vec3 const highSun = sunIrradiance(high, 2.0f), lowSun = sunIrradiance(low, 2.0f);
+    CHECK(lowSun.x / lowSun.z > 1.5f * (highSun.x / highSun.z));
+    CHECK(lowSun.y < highSun.y);
+    CHECK(sunIrradiance(Vec3(0.0f, -0.1f, 1.0f), 2.0f) == Vec3(0.0f));
+    CHECK(skyRadiance(Vec3(0.0f, -0.5f, 0.866f), high, 2.0f) == Vec3(0.0f));  // no ground: black below the horizon
 }

@@ -49,33 +49,47 @@ bool DistantLight::intersect(Vec3 const&, Vec3 const& dir, float& distance, RtCo
 }
 
 DomeLight::DomeLight(Mat4 const& lightToWorld, std::string const& imagePath) {
+    setOrientation(lightToWorld);
+    if (imagePath.empty()) return;
+    ImagePixels image = imageFiles().read(imagePath, "PxrDomeLight: cannot read lightColorMap");
+    int const channels = image.channels;
+    std::vector<Vec3> pixels(static_cast<size_t>(image.width) * image.height);
+    for (size_t i = 0; i < pixels.size(); ++i) {
+        float const* p = &image.pixels[i * channels];
+        pixels[i] = channels >= 3 ? Vec3(p[0], p[1], p[2]) : Vec3(p[0]);
+    }
+    setPixels(image.width, image.height, std::move(pixels));
+}
+
+DomeLight::DomeLight(Mat4 const& lightToWorld, int width, int height, std::vector<Vec3> pixels) {
+    setOrientation(lightToWorld);
+    setPixels(width, height, std::move(pixels));
+}
+
+void DomeLight::setOrientation(Mat4 const& lightToWorld) {
     // Only the rotation matters for a light at infinity.
     Mat3 linear(lightToWorld);
     for (int c = 0; c < 3; ++c) linear[c] = safeNormalize(linear[c]);
     m_toWorld = linear;
     m_toLight = glm::transpose(linear);
-    if (imagePath.empty()) return;
+}
 
-    ImagePixels image = imageFiles().read(imagePath, "PxrDomeLight: cannot read lightColorMap");
-    m_width = image.width;
-    m_height = image.height;
-    int channels = image.channels;
-    m_pixels.resize(static_cast<size_t>(m_width) * m_height);
+void DomeLight::setPixels(int width, int height, std::vector<Vec3> pixels) {
+    m_width = width;
+    m_height = height;
+    m_pixels = std::move(pixels);
     std::vector<float> weights(m_pixels.size());
     for (int y = 0; y < m_height; ++y) {
-        float const* row = &image.pixels[static_cast<size_t>(y) * m_width * channels];
         float sinTheta = std::sin(kPi * (y + 0.5f) / m_height);
         for (int x = 0; x < m_width; ++x) {
-            float const* p = row + static_cast<size_t>(x) * channels;
-            Vec3 rgb = channels >= 3 ? Vec3(p[0], p[1], p[2]) : Vec3(p[0]);
+            size_t index = static_cast<size_t>(y) * m_width + x;
+            Vec3& rgb = m_pixels[index];
             // Light cannot be negative or undefined: such pixels (a bad export) become black,
             // for lookups and for the sampling distribution alike, and are counted.
             if (!isFinite(rgb) || rgb.x < 0.0f || rgb.y < 0.0f || rgb.z < 0.0f) {
                 rgb = isFinite(rgb) ? glm::max(rgb, Vec3(0.0f)) : Vec3(0.0f);
                 ++m_repairedPixels;
             }
-            size_t index = static_cast<size_t>(y) * m_width + x;
-            m_pixels[index] = rgb;
             weights[index] = (0.2126f * rgb.x + 0.7152f * rgb.y + 0.0722f * rgb.z) * sinTheta;
         }
     }
@@ -89,11 +103,12 @@ Vec2 DomeLight::toImage(Vec3 const& worldDir) const {
     return Vec2(u - std::floor(u), v);
 }
 
-Vec3 DomeLight::fromImage(Vec2 const& uv) const {
+Vec3 DomeLight::localDirection(Vec2 const& uv) {
     float phi = 2.0f * kPi * (uv.x - 0.5f), theta = kPi * uv.y;
-    Vec3 local(std::sin(theta) * std::sin(phi), std::cos(theta), -std::sin(theta) * std::cos(phi));
-    return m_toWorld * local;
+    return Vec3(std::sin(theta) * std::sin(phi), std::cos(theta), -std::sin(theta) * std::cos(phi));
 }
+
+Vec3 DomeLight::fromImage(Vec2 const& uv) const { return m_toWorld * localDirection(uv); }
 
 RtColorRGB DomeLight::radiance(Vec3 const& dir) const {
     if (m_pixels.empty()) return color;

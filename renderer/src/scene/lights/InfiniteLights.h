@@ -48,6 +48,10 @@ class DomeLight final : public Light {
 public:
     /// Loads the image if `imagePath` is not empty (throws RenderError if it cannot).
     DomeLight(Mat4 const& lightToWorld, std::string const& imagePath);
+    /// A lat-long image made in memory (`pixels`: width * height, rows from the zenith down).
+    DomeLight(Mat4 const& lightToWorld, int width, int height, std::vector<Vec3> pixels);
+    /// The direction, in the light's own space (+y up), of the image point (u, v) in [0,1]^2.
+    static Vec3 localDirection(Vec2 const& uv);
     /// Pixels of the image that were NaN, infinite or negative (taken as black).
     long repairedPixels() const { return m_repairedPixels; }
     const char* kind() const override { return "PxrDomeLight"; }
@@ -58,6 +62,9 @@ public:
     RtColorRGB radiance(Vec3 const& dir) const;
 
 private:
+    void setOrientation(Mat4 const& lightToWorld);
+    /// Takes the pixels (NaN, infinite or negative ones become black) and builds the sampling distribution.
+    void setPixels(int width, int height, std::vector<Vec3> pixels);
     Vec2 toImage(Vec3 const& worldDir) const;
     Vec3 fromImage(Vec2 const& uv) const;
     float directionPdf(Vec3 const& worldDir) const;

@@ -5,6 +5,7 @@
 
 #include "scene/lights/AreaLights.h"
 #include "scene/lights/Blackbody.h"
+#include "scene/lights/DayLight.h"
 #include "scene/lights/InfiniteLights.h"
 #include "scene/lights/PointLights.h"
 
@@ -48,6 +49,8 @@ std::unique_ptr<Light> makeLight(std::string const& type, ParamList const& param
             diagnostics.warn(where, "PxrDomeLight: " + std::to_string(dome->repairedPixels()) + " pixels of lightColorMap \"" +
                                         map + "\" are NaN, infinite or negative; they are taken as black");
         light = std::move(dome);
+    } else if (type == "PxrEnvDayLight") {
+        light = std::make_unique<DayLight>(lightToWorld, DaylightParams::from(params));
     } else {
         return nullptr;
     }
