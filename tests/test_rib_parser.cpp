@@ -376,6 +376,31 @@ TEST_CASE("archives are read out of zip files (\"bundle.zip!member.rib\"), also 
     }
 }
 
+TEST_CASE("a RenderMan for Maya export finds its geometry: ${NAME} from Option \"user\", the project a few folders up",
+          "[rib]") {
+    // <project>/renderman/shot/rib/0001/shot.rib reads renderman/shot/rib/job/cache.zip!... through the
+    // search path "${RMSPROJ}:.", where RMSPROJ is the project folder on the exporter's machine.
+    namespace fs = std::filesystem;
+    fs::path const project = fs::path(test::outputDir()) / "rfm-project";
+    fs::path const frame = project / "renderman" / "shot" / "rib" / "0001";
+    fs::create_directories(frame);
+    fs::create_directories(project / "renderman" / "shot" / "rib" / "job");
+    writeZip(project / "renderman" / "shot" / "rib" / "job" / "cache.zip",
+             {{"renderman/shot/rib/job/ball.rib", "Sphere 1 -1 1 360\n"}});
+    std::ofstream(frame / "shot.rib")
+        << "Option \"user\" \"string RMSPROJ\" [\"/Users/someone/project/\"]\n"
+           "Option \"searchpath\" \"string archive\" [\"${RMSPROJ}:.\"]\nWorldBegin\n"
+           "Procedural2 \"DelayedReadArchive2\" \"SimpleBound\" \"string filename\" "
+           "[\"renderman/shot/rib/job/cache.zip!renderman/shot/rib/job/ball.rib\"] \"float[6] bound\" [-1 1 -1 1 -1 1]\n"
+           "WorldEnd\n";
+    Diagnostics diagnostics(false);
+    Scene scene = loadScene((frame / "shot.rib").string(), diagnostics);
+    CHECK(scene.shapes.size() == 1u);
+    CHECK(warningsWith(diagnostics, "the end of its path on the search path "
+                                    "(/Users/someone/project/renderman/shot/rib/job/cache.zip)") == 1);
+    CHECK(warningsWith(diagnostics, "Option \"user\"") == 0);  // used, not skipped
+}
+
 TEST_CASE("a missing archive or sky image is a warning naming what was tried; --strict makes it an error", "[rib]") {
     LoadOptions strict;
     strict.strict = true;

@@ -312,6 +312,32 @@ TEST_CASE("area lights from geometry: AreaLightSource and PxrMeshLight shapes be
     CHECK(scene.materials[static_cast<size_t>(scene.shapes[1]->material)].plugin == "PxrDiffuse");
 }
 
+TEST_CASE("RenderMan 20's environment lights: an envsphere is the light at infinity, whatever its shader is called",
+          "[rib][lights]") {
+    // RenderMan for Maya 20 compiles each light into a shader named after its node.
+    Diagnostics diagnostics(false);
+    Scene scene = test::parseRib(
+        "WorldBegin\nAttributeBegin\nAreaLightSource \"proj/shaders/PxrStdEnvMapLightShape1_rfm\" \"env\" "
+        "\"float exposure\" [1]\nGeometry \"envsphere\"\nAttributeEnd\n"
+        "AttributeBegin\nAreaLightSource \"proj/shaders/PxrStdEnvDayLightShape1_rfm\" \"day\" \"vector direction\" "
+        "[0 1 0] \"float haziness\" [3]\nGeometry \"envsphere\"\nAttributeEnd\n"
+        "AttributeBegin\nAreaLightSource \"arealight\" \"plain\" \"intensity\" [0.5]\nGeometry \"envsphere\"\nAttributeEnd\n",
+        diagnostics);
+    REQUIRE(scene.lights.size() == 3u);
+    CHECK(std::string(scene.lights[0]->kind()) == "PxrDomeLight");
+    CHECK(scene.lights[0]->color.r == Approx(2.0f));  // 2^exposure
+    CHECK(std::string(scene.lights[1]->kind()) == "PxrEnvDayLight");
+    CHECK(std::string(scene.lights[2]->kind()) == "PxrDomeLight");
+    CHECK(scene.lights[2]->color.r == Approx(0.5f));
+    for (auto const& light : scene.lights) CHECK(light->isInfinite());
+    // The day light's sun is straight up: a ray toward the zenith sees it, one toward the horizon does not.
+    float distance = 0.0f, pdf = 0.0f;
+    RtColorRGB up, side;
+    scene.lights[1]->intersect(Vec3(0.0f), Vec3(0, 1, 0), distance, up, pdf);
+    scene.lights[1]->intersect(Vec3(0.0f), glm::normalize(Vec3(1, 0.2f, 0)), distance, side, pdf);
+    CHECK(up.r > 1000.0f * side.r);
+}
+
 TEST_CASE("RenderMan's own materials and integrators that are not here get a stand-in, with one warning each",
           "[rib][plugins]") {
     std::string rib = "Format 8 8 1\nProjection \"perspective\" \"fov\" [30]\nIntegrator \"PxrVCM\" \"v\" \"int maxPathLength\" [3]\n"

@@ -74,7 +74,8 @@ struct AreaLightDesc {
     ParamList params;
     SourceLocation where;
     Vec3 radiance{1.0f};  ///< what the shapes emit
-    bool environment = false;  ///< PxrStdEnvMapLight: the light at infinity
+    bool environment = false;  ///< PxrStdEnvMapLight or PxrStdEnvDayLight: the light at infinity
+    bool daylight = false;     ///< PxrStdEnvDayLight: a sky and sun rather than an image
 };
 
 /// What a frame's options say: image, camera, display, integrator.

@@ -217,6 +217,7 @@ private:
     std::vector<std::string> m_fileStack;
     std::vector<std::string> m_archiveSearchPath;
     std::vector<std::string> m_proceduralSearchPath;  // where a DynamicLoad plugin would be looked for
+    std::map<std::string, std::string> m_userOptions;  // Option "user" values, for "${NAME}" in search paths
     std::map<std::string, int> m_defaultMaterials;
     std::map<std::string, int> m_patternHandles;  ///< handle -> the latest Pattern of that name
     std::map<std::shared_ptr<AreaLightDesc>, int> m_emissiveMaterials;

@@ -12,6 +12,7 @@ namespace fs = std::filesystem;
 
 namespace {
 constexpr long kMaxReplayedRequests = 4'000'000;  // what instancing may expand to
+constexpr int kArchiveAncestorLevels = 6;            // how far up from the scene an exporter's project may be
 }  // namespace
 
 void SceneBuilder::readArchive(RequestReader& in) {
@@ -78,8 +79,17 @@ void SceneBuilder::readArchiveNamed(std::string const& name, SourceLocation cons
     else
         for (std::string const& folder : m_archiveSearchPath)
             if (fs::path(folder).is_absolute()) absolutes.push_back(fs::path(folder) / path);
+    // Looked for below the including file's folder, the scene's folder and the
+    // scene's ancestors (an exporter's project folder holds its scenes a few
+    // levels down: <project>/renderman/<scene>/rib/<frame>/).
     fs::path scene = fs::path(m_fileStack.front()).parent_path();
     std::vector<fs::path> roots = {fs::path(currentDirectory()), scene.empty() ? fs::path(".") : scene};
+    std::error_code absoluteError;
+    fs::path ancestor = fs::absolute(roots[1], absoluteError).lexically_normal();
+    for (int level = 0; level < kArchiveAncestorLevels && !absoluteError && ancestor.has_relative_path(); ++level) {
+        ancestor = ancestor.parent_path();
+        if (ancestor.has_relative_path()) roots.push_back(ancestor);
+    }
     for (fs::path const& absolute : absolutes) {
         std::vector<fs::path> parts(absolute.begin(), absolute.end());
         for (size_t first = 1; first < parts.size(); ++first) {
@@ -98,7 +108,8 @@ void SceneBuilder::readArchiveNamed(std::string const& name, SourceLocation cons
         }
     }
     if (!absolutes.empty())
-        tried += "\n    (and every end of the absolute paths under " + roots[0].string() + " and " + roots[1].string() + ")";
+        tried += "\n    (and every end of the absolute paths under " + roots[0].string() + ", " + roots[1].string() +
+                 " and the scene's folder's " + std::to_string(roots.size() - 2) + " parents)";
     // RenderMan renders on without a missing archive; so does this renderer, unless --strict.
     missingFile(where, "archive \"" + name + "\" not found; tried:" + tried);
 }

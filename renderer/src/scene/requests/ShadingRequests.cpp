@@ -3,6 +3,8 @@
 // material a surface gets when it names none.
 #include <cmath>
 
+#include <filesystem>
+
 #include "scene/SceneBuilder.h"
 #include "scene/lights/LightFactory.h"
 
@@ -213,9 +215,13 @@ void SceneBuilder::startAreaLight(std::string const& shader, std::string const& 
     area->handle = handle;
     area->params = params;
     area->where = where;
-    if (shader.rfind("Pxr", 0) == 0) {
+    // RenderMan for Maya 20 writes each light as its own shader, named by its node:
+    // "<project>/shaders/PxrStdEnvMapLightShape1_rfm"; the node's name tells the kind.
+    std::string const base = std::filesystem::path(shader).filename().string();
+    if (base.rfind("Pxr", 0) == 0) {
         area->radiance = risLightRadiance(shader, params, where);
-        area->environment = shader == "PxrStdEnvMapLight";
+        area->daylight = base.rfind("PxrStdEnvDayLight", 0) == 0;
+        area->environment = area->daylight || base.rfind("PxrStdEnvMapLight", 0) == 0;
     } else {
         // The classic area light shaders: intensity * lightcolor.
         area->radiance = params.getFloat("intensity", 1.0f) * params.getColor("lightcolor", Vec3(1.0f));
@@ -232,7 +238,15 @@ bool SceneBuilder::shapeAsLight(char const* lightType, Mat4 const& lightToWorld)
     AreaLightDesc const& area = *state().areaLight;
     std::string type = area.environment ? "PxrDomeLight" : lightType;
     ParamList params;
-    if (type == "PxrDomeLight") {
+    if (type == "PxrDomeLight" && area.daylight) {
+        // PxrStdEnvDayLight's parameters are PxrEnvDayLight's, its sun's "direction" aside.
+        type = "PxrEnvDayLight";
+        for (Param p : area.params.all()) {
+            if (p.name() == "direction") p.decl.name = "sunDirection";
+            p.used = false;
+            params.add(std::move(p));
+        }
+    } else if (type == "PxrDomeLight") {
         // An environment light's image; RenderMan 20 named it by the light shader's parameter.
         for (char const* name : {"rman__EnvMap", "rman__EmissionMap"})
             if (Param const* map = area.params.take(name))

@@ -291,7 +291,11 @@ void SceneBuilder::geometry(RequestReader& in) {
             warnOnce("geometry " + type, in.where(), "Geometry \"" + type + "\" outside an AreaLightSource block; skipped");
             return;
         }
-        char const* light = type == "rectlight" ? "PxrRectLight" : type == "disklight" ? "PxrDiskLight" : "PxrSphereLight";
+        // An envsphere is the environment whatever the shader (RenderMan for Maya 20 names it after its node).
+        char const* light = type == "rectlight"   ? "PxrRectLight"
+                            : type == "disklight" ? "PxrDiskLight"
+                            : type == "envsphere" ? "PxrDomeLight"
+                                                  : "PxrSphereLight";
         Mat4 scaled = type == "envsphere" ? state().transform : glm::scale(state().transform, Vec3(diameter));
         if (!shapeAsLight(light, scaled))
             warnOnce("geometry " + type, in.where(), "Geometry \"" + type + "\": no light made; skipped");
