@@ -278,11 +278,8 @@ TEST_CASE("an archive named relative to an absolute search-path folder of anothe
     Diagnostics diagnostics(false);
     Scene scene = loadScene((project / "shot" / "scene.rib").string(), diagnostics);
     CHECK(scene.shapes.size() == 1u);
-    bool said = false;
-    for (auto const& m : diagnostics.entries())
-        said = said || m.text.find("the end of its path on the search path (/exporter-machine/project/shot/geometry/geo.rib) "
-                                   "found beside the scene") != std::string::npos;
-    CHECK(said);
+    CHECK(test::warningsContaining(diagnostics, "the end of its path on the search path "
+                                                "(/exporter-machine/project/shot/geometry/geo.rib) found beside the scene") == 1);
 }
 
 namespace {
@@ -299,13 +296,6 @@ void writeZip(std::filesystem::path const& path, std::vector<std::pair<std::stri
         REQUIRE(zip_file_add(archive, name.c_str(), source, ZIP_FL_ENC_UTF_8) >= 0);
     }
     REQUIRE(zip_close(archive) == 0);  // the buffers are read here, while `members` still holds them
-}
-
-int warningsWith(Diagnostics const& diagnostics, std::string const& text) {
-    int n = 0;
-    for (auto const& entry : diagnostics.entries())
-        n += entry.severity == Diagnostics::Severity::Warning && entry.text.find(text) != std::string::npos;
-    return n;
 }
 
 }  // namespace
@@ -333,7 +323,7 @@ TEST_CASE("archives are read out of zip files (\"bundle.zip!member.rib\"), also 
         CHECK(dynamic_cast<Sphere const*>(scene.shapes[0].get()) != nullptr);
         CHECK(dynamic_cast<Sphere const*>(scene.shapes[1].get()) == nullptr);  // the disk
         CHECK(dynamic_cast<Sphere const*>(scene.shapes[2].get()) != nullptr);
-        CHECK(warningsWith(diagnostics, "") == 0);
+        CHECK(test::warningsContaining(diagnostics, "") == 0);
     }
     SECTION("an error inside a member is located in it") {
         Diagnostics diagnostics(false);
@@ -349,8 +339,8 @@ TEST_CASE("archives are read out of zip files (\"bundle.zip!member.rib\"), also 
         Diagnostics diagnostics(false);
         Scene scene = load("ReadArchive \"geo/cache.zip!shapes/cube.rib\"\nSphere 1 -1 1 360\n", diagnostics);
         CHECK(scene.shapes.size() == 1u);
-        CHECK(warningsWith(diagnostics, "scene.rib:2:1: archive \"geo/cache.zip!shapes/cube.rib\" not read") == 1);
-        CHECK(warningsWith(diagnostics, "has no member \"shapes/cube.rib\"; it holds \"shapes/sphere.rib\"") == 1);
+        CHECK(test::warningsContaining(diagnostics, "scene.rib:2:1: archive \"geo/cache.zip!shapes/cube.rib\" not read") == 1);
+        CHECK(test::warningsContaining(diagnostics, "has no member \"shapes/cube.rib\"; it holds \"shapes/sphere.rib\"") == 1);
         LoadOptions strict;
         strict.strict = true;
         Diagnostics strictDiagnostics(false);
@@ -361,7 +351,7 @@ TEST_CASE("archives are read out of zip files (\"bundle.zip!member.rib\"), also 
         std::ofstream(folder / "geo" / "fake.zip") << "Sphere 1 -1 1 360\n";
         Diagnostics diagnostics(false);
         load("ReadArchive \"geo/fake.zip!sphere.rib\"\n", diagnostics);
-        CHECK(warningsWith(diagnostics, "as a zip file") == 1);
+        CHECK(test::warningsContaining(diagnostics, "as a zip file") == 1);
     }
     SECTION("programs and geometry plugins a procedural names are not run: one warning, the rest renders") {
         Diagnostics diagnostics(false);
@@ -370,8 +360,8 @@ TEST_CASE("archives are read out of zip files (\"bundle.zip!member.rib\"), also 
                            "Procedural \"DynamicLoad\" [\"sphere.so\" \"\"] [-1 1 -1 1 -1 1]\nSphere 1 -1 1 360\n",
                            diagnostics);
         CHECK(scene.shapes.size() == 1u);
-        CHECK(warningsWith(diagnostics, "Procedural \"RunProgram\" (\"spiral.py\"): this renderer does not run programs") == 1);
-        CHECK(warningsWith(diagnostics, "Procedural \"DynamicLoad\" (\"sphere.so\"): the plugin is not in any folder "
+        CHECK(test::warningsContaining(diagnostics, "Procedural \"RunProgram\" (\"spiral.py\"): this renderer does not run programs") == 1);
+        CHECK(test::warningsContaining(diagnostics, "Procedural \"DynamicLoad\" (\"sphere.so\"): the plugin is not in any folder "
                                         "searched:\n    " + folder.string()) == 1);
     }
 }
@@ -396,9 +386,9 @@ TEST_CASE("a RenderMan for Maya export finds its geometry: ${NAME} from Option \
     Diagnostics diagnostics(false);
     Scene scene = loadScene((frame / "shot.rib").string(), diagnostics);
     CHECK(scene.shapes.size() == 1u);
-    CHECK(warningsWith(diagnostics, "the end of its path on the search path "
+    CHECK(test::warningsContaining(diagnostics, "the end of its path on the search path "
                                     "(/Users/someone/project/renderman/shot/rib/job/cache.zip)") == 1);
-    CHECK(warningsWith(diagnostics, "Option \"user\"") == 0);  // used, not skipped
+    CHECK(test::warningsContaining(diagnostics, "Option \"user\"") == 0);  // used, not skipped
 }
 
 TEST_CASE("a missing archive or sky image is a warning naming what was tried; --strict makes it an error", "[rib]") {

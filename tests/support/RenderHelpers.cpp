@@ -75,4 +75,11 @@ std::string withIntegrator(std::string rib, std::string const& integrator) {
     return rib.replace(start, end - start, integrator);
 }
 
+int warningsContaining(Diagnostics const& diagnostics, std::string const& text) {
+    int n = 0;
+    for (auto const& entry : diagnostics.entries())
+        n += entry.severity == Diagnostics::Severity::Warning && entry.text.find(text) != std::string::npos;
+    return n;
+}
+
 }  // namespace bxdflab::test

@@ -35,6 +35,9 @@ RenderSettings withSpp(int spp);
 Scene parseRib(std::string const& rib, Diagnostics& diagnostics, std::string const& name = "test.rib",
                LoadOptions options = {});
 
+/// How many warnings contain `text` (an empty text counts them all).
+int warningsContaining(Diagnostics const& diagnostics, std::string const& text);
+
 /// Mean of channel c over the pixels for which keep(x, y) is true.
 double meanChannel(RenderOutcome const& r, int c, std::function<bool(int, int)> const& keep);
 
