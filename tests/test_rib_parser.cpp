@@ -391,6 +391,26 @@ TEST_CASE("a RenderMan for Maya export finds its geometry: ${NAME} from Option \
     CHECK(test::warningsContaining(diagnostics, "Option \"user\"") == 0);  // used, not skipped
 }
 
+TEST_CASE("conditional RIB: the first branch is read as if it held, ElseIf and Else branches are skipped", "[rib]") {
+    // RenderMan for Maya wraps its defaults in IfBegin "!defined(...)" blocks that hold when the
+    // scene is rendered on its own; their other branches must not be read on top of them.
+    Diagnostics diagnostics(false);
+    Scene scene = parseRib("WorldBegin\nIfBegin \"!defined(RMSPROJ_FROM_ENV)\"\n  Sphere 1 -1 1 360\n"
+                           "ElseIf \"$user:pass == 'shadow'\"\n  Disk 0 1 360\n"
+                           "  IfBegin \"defined(x)\"\n    Disk 0 2 360\n  IfEnd\n"
+                           "Else\n  Cone 1 1 360\nIfEnd\n"
+                           "IfBegin \"$user:x > 1\"\nElse\n  Disk 0 3 360\nIfEnd\nCylinder 1 -1 1 360\n",
+                           diagnostics, "cond.rib");
+    REQUIRE(scene.shapes.size() == 2u);
+    CHECK(dynamic_cast<Sphere const*>(scene.shapes[0].get()) != nullptr);
+    CHECK(dynamic_cast<Cylinder const*>(scene.shapes[1].get()) != nullptr);
+    CHECK(test::warningsContaining(diagnostics, "cond.rib:2:1: IfBegin \"!defined(RMSPROJ_FROM_ENV)\": conditions are not "
+                                                "evaluated here") == 1);
+    CHECK(test::warningsContaining(diagnostics, "") == 1);
+    CHECK_THAT(ribErrorOf("WorldBegin\nSphere 1 -1 1 360\nIfEnd\n"), Catch::Matchers::StartsWith("bad.rib:3:1: IfEnd without"));
+    CHECK_THAT(ribErrorOf("WorldBegin\nElse\n"), Catch::Matchers::StartsWith("bad.rib:2:1: ElseIf/Else without"));
+}
+
 TEST_CASE("a missing archive or sky image is a warning naming what was tried; --strict makes it an error", "[rib]") {
     LoadOptions strict;
     strict.strict = true;

@@ -19,6 +19,10 @@ std::map<std::string, SceneBuilder::Handler> const& SceneBuilder::handlers() {
     static const std::map<std::string, Handler> table = {
         // Options, camera, frames.
         {"version", &SceneBuilder::ignore},
+        {"IfBegin", &SceneBuilder::ifBegin},
+        {"ElseIf", &SceneBuilder::elseBranch},
+        {"Else", &SceneBuilder::elseBranch},
+        {"IfEnd", &SceneBuilder::ifEnd},
         {"Display", &SceneBuilder::display},
         {"Format", &SceneBuilder::format},
         {"Projection", &SceneBuilder::projection},
@@ -141,6 +145,10 @@ void SceneBuilder::readText(std::string const& text, std::string const& fileName
 void SceneBuilder::finishInput(std::string const& name) {
     if (m_keptFrame) static_cast<SceneOptions&>(m_scene) = m_keptOptions;
     if (m_recording) m_diagnostics.warn(name + ": " + m_recordingEnd + " missing at the end of the file");
+    if (!m_conditionReading.empty()) {
+        m_diagnostics.warn(name + ": " + std::to_string(m_conditionReading.size()) + " IfBegin left open at the end of the file");
+        m_conditionReading.clear();
+    }
     if (!m_blocks.empty())
         m_diagnostics.warn(name + ": " + std::to_string(m_blocks.size()) +
                            " AttributeBegin/TransformBegin left open at end of file");
@@ -180,6 +188,10 @@ void SceneBuilder::handle(RibRequest const& request) {
     if (request.name == "ObjectEnd" || request.name == "ArchiveEnd")
         throw RibError(request.where, request.name + " without a matching " +
                                           (request.name == "ObjectEnd" ? "ObjectBegin" : "ArchiveBegin"));
+    // A branch of conditional RIB that is not read: only its nesting counts.
+    bool const conditional = request.name == "IfBegin" || request.name == "ElseIf" || request.name == "Else" ||
+                             request.name == "IfEnd";
+    if (!conditional && !m_conditionReading.empty() && !m_conditionReading.back()) return;
     // A motion block holds one request per time sample: the first one is used.
     if (m_motionSamples > 0 && request.name != "MotionEnd" && m_motionSeen++ > 0) return;
     auto found = handlers().find(request.name);
@@ -192,6 +204,29 @@ void SceneBuilder::handle(RibRequest const& request) {
 }
 
 void SceneBuilder::ignore(RequestReader&) {}
+
+void SceneBuilder::ifBegin(RequestReader& in) {
+    std::string condition = in.string("condition");
+    in.finish();
+    bool const outerRead = m_conditionReading.empty() || m_conditionReading.back();
+    if (outerRead)
+        warnOnce("conditional RIB", in.where(),
+                 "IfBegin \"" + condition + "\": conditions are not evaluated here; the first branch is read as if " +
+                     "it held and any ElseIf/Else branch is skipped");
+    m_conditionReading.push_back(outerRead);
+}
+
+void SceneBuilder::elseBranch(RequestReader& in) {
+    in.skipRemaining();
+    if (m_conditionReading.empty()) throw RibError(in.where(), "ElseIf/Else without an IfBegin");
+    m_conditionReading.back() = false;  // the first branch was taken (or the whole block is skipped)
+}
+
+void SceneBuilder::ifEnd(RequestReader& in) {
+    in.finish();
+    if (m_conditionReading.empty()) throw RibError(in.where(), "IfEnd without an IfBegin");
+    m_conditionReading.pop_back();
+}
 
 void SceneBuilder::finishFrame() {
     ++m_framesDone;

@@ -95,6 +95,11 @@ private:
     void worldEnd(RequestReader& in);
     void clipping(RequestReader& in);
     void ignore(RequestReader& in);
+    // Conditional RIB (IfBegin / ElseIf / Else / IfEnd): conditions are not
+    // evaluated; the first branch is read as if it held, the others skipped.
+    void ifBegin(RequestReader& in);
+    void elseBranch(RequestReader& in);
+    void ifEnd(RequestReader& in);
     // The graphics state (scene/requests/StateRequests.cpp).
     void attributeBegin(RequestReader& in);
     void attributeEnd(RequestReader& in);
@@ -243,6 +248,8 @@ private:
         std::vector<Attributes> attributes;
     };
     std::vector<SavedFrame> m_frames;
+    /// Open IfBegin blocks, innermost last: whether each is in the branch being read.
+    std::vector<bool> m_conditionReading;
     int m_motionSamples = 0;  ///< inside MotionBegin: how many requests the block holds per sample
     int m_motionSeen = 0;
     /// The standard light shaders' ambientlight: light the classic shaders add as Ka * ambient.
