@@ -411,6 +411,27 @@ TEST_CASE("conditional RIB: the first branch is read as if it held, ElseIf and E
     CHECK_THAT(ribErrorOf("WorldBegin\nElse\n"), Catch::Matchers::StartsWith("bad.rib:2:1: ElseIf/Else without"));
 }
 
+TEST_CASE("what 1990s RIB files write: mpoint, a standard name as a shader's own, blobby leaves, numbered objects",
+          "[rib]") {
+    Diagnostics diagnostics(false);
+    Scene scene = parseRib(
+        "WorldBegin\n"
+        // PRMan's "mpoint" (a matrix per blobby primitive) and a plugin field left out of nleaf.
+        "Blobby 1 [1001 0  1004 0 0 0 0 0  0 2 0 1] [1 0 0 0  0 1 0 0  0 0 1 0  0 0 5 1] [\"\"] "
+        "\"vertex mpoint Pref\" [1 0 0 0  0 1 0 0  0 0 1 0  0 0 0 1]\n"
+        // "frequency" is also a standard attribute name (a string): here it is the shader's number.
+        "Surface \"KMStarfield\" \"frequency\" 3\n"
+        "ObjectBegin 2\nSphere 1 -1 1 360\nObjectEnd\nObjectInstance 2\n",
+        diagnostics);
+    CHECK(scene.shapes.size() == 2u);
+    CHECK_THAT(ribErrorOf("WorldBegin\nObjectInstance 7\n"), Catch::Matchers::Contains("no object \"7\" was defined"));
+    // After an archive that is not found, an object it may have defined is warned about, not fatal.
+    Diagnostics lenient(false);
+    Scene rest = parseRib("WorldBegin\nReadArchive \"objects.rib\"\nObjectInstance 1\nSphere 1 -1 1 360\n", lenient);
+    CHECK(rest.shapes.size() == 1u);
+    CHECK(test::warningsContaining(lenient, "no object \"1\" was defined with ObjectBegin (perhaps in the archive") == 1);
+}
+
 TEST_CASE("a missing archive or sky image is a warning naming what was tried; --strict makes it an error", "[rib]") {
     LoadOptions strict;
     strict.strict = true;

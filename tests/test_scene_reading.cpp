@@ -238,6 +238,13 @@ TEST_CASE("free-form shapes: subdivision surface, NURBS patch, curves, points an
             CHECK(hitDistance(hierarchical, org, dir) == Approx(hitDistance(holed, org, dir)).epsilon(1e-6));
         }
     }
+    SECTION("a patch given as a height field (\"Pz\") spans [0, 1] in x and y") {
+        CHECK(hitDistance("Translate -0.5 -0.5 5\nPatchMesh \"bilinear\" 3 \"nonperiodic\" 3 \"nonperiodic\" "
+                          "\"Pz\" [0.5 0.5 0.5  0.5 0.5 0.5  0.5 0.5 0.5]\n") == Approx(5.5f).epsilon(1e-5));
+        CHECK(hitDistance("Translate -0.5 -0.5 5\nPatch \"bilinear\" \"Pz\" [0 0 0 0]\n", Vec3(0.45f, 0.45f, 0.0f)) ==
+              Approx(5.0f).epsilon(1e-5));
+        CHECK(hitDistance("Translate -0.5 -0.5 5\nPatch \"bilinear\" \"Pz\" [0 0 0 0]\n", Vec3(0.55f, 0.0f, 0.0f)) < 0.0f);
+    }
     SECTION("a NuPatch of order 2 is its control quad; Pw divides by w") {
         CHECK(hitDistance("NuPatch 2 2 [0 0 1 1] 0 1 2 2 [0 0 1 1] 0 1 \"P\" [-1 -1 5  1 -1 5  -1 1 5  1 1 5]\n") ==
               Approx(5.0f).epsilon(1e-4));

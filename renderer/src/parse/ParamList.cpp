@@ -39,6 +39,7 @@ Declarations::Declarations() {
         ParamDecl decl;
         std::string error;
         parseDeclaration(std::string(declaration) + " " + name, decl, error);
+        decl.standard = true;
         m_known[name] = decl;
     }
 }
@@ -99,6 +100,8 @@ bool Declarations::parseDeclaration(std::string const& text, ParamDecl& out, std
         {"color", ParamType::Color},   {"point", ParamType::Point},   {"vector", ParamType::Vector},
         {"normal", ParamType::Normal}, {"hpoint", ParamType::HPoint}, {"string", ParamType::String},
         {"matrix", ParamType::Matrix}, {"bool", ParamType::Int},
+        // PRMan's Blobby reference positions: a matrix per primitive.
+        {"mpoint", ParamType::Matrix},
         // RenderMan's structs (layered materials) are passed whole to plugins this renderer does not have.
         {"struct", ParamType::Unknown},
     };

@@ -35,6 +35,7 @@ struct ParamDecl {
     int arraySize = 1;         ///< elements per item, e.g. 2 for float[2]
     bool reference = false;    ///< "reference color x" ["node:output"]: connected to a pattern's output
     bool untyped = false;      ///< written without a type (and not a standard name)
+    bool standard = false;     ///< typed by the built-in table of standard names, not by the RIB
 };
 
 /// Declarations known without a Declare request (parse/StandardDeclarations),

@@ -121,6 +121,11 @@ ParamList RequestReader::params() {
         param.decl = m_declarations.resolve(nameValue.strings[0], nameValue.where);
         param.location = nameValue.where;
         bool isString = value.kind == RibValue::Kind::String || value.kind == RibValue::Kind::StringArray;
+        if (param.decl.standard && (param.decl.type == ParamType::String) != isString) {
+            // A standard name used for something else (an old shader's own "frequency" 3): kept as written.
+            param.decl.type = ParamType::Unknown;
+            param.decl.untyped = true;
+        }
         if (param.decl.type == ParamType::Unknown || param.decl.reference) {
             // Kept as written: an untyped name (used only if someone asks), or a connection ("node:output").
             param.strings = value.strings;

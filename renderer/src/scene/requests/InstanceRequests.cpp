@@ -3,6 +3,7 @@
 // archives and objects are recorded as requests and replayed where used.
 #include <algorithm>
 #include <filesystem>
+#include <sstream>
 
 #include "parse/ZipMember.h"
 #include "scene/SceneBuilder.h"
@@ -13,6 +14,15 @@ namespace fs = std::filesystem;
 namespace {
 constexpr long kMaxReplayedRequests = 4'000'000;  // what instancing may expand to
 constexpr int kArchiveAncestorLevels = 6;            // how far up from the scene an exporter's project may be
+
+/// An object's handle: a string (RenderMan 19+) or a number (older files), written as the file wrote it.
+std::string objectHandle(RequestReader& in) {
+    if (in.nextIsString()) return in.string("object handle");
+    double const number = in.number("object handle");
+    std::ostringstream text;
+    text << number;
+    return text.str();
+}
 }  // namespace
 
 void SceneBuilder::readArchive(RequestReader& in) {
@@ -111,6 +121,7 @@ void SceneBuilder::readArchiveNamed(std::string const& name, SourceLocation cons
         tried += "\n    (and every end of the absolute paths under " + roots[0].string() + ", " + roots[1].string() +
                  " and the scene's folder's " + std::to_string(roots.size() - 2) + " parents)";
     // RenderMan renders on without a missing archive; so does this renderer, unless --strict.
+    m_archiveMissing = true;
     missingFile(where, "archive \"" + name + "\" not found; tried:" + tried);
 }
 
@@ -193,16 +204,22 @@ void SceneBuilder::warnProcedural(std::string const& kind, std::string const& pr
 
 void SceneBuilder::objectBegin(RequestReader& in) {
     // The handle may be a string (RenderMan 19+) or a number (older RIBs).
-    std::string handle = in.nextIsString() ? in.string("object handle") : std::to_string(in.number("object handle"));
+    std::string handle = objectHandle(in);
     in.finish();
     startRecording(m_objects[handle], "ObjectEnd");
 }
 
 void SceneBuilder::objectInstance(RequestReader& in) {
-    std::string handle = in.nextIsString() ? in.string("object handle") : std::to_string(in.number("object handle"));
+    std::string handle = objectHandle(in);
     in.finish();
     auto found = m_objects.find(handle);
-    if (found == m_objects.end()) in.fail(in.where(), "no object \"" + handle + "\" was defined with ObjectBegin");
+    if (found == m_objects.end()) {
+        std::string const message = "no object \"" + handle + "\" was defined with ObjectBegin";
+        // Its ObjectBegin may be in an archive that was not found (a warning): then render on without it.
+        if (!m_archiveMissing) in.fail(in.where(), message);
+        warnOnce("undefined object", in.where(), message + " (perhaps in the archive not found above); skipped");
+        return;
+    }
     replay("object \"" + handle + "\"", found->second, in.where());
 }
 

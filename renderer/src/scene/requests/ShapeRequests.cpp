@@ -13,11 +13,30 @@ namespace {
 
 bool mirrors(Mat4 const& m) { return glm::determinant(Mat3(m)) < 0.0f; }
 
-std::vector<Vec3> pointsOf(ParamList const& params, RequestReader& in) {
-    std::vector<float> const* P = params.getFloats("P", ParamType::Point);
-    if (!P || P->empty() || P->size() % 3 != 0) in.fail(in.where(), "needs a \"P\" parameter with control points");
+/// A patch's control points, nu x nv of them, from "P", "Pw" (divided by w) or
+/// "Pz" (a height field: x and y run evenly over [0, 1] across the mesh).
+std::vector<Vec3> patchPoints(ParamList const& params, RequestReader& in, int nu, int nv) {
     std::vector<Vec3> points;
-    for (size_t i = 0; i + 2 < P->size(); i += 3) points.emplace_back((*P)[i], (*P)[i + 1], (*P)[i + 2]);
+    if (std::vector<float> const* P = params.getFloats("P", ParamType::Point)) {
+        if (P->empty() || P->size() % 3 != 0) in.fail(in.where(), "needs a \"P\" parameter with control points");
+        for (size_t i = 0; i + 2 < P->size(); i += 3) points.emplace_back((*P)[i], (*P)[i + 1], (*P)[i + 2]);
+    } else if (std::vector<float> const* Pw = params.getFloats("Pw", ParamType::HPoint)) {
+        for (size_t i = 0; i + 3 < Pw->size(); i += 4) {
+            float const w = (*Pw)[i + 3];
+            if (w == 0.0f) in.fail(in.where(), "\"Pw\" has a control point with w = 0");
+            points.emplace_back((*Pw)[i] / w, (*Pw)[i + 1] / w, (*Pw)[i + 2] / w);
+        }
+    } else if (std::vector<float> const* Pz = params.getFloats("Pz", ParamType::Float)) {
+        if (nu < 2 || nv < 2 || Pz->size() != static_cast<size_t>(nu) * static_cast<size_t>(nv))
+            in.fail(in.where(), "\"Pz\" needs one height per control point (" + std::to_string(nu) + " x " + std::to_string(nv) +
+                                    "), got " + std::to_string(Pz->size()));
+        for (int v = 0; v < nv; ++v)
+            for (int u = 0; u < nu; ++u)
+                points.emplace_back(static_cast<float>(u) / static_cast<float>(nu - 1),
+                                    static_cast<float>(v) / static_cast<float>(nv - 1),
+                                    (*Pz)[static_cast<size_t>(v) * static_cast<size_t>(nu) + static_cast<size_t>(u)]);
+    }
+    if (points.empty()) in.fail(in.where(), "needs control points: a \"P\", \"Pw\" or \"Pz\" parameter");
     return points;
 }
 
@@ -239,7 +258,8 @@ void SceneBuilder::pointsGeneralPolygons(RequestReader& in) {
 void SceneBuilder::patch(RequestReader& in) {
     std::string type = in.string("patch type");
     ParamList params = in.params();
-    std::vector<Vec3> points = pointsOf(params, in);
+    int const side = type == "bicubic" ? 4 : 2;
+    std::vector<Vec3> points = patchPoints(params, in, side, side);
     PrimvarSet vars = shapePrimvars(params, 4);
     params.warnUnused(m_diagnostics, "Patch");
     bool flip = state().reverseOrientation != mirrors(state().transform);
@@ -264,7 +284,7 @@ void SceneBuilder::patchMesh(RequestReader& in) {
     int nv = in.integer("nv");
     std::string vwrap = in.string("vwrap");
     ParamList params = in.params();
-    std::vector<Vec3> points = pointsOf(params, in);
+    std::vector<Vec3> points = patchPoints(params, in, nu, nv);
     PrimvarSet vars = shapePrimvars(params);
     params.warnUnused(m_diagnostics, "PatchMesh");
     bool flip = state().reverseOrientation != mirrors(state().transform);

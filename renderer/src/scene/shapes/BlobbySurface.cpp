@@ -1,6 +1,7 @@
 #include "scene/shapes/BlobbySurface.h"
 
 #include <array>
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <glm/gtc/type_ptr.hpp>
@@ -263,7 +264,11 @@ MeshData buildBlobby(int leaves, std::vector<int> const& code, std::vector<float
         }
         if (in.op != 8) program.push_back(in);
     }
-    if (static_cast<int>(primitives.size()) != leaves)
+    // Plugin fields and repelling planes are not always counted as leaves (Aqsis's
+    // examples leave them out of nleaf); either count is accepted.
+    long const notDrawn = std::count_if(primitives.begin(), primitives.end(),
+                                        [](Primitive const& p) { return p.kind == Primitive::Kind::Zero; });
+    if (static_cast<int>(primitives.size()) != leaves && static_cast<int>(primitives.size() - static_cast<size_t>(notDrawn)) != leaves)
         throw RibError(where, "Blobby: nleaf is " + std::to_string(leaves) + " but the code array has " +
                                   std::to_string(primitives.size()) + " primitives");
     // Operand indices count instructions; the flag (op 8) is not one.

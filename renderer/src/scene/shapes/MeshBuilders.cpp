@@ -216,11 +216,24 @@ MeshData buildPolygonMesh(std::vector<int> const& loopsPerFace, std::vector<int>
     return mesh;
 }
 
+namespace {
+/// Squared quads per side per unit of relative bend: a patch bent by its own size gets the
+/// finest sampling (16 x 16), one bent by 10% of it 5 x 5.
+constexpr float kPatchBendToResolution = 250.0f;
+}  // namespace
+
 MeshData buildBilinearPatch(std::array<Vec3, 4> const& c, Mat4 const& toWorld, bool flip) {
     MeshData mesh;
-    // Planar patches need one quad; twisted ones are sampled finely enough to look smooth.
-    float twist = std::fabs(glm::dot(glm::cross(c[1] - c[0], c[2] - c[0]), c[3] - c[0]));
-    int resolution = twist > 1e-6f * glm::length(c[3] - c[0]) ? 16 : 1;
+    // Planar patches need one quad; twisted ones are sampled finely enough to look smooth:
+    // the more the fourth corner leaves the plane of the other three (relative to the
+    // patch's size), the finer, so a height field of many gently bent patches (a
+    // PatchMesh "Pz" terrain) stays light.
+    Vec3 const normal = glm::cross(c[1] - c[0], c[2] - c[0]);
+    float const size = std::max(glm::length(c[3] - c[0]), glm::length(c[2] - c[1]));
+    float const area = glm::length(normal);
+    float const bend = area > 1e-12f * size * size ? std::fabs(glm::dot(normal, c[3] - c[0])) / area / size : 1.0f;
+    int const resolution =
+        bend > 1e-6f ? std::clamp(static_cast<int>(std::ceil(std::sqrt(kPatchBendToResolution * bend))), 2, 16) : 1;
     tessellate(
         mesh, resolution, resolution,
         [&](float u, float v, Vec3& P, Vec3& dPdu, Vec3& dPdv) {
