@@ -92,6 +92,21 @@ TEST_CASE("classic light shaders: pointlight, spotlight and distantlight light w
     auto off = test::renderRib(
         head + "LightSource \"distantlight\" 1 \"intensity\" [0.7]\nIlluminate 1 0\n" + matte, settings);
     CHECK(test::meanChannel(off, 0, [](int, int) { return true; }) == 0.0);
+    // The Companion's shadowed lights are the same lights (their shadow maps are not needed to trace shadows).
+    auto shadowed = test::renderRib(head + "LightSource \"shadowdistant\" 1 \"intensity\" [0.7] \"shadowname\" [\"l.shd\"]\n" +
+                                        matte, settings);
+    CHECK(test::meanChannel(shadowed, 0, [](int, int) { return true; }) == Approx(0.7).epsilon(1e-3));
+    // Barzel's uberlight: a spotlight from its origin along +z (here 5 units from the surface).
+    auto uber = test::renderRib(head + "LightSource \"uberlight\" 1 \"intensity\" [25]\n" + matte, settings);
+    CHECK(test::meanChannel(uber, 0, [](int, int) { return true; }) == Approx(1.0).epsilon(1e-3));
+    auto uberAway = test::renderRib(head + "AttributeBegin\nRotate 180 1 0 0\nLightSource \"uberlight\" 1 \"intensity\" [25]\nAttributeEnd\n" + matte,
+                                    settings);
+    CHECK(test::meanChannel(uberAway, 0, [](int, int) { return true; }) == 0.0);
+    // MTOR's l_uber numbers its light types: 1 is omni, a point light lighting every way.
+    auto omni = test::renderRib(head + "AttributeBegin\nRotate 180 1 0 0\nLightSource \"l_uber\" 1 \"intensity\" [25] "
+                                       "\"float lighttype\" [1]\nAttributeEnd\n" + matte,
+                                settings);
+    CHECK(test::meanChannel(omni, 0, [](int, int) { return true; }) == Approx(1.0).epsilon(1e-3));
     // A distantlight whose "to" is its "from" has no direction: left out with a warning (a lecture
     // scene has one beside two good lights), the others still light the surface.
     Diagnostics diagnostics(false);

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <map>
 
 #include "scene/lights/AreaLights.h"
 #include "scene/lights/Blackbody.h"
@@ -92,7 +93,37 @@ std::unique_ptr<Light> makeClassicLight(std::string const& shader, ParamList con
         return nullptr;
     }
     Vec3 from = params.getVector("from", Vec3(0.0f)), to = params.getVector("to", Vec3(0.0f, 0.0f, 1.0f));
-    std::string kind = shader;
+    // The shadowed versions in the RenderMan Companion and BMRT take the same
+    // parameters (plus a shadow map, not modelled).
+    static std::map<std::string, std::string> const shadowed = {
+        {"shadowpoint", "pointlight"}, {"shadowspot", "spotlight"}, {"shadowdistant", "distantlight"}};
+    std::string kind = shadowed.count(shader) ? shadowed.at(shader) : shader;
+    if (kind == "uberlight" || kind == "l_uber") {
+        // Barzel's uberlight shines from its space's origin along +z; its superellipse
+        // "width" (a tangent) and "wedge" become a spotlight's cone and soft edge. Its
+        // shaping, blockers and distance falloff controls are not modelled.
+        guessed = true;
+        // "lighttype": "spot" or "omni" in Barzel's shader, a number (1: omni) in MTOR's l_uber.
+        bool omni = false;
+        for (Param const& p : params.all())
+            if (p.name() == "lighttype")
+                omni = p.strings.empty() ? !p.floats.empty() && p.floats.front() == 1.0f : p.strings.front() == "omni";
+        if (omni) {
+            kind = "pointlight";
+        } else {
+            float const width = std::max(params.getFloat("width", 1.0f), params.getFloat("height", 1.0f));
+            float const wedge = params.getFloat("wedge", 0.1f);
+            float const cone = std::atan(std::max(width + wedge, 1e-3f));
+            std::unique_ptr<Light> spot =
+                std::make_unique<PointLight>(transformPoint(lightToWorld, Vec3(0.0f)),
+                                             transformVector(lightToWorld, Vec3(0.0f, 0.0f, 1.0f)), cone,
+                                             cone - std::atan(std::max(width, 0.0f)), 0.0f);
+            Vec3 c = kPi * intensity * lightColor;
+            spot->color = RtColorRGB(c.x, c.y, c.z);
+            for (auto const& p : params.all()) p.used = true;
+            return spot;
+        }
+    }
     if (kind != "pointlight" && kind != "spotlight" && kind != "distantlight") {
         guessed = true;
         if (params.all().empty()) return nullptr;
