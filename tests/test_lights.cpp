@@ -96,8 +96,10 @@ TEST_CASE("classic light shaders: pointlight, spotlight and distantlight light w
     auto shadowed = test::renderRib(head + "LightSource \"shadowdistant\" 1 \"intensity\" [0.7] \"shadowname\" [\"l.shd\"]\n" +
                                         matte, settings);
     CHECK(test::meanChannel(shadowed, 0, [](int, int) { return true; }) == Approx(0.7).epsilon(1e-3));
-    // Barzel's uberlight: a spotlight from its origin along +z (here 5 units from the surface).
-    auto uber = test::renderRib(head + "LightSource \"uberlight\" 1 \"intensity\" [25]\n" + matte, settings);
+    // Barzel's uberlight: a spotlight from its origin along +z (here 5 units from the surface); its
+    // shaping parameters come untyped in old files.
+    auto uber = test::renderRib(head + "LightSource \"uberlight\" 1 \"intensity\" [25] \"height\" [2] \"wedge\" [0.2]\n" + matte,
+                                settings);
     CHECK(test::meanChannel(uber, 0, [](int, int) { return true; }) == Approx(1.0).epsilon(1e-3));
     auto uberAway = test::renderRib(head + "AttributeBegin\nRotate 180 1 0 0\nLightSource \"uberlight\" 1 \"intensity\" [25]\nAttributeEnd\n" + matte,
                                     settings);

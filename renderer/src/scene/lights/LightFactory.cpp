@@ -103,6 +103,12 @@ std::unique_ptr<Light> makeClassicLight(std::string const& shader, ParamList con
         // "width" (a tangent) and "wedge" become a spotlight's cone and soft edge. Its
         // shaping, blockers and distance falloff controls are not modelled.
         guessed = true;
+        // Old files often give these without a type: read whatever number or string is there.
+        auto number = [&params](char const* name, float fallback) {
+            for (Param const& p : params.all())
+                if (p.name() == name && !p.floats.empty()) return p.floats.front();
+            return fallback;
+        };
         // "lighttype": "spot" or "omni" in Barzel's shader, a number (1: omni) in MTOR's l_uber.
         bool omni = false;
         for (Param const& p : params.all())
@@ -111,8 +117,8 @@ std::unique_ptr<Light> makeClassicLight(std::string const& shader, ParamList con
         if (omni) {
             kind = "pointlight";
         } else {
-            float const width = std::max(params.getFloat("width", 1.0f), params.getFloat("height", 1.0f));
-            float const wedge = params.getFloat("wedge", 0.1f);
+            float const width = std::max(number("width", 1.0f), number("height", 1.0f));
+            float const wedge = number("wedge", 0.1f);
             float const cone = std::atan(std::max(width + wedge, 1e-3f));
             std::unique_ptr<Light> spot =
                 std::make_unique<PointLight>(transformPoint(lightToWorld, Vec3(0.0f)),
