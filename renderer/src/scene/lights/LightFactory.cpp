@@ -98,37 +98,27 @@ std::unique_ptr<Light> makeClassicLight(std::string const& shader, ParamList con
     static std::map<std::string, std::string> const shadowed = {
         {"shadowpoint", "pointlight"}, {"shadowspot", "spotlight"}, {"shadowdistant", "distantlight"}};
     std::string kind = shadowed.count(shader) ? shadowed.at(shader) : shader;
+    // A spotlight's cone, soft edge and falloff (radians, radians, cosine exponent).
+    float cone = 0.0f, coneDelta = 0.0f, beam = 0.0f;
+    bool coneGiven = false;
     if (kind == "uberlight" || kind == "l_uber") {
-        // Barzel's uberlight shines from its space's origin along +z; its superellipse
-        // "width" (a tangent) and "wedge" become a spotlight's cone and soft edge. Its
-        // shaping, blockers and distance falloff controls are not modelled.
+        // Barzel's uberlight shines from its space's origin along +z (the defaults of
+        // "from" and "to"); its superellipse "width" (a tangent) and "wedge" become a
+        // spotlight's cone and soft edge. Shaping, blockers and falloff are not modelled.
         guessed = true;
-        // Old files often give these without a type: read whatever number or string is there.
+        // Old files often give these without a type: whatever number or string is there is read.
         auto number = [&params](char const* name, float fallback) {
-            for (Param const& p : params.all())
-                if (p.name() == name && !p.floats.empty()) return p.floats.front();
-            return fallback;
+            Param const* p = params.find(name);
+            return p && !p->floats.empty() ? p->floats.front() : fallback;
         };
         // "lighttype": "spot" or "omni" in Barzel's shader, a number (1: omni) in MTOR's l_uber.
-        bool omni = false;
-        for (Param const& p : params.all())
-            if (p.name() == "lighttype")
-                omni = p.strings.empty() ? !p.floats.empty() && p.floats.front() == 1.0f : p.strings.front() == "omni";
-        if (omni) {
-            kind = "pointlight";
-        } else {
-            float const width = std::max(number("width", 1.0f), number("height", 1.0f));
-            float const wedge = number("wedge", 0.1f);
-            float const cone = std::atan(std::max(width + wedge, 1e-3f));
-            std::unique_ptr<Light> spot =
-                std::make_unique<PointLight>(transformPoint(lightToWorld, Vec3(0.0f)),
-                                             transformVector(lightToWorld, Vec3(0.0f, 0.0f, 1.0f)), cone,
-                                             cone - std::atan(std::max(width, 0.0f)), 0.0f);
-            Vec3 c = kPi * intensity * lightColor;
-            spot->color = RtColorRGB(c.x, c.y, c.z);
-            for (auto const& p : params.all()) p.used = true;
-            return spot;
-        }
+        Param const* type = params.find("lighttype");
+        bool const omni = type && (type->strings.empty() ? number("lighttype", 0.0f) == 1.0f : type->strings.front() == "omni");
+        kind = omni ? "pointlight" : "spotlight";
+        float const width = std::max(number("width", 1.0f), number("height", 1.0f));
+        cone = std::atan(std::max(width + number("wedge", 0.1f), 1e-3f));
+        coneDelta = cone - std::atan(std::max(width, 0.0f));
+        coneGiven = true;
     }
     if (kind != "pointlight" && kind != "spotlight" && kind != "distantlight") {
         guessed = true;
@@ -147,10 +137,12 @@ std::unique_ptr<Light> makeClassicLight(std::string const& shader, ParamList con
     if (kind == "pointlight") {
         light = std::make_unique<PointLight>(worldFrom);
     } else if (kind == "spotlight") {
-        float cone = params.getFloat("coneangle", glm::radians(30.0f));
-        float delta = params.getFloat("conedeltaangle", glm::radians(5.0f));
-        float beam = params.getFloat("beamdistribution", 2.0f);
-        light = std::make_unique<PointLight>(worldFrom, worldTo - worldFrom, cone, delta, beam);
+        if (!coneGiven) {
+            cone = params.getFloat("coneangle", glm::radians(30.0f));
+            coneDelta = params.getFloat("conedeltaangle", glm::radians(5.0f));
+            beam = params.getFloat("beamdistribution", 2.0f);
+        }
+        light = std::make_unique<PointLight>(worldFrom, worldTo - worldFrom, cone, coneDelta, beam);
     } else {
         Vec3 travel = safeNormalize(worldTo - worldFrom);
         if (glm::length(travel) == 0.0f) {
