@@ -43,6 +43,18 @@ std::string someMembers(zip_t* archive) {
     return count == 0 ? "it is empty" : "it holds " + list;
 }
 
+/// The open zip file and the member's index in it; on failure a null handle and `problem` says why.
+ZipHandle locateMember(ZipMemberName const& name, zip_int64_t& index, std::string& problem) {
+    std::string why;
+    ZipHandle archive = openZip(name.zipFile, &why);
+    index = archive ? zip_name_locate(archive.get(), name.member.c_str(), 0) : -1;
+    if (!archive)
+        problem = "cannot read \"" + name.zipFile + "\" as a zip file (" + why + ")";
+    else if (index < 0)
+        problem = "\"" + name.zipFile + "\" has no member \"" + name.member + "\"; " + someMembers(archive.get());
+    return index < 0 ? ZipHandle() : std::move(archive);
+}
+
 }  // namespace
 
 std::optional<ZipMemberName> splitZipMemberName(std::string const& name) {
@@ -56,21 +68,18 @@ std::optional<ZipMemberName> splitZipMemberName(std::string const& name) {
 }
 
 std::string zipMemberProblem(ZipMemberName const& name) {
-    std::string why;
-    ZipHandle archive = openZip(name.zipFile, &why);
-    if (!archive) return "cannot read \"" + name.zipFile + "\" as a zip file (" + why + ")";
-    if (zip_name_locate(archive.get(), name.member.c_str(), 0) < 0)
-        return "\"" + name.zipFile + "\" has no member \"" + name.member + "\"; " + someMembers(archive.get());
-    return "";
+    zip_int64_t index;
+    std::string problem;
+    locateMember(name, index, problem);
+    return problem;
 }
 
 std::string readZipMember(ZipMemberName const& name, size_t maxBytes) {
     std::string const whole = name.zipFile + "!" + name.member;
-    std::string problem = zipMemberProblem(name);
-    if (!problem.empty()) throw RenderError(problem);
-    ZipHandle archive = openZip(name.zipFile, nullptr);
-    zip_int64_t const index = archive ? zip_name_locate(archive.get(), name.member.c_str(), 0) : -1;
-    if (index < 0) throw RenderError("cannot read \"" + whole + "\"");
+    zip_int64_t index;
+    std::string problem;
+    ZipHandle archive = locateMember(name, index, problem);
+    if (!archive) throw RenderError(problem);
     zip_stat_t info;
     zip_stat_init(&info);
     if (zip_stat_index(archive.get(), static_cast<zip_uint64_t>(index), 0, &info) != 0 || !(info.valid & ZIP_STAT_SIZE))
