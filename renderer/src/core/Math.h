@@ -2,6 +2,7 @@
 // value types at the plugin boundary.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <glm/glm.hpp>
 #include <limits>
@@ -60,6 +61,25 @@ inline Vec2 concentricDisk(Vec2 const& xi) {
         theta = 0.5f * kPi - 0.25f * kPi * (o.x / o.y);
     }
     return r * Vec2(std::cos(theta), std::sin(theta));
+}
+
+/// A direction about unit n with density cos(theta) / pi (Malley: a disk sample lifted up).
+inline Vec3 cosineDirection(Vec3 const& n, Vec2 const& xi) {
+    Vec2 d = concentricDisk(xi);
+    Vec3 b1, b2;
+    orthonormalBasis(n, b1, b2);
+    return d.x * b1 + d.y * b2 + std::sqrt(std::max(0.0f, 1.0f - glm::dot(d, d))) * n;
+}
+
+/// A direction uniformly inside the cone of unit axis and cos(half-angle) cosMax
+/// (cosMax = -1: the whole sphere); density 1 / (2 pi (1 - cosMax)).
+inline Vec3 uniformConeDirection(Vec3 const& axis, float cosMax, Vec2 const& xi) {
+    float cosTheta = 1.0f - xi.x * (1.0f - cosMax);
+    float sinTheta = std::sqrt(std::max(0.0f, 1.0f - cosTheta * cosTheta));
+    float phi = 2.0f * kPi * xi.y;
+    Vec3 b1, b2;
+    orthonormalBasis(axis, b1, b2);
+    return sinTheta * std::cos(phi) * b1 + sinTheta * std::sin(phi) * b2 + cosTheta * axis;
 }
 
 }  // namespace bxdflab

@@ -50,6 +50,26 @@ bool PlanarLight::intersect(Vec3 const& org, Vec3 const& dir, float& distance, R
     return true;
 }
 
+// Light subpaths leave a point chosen uniformly over the light, in a
+// cosine-weighted direction about its emitting normal (the emitted radiance
+// is the same in every direction, so this follows the emitted power).
+bool PlanarLight::sampleEmission(Vec2 const& xiPosition, Vec2 const& xiDirection, LightEmission& out) const {
+    if (color.IsBlack() || !(m_area > 0.0f)) return false;
+    Vec2 local = m_shape == Shape::Disk ? concentricDisk(xiPosition) : 2.0f * xiPosition - Vec2(1.0f);
+    out.origin = m_center + local.x * m_axisX + local.y * m_axisY;
+    out.normal = m_emitNormal;
+    out.dir = cosineDirection(m_emitNormal, xiDirection);
+    out.radiance = color;
+    out.pdfArea = 1.0f / m_area;
+    out.pdfDir = std::max(0.0f, glm::dot(out.dir, m_emitNormal)) / kPi;
+    return out.pdfDir > 0.0f;
+}
+
+EmissionDensity PlanarLight::emissionDensity(Vec3 const&, Vec3 const& dir) const {
+    float cosine = glm::dot(dir, m_emitNormal);
+    return {1.0f / m_area, std::max(0.0f, cosine) / kPi, std::fabs(cosine)};
+}
+
 SphereLight::SphereLight(Mat4 const& lightToWorld) {
     m_center = transformPoint(lightToWorld, Vec3(0.0f));
     // A sphere light stays a sphere: non-uniform scales are averaged.
@@ -100,6 +120,22 @@ bool SphereLight::intersect(Vec3 const& org, Vec3 const& dir, float& distance, R
     radiance = color;
     pdf = 1.0f / (2.0f * kPi * oneMinusCos);
     return true;
+}
+
+bool SphereLight::sampleEmission(Vec2 const& xiPosition, Vec2 const& xiDirection, LightEmission& out) const {
+    if (color.IsBlack() || !(m_radius > 0.0f)) return false;
+    out.normal = uniformConeDirection(Vec3(0.0f, 0.0f, 1.0f), -1.0f, xiPosition);
+    out.origin = m_center + m_radius * out.normal;
+    out.dir = cosineDirection(out.normal, xiDirection);
+    out.radiance = color;
+    out.pdfArea = 1.0f / (4.0f * kPi * m_radius * m_radius);
+    out.pdfDir = std::max(0.0f, glm::dot(out.dir, out.normal)) / kPi;
+    return out.pdfDir > 0.0f;
+}
+
+EmissionDensity SphereLight::emissionDensity(Vec3 const& point, Vec3 const& dir) const {
+    float cosine = glm::dot(dir, safeNormalize(point - m_center));
+    return {1.0f / (4.0f * kPi * m_radius * m_radius), std::max(0.0f, cosine) / kPi, std::fabs(cosine)};
 }
 
 }  // namespace bxdflab

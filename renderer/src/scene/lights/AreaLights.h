@@ -17,6 +17,9 @@ public:
     const char* kind() const override { return m_shape == Shape::Disk ? "PxrDiskLight" : "PxrRectLight"; }
     LightSample sample(Vec3 const& P, Vec2 const& xi) const override;
     bool intersect(Vec3 const& org, Vec3 const& dir, float& distance, RtColorRGB& radiance, float& pdf) const override;
+    bool canEmit() const override { return m_area > 0.0f; }
+    bool sampleEmission(Vec2 const& xiPosition, Vec2 const& xiDirection, LightEmission& out) const override;
+    EmissionDensity emissionDensity(Vec3 const& point, Vec3 const& dir) const override;
     bool boundingSphere(Vec3& center, float& radius) const override {
         // Every point is center + a axisX + b axisY with |a|, |b| <= 1.
         center = m_center;
@@ -40,6 +43,9 @@ public:
     const char* kind() const override { return "PxrSphereLight"; }
     LightSample sample(Vec3 const& P, Vec2 const& xi) const override;
     bool intersect(Vec3 const& org, Vec3 const& dir, float& distance, RtColorRGB& radiance, float& pdf) const override;
+    bool canEmit() const override { return m_radius > 0.0f; }
+    bool sampleEmission(Vec2 const& xiPosition, Vec2 const& xiDirection, LightEmission& out) const override;
+    EmissionDensity emissionDensity(Vec3 const& point, Vec3 const& dir) const override;
     bool boundingSphere(Vec3& center, float& radius) const override {
         center = m_center;
         radius = m_radius;

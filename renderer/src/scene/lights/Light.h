@@ -25,6 +25,24 @@ struct LightSample {
     bool delta = false;           ///< a direction no Bxdf sample can ever hit
 };
 
+/// A ray leaving a light, as chosen by Light::sampleEmission (the first
+/// vertex of a light subpath, for bidirectional integrators).
+struct LightEmission {
+    Vec3 origin{0.0f};           ///< on the light
+    Vec3 normal{0.0f};           ///< the light's unit normal there; zero for a point light
+    Vec3 dir{0.0f};              ///< unit direction of the ray
+    RtColorRGB radiance;         ///< leaving origin along dir (radiant intensity for a point light)
+    float pdfArea = 0.0f;        ///< per unit area of the light; 1 for a point light
+    float pdfDir = 0.0f;         ///< per unit solid angle around dir
+};
+
+/// The densities Light::sampleEmission gives a ray leaving `point` along a direction.
+struct EmissionDensity {
+    float pdfArea = 0.0f;
+    float pdfDir = 0.0f;
+    float cosine = 1.0f;         ///< |normal . dir| at the point (1 for a point light)
+};
+
 class Light {
 public:
     virtual ~Light() = default;
@@ -35,6 +53,22 @@ public:
     /// it carries back along -dir, and the pdf sample() would assign to dir.
     virtual bool intersect(Vec3 const& org, Vec3 const& dir, float& distance, RtColorRGB& radiance,
                            float& pdf) const = 0;
+    /// Lights that can start a light subpath (those at a finite distance).
+    virtual bool canEmit() const { return false; }
+    /// Chooses a point on the light and a direction of emission from two 2-D
+    /// samples; false when the light sends nothing (a black light).
+    virtual bool sampleEmission(Vec2 const& xiPosition, Vec2 const& xiDirection, LightEmission& out) const {
+        (void)xiPosition;
+        (void)xiDirection;
+        (void)out;
+        return false;
+    }
+    /// The densities sampleEmission gives the ray leaving `point` (on the light) along unit `dir`.
+    virtual EmissionDensity emissionDensity(Vec3 const& point, Vec3 const& dir) const {
+        (void)point;
+        (void)dir;
+        return {};
+    }
     /// Delta lights (a distant light with no angular extent) cannot be hit.
     virtual bool isDelta() const { return false; }
     /// Lights at infinity are seen by rays that miss all geometry.

@@ -11,6 +11,16 @@ PointLight::PointLight(Vec3 const& position, Vec3 const& axis, float coneAngle, 
     m_cosInside = std::cos(std::max(0.0f, coneAngle - coneDeltaAngle));
 }
 
+float PointLight::falloff(Vec3 const& dir) const {
+    if (!m_spot) return 1.0f;
+    // The spotlight shader: cos^beam times a smooth step across the cone's edge.
+    float cosAngle = glm::dot(dir, m_axis);
+    if (cosAngle <= m_cosOutside) return 0.0f;
+    float t = m_cosInside > m_cosOutside ? std::clamp((cosAngle - m_cosOutside) / (m_cosInside - m_cosOutside), 0.0f, 1.0f)
+                                         : 1.0f;
+    return std::pow(std::max(cosAngle, 0.0f), m_beam) * t * t * (3.0f - 2.0f * t);
+}
+
 LightSample PointLight::sample(Vec3 const& P, Vec2 const&) const {
     LightSample s;
     Vec3 toLight = m_position - P;
@@ -20,17 +30,28 @@ LightSample PointLight::sample(Vec3 const& P, Vec2 const&) const {
     s.wi = toLight / s.distance;
     s.pdf = 1.0f;
     s.delta = true;
-    float falloff = 1.0f / distSq;
-    if (m_spot) {
-        // The spotlight shader: cos^beam times a smooth step across the cone's edge.
-        float cosAngle = glm::dot(-s.wi, m_axis);
-        if (cosAngle <= m_cosOutside) return s;
-        float t = m_cosInside > m_cosOutside ? std::clamp((cosAngle - m_cosOutside) / (m_cosInside - m_cosOutside), 0.0f, 1.0f)
-                                             : 1.0f;
-        falloff *= std::pow(std::max(cosAngle, 0.0f), m_beam) * t * t * (3.0f - 2.0f * t);
-    }
-    s.radiance = color * falloff;
+    s.radiance = color * ((1.0f / distSq) * falloff(-s.wi));
     return s;
+}
+
+// Light subpaths leave uniformly in every direction a point light can send
+// light: the whole sphere, or a spotlight's cone.
+bool PointLight::sampleEmission(Vec2 const&, Vec2 const& xiDirection, LightEmission& out) const {
+    if (color.IsBlack()) return false;
+    float cosMax = m_spot ? m_cosOutside : -1.0f;
+    out.origin = m_position;
+    out.normal = Vec3(0.0f);
+    out.dir = uniformConeDirection(m_axis, cosMax, xiDirection);
+    out.radiance = color * falloff(out.dir);
+    out.pdfArea = 1.0f;
+    out.pdfDir = 1.0f / (2.0f * kPi * (1.0f - cosMax));
+    return !out.radiance.IsBlack();
+}
+
+EmissionDensity PointLight::emissionDensity(Vec3 const&, Vec3 const& dir) const {
+    float cosMax = m_spot ? m_cosOutside : -1.0f;
+    bool inside = !m_spot || glm::dot(dir, m_axis) > cosMax;
+    return {1.0f, inside ? 1.0f / (2.0f * kPi * (1.0f - cosMax)) : 0.0f, 1.0f};
 }
 
 }  // namespace bxdflab

@@ -19,8 +19,13 @@ public:
     LightSample sample(Vec3 const& P, Vec2 const& xi) const override;
     bool intersect(Vec3 const&, Vec3 const&, float&, RtColorRGB&, float&) const override { return false; }
     bool isDelta() const override { return true; }
+    bool canEmit() const override { return true; }
+    bool sampleEmission(Vec2 const& xiPosition, Vec2 const& xiDirection, LightEmission& out) const override;
+    EmissionDensity emissionDensity(Vec3 const& point, Vec3 const& dir) const override;
 
 private:
+    /// The fraction of `color` sent along unit dir (the spotlight's cone and beam; 1 for a point light).
+    float falloff(Vec3 const& dir) const;
     Vec3 m_position;
     bool m_spot = false;
     Vec3 m_axis{0.0f, 0.0f, 1.0f};
