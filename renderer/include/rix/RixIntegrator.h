@@ -29,6 +29,36 @@ struct RixLightHit {
     float distance = 0.0f;
     RtColorRGB radiance;
     float pdf = 0.0f;          ///< the pdf that light's own sampling gives this direction
+    int light = -1;            ///< which light (as numbered for SampleLight)
+};
+
+/// A ray leaving a light: the first step of a light subpath, for
+/// bidirectional integrators (PxrVCM). Lights at infinity cannot start one.
+struct RixLightEmission {
+    bool valid = false;        ///< false: the light sends nothing (black, or not a finite light)
+    RtPoint3 P;                ///< the point on the light
+    RtNormal3 N;               ///< the light's unit normal at P; zero for a point light
+    RtVector3 dir;             ///< unit direction of the ray
+    RtColorRGB radiance;       ///< leaving P along dir (a point light's radiant intensity)
+    float pdfArea = 0.0f;      ///< per unit area of the light; 1 for a point light (it has no area)
+    float pdfDir = 0.0f;       ///< per unit solid angle around dir
+    bool deltaPosition = false;  ///< a point light: no ray can ever reach it
+};
+
+/// The densities SampleEmission gives a ray leaving point P of a light along dir.
+struct RixEmissionPdf {
+    float pdfArea = 0.0f;
+    float pdfDir = 0.0f;
+    float cosine = 1.0f;       ///< |N . dir| at P (1 for a point light)
+};
+
+/// A shade point seen from the camera, for light subpaths joined to it (light tracing).
+struct RixCameraConnection {
+    bool hit = false;          ///< the point is in the image (and unoccluded, when that was asked)
+    RtVector3 dir;             ///< unit, from the point toward the eye
+    float distance = 0.0f;
+    float importance = 0.0f;   ///< a light path's W * throughput times this is what it adds to the pixel it lands in
+    float pdfArea = 0.0f;      ///< density (per unit area at the point) of a camera ray reaching it, for MIS
 };
 
 /// A batch the renderer shaded on the integrator's behalf (a further bounce):
@@ -62,6 +92,28 @@ public:
                                bool const* shade, RixRNG::SampleCtx const* samples, RixLightHit* lightHits,
                                std::function<void(RixShadeBatch&)> const& visit) = 0;
 
+    /// Bidirectional integrators. CanEmit: can this light start light subpaths?
+    /// SampleEmission chooses a point on it and a direction from two 2-D samples;
+    /// EmissionPdf gives the densities it would have chosen P and dir with.
+    virtual bool CanEmit(int light) const = 0;
+    virtual RixLightEmission SampleEmission(int light, RtFloat2 const& xiPosition, RtFloat2 const& xiDirection) const = 0;
+    virtual RixEmissionPdf EmissionPdf(int light, RtPoint3 const& P, RtVector3 const& dir) const = 0;
+    /// Traces count rays leaving lights. Those that reach a surface are shaded, as batches grouped
+    /// by Bxdf, and each batch is handed to visit (point j continues ray source[j]); samples[k] is
+    /// where ray k's random sequence starts. Lights are not surfaces: these rays pass through them.
+    virtual void TraceEmitted(int count, RixLightEmission const* rays, RixRNG::SampleCtx const* samples,
+                              std::function<void(RixShadeBatch&)> const& visit) = 0;
+
+    /// Light tracing, for integrators whose WantsLightTracing() is true. CanConnectCamera: the
+    /// camera is a pinhole (perspective). ConnectCamera: where point i of ctx lands in the image;
+    /// with testVisibility, a shadow ray toward the eye too. SplatCamera adds value * importance to
+    /// the pixel point i lands in; CountLightPaths tells how many light subpaths could add (the
+    /// image gets their sum divided by that count).
+    virtual bool CanConnectCamera() const = 0;
+    virtual RixCameraConnection ConnectCamera(RixShadingContext const& ctx, int i, bool testVisibility) = 0;
+    virtual void SplatCamera(RixShadingContext const& ctx, int i, RtColorRGB const& value) = 0;
+    virtual void CountLightPaths(int count) = 0;
+
     /// Reports a NaN or infinite contribution (a Bxdf bug): counted in the render stats, then dropped.
     virtual void CountNonFinite() = 0;
     /// Reports a pdf a Bxdf should never return (a Bxdf bug): FPdf <= 0 or NaN for a sample it
@@ -84,6 +136,8 @@ public:
     /// True when the integrator lights the scene itself with a light at the camera
     /// (PxrDefault): the scene's lights are then not sampled.
     virtual bool WantsHeadlight() const { return false; }
+    /// True when the integrator joins light subpaths to the camera (SplatCamera).
+    virtual bool WantsLightTracing() const { return false; }
     /// States what the integrator will simulate given the number of lights it will sample.
     virtual void DescribeEffects(int numLights, RixEffects& effects) const = 0;
     /// Adds to radiance[i] the light leaving point i of the batch toward the viewer.

@@ -1,5 +1,6 @@
 #include "integrate/IntegratorServices.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "accel/RayTracer.h"
@@ -42,7 +43,9 @@ RixLightHit IntegratorServices::lightAlong(Vec3 const& from, Vec3 const& dir, fl
     LightAlongRay seen = nearestLightAlong(m_lights, from, dir, maxDistance);
     // A light that sends nothing this way (the back of a rect light) is no hit for MIS.
     if (!seen.light || seen.radiance.IsBlack()) return {};
-    return {true, seen.distance, seen.radiance, seen.pdf};
+    int index = 0;
+    while (m_lights[static_cast<size_t>(index)] != seen.light) ++index;
+    return {true, seen.distance, seen.radiance, seen.pdf, index};
 }
 
 RixLightHit IntegratorServices::VisibleLight(RixShadingContext const& ctx, int i, RtVector3 const& dir) {
@@ -71,6 +74,79 @@ void IntegratorServices::TraceIndirect(RixShadingContext const& ctx, int count, 
         visit(batch);
     });
     m_arena.release(mark);
+}
+
+RixLightEmission IntegratorServices::SampleEmission(int light, RtFloat2 const& xiPosition,
+                                                   RtFloat2 const& xiDirection) const {
+    Light const& source = *m_lights[static_cast<size_t>(light)];
+    LightEmission e;
+    RixLightEmission out;
+    if (!source.canEmit() || !source.sampleEmission(Vec2(xiPosition.x, xiPosition.y), Vec2(xiDirection.x, xiDirection.y), e))
+        return out;
+    out.valid = true;
+    out.P = toRt(e.origin);
+    out.N = RtNormal3(e.normal.x, e.normal.y, e.normal.z);
+    out.dir = toRt(e.dir);
+    out.radiance = e.radiance;
+    out.pdfArea = e.pdfArea;
+    out.pdfDir = e.pdfDir;
+    out.deltaPosition = source.isDelta();
+    return out;
+}
+
+RixEmissionPdf IntegratorServices::EmissionPdf(int light, RtPoint3 const& P, RtVector3 const& dir) const {
+    EmissionDensity d = m_lights[static_cast<size_t>(light)]->emissionDensity(toVec3(P), toVec3(dir));
+    return {d.pdfArea, d.pdfDir, d.cosine};
+}
+
+void IntegratorServices::TraceEmitted(int count, RixLightEmission const* rays, RixRNG::SampleCtx const* samples,
+                                      std::function<void(RixShadeBatch&)> const& visit) {
+    MemoryArena::Mark mark = m_arena.mark();
+    HitRecord* hits = m_arena.allocArray<HitRecord>(static_cast<size_t>(std::max(1, count)));
+    for (int k = 0; k < count; ++k) {
+        hits[k] = HitRecord();
+        Vec3 from = toVec3(rays[k].P), d = safeNormalize(toVec3(rays[k].dir));
+        if (!rays[k].valid || !isFinite(from) || glm::dot(d, d) == 0.0f) continue;  // nothing leaves this light
+        // A light may sit on a surface (a lamp on a ceiling): start just off the light.
+        float const start = 1e-5f * (1.0f + std::max({std::fabs(from.x), std::fabs(from.y), std::fabs(from.z)}));
+        hits[k] = m_tracer.intersect(from, d, start, kInfinity, RayKind::Indirect, m_counts);
+    }
+    m_shader.shade(hits, samples, count, m_arena, [&](ShadeGroup& group) {
+        RixShadeBatch batch{group.ctx, group.bxdf, group.rng, group.source};
+        visit(batch);
+    });
+    m_arena.release(mark);
+}
+
+RixCameraConnection IntegratorServices::ConnectCamera(RixShadingContext const& ctx, int i, bool testVisibility) {
+    RixCameraConnection out;
+    if (!CanConnectCamera()) return out;
+    RtPoint3 const* P;
+    RtNormal3 const* Ngn;
+    ctx.GetBuiltinVar(RixShadingContext::k_P, &P);
+    ctx.GetBuiltinVar(RixShadingContext::k_Ngn, &Ngn);
+    float rasterX, rasterY, distance, directionPdf;
+    Vec3 toEye;
+    if (!m_camera->project(toVec3(P[i]), rasterX, rasterY, toEye, distance, directionPdf)) return out;
+    float const distSq = distance * distance;
+    out.dir = toRt(toEye);
+    out.distance = distance;
+    out.pdfArea = directionPdf * std::fabs(glm::dot(toVec3(Ngn[i]), toEye)) / distSq;
+    // A pixel averages camera rays spread evenly over its share of the image plane.
+    out.importance = directionPdf * static_cast<float>(m_camera->pixelCount()) / distSq;
+    out.hit = !testVisibility || !m_tracer.occluded(origin(ctx, i, toEye), toEye, 0.0f, shadowReach(distance), m_counts);
+    return out;
+}
+
+void IntegratorServices::SplatCamera(RixShadingContext const& ctx, int i, RtColorRGB const& value) {
+    if (!m_film || !CanConnectCamera()) return;
+    RtPoint3 const* P;
+    ctx.GetBuiltinVar(RixShadingContext::k_P, &P);
+    float rasterX, rasterY, distance, directionPdf;
+    Vec3 toEye;
+    if (!m_camera->project(toVec3(P[i]), rasterX, rasterY, toEye, distance, directionPdf)) return;
+    int x = std::min(static_cast<int>(rasterX), m_film->width() - 1), y = std::min(static_cast<int>(rasterY), m_film->height() - 1);
+    m_film->addSplat(x, y, value);
 }
 
 }  // namespace bxdflab

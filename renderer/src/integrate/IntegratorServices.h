@@ -9,6 +9,8 @@
 
 #include "RixIntegrator.h"
 #include "accel/RayTracer.h"
+#include "integrate/SplatTarget.h"
+#include "scene/Camera.h"
 #include "shade/BatchShader.h"
 #include "scene/Scene.h"
 
@@ -37,6 +39,22 @@ public:
     void TraceIndirect(RixShadingContext const& ctx, int count, int const* indices, RtVector3 const* dirs,
                        bool const* shade, RixRNG::SampleCtx const* samples, RixLightHit* lightHits,
                        std::function<void(RixShadeBatch&)> const& visit) override;
+    bool CanEmit(int light) const override { return m_lights[static_cast<size_t>(light)]->canEmit(); }
+    RixLightEmission SampleEmission(int light, RtFloat2 const& xiPosition, RtFloat2 const& xiDirection) const override;
+    RixEmissionPdf EmissionPdf(int light, RtPoint3 const& P, RtVector3 const& dir) const override;
+    void TraceEmitted(int count, RixLightEmission const* rays, RixRNG::SampleCtx const* samples,
+                      std::function<void(RixShadeBatch&)> const& visit) override;
+    bool CanConnectCamera() const override { return m_camera && m_camera->perspective(); }
+    RixCameraConnection ConnectCamera(RixShadingContext const& ctx, int i, bool testVisibility) override;
+    void SplatCamera(RixShadingContext const& ctx, int i, RtColorRGB const& value) override;
+    void CountLightPaths(int count) override {
+        if (m_film) m_film->countSplatPaths(static_cast<uint64_t>(count));
+    }
+    /// Light tracing: the camera to join points to and the film they add to.
+    void connectCamera(Camera const& camera, SplatTarget& film) {
+        m_camera = &camera;
+        m_film = &film;
+    }
     void CountNonFinite() override { ++m_nonFinite; }
     void CountInvalidPdf() override { ++m_invalidPdf; }
 
@@ -58,6 +76,8 @@ private:
     std::vector<Light const*> m_lights;
     BatchShader const& m_shader;
     MemoryArena& m_arena;
+    Camera const* m_camera = nullptr;
+    SplatTarget* m_film = nullptr;
     RayCounts m_counts;
     uint64_t m_nonFinite = 0;
     uint64_t m_invalidPdf = 0;

@@ -4,23 +4,39 @@
 // is meaningful: the autograder compares renders pixel by pixel with it.
 #pragma once
 
+#include <atomic>
+#include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "RiTypesHelper.h"
 #include "core/ImageFiles.h"
+#include "integrate/SplatTarget.h"
 
 namespace bxdflab {
 
-class Film {
+class Film final : public SplatTarget {
 public:
     Film(int width, int height);
-    int width() const { return m_width; }
-    int height() const { return m_height; }
+    Film(Film&& other) noexcept
+        : m_width(other.m_width), m_height(other.m_height), m_pixels(std::move(other.m_pixels)),
+          m_splats(std::move(other.m_splats)), m_splatPaths(other.m_splatPaths.load()) {}
+    int width() const override { return m_width; }
+    int height() const override { return m_height; }
 
     /// Adds one sample to pixel (x, y). Samples must arrive in a fixed order
     /// per pixel for renders to be bit-for-bit reproducible.
     void addSample(int x, int y, RtColorRGB const& radiance, float alpha);
+
+    /// Light tracing (PxrVCM): light subpaths joined to the camera add to
+    /// whichever pixel they land in, from any thread. Those additions are
+    /// summed in fixed point, so the total does not depend on their order,
+    /// and divided by the number of light subpaths counted. Call enableSplats
+    /// before rendering. They are left out of varianceOfMean.
+    void enableSplats();
+    void addSplat(int x, int y, RtColorRGB const& value) override;
+    void countSplatPaths(uint64_t paths) override { m_splatPaths.fetch_add(paths, std::memory_order_relaxed); }
 
     /// Per-pixel mean as RGBA floats (row-major from the top left).
     std::vector<float> rgba() const;
@@ -36,6 +52,8 @@ private:
     };
     int m_width, m_height;
     std::vector<Pixel> m_pixels;
+    std::shared_ptr<std::atomic<int64_t>[]> m_splats;  ///< 3 per pixel, in units of kSplatUnit
+    std::atomic<uint64_t> m_splatPaths{0};
 };
 
 }  // namespace bxdflab

@@ -162,7 +162,7 @@ struct Renderer::Impl {
     /// Every loaded Bxdf and pattern plugin, each once, in order of first use.
     std::vector<ShadingPlugin*> usedPlugins() const;
     void renderTile(int tileX, int tileY, int spp, Film& film, Worker& worker);
-    void shadeChunk(Worker& worker, int count);
+    void shadeChunk(Worker& worker, int count, Film& film);
 };
 
 void Renderer::Impl::loadPatterns(std::vector<MaterialDesc> const& usedMaterials) {
@@ -264,11 +264,11 @@ Renderer::Renderer(Scene& scene, RenderSettings settings, Diagnostics& diagnosti
 
     r.camera = std::make_unique<Camera>(scene.camera, scene.xres, scene.yres, scene.pixelAspect);
     IntegratorDesc integrator = scene.integrator;
-    bool const renderMansGlobalIllumination = integrator.name == "PxrVCM" || integrator.name == "PxrUnified" ||
-                                              integrator.name == "PxrUPBP" || integrator.name == "PxrVPL";
+    bool const renderMansGlobalIllumination =
+        integrator.name == "PxrUnified" || integrator.name == "PxrUPBP" || integrator.name == "PxrVPL";
     if (renderMansGlobalIllumination && !r.loader.has(integrator.name)) {
-        // RenderMan's other global-illumination integrators (PxrVCM, PxrUnified,
-        // PxrVPL, ...) compute the same image: the path tracer stands in, with
+        // RenderMan's other global-illumination integrators (PxrUnified,
+        // PxrUPBP, PxrVPL) compute the same image: the path tracer stands in, with
         // the path length the scene asked for.
         IntegratorDesc standIn;
         standIn.name = "PxrPathTracer";
@@ -382,7 +382,7 @@ void Renderer::Impl::renderTile(int tileX, int tileY, int spp, Film& film, Worke
             if (hit.hit()) w.alpha[static_cast<size_t>(i)] = 1.0f;
         }
 
-        shadeChunk(w, count);
+        shadeChunk(w, count, film);
 
         // Into the film, in the fixed sample order; non-finite values are counted and dropped.
         k = 0;
@@ -400,8 +400,9 @@ void Renderer::Impl::renderTile(int tileX, int tileY, int spp, Film& film, Worke
     tracer->counters().add(counts);
 }
 
-void Renderer::Impl::shadeChunk(Worker& w, int count) {
+void Renderer::Impl::shadeChunk(Worker& w, int count, Film& film) {
     IntegratorServices services(*tracer, shadingLights, *shader, w.arena);
+    if (integrator->WantsLightTracing()) services.connectCamera(*camera, film);
     services.shade(w.hits.data(), w.samples.data(), count, [&](ShadeGroup& group) {
         int n = group.ctx.numPts;
         w.groupRadiance.assign(static_cast<size_t>(n), RtColorRGB(0.0f));
@@ -428,6 +429,7 @@ Film Renderer::render() {
         *counter = 0;
     uint64_t const lookupsBefore = r.textures ? r.textures->lookups() : 0;
     Film film(r.scene.xres, r.scene.yres);
+    if (r.integrator->WantsLightTracing()) film.enableSplats();
     int size = tileSizeFor(r.settings.tileSize, spp);
     int tilesX = (r.scene.xres + size - 1) / size, tilesY = (r.scene.yres + size - 1) / size;
     int tiles = tilesX * tilesY;

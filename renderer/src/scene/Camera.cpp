@@ -39,6 +39,28 @@ void Camera::generateRay(float rasterX, float rasterY, Vec3& org, Vec3& dir) con
     }
 }
 
+bool Camera::project(Vec3 const& P, float& rasterX, float& rasterY, Vec3& toEye, float& distance,
+                     float& directionPdf) const {
+    if (!m_perspective) return false;
+    Vec3 c = transformPoint(m_worldToCamera, P);
+    if (!(c.z > 0.0f)) return false;
+    // The inverse of generateRay: the screen position of the ray through c.
+    float sx = c.x / (c.z * m_tanHalfFov), sy = c.y / (c.z * m_tanHalfFov);
+    rasterX = (sx - m_screen[0]) / (m_screen[1] - m_screen[0]) * static_cast<float>(m_xres);
+    rasterY = (m_screen[3] - sy) / (m_screen[3] - m_screen[2]) * static_cast<float>(m_yres);
+    if (!(rasterX >= 0.0f && rasterX < static_cast<float>(m_xres) && rasterY >= 0.0f &&
+          rasterY < static_cast<float>(m_yres)))
+        return false;
+    Vec3 toward = m_position - P;
+    distance = glm::length(toward);
+    if (!(distance > 0.0f)) return false;
+    toEye = toward / distance;
+    float cosTheta = c.z / glm::length(c);
+    float imagePlaneArea = (m_screen[1] - m_screen[0]) * (m_screen[3] - m_screen[2]) * m_tanHalfFov * m_tanHalfFov;
+    directionPdf = 1.0f / (imagePlaneArea * cosTheta * cosTheta * cosTheta);
+    return true;
+}
+
 bool Camera::mightSee(Vec3 const& center, float radius) const {
     // In camera space, where the rays are made. A transform that scales makes
     // the sphere an ellipsoid: the Frobenius norm bounds how much it grows.

@@ -16,6 +16,16 @@ public:
     /// False only when no camera ray can reach the sphere (center, radius):
     /// it lies behind the camera or wholly outside the image's frustum.
     bool mightSee(Vec3 const& center, float radius) const;
+    /// Where a camera ray through `P` lands, for light subpaths joined to the camera
+    /// (perspective cameras only): false when P is behind the camera or outside the image.
+    /// Gives the raster position, the unit direction from P to the eye and the distance,
+    /// and the density per unit solid angle of a camera ray in that direction (camera
+    /// rays are spread uniformly over the image plane at distance 1: 1 / (A cos^3 theta)).
+    bool project(Vec3 const& P, float& rasterX, float& rasterY, Vec3& toEye, float& distance,
+                 float& directionPdf) const;
+    /// The number of pixels.
+    int pixelCount() const { return m_xres * m_yres; }
+    bool perspective() const { return m_perspective; }
     /// The angle (radians) one pixel subtends at the image centre.
     float pixelSpread() const { return m_pixelSpread; }
     Vec3 position() const { return m_position; }
