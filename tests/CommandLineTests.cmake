@@ -174,7 +174,7 @@ set_tests_properties(chapters.commands_and_figures PROPERTIES PASS_REGULAR_EXPRE
 # Memory stays bounded at any spp, for every integrator.
 add_test(NAME cli.memory_bounded_at_any_spp
          COMMAND ${CMAKE_COMMAND} -DRIXRENDER=$<TARGET_FILE:rixrender> -DOUT=${CLI_OUT}/memory
-                 "-DINTEGRATORS=PxrDirectLighting;PxrPathTracer;PxrDefault;PxrValidateBxdf;PxrDebugShadingContext;PxrOcclusion"
+                 "-DINTEGRATORS=PxrDirectLighting;PxrPathTracer;PxrVCM;PxrDefault;PxrValidateBxdf;PxrDebugShadingContext;PxrOcclusion"
                  -P ${CMAKE_CURRENT_SOURCE_DIR}/check-bounded-memory.cmake)
 set_tests_properties(cli.memory_bounded_at_any_spp PROPERTIES LABELS cli)
 

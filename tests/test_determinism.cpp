@@ -42,6 +42,12 @@ TEST_CASE("path tracing is bit-identical for 1 and 2 threads", "[determinism][in
     CHECK(render(rib, 1).rgba == render(rib, 2).rgba);
 }
 
+TEST_CASE("bidirectional path tracing is bit-identical for 1 and 2 threads", "[determinism][integrators][vcm]") {
+    std::string rib = test::readScene("ch04/caustic.rib");
+    rib.replace(rib.find("Format 320 240 1"), 16, "Format 64 48 1");
+    CHECK(render(rib, 1).rgba == render(rib, 2).rgba);
+}
+
 TEST_CASE("a renderer that renders twice gives the same image and reports each render's own counts", "[determinism]") {
     Diagnostics diagnostics(false);
     Scene scene = test::parseRib(test::readScene("ch06/diffuse.rib"), diagnostics);

@@ -189,3 +189,85 @@ TEST_CASE("PxrVisualize: shaded as PxrDefault, normals, st, one colour per mater
     CHECK_THROWS_WITH(withIntegrator("Integrator \"PxrVisualize\" \"v\" \"string style\" [\"wire\"]"),
                       Catch::Matchers::Contains("unknown style \"wire\""));
 }
+
+namespace {
+
+/// A point light at the centre of a closed sphere of radius 5 with Lambertian walls of
+/// albedo 0.5 (the probe Bxdf `probe`), seen from inside. Every wall point gets the
+/// irradiance pi I / R^2 from the light (a classic light's intensity is pi times its
+/// radiant intensity, see LightFactory.cpp), and a wall of radiance L gives every other
+/// wall point the irradiance pi L: a path of k surfaces adds 0.5^k I / R^2. With
+/// I = 2 R^2 the first surface is 1, so maxPathLength 3 gives 1 + 0.5 + 0.25.
+std::string pointLitSphere(std::string const& integrator, std::string const& bxdf) {
+    return "Format 16 16 1\nProjection \"perspective\" \"fov\" [60]\n" + integrator +
+           "\nTranslate 0 0 -2.5\n"
+           "WorldBegin\n"
+           "  LightSource \"pointlight\" 1 \"intensity\" [50] \"from\" [0 0 0]\n"
+           "  Bxdf \"" + bxdf + "\" \"walls\"\n"
+           "  Sphere 5 -5 5 360\n"
+           "WorldEnd\n";
+}
+
+}  // namespace
+
+TEST_CASE("PxrVCM furnace: a point light inside a diffuse sphere gives 1 + a + a^2", "[integrators][vcm]") {
+    RenderSettings settings;
+    settings.spp = 256;
+    auto vcm = test::renderRib(pointLitSphere("Integrator \"PxrVCM\" \"v\" \"int maxPathLength\" [3]", "probe"), settings);
+    auto paths = test::renderRib(pointLitSphere("Integrator \"PxrPathTracer\" \"p\" \"int maxPathLength\" [3]", "probe"), settings);
+    CHECK(test::meanChannel(paths, 0, kAll) == Approx(1.75).epsilon(0.01));
+    CHECK(test::meanChannel(vcm, 0, kAll) == Approx(1.75).epsilon(0.01));
+    // The light subpaths are traced: more rays leave surfaces than the path tracer's.
+    CHECK(vcm.stats.indirectRays > 2 * paths.stats.indirectRays);
+    CHECK(vcm.stats.invalidPdfSamples == 0u);
+}
+
+TEST_CASE("PxrVCM: a wrong RPdf biases a bidirectional image and leaves a path tracer's alone", "[integrators][vcm]") {
+    // RPdf is only read to weigh the ways a path can be made; with the wrong one the
+    // weights no longer add up to one for every path, and the furnace is off.
+    RenderSettings settings;
+    settings.spp = 1024;
+    auto vcm = test::renderRib(pointLitSphere("Integrator \"PxrVCM\" \"v\" \"int maxPathLength\" [3]", "probe_forward_rpdf"), settings);
+    auto paths = test::renderRib(pointLitSphere("Integrator \"PxrPathTracer\" \"p\" \"int maxPathLength\" [3]", "probe_forward_rpdf"), settings);
+    CHECK(test::meanChannel(paths, 0, kAll) == Approx(1.75).epsilon(0.01));
+    CHECK(std::fabs(test::meanChannel(vcm, 0, kAll) - 1.75) > 0.02);  // measured: 1.718
+}
+
+TEST_CASE("PxrVCM and PxrPathTracer agree on a box lit through its ceiling", "[integrators][vcm]") {
+    std::string rib = readScene("ch11/box.rib");
+    rib.replace(rib.find("Format 320 320 1"), 16, "Format 48 48 1");
+    RenderSettings settings;
+    settings.spp = 256;
+    auto vcm = test::renderRib(withIntegrator(rib, "Integrator \"PxrVCM\" \"v\" \"int maxPathLength\" [5]"), settings);
+    auto paths = test::renderRib(withIntegrator(rib, "Integrator \"PxrPathTracer\" \"p\" \"int maxPathLength\" [5]"), settings);
+    for (int c = 0; c < 3; ++c)
+        CHECK(test::meanChannel(vcm, c, kAll) == Approx(test::meanChannel(paths, c, kAll)).epsilon(0.02));
+}
+
+TEST_CASE("PxrVCM renders a caustic as a path tracer does, and finds it from a small light", "[integrators][vcm]") {
+    std::string scene = readScene("ch04/caustic.rib");
+    scene.replace(scene.find("Format 320 240 1"), 16, "Format 64 48 1");
+    auto pathTracer = [](std::string const& rib) {
+        return withIntegrator(rib, "Integrator \"PxrPathTracer\" \"p\" \"int maxPathLength\" [6] \"int allowCaustics\" [1]");
+    };
+    RenderSettings settings;
+    // The same picture: with a larger light (the same power), the path tracer's
+    // reference converges in a test's time, and both agree.
+    std::string large = scene;
+    large.replace(large.find("Scale 0.3 0.3 0.3"), 17, "Scale 0.8 0.8 0.8");
+    large.replace(large.find("[400]"), 5, "[56.25]");
+    settings.spp = 128;
+    auto vcm = test::renderRib(large, settings);
+    settings.spp = 2048;
+    auto reference = test::renderRib(pathTracer(large), settings);
+    CHECK(test::meanChannel(vcm, 0, kAll) == Approx(test::meanChannel(reference, 0, kAll)).epsilon(0.02));
+    // With the scene's own small light, the path tracer finds the caustic only when a
+    // path through the ball happens to hit the light; the light subpaths find it at
+    // once: at 64 samples two seeds of the bidirectional render agree.
+    settings.spp = 64;
+    settings.seed = 0;
+    auto a = test::renderRib(scene, settings);
+    settings.seed = 1;
+    auto a2 = test::renderRib(scene, settings);
+    CHECK(test::meanChannel(a, 0, kAll) == Approx(test::meanChannel(a2, 0, kAll)).epsilon(0.03));
+}

@@ -337,7 +337,7 @@ TEST_CASE("RenderMan 20's environment lights: an envsphere is the light at infin
 
 TEST_CASE("RenderMan's own materials and integrators that are not here get a stand-in, with one warning each",
           "[rib][plugins]") {
-    std::string rib = "Format 8 8 1\nProjection \"perspective\" \"fov\" [30]\nIntegrator \"PxrVCM\" \"v\" \"int maxPathLength\" [3]\n"
+    std::string rib = "Format 8 8 1\nProjection \"perspective\" \"fov\" [30]\nIntegrator \"PxrUnified\" \"v\" \"int maxPathLength\" [3]\n"
                       "WorldBegin\nLight \"PxrDomeLight\" \"sky\"\nTranslate 0 0 5\n"
                       "Bxdf \"PxrSurface\" \"s\" \"color diffuseColor\" [0.8 0.2 0.1] \"float diffuseGain\" [0.5]\n"
                       "Sphere 1 -1 1 360\nBxdf \"PxrSurface\" \"t\"\nSphere 0.5 -0.5 0.5 360\nWorldEnd\n";
@@ -345,7 +345,7 @@ TEST_CASE("RenderMan's own materials and integrators that are not here get a sta
     int surfaceWarnings = 0, integratorWarnings = 0;
     for (auto const& m : r.messages) {
         surfaceWarnings += m.text.find("\"PxrSurface\" is one of RenderMan's materials") != std::string::npos;
-        integratorWarnings += m.text.find("\"PxrVCM\" is one of RenderMan's") != std::string::npos;
+        integratorWarnings += m.text.find("\"PxrUnified\" is one of RenderMan's") != std::string::npos;
     }
     CHECK(surfaceWarnings == 1);
     CHECK(integratorWarnings == 1);

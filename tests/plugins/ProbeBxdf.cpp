@@ -8,6 +8,8 @@
 //   PROBE_UNTERMINATED_TABLE  GetParamTable's table has lost its end marker
 //   PROBE_BAD_TABLE_ENTRY     GetParamTable's table has an entry with no name
 //   PROBE_THROWS     GenerateSample throws a std::runtime_error
+//   PROBE_FORWARD_RPDF  RPdf is the density of L (the forward one) instead of V's
+//                    (bidirectional integrators then weigh their strategies wrongly)
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -49,7 +51,7 @@ public:
             float cosTheta;
             RixCosDirectionalDistribution(rng->DrawSample2D(i), N, TX, TY, Ln[i], cosTheta);
             FPdf[i] = cosTheta * F_INVPI;
-            RPdf[i] = FPdf[i];
+            RPdf[i] = reverse(N, i, FPdf[i]);
             w[i] = RtColorRGB(poison(i, 0.5f * FPdf[i]));
             FPdf[i] = negate(i, FPdf[i]);
             sampled[i] = g_lobe;
@@ -60,8 +62,10 @@ public:
                         RtVector3 const* Ln, RixBXLobeWeights& W, float* FPdf, float* RPdf) override {
         RtColorRGB* w = W.AddActiveLobe(g_lobe);
         for (int i = 0; i < shadingCtx->numPts; ++i) {
-            float cosTheta = RixMax(0.0f, RixGetForwardFacingNormal(m_Vn[i], m_Nn[i]).Dot(Ln[i]));
-            FPdf[i] = RPdf[i] = cosTheta * F_INVPI;
+            RtNormal3 N = RixGetForwardFacingNormal(m_Vn[i], m_Nn[i]);
+            float cosTheta = RixMax(0.0f, N.Dot(Ln[i]));
+            FPdf[i] = cosTheta * F_INVPI;
+            RPdf[i] = reverse(N, i, FPdf[i]);
             w[i] = RtColorRGB(poison(i, 0.5f * FPdf[i]));
             FPdf[i] = negate(i, FPdf[i]);
             evaluated[i] = g_traits;
@@ -84,6 +88,17 @@ private:
 #else
         PIXAR_ARGUSED(i);
         return RtVector3(0.0f, 0.0f, 0.0f);
+#endif
+    }
+    /// The density of sampling V given L: cos(theta_V) / pi (or, mistakenly, forwardPdf).
+    float reverse(RtNormal3 const& N, int i, float forwardPdf) const {
+#ifdef PROBE_FORWARD_RPDF
+        PIXAR_ARGUSED(N);
+        PIXAR_ARGUSED(i);
+        return forwardPdf;
+#else
+        PIXAR_ARGUSED(forwardPdf);
+        return RixMax(0.0f, N.Dot(m_Vn[i])) * F_INVPI;
 #endif
     }
     static float poison(int i, float value) {
