@@ -234,14 +234,17 @@ TEST_CASE("PxrVCM: a wrong RPdf biases a bidirectional image and leaves a path t
 }
 
 TEST_CASE("PxrVCM and PxrPathTracer agree on a box lit through its ceiling", "[integrators][vcm]") {
+    // The gold sphere throws glossy caustics on the walls: the path tracer must
+    // be allowed them (without, it is 1.6% darker).
     std::string rib = readScene("ch11/box.rib");
     rib.replace(rib.find("Format 320 320 1"), 16, "Format 48 48 1");
     RenderSettings settings;
     settings.spp = 256;
     auto vcm = test::renderRib(withIntegrator(rib, "Integrator \"PxrVCM\" \"v\" \"int maxPathLength\" [5]"), settings);
-    auto paths = test::renderRib(withIntegrator(rib, "Integrator \"PxrPathTracer\" \"p\" \"int maxPathLength\" [5]"), settings);
+    auto paths = test::renderRib(
+        withIntegrator(rib, "Integrator \"PxrPathTracer\" \"p\" \"int maxPathLength\" [5] \"int allowCaustics\" [1]"), settings);
     for (int c = 0; c < 3; ++c)
-        CHECK(test::meanChannel(vcm, c, kAll) == Approx(test::meanChannel(paths, c, kAll)).epsilon(0.02));
+        CHECK(test::meanChannel(vcm, c, kAll) == Approx(test::meanChannel(paths, c, kAll)).epsilon(0.006));
 }
 
 TEST_CASE("PxrVCM renders a caustic as a path tracer does, and finds it from a small light", "[integrators][vcm]") {
