@@ -115,7 +115,10 @@ float cameraSideSum(SubpathLevel const* level, int index, float revTop, float re
 /// The same toward the light, walking the light subpath down from the join
 /// vertex to the light point. The join vertex's own reverse density (made from
 /// the camera vertex) is left out: the caller multiplies the sum by its square.
-float lightSideSum(SubpathLevel const* level, int index, float revNext, bool deltaLight) {
+/// neeOverEmit: how much likelier next-event estimation from the first light
+/// vertex finds the light point than the light subpath's start did (the ratio
+/// for the strategy s = 1, whose light point is chosen by SampleLight).
+float lightSideSum(SubpathLevel const* level, int index, float revNext, bool deltaLight, float neeOverEmit) {
     float sum = 0.0f, ri = 1.0f;
     for (int step = 0;; ++step) {
         PathVertex const& v = level->vertex[index];
@@ -123,7 +126,8 @@ float lightSideSum(SubpathLevel const* level, int index, float revNext, bool del
         ri *= remapZero(rev) / remapZero(v.pdfFwd);
         bool deltaHere = step == 0 ? false : v.delta;
         bool deltaBelow = level->parent ? level->parent->vertex[level->parentIndex[index]].delta : deltaLight;
-        if (!deltaHere && !deltaBelow) sum += ri * ri;
+        bool nextEvent = level->parent && !level->parent->parent;  // joining this vertex to the light point
+        if (!deltaHere && !deltaBelow) sum += nextEvent ? ri * ri * neeOverEmit * neeOverEmit : ri * ri;
         if (!level->parent) return sum;
         index = level->parentIndex[index];
         level = level->parent;
@@ -196,6 +200,8 @@ private:
         int maxDepth;                 ///< light vertices traced
         bool lightTracing;            ///< also joined to the camera (light tracing)
         bool const* deltaLight;       ///< per camera point: its light is a point light
+        int const* lightIndex;        ///< per camera point: the light its subpath starts on
+        float* neeOverEmit;           ///< per camera point: see lightSideSum (set at the first light vertex)
     };
 
     /// The lights that start light subpaths, each chosen with probability choicePdf.
@@ -261,14 +267,19 @@ private:
                     weight = ls.delta ? 1.0f : RixPowerHeuristic(1.0f, ls.pdf, 1.0f, q.FPdf[i]);
                 } else {
                     RtPoint3 onLight = level.vertex[i].P + ls.wi * ls.distance;
-                    RixEmissionPdf e = ictx.EmissionPdf(light, onLight, -ls.wi);
+                    RixEmissionPdf e = ictx.EmissionPdf(light, onLight, level.vertex[i].P);
                     float distSq = ls.distance * ls.distance;
+                    // This strategy found the light point with SampleLight's density; those that
+                    // start a light subpath there, with the light choice times SampleEmission's.
+                    float nextEvent = ls.delta ? 1.0f : ls.pdf * e.cosine / distSq;
+                    float emitted = emitters.choicePdf * e.pdfArea;
                     float revCamera = toArea(e.pdfDir, onLight, level.vertex[i]);
                     float revPrevious = revOfPrevious(level, i, q.RPdf[i], false);
-                    float sum = cameraSideSum(&level, i, revCamera, revPrevious, false, 1.0f, emitters.lightTracing);
+                    float toEmitted = remapZero(emitted) / remapZero(nextEvent);
+                    float sum = cameraSideSum(&level, i, revCamera, revPrevious, false, toEmitted, emitters.lightTracing);
                     if (!ls.delta) {
                         // s = 0: the camera vertex's Bxdf sample reaching the same point.
-                        float ri = remapZero(q.FPdf[i] * e.cosine / distSq) / remapZero(emitters.choicePdf * e.pdfArea);
+                        float ri = remapZero(q.FPdf[i] * e.cosine / distSq) / remapZero(nextEvent);
                         sum += ri * ri;
                     }
                     weight = 1.0f / (1.0f + sum);
@@ -293,6 +304,8 @@ private:
         RtFloat2* xiDirection = pool.AllocFor<RtFloat2>(n);
         float* xiLight = pool.AllocFor<float>(n);
         bool* deltaLight = pool.AllocFor<bool>(n);
+        int* lightIndex = pool.AllocFor<int>(n);
+        float* neeOverEmit = pool.AllocFor<float>(n);
         RtColorRGB* carried = pool.AllocFor<RtColorRGB>(n);
         SubpathLevel root;
         root.vertex = pool.AllocFor<PathVertex>(n);
@@ -307,7 +320,9 @@ private:
             int const count = static_cast<int>(emitters.lights.size());
             int pick = RixMin(static_cast<int>(xiLight[i] * static_cast<float>(count)), count - 1);
             RixLightEmission& e = rays[i];
-            e = ictx.SampleEmission(emitters.lights[static_cast<size_t>(pick)], xiPosition[i], xiDirection[i]);
+            lightIndex[i] = emitters.lights[static_cast<size_t>(pick)];
+            neeOverEmit[i] = 1.0f;
+            e = ictx.SampleEmission(lightIndex[i], xiPosition[i], xiDirection[i]);
             samples[i] = rng.sampleCtxArray[i].NewDomain(0x5bd1e995u);
             cameraIndex[i] = i;
             deltaLight[i] = e.deltaPosition;
@@ -321,8 +336,8 @@ private:
             float cosine = e.N.IsZero() ? 1.0f : std::fabs(e.N.Dot(e.dir));
             carried[i] = e.radiance * (cosine / (choice * e.pdfArea * e.pdfDir));
         }
-        LightPath path{level, joins, maxLightSurfaces, lightTracing ? m_maxPathLength : maxLightSurfaces, lightTracing,
-                       deltaLight};
+        LightPath path{level,        joins,      maxLightSurfaces, lightTracing ? m_maxPathLength : maxLightSurfaces,
+                       lightTracing, deltaLight, lightIndex,       neeOverEmit};
         float* pdfDir = pool.AllocFor<float>(n);
         for (int i = 0; i < n; ++i) pdfDir[i] = rays[i].pdfDir;
         ictx.TraceEmitted(n, rays, samples, [&](RixShadeBatch& batch) {
@@ -386,6 +401,17 @@ private:
         level.vertex = vertex;
         level.parentIndex = parentIndex;
         level.parent = &parent;
+        if (depth == 1) {
+            // How likely next-event estimation from here finds the light point (strategy s = 1).
+            for (int j = 0; j < m; ++j) {
+                int const i = cameraIndex[j];
+                PathVertex const& y0 = parent.vertex[parentIndex[j]];
+                RixEmissionPdf e = ictx.EmissionPdf(path.lightIndex[i], y0.P, vertex[j].P);
+                float distSq = (vertex[j].P - y0.P).LengthSq();
+                float nextEvent = path.deltaLight[i] ? 1.0f : e.pdfLightSample * e.cosine / distSq;
+                path.neeOverEmit[i] = remapZero(nextEvent) / remapZero(y0.pdfFwd);
+            }
+        }
         if (!batch.bxdf.GetAllLobeTraits().HasAny()) return;
         RixBxdfScratch q(ctx);
         if (path.lightTracing) splatToCamera(batch, ictx, q, path, level, cameraIndex, carried);
@@ -407,7 +433,7 @@ private:
             c.carried = carried[j] * f;
             c.pdfRevCamera = toArea(q.FPdf[j], vertex[j].P, path.camera.vertex[i]);
             float revPrevious = toArea(q.RPdf[j], vertex[j].P, parent.vertex[parentIndex[j]]);
-            c.lightSum = lightSideSum(&level, j, revPrevious, path.deltaLight[i]);
+            c.lightSum = lightSideSum(&level, j, revPrevious, path.deltaLight[i], path.neeOverEmit[i]);
         }
         if (depth >= path.maxDepth) return;
 
@@ -465,7 +491,7 @@ private:
             PathVertex const& previous = level.parent->vertex[level.parentIndex[j]];
             float revPrevious = toArea(q.RPdf[j], level.vertex[j].P, previous);
             float C = remapZero(eye[j].pdfArea);
-            float sum = C * C * lightSideSum(&level, j, revPrevious, path.deltaLight[cameraIndex[j]]);
+            float sum = C * C * lightSideSum(&level, j, revPrevious, path.deltaLight[cameraIndex[j]], path.neeOverEmit[cameraIndex[j]]);
             RtColorRGB value = carried[j] * f * (eye[j].importance / (1.0f + sum));
             if (std::isfinite(value.r) && std::isfinite(value.g) && std::isfinite(value.b))
                 ictx.SplatCamera(ctx, j, value);
@@ -548,10 +574,12 @@ private:
             } else {
                 // The path ends at the light point: weigh it against joining it anywhere.
                 RtPoint3 onLight = level.vertex[i].P + dir[k] * hit.distance;
-                RixEmissionPdf e = ictx.EmissionPdf(hit.light, onLight, -dir[k]);
-                float fwd = pdfDir[k] * e.cosine / (hit.distance * hit.distance);
-                float ri = remapZero(emitters.choicePdf * e.pdfArea) / remapZero(fwd);
-                float sum = discrete[k] ? 0.0f : ri * ri;  // s = 1: next-event estimation from here
+                RixEmissionPdf e = ictx.EmissionPdf(hit.light, onLight, level.vertex[i].P);
+                float distSq = hit.distance * hit.distance;
+                float fwd = pdfDir[k] * e.cosine / distSq;
+                float nextEvent = remapZero(hit.pdf * e.cosine / distSq) / remapZero(fwd);
+                float sum = discrete[k] ? 0.0f : nextEvent * nextEvent;  // s = 1: next-event estimation from here
+                float ri = remapZero(emitters.choicePdf * e.pdfArea) / remapZero(fwd);  // s >= 2 start at the light
                 float revCamera = toArea(e.pdfDir, onLight, level.vertex[i]);
                 sum += cameraSideSum(&level, i, revCamera, revPrevious[i], discrete[k], ri, emitters.lightTracing);
                 w = 1.0f / (1.0f + sum);

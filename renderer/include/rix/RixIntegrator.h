@@ -45,11 +45,14 @@ struct RixLightEmission {
     bool deltaPosition = false;  ///< a point light: no ray can ever reach it
 };
 
-/// The densities SampleEmission gives a ray leaving point P of a light along dir.
+/// The densities with which light at point P of a light reaches a receiver:
+/// SampleEmission's (the point, then the direction toward the receiver), and
+/// SampleLight's from the receiver.
 struct RixEmissionPdf {
     float pdfArea = 0.0f;
     float pdfDir = 0.0f;
     float cosine = 1.0f;       ///< |N . dir| at P (1 for a point light)
+    float pdfLightSample = 0.0f;  ///< SampleLight's pdf (per unit solid angle at the receiver); 1 for a point light
 };
 
 /// A shade point seen from the camera, for light subpaths joined to it (light tracing).
@@ -94,10 +97,10 @@ public:
 
     /// Bidirectional integrators. CanEmit: can this light start light subpaths?
     /// SampleEmission chooses a point on it and a direction from two 2-D samples;
-    /// EmissionPdf gives the densities it would have chosen P and dir with.
+    /// EmissionPdf gives the densities of reaching `receiver` from P (see RixEmissionPdf).
     virtual bool CanEmit(int light) const = 0;
     virtual RixLightEmission SampleEmission(int light, RtFloat2 const& xiPosition, RtFloat2 const& xiDirection) const = 0;
-    virtual RixEmissionPdf EmissionPdf(int light, RtPoint3 const& P, RtVector3 const& dir) const = 0;
+    virtual RixEmissionPdf EmissionPdf(int light, RtPoint3 const& P, RtPoint3 const& receiver) const = 0;
     /// Traces count rays leaving lights. Those that reach a surface are shaded, as batches grouped
     /// by Bxdf, and each batch is handed to visit (point j continues ray source[j]); samples[k] is
     /// where ray k's random sequence starts. Lights are not surfaces: these rays pass through them.

@@ -94,9 +94,20 @@ RixLightEmission IntegratorServices::SampleEmission(int light, RtFloat2 const& x
     return out;
 }
 
-RixEmissionPdf IntegratorServices::EmissionPdf(int light, RtPoint3 const& P, RtVector3 const& dir) const {
-    EmissionDensity d = m_lights[static_cast<size_t>(light)]->emissionDensity(toVec3(P), toVec3(dir));
-    return {d.pdfArea, d.pdfDir, d.cosine};
+RixEmissionPdf IntegratorServices::EmissionPdf(int light, RtPoint3 const& P, RtPoint3 const& receiver) const {
+    Light const& source = *m_lights[static_cast<size_t>(light)];
+    Vec3 const from = toVec3(P), to = toVec3(receiver);
+    Vec3 const dir = safeNormalize(to - from);
+    EmissionDensity d = source.emissionDensity(from, dir);
+    RixEmissionPdf out{d.pdfArea, d.pdfDir, d.cosine, 0.0f};
+    if (source.isDelta()) {
+        out.pdfLightSample = 1.0f;
+    } else {
+        float distance, pdf;
+        RtColorRGB radiance;
+        if (source.intersect(to, -dir, distance, radiance, pdf)) out.pdfLightSample = pdf;
+    }
+    return out;
 }
 
 void IntegratorServices::TraceEmitted(int count, RixLightEmission const* rays, RixRNG::SampleCtx const* samples,

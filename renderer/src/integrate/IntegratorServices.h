@@ -41,7 +41,7 @@ public:
                        std::function<void(RixShadeBatch&)> const& visit) override;
     bool CanEmit(int light) const override { return m_lights[static_cast<size_t>(light)]->canEmit(); }
     RixLightEmission SampleEmission(int light, RtFloat2 const& xiPosition, RtFloat2 const& xiDirection) const override;
-    RixEmissionPdf EmissionPdf(int light, RtPoint3 const& P, RtVector3 const& dir) const override;
+    RixEmissionPdf EmissionPdf(int light, RtPoint3 const& P, RtPoint3 const& receiver) const override;
     void TraceEmitted(int count, RixLightEmission const* rays, RixRNG::SampleCtx const* samples,
                       std::function<void(RixShadeBatch&)> const& visit) override;
     bool CanConnectCamera() const override { return m_camera && m_camera->perspective(); }
