@@ -198,8 +198,10 @@ namespace {
 /// radiant intensity, see LightFactory.cpp), and a wall of radiance L gives every other
 /// wall point the irradiance pi L: a path of k surfaces adds 0.5^k I / R^2. With
 /// I = 2 R^2 the first surface is 1, so maxPathLength 3 gives 1 + 0.5 + 0.25.
+/// `integrator` is rendered with maxPathLength 3.
 std::string pointLitSphere(std::string const& integrator, std::string const& bxdf) {
-    return "Format 16 16 1\nProjection \"perspective\" \"fov\" [60]\n" + integrator +
+    return "Format 16 16 1\nProjection \"perspective\" \"fov\" [60]\nIntegrator \"" + integrator +
+           "\" \"i\" \"int maxPathLength\" [3]" +
            "\nTranslate 0 0 -2.5\n"
            "WorldBegin\n"
            "  LightSource \"pointlight\" 1 \"intensity\" [50] \"from\" [0 0 0]\n"
@@ -222,10 +224,8 @@ double noise(test::RenderOutcome const& a, test::RenderOutcome const& b) {
 }  // namespace
 
 TEST_CASE("PxrVCM furnace: a point light inside a diffuse sphere gives 1 + a + a^2", "[integrators][vcm]") {
-    RenderSettings settings;
-    settings.spp = 256;
-    auto vcm = test::renderRib(pointLitSphere("Integrator \"PxrVCM\" \"v\" \"int maxPathLength\" [3]", "probe"), settings);
-    auto paths = test::renderRib(pointLitSphere("Integrator \"PxrPathTracer\" \"p\" \"int maxPathLength\" [3]", "probe"), settings);
+    auto vcm = test::renderRib(pointLitSphere("PxrVCM", "probe"), test::withSpp(256));
+    auto paths = test::renderRib(pointLitSphere("PxrPathTracer", "probe"), test::withSpp(256));
     CHECK(test::meanChannel(paths, 0, kAll) == Approx(1.75).epsilon(0.01));
     CHECK(test::meanChannel(vcm, 0, kAll) == Approx(1.75).epsilon(0.01));
     // The light subpaths are traced: more rays leave surfaces than the path tracer's.
@@ -236,10 +236,8 @@ TEST_CASE("PxrVCM furnace: a point light inside a diffuse sphere gives 1 + a + a
 TEST_CASE("PxrVCM: a wrong RPdf biases a bidirectional image and leaves a path tracer's alone", "[integrators][vcm]") {
     // RPdf is only read to weigh the ways a path can be made; with the wrong one the
     // weights no longer add up to one for every path, and the furnace is off.
-    RenderSettings settings;
-    settings.spp = 1024;
-    auto vcm = test::renderRib(pointLitSphere("Integrator \"PxrVCM\" \"v\" \"int maxPathLength\" [3]", "probe_forward_rpdf"), settings);
-    auto paths = test::renderRib(pointLitSphere("Integrator \"PxrPathTracer\" \"p\" \"int maxPathLength\" [3]", "probe_forward_rpdf"), settings);
+    auto vcm = test::renderRib(pointLitSphere("PxrVCM", "probe_forward_rpdf"), test::withSpp(1024));
+    auto paths = test::renderRib(pointLitSphere("PxrPathTracer", "probe_forward_rpdf"), test::withSpp(1024));
     CHECK(test::meanChannel(paths, 0, kAll) == Approx(1.75).epsilon(0.01));
     CHECK(std::fabs(test::meanChannel(vcm, 0, kAll) - 1.75) > 0.02);  // measured: 1.718
 }
