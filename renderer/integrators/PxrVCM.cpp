@@ -37,6 +37,7 @@
 //   int connectPaths   [1]   RenderMan's; connection is always on here
 //   int mergePaths     [0]   RenderMan's vertex merging: not implemented (a warning if 1)
 #include <cmath>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -246,8 +247,11 @@ private:
                       Emitters const& emitters, RixBxdfScratch& q, SubpathLevel const& level, RtColorRGB const* throughput, RtColorRGB* radiance) {
         int const n = ctx.numPts;
         RixShadingContext::Allocator pool(&ctx);
-        RtFloat2* xi = pool.AllocFor<RtFloat2>(n);
-        RixLightSample* sample = pool.AllocFor<RixLightSample>(n);
+        // Needed only during this call: on the heap, so that deeper bounces do not stack them up.
+        std::vector<RtFloat2> xiStorage(static_cast<size_t>(n));
+        std::vector<RixLightSample> sampleStorage(static_cast<size_t>(n));
+        RtFloat2* xi = xiStorage.data();
+        RixLightSample* sample = sampleStorage.data();
         for (int light = 0; light < ictx.GetNumLights(); ++light) {
             bool const emits = ictx.CanEmit(light);
             rng.DrawSamples2D(xi);
@@ -289,6 +293,26 @@ private:
         }
     }
 
+    /// What lightSubpaths needs for one camera batch, per point, only while it runs.
+    struct PerPoint {
+        explicit PerPoint(int n)
+            : rays(static_cast<size_t>(n)), samples(static_cast<size_t>(n)), xiPosition(static_cast<size_t>(n)),
+              xiDirection(static_cast<size_t>(n)), xiLight(static_cast<size_t>(n)), deltaLight(new bool[static_cast<size_t>(n)]),
+              lightIndex(static_cast<size_t>(n)), neeOverEmit(static_cast<size_t>(n)), carried(static_cast<size_t>(n)),
+              root(static_cast<size_t>(n)), cameraIndex(static_cast<size_t>(n)), pdfDir(static_cast<size_t>(n)) {}
+        std::vector<RixLightEmission> rays;
+        std::vector<RixRNG::SampleCtx> samples;
+        std::vector<RtFloat2> xiPosition, xiDirection;
+        std::vector<float> xiLight;
+        std::unique_ptr<bool[]> deltaLight;
+        std::vector<int> lightIndex;
+        std::vector<float> neeOverEmit;
+        std::vector<RtColorRGB> carried;
+        std::vector<PathVertex> root;
+        std::vector<int> cameraIndex;
+        std::vector<float> pdfDir;
+    };
+
     /// s >= 2: a light subpath for every point, each of its vertices joined to the point.
     void lightSubpaths(RixShadingContext const& ctx, RixBxdf& bxdf, RixRNG& rng, RixIntegratorContext& ictx,
                        Emitters const& emitters, RixBxdfScratch& q, SubpathLevel const& level, RtColorRGB const* throughput,
@@ -297,20 +321,24 @@ private:
         RixShadingContext::Allocator pool(&ctx);
         // Everything the joins need is allocated now: the light subpaths are
         // traced (and their memory released) before the camera Bxdf is asked.
-        Connection* joins = pool.AllocFor<Connection>(RixMax(1, n * maxLightSurfaces));
-        RixLightEmission* rays = pool.AllocFor<RixLightEmission>(n);
-        RixRNG::SampleCtx* samples = pool.AllocFor<RixRNG::SampleCtx>(n);
-        RtFloat2* xiPosition = pool.AllocFor<RtFloat2>(n);
-        RtFloat2* xiDirection = pool.AllocFor<RtFloat2>(n);
-        float* xiLight = pool.AllocFor<float>(n);
-        bool* deltaLight = pool.AllocFor<bool>(n);
-        int* lightIndex = pool.AllocFor<int>(n);
-        float* neeOverEmit = pool.AllocFor<float>(n);
-        RtColorRGB* carried = pool.AllocFor<RtColorRGB>(n);
+        // The joins themselves are the largest array and are not needed once
+        // joined: they live only as long as this call, not as long as the batch
+        // (the deeper bounces' batches would otherwise stack them up).
+        std::vector<Connection> joinStorage(static_cast<size_t>(RixMax(1, n * maxLightSurfaces)));
+        Connection* joins = joinStorage.data();
+        PerPoint scratch(n);
+        RixLightEmission* rays = scratch.rays.data();
+        RixRNG::SampleCtx* samples = scratch.samples.data();
+        RtFloat2* xiPosition = scratch.xiPosition.data();
+        RtFloat2* xiDirection = scratch.xiDirection.data();
+        float* xiLight = scratch.xiLight.data();
+        bool* deltaLight = scratch.deltaLight.get();
+        int* lightIndex = scratch.lightIndex.data();
+        float* neeOverEmit = scratch.neeOverEmit.data();
+        RtColorRGB* carried = scratch.carried.data();
         SubpathLevel root;
-        root.vertex = pool.AllocFor<PathVertex>(n);
-        int* cameraIndex = pool.AllocFor<int>(n);
-        for (int k = 0; k < n * maxLightSurfaces; ++k) joins[k] = Connection();
+        root.vertex = scratch.root.data();
+        int* cameraIndex = scratch.cameraIndex.data();
 
         rng.DrawSamples1D(xiLight);
         rng.DrawSamples2D(xiPosition);
@@ -338,7 +366,7 @@ private:
         }
         LightPath path{level,        joins,      maxLightSurfaces, lightTracing ? m_maxPathLength : maxLightSurfaces,
                        lightTracing, deltaLight, lightIndex,       neeOverEmit};
-        float* pdfDir = pool.AllocFor<float>(n);
+        float* pdfDir = scratch.pdfDir.data();
         for (int i = 0; i < n; ++i) pdfDir[i] = rays[i].pdfDir;
         ictx.TraceEmitted(n, rays, samples, [&](RixShadeBatch& batch) {
             lightVertex(batch, ictx, path, root, nullptr, cameraIndex, carried, pdfDir, 1);
