@@ -522,7 +522,7 @@ private:
             float sum = C * C * lightSideSum(&level, j, revPrevious, path.deltaLight[cameraIndex[j]], path.neeOverEmit[cameraIndex[j]]);
             RtColorRGB value = carried[j] * f * (eye[j].importance / (1.0f + sum));
             if (std::isfinite(value.r) && std::isfinite(value.g) && std::isfinite(value.b))
-                ictx.SplatCamera(ctx, j, value);
+                ictx.SplatCamera(eye[j], value);
             else
                 ictx.CountNonFinite();
         }

@@ -62,6 +62,7 @@ struct RixCameraConnection {
     float distance = 0.0f;
     float importance = 0.0f;   ///< a light path's W * throughput times this is what it adds to the pixel it lands in
     float pdfArea = 0.0f;      ///< density (per unit area at the point) of a camera ray reaching it, for MIS
+    int pixelX = -1, pixelY = -1;  ///< the pixel it lands in
 };
 
 /// A batch the renderer shaded on the integrator's behalf (a further bounce):
@@ -109,12 +110,13 @@ public:
 
     /// Light tracing, for integrators whose WantsLightTracing() is true. CanConnectCamera: the
     /// camera is a pinhole (perspective). ConnectCamera: where point i of ctx lands in the image;
-    /// with testVisibility, a shadow ray toward the eye too. SplatCamera adds value * importance to
-    /// the pixel point i lands in; CountLightPaths tells how many light subpaths could add (the
-    /// image gets their sum divided by that count).
+    /// with testVisibility, a shadow ray toward the eye too. SplatCamera adds value (a light path's
+    /// contribution times the connection's importance) to the pixel the connection lands in;
+    /// CountLightPaths tells how many light subpaths could add (the image gets their sum divided
+    /// by that count).
     virtual bool CanConnectCamera() const = 0;
     virtual RixCameraConnection ConnectCamera(RixShadingContext const& ctx, int i, bool testVisibility) = 0;
-    virtual void SplatCamera(RixShadingContext const& ctx, int i, RtColorRGB const& value) = 0;
+    virtual void SplatCamera(RixCameraConnection const& where, RtColorRGB const& value) = 0;
     virtual void CountLightPaths(int count) = 0;
 
     /// Reports a NaN or infinite contribution (a Bxdf bug): counted in the render stats, then dropped.

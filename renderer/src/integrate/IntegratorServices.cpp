@@ -43,9 +43,7 @@ RixLightHit IntegratorServices::lightAlong(Vec3 const& from, Vec3 const& dir, fl
     LightAlongRay seen = nearestLightAlong(m_lights, from, dir, maxDistance);
     // A light that sends nothing this way (the back of a rect light) is no hit for MIS.
     if (!seen.light || seen.radiance.IsBlack()) return {};
-    int index = 0;
-    while (m_lights[static_cast<size_t>(index)] != seen.light) ++index;
-    return {true, seen.distance, seen.radiance, seen.pdf, index};
+    return {true, seen.distance, seen.radiance, seen.pdf, seen.index};
 }
 
 RixLightHit IntegratorServices::VisibleLight(RixShadingContext const& ctx, int i, RtVector3 const& dir) {
@@ -140,6 +138,8 @@ RixCameraConnection IntegratorServices::ConnectCamera(RixShadingContext const& c
     Vec3 toEye;
     if (!m_camera->project(toVec3(P[i]), rasterX, rasterY, toEye, distance, directionPdf)) return out;
     float const distSq = distance * distance;
+    out.pixelX = std::min(static_cast<int>(rasterX), m_film ? m_film->width() - 1 : 0);
+    out.pixelY = std::min(static_cast<int>(rasterY), m_film ? m_film->height() - 1 : 0);
     out.dir = toRt(toEye);
     out.distance = distance;
     out.pdfArea = directionPdf * std::fabs(glm::dot(toVec3(Ngn[i]), toEye)) / distSq;
@@ -149,15 +149,8 @@ RixCameraConnection IntegratorServices::ConnectCamera(RixShadingContext const& c
     return out;
 }
 
-void IntegratorServices::SplatCamera(RixShadingContext const& ctx, int i, RtColorRGB const& value) {
-    if (!m_film || !CanConnectCamera()) return;
-    RtPoint3 const* P;
-    ctx.GetBuiltinVar(RixShadingContext::k_P, &P);
-    float rasterX, rasterY, distance, directionPdf;
-    Vec3 toEye;
-    if (!m_camera->project(toVec3(P[i]), rasterX, rasterY, toEye, distance, directionPdf)) return;
-    int x = std::min(static_cast<int>(rasterX), m_film->width() - 1), y = std::min(static_cast<int>(rasterY), m_film->height() - 1);
-    m_film->addSplat(x, y, value);
+void IntegratorServices::SplatCamera(RixCameraConnection const& where, RtColorRGB const& value) {
+    if (m_film && where.pixelX >= 0 && where.pixelY >= 0) m_film->addSplat(where.pixelX, where.pixelY, value);
 }
 
 }  // namespace bxdflab

@@ -46,7 +46,7 @@ public:
                       std::function<void(RixShadeBatch&)> const& visit) override;
     bool CanConnectCamera() const override { return m_camera && m_camera->perspective(); }
     RixCameraConnection ConnectCamera(RixShadingContext const& ctx, int i, bool testVisibility) override;
-    void SplatCamera(RixShadingContext const& ctx, int i, RtColorRGB const& value) override;
+    void SplatCamera(RixCameraConnection const& where, RtColorRGB const& value) override;
     void CountLightPaths(int count) override {
         if (m_film) m_film->countSplatPaths(static_cast<uint64_t>(count));
     }

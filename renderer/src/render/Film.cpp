@@ -47,10 +47,10 @@ void Film::addSplat(int x, int y, RtColorRGB const& value) {
 
 std::vector<float> Film::rgba() const {
     std::vector<float> out(m_pixels.size() * 4, 0.0f);
+    uint64_t const paths = m_splatPaths.load();
     for (size_t i = 0; i < m_pixels.size(); ++i) {
         Pixel const& p = m_pixels[i];
         if (p.count == 0) continue;
-        uint64_t const paths = m_splatPaths.load();
         for (int c = 0; c < 3; ++c) {
             double splat = m_splats && paths > 0 ? static_cast<double>(m_splats[3 * i + static_cast<size_t>(c)].load()) *
                                                        kSplatUnit / static_cast<double>(paths)

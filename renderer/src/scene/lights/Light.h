@@ -89,6 +89,7 @@ public:
 /// What a ray sees of the lights: the nearest light it hits.
 struct LightAlongRay {
     Light const* light = nullptr;  ///< null: no light in reach
+    int index = -1;                ///< its place in the list searched
     float distance = kInfinity;
     RtColorRGB radiance;
     float pdf = 0.0f;
@@ -101,13 +102,15 @@ struct LightAlongRay {
 inline LightAlongRay nearestLightAlong(std::vector<Light const*> const& lights, Vec3 const& org, Vec3 const& dir,
                                        float maxDistance) {
     LightAlongRay nearest;
-    for (Light const* light : lights) {
+    for (size_t k = 0; k < lights.size(); ++k) {
+        Light const* light = lights[k];
         if (light->isDelta()) continue;
         LightAlongRay candidate;
         if (!light->intersect(org, dir, candidate.distance, candidate.radiance, candidate.pdf)) continue;
         bool inReach = candidate.distance < maxDistance || (std::isinf(maxDistance) && light->isInfinite());
         if (inReach && (!nearest.light || candidate.distance < nearest.distance)) {
             candidate.light = light;
+            candidate.index = static_cast<int>(k);
             nearest = candidate;
         }
     }
