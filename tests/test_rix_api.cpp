@@ -188,6 +188,7 @@ TEST_CASE("Fresnel: normal incidence, grazing, and total internal reflection", "
     CHECK(R.z == Approx(V.z));
     CHECK(R.x == Approx(-V.x));
     CHECK(T.z < 0.0f);  // into the surface
+    CHECK(T.x < 0.0f);  // and onward, away from V's side: the eye ray -V bent, ready to trace
     CHECK(T.Length() == Approx(1.0f).epsilon(1e-5));
     // Snell: sin(theta_t) = eta sin(theta_i)
     CHECK(std::sqrt(1 - T.z * T.z) == Approx(std::sqrt(1 - V.z * V.z) / 1.5f).epsilon(1e-4));

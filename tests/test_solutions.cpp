@@ -173,6 +173,15 @@ TEST_CASE("solutions: values at fixed directions match hand-computed numbers", "
         CHECK(weightAt(*p, viewFrom(0), direction(30, 90)).r == Approx(expected).epsilon(1e-4));
         // Along the fiber the highlight is gone: psi_h = 30 degrees is 5 beta away.
         CHECK(weightAt(*p, viewFrom(0), direction(30, 0)).r == Approx(0.5 / pi * cosL).epsilon(1e-3));
+        // Seen at 40 degrees along the fiber, the highlight is a cone: light must
+        // travel in along the fiber as far as it travels out toward the viewer, so
+        // L lies opposite V (psi_h = 0), not beside it (psi_h = 80 degrees). A lobe
+        // built on the refracted view direction as it comes (it points into the
+        // wood) swaps the two. At the peak psi_d = 80 degrees: f = g(0) / cos^2(40).
+        double cos40 = std::cos(40 * pi / 180);
+        CHECK(weightAt(*p, viewFrom(40), direction(40, 180)).r ==
+              Approx(0.5 / pi * cos40 + 1.0 / (0.1 * std::sqrt(2 * pi)) / cos40).epsilon(1e-4));
+        CHECK(weightAt(*p, viewFrom(40), direction(40, 0)).r == Approx(0.5 / pi * cos40).epsilon(1e-3));
     }
     SECTION("emissive: no lobes, only emission") {
         auto p = probe("emissive", "\"color emissiveColor\" [3 2 1]");

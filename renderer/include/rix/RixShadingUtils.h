@@ -111,8 +111,13 @@ PRMAN_INLINE void RixFresnelDielectric(float cosTheta, float eta, float* Kr) {
 /// (e.g. 1/1.5 for air over a varnish). Outputs (each may be null):
 ///   Kr    reflectance, in [0, 1]
 ///   Rdir  the mirror direction 2 (N.V) N - V
-///   Tdir  the transmitted direction (pointing into the surface), or the zero
-///         vector on total internal reflection (then Kr = 1).
+///   Tdir  the transmitted direction, or the zero vector on total internal
+///         reflection (then Kr = 1).
+/// Like V, Rdir and Tdir point AWAY from the shading point: Rdir is where light
+/// must come from to reflect toward V, Tdir where it must come from (inside the
+/// surface) to refract toward V. Tdir is therefore the eye ray -V bent into the
+/// surface, ready to use as a transmission sample's Ln; the path light takes
+/// inside the surface on its way out to the viewer is -Tdir.
 /// If V is below N the normal is flipped so the formulas stay valid.
 PRMAN_INLINE void RixFresnelDielectric(RtVector3 const& V, RtNormal3 const& N, float eta, float* Kr,
                                        RtVector3* Rdir, RtVector3* Tdir) {
