@@ -80,10 +80,7 @@ private:
 
         // 1. Emission. Emissive surfaces are not sampled as lights, so a path
         //    that reaches one simply adds what it emits.
-        RtColorRGB* emitted = pool.AllocFor<RtColorRGB>(n);
-        if (bxdf.EmitLocal(emitted))
-            for (int i = 0; i < n; ++i) accumulate(ictx, radiance[i], throughput[i] * emitted[i]);
-        if (!bxdf.GetAllLobeTraits().HasAny()) return;
+        if (!addEmission(ctx, bxdf, ictx, throughput, radiance)) return;
 
         // 2. Next-event estimation.
         addLightSamples(ctx, bxdf, rng, ictx, m_numLightSamples, m_numBxdfSamples, throughput, radiance);

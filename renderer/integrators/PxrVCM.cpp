@@ -226,10 +226,7 @@ private:
         RixShadingContext::Allocator pool(&ctx);
 
         // s = 0 for emissive surfaces: nothing else can make these paths.
-        RtColorRGB* emitted = pool.AllocFor<RtColorRGB>(n);
-        if (bxdf.EmitLocal(emitted))
-            for (int i = 0; i < n; ++i) accumulate(ictx, radiance[i], throughput[i] * emitted[i]);
-        if (!bxdf.GetAllLobeTraits().HasAny()) return;
+        if (!addEmission(ctx, bxdf, ictx, throughput, radiance)) return;
 
         RixBxdfScratch q(ctx);
         if (ictx.GetNumLights() > 0) lightSamples(ctx, bxdf, rng, ictx, emitters, q, level, throughput, radiance);

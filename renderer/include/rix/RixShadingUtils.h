@@ -143,15 +143,22 @@ PRMAN_INLINE void RixFresnelDielectric(RtVector3 const& V, RtNormal3 const& N, f
 // hemisphere around N and returns its cosine with N. The density of the
 // result is stated next to each; use it as FPdf.
 
+/// The direction at polar angle theta from the unit axis A (given as the
+/// angle's cosine and sine) and azimuth phi from TX toward TY, in the
+/// orthonormal frame (TX, TY, A). Every sampler below ends here; so can yours.
+PRMAN_INLINE RtVector3 RixDirectionFromAngles(float cosTheta, float sinTheta, float phi, RtVector3 const& A,
+                                              RtVector3 const& TX, RtVector3 const& TY) {
+    float sinPhi, cosPhi;
+    RixSinCos(phi, &sinPhi, &cosPhi);
+    return TX * (sinTheta * cosPhi) + TY * (sinTheta * sinPhi) + A * cosTheta;
+}
+
 /// Cosine-weighted direction: pdf = cosTheta / pi.
 /// cos(theta) = sqrt(1 - xi0), phi = 2 pi xi1; cosTheta > 0 for every xi0 < 1.
 PRMAN_INLINE void RixCosDirectionalDistribution(RtFloat2 const& xi, RtNormal3 const& N, RtVector3 const& TX,
                                                 RtVector3 const& TY, RtVector3& out, float& cosTheta) {
     float c = std::sqrt(RixMax(0.0f, 1.0f - xi[0]));
-    float s = std::sqrt(RixMax(0.0f, xi[0]));
-    float sinPhi, cosPhi;
-    RixSinCos(F_TWOPI * xi[1], &sinPhi, &cosPhi);
-    out = TX * (s * cosPhi) + TY * (s * sinPhi) + N * c;
+    out = RixDirectionFromAngles(c, std::sqrt(RixMax(0.0f, xi[0])), F_TWOPI * xi[1], N, TX, TY);
     cosTheta = c;
 }
 /// Cosine-weighted direction around N in a frame built from N alone.
@@ -167,10 +174,7 @@ PRMAN_INLINE void RixCosDirectionalDistribution(RtFloat2 const& xi, RtNormal3 co
 PRMAN_INLINE void RixUniformDirectionalDistribution(RtFloat2 const& xi, RtNormal3 const& N, RtVector3 const& TX,
                                                     RtVector3 const& TY, RtVector3& out, float& cosTheta) {
     float c = 1.0f - xi[0];
-    float s = std::sqrt(RixMax(0.0f, 1.0f - c * c));
-    float sinPhi, cosPhi;
-    RixSinCos(F_TWOPI * xi[1], &sinPhi, &cosPhi);
-    out = TX * (s * cosPhi) + TY * (s * sinPhi) + N * c;
+    out = RixDirectionFromAngles(c, std::sqrt(RixMax(0.0f, 1.0f - c * c)), F_TWOPI * xi[1], N, TX, TY);
     cosTheta = c;
 }
 /// Uniform hemisphere direction around N in a frame built from N alone.
@@ -196,11 +200,8 @@ PRMAN_INLINE float RixPhongLobePdf(float cosAlpha, float n) {
 PRMAN_INLINE void RixPhongLobeDirectionalDistribution(RtFloat2 const& xi, float n, RtVector3 const& A,
                                                       RtVector3& out, float& cosAlpha) {
     float c = std::pow(RixMax(xi[0], 5.9604645e-8f), 1.0f / (n + 1.0f));
-    float s = std::sqrt(RixMax(0.0f, 1.0f - c * c));
-    float sinPhi, cosPhi;
-    RixSinCos(F_TWOPI * xi[1], &sinPhi, &cosPhi);
     RtVector3 TX, TY;
     RixComputeShadingBasis(A, RtVector3(0.0f, 0.0f, 0.0f), TX, TY);
-    out = TX * (s * cosPhi) + TY * (s * sinPhi) + A * c;
+    out = RixDirectionFromAngles(c, std::sqrt(RixMax(0.0f, 1.0f - c * c)), F_TWOPI * xi[1], A, TX, TY);
     cosAlpha = c;
 }

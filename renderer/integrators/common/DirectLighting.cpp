@@ -35,6 +35,15 @@ void accumulate(RixIntegratorContext& ictx, RtColorRGB& radiance, RtColorRGB con
         ictx.CountNonFinite();
 }
 
+bool addEmission(RixShadingContext const& ctx, RixBxdf& bxdf, RixIntegratorContext& ictx,
+                 RtColorRGB const* throughput, RtColorRGB* radiance) {
+    int const n = ctx.numPts;
+    RtColorRGB* emitted = RixShadingContext::Allocator(&ctx).AllocFor<RtColorRGB>(n);
+    if (bxdf.EmitLocal(emitted))
+        for (int i = 0; i < n; ++i) accumulate(ictx, radiance[i], throughput[i] * emitted[i]);
+    return bxdf.GetAllLobeTraits().HasAny();
+}
+
 void addLightSamples(RixShadingContext const& ctx, RixBxdf& bxdf, RixRNG& rng, RixIntegratorContext& ictx,
                      int numLightSamples, int numBxdfSamples, RtColorRGB const* throughput, RtColorRGB* radiance) {
     int const n = ctx.numPts;

@@ -17,6 +17,12 @@ void addLightSamples(RixShadingContext const& ctx, RixBxdf& bxdf, RixRNG& rng, R
 /// Adds a contribution, or reports it when it is not finite (a Bxdf bug).
 void accumulate(RixIntegratorContext& ictx, RtColorRGB& radiance, RtColorRGB const& contribution);
 
+/// Adds what the batch's surfaces emit (EmitLocal) times throughput[i], the way
+/// a path that meets an emissive surface counts it; returns whether the Bxdf has
+/// lobes to go on with (a purely emissive one has none).
+bool addEmission(RixShadingContext const& ctx, RixBxdf& bxdf, RixIntegratorContext& ictx,
+                 RtColorRGB const* throughput, RtColorRGB* radiance);
+
 class DirectLighting : public RixIntegrator {
 public:
     /// With headlight set, the lights are PxrDefault's light at the camera (a
