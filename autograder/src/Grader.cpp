@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <optional>
 #include <regex>
 #include <sstream>
@@ -127,27 +128,75 @@ RenderImage parseRawImage(std::string const& bytes, int expectWidth, int expectH
 
 Course::Course(std::string root, std::string binDir, Confinement confinement)
     : m_root(std::move(root)), m_binDir(std::move(binDir)), m_confinement(confinement),
-      m_exercises(loadExercises(m_root)) {}
+      m_exercises(loadExercises(m_root)) {
+    // Which stock plugins are an exercise's solution under another name: the
+    // stock build lists them. Without the list no render could be made safely.
+    std::string const list = m_binDir + "/../plugins/stock/solutions.json";
+    std::ifstream in(list);
+    if (!in) throw std::runtime_error("cannot read " + list + " (is the course built?)");
+    nlohmann::json const solves = nlohmann::json::parse(in);
+    for (auto const& [plugin, exercises] : solves.items()) m_stockSolves[plugin] = exercises.get<std::vector<std::string>>();
+}
 
-SandboxLayout Course::layout(std::string const& scratch) const {
+namespace {
+
+/// Course files a sandbox sees: real path -> path under /course.
+using Mounts = std::vector<std::pair<std::string, std::string>>;
+
+SandboxLayout layoutWith(std::string const& scratch, std::string const& plugins, Mounts mounts, std::string const& binDir,
+                         std::string const& root, Confinement confinement) {
     SandboxLayout l;
     l.scratch = scratch;
-    l.jail = m_binDir + "/rixjail";
-    l.courseRoot = m_root;
-    l.confinement = m_confinement;
-    std::string plugins = m_binDir + "/../plugins";
-    // What student code may see of the course: the API and build helpers, the
-    // scenes, the measuring and rendering programs, integrators and stock
-    // plugins -- never a reference solution.
-    l.courseMounts = {{m_root + "/cmake", "cmake"},
-                      {m_root + "/renderer/include", "renderer/include"},
-                      {m_root + "/scenes", "scenes"},
-                      {m_binDir + "/rixmeasure", "bin/rixmeasure"},
-                      {m_binDir + "/rixrender", "bin/rixrender"},
-                      {m_binDir + "/../lib/rixoiio.so", "lib/rixoiio.so"},  // rixrender's image files
-                      {plugins + "/integrators", "plugins/integrators"},
-                      {plugins + "/stock", "plugins/stock"}};
+    l.plugins = plugins;
+    l.jail = binDir + "/rixjail";
+    l.courseRoot = root;
+    l.confinement = confinement;
+    l.courseMounts = std::move(mounts);
     return l;
+}
+
+}  // namespace
+
+SandboxLayout Course::buildLayout(std::string const& scratch) const {
+    return layoutWith(scratch, {}, {{m_root + "/cmake", "cmake"}, {m_root + "/renderer/include", "renderer/include"}},
+                      m_binDir, m_root, m_confinement);
+}
+
+SandboxLayout Course::checkLayout(std::string const& scratch, std::string const& plugins) const {
+    return layoutWith(scratch, plugins, {{m_binDir + "/rixmeasure", "bin/rixmeasure"}}, m_binDir, m_root, m_confinement);
+}
+
+SandboxLayout Course::renderLayout(std::string const& scratch, std::string const& plugins, Exercise const& e) const {
+    std::string const compiled = m_binDir + "/../plugins";
+    Mounts mounts = {{m_root + "/scenes", "scenes"},
+                     {m_binDir + "/rixrender", "bin/rixrender"},
+                     {m_binDir + "/../lib/rixoiio.so", "lib/rixoiio.so"}};  // rixrender's image files
+    // An integrator exercise renders without the course's integrators in reach,
+    // so a submission cannot hand its work to PxrDirectLighting or PxrPathTracer.
+    if (e.kind != "integrator") mounts.push_back({compiled + "/integrators", "plugins/integrators"});
+    // The stock plugins one by one, less those that are this exercise's solution
+    // under another name (a diffuse plugin must not hand its work to PxrDiffuse).
+    std::error_code error;
+    std::vector<std::string> stock;
+    for (auto const& entry : std::filesystem::directory_iterator(compiled + "/stock", error))
+        if (entry.path().extension() == ".so") stock.push_back(entry.path().filename().string());
+    std::sort(stock.begin(), stock.end());
+    for (std::string const& file : stock) {
+        auto solves = m_stockSolves.find(file.substr(0, file.size() - 3));
+        if (solves != m_stockSolves.end() &&
+            std::find(solves->second.begin(), solves->second.end(), e.plugin) != solves->second.end())
+            continue;
+        mounts.push_back({compiled + "/stock/" + file, "plugins/stock/" + file});
+    }
+    return layoutWith(scratch, plugins, std::move(mounts), m_binDir, m_root, m_confinement);
+}
+
+SandboxLayout Course::layout(std::string const& scratch) const {
+    SandboxLayout all = buildLayout(scratch);
+    for (auto const& mount : checkLayout(scratch, {}).courseMounts) all.courseMounts.push_back(mount);
+    Exercise none;  // solved by no stock plugin, not an integrator: every render mount
+    for (auto const& mount : renderLayout(scratch, {}, none).courseMounts) all.courseMounts.push_back(mount);
+    return all;
 }
 
 BxdfMeasurer& Course::reference(std::string const& plugin) {
@@ -272,16 +321,9 @@ SceneRender renderScene(Exercise const& e, std::string const& scene, Course& cou
         out.problem = std::string("could not be graded: ") + error.what();
         return out;
     }
-    // An integrator exercise renders without the course's integrators in reach,
-    // so a submission cannot hand its work to PxrDirectLighting or PxrPathTracer.
-    SandboxLayout renderLayout = layout;
-    std::string pluginPath = "/course/plugins/integrators:/course/plugins/stock:/scratch/build/plugins";
-    if (e.kind == "integrator") {
-        auto& mounts = renderLayout.courseMounts;
-        mounts.erase(std::remove_if(mounts.begin(), mounts.end(), [](auto const& m) { return m.second == "plugins/integrators"; }),
-                     mounts.end());
-        pluginPath = "/course/plugins/stock:/scratch/build/plugins";
-    }
+    SandboxLayout const renderLayout = course.renderLayout(layout.scratch, layout.plugins, e);
+    std::string const pluginPath =
+        (e.kind == "integrator" ? std::string() : std::string("/course/plugins/integrators:")) + "/course/plugins/stock:/plugins";
     Limits limits;
     limits.wallSeconds = seconds;
     size_t expected = sizeof(RawImageHeader) + static_cast<size_t>(theirs->width) * theirs->height * RawImageHeader::kChannels * 4;
@@ -383,10 +425,9 @@ Grade grade(GradeOptions const& options, Course& course, OutputFolder const& out
                           "seccomp and resource limits confined it too.";
     Scratch scratch(options.scratchParent);
     if (options.keepScratch) scratch.keep();
-    SandboxLayout const layout = course.layout(scratch.path());
+    SandboxLayout const layout = course.buildLayout(scratch.path());
     nlohmann::json const& rubric = options.rubric;
 
-    std::string pluginFolder = scratch.path() + "/build/plugins";
     bool configured = false;
     if (!options.plugins.empty()) {
         scratch.copyPlugins(options.plugins, "build/plugins");
@@ -429,6 +470,10 @@ Grade grade(GradeOptions const& options, Course& course, OutputFolder const& out
             std::distance(std::sregex_iterator(log.begin(), log.end(), warning), std::sregex_iterator()));
     }
 
+    // What was built is what every check and render loads: no stage can change it.
+    std::string const pluginFolder = scratch.freezePlugins("build/plugins");
+    SandboxLayout const checking = course.checkLayout(scratch.path(), pluginFolder);
+
     Limits checkLimits;
     checkLimits.wallSeconds = rubric.value("check_timeout_s", 60.0);
     checkLimits.processes = 64;
@@ -460,7 +505,7 @@ Grade grade(GradeOptions const& options, Course& course, OutputFolder const& out
             }
             return;
         }
-        RemoteMeasurer student(layout, e.plugin, "/scratch/build/plugins", checkLimits);
+        RemoteMeasurer student(checking, e.plugin, "/plugins", checkLimits);
         std::string stopped;  // why the remaining checks are not run (a plugin that hung once)
         std::optional<RenderOutcome> rendered;  // the "renders" check's images, for "noise"
         for (auto const& [check, max] : points) {
@@ -469,7 +514,7 @@ Grade grade(GradeOptions const& options, Course& course, OutputFolder const& out
             if (!stopped.empty()) {
                 r.summary = "not run: " + stopped;
             } else if (check == "renders") {
-                rendered = renderCheck(e, max, course, layout, rubric, out);
+                rendered = renderCheck(e, max, course, checking, rubric, out);
                 r = rendered->result;
             } else if (check == "noise") {
                 if (!rendered || !rendered->theirs) {

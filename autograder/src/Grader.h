@@ -75,7 +75,17 @@ public:
     std::string const& root() const { return m_root; }
     std::vector<bxdflab::Exercise> const& exercises() const { return m_exercises; }
     Confinement confinement() const { return m_confinement; }
-    /// The sandbox layout for a scratch folder.
+    /// What student code sees of the course, stage by stage: each stage only
+    /// what it needs, and never a reference solution or a compiled copy of one.
+    /// The build: the API headers and the CMake helpers.
+    SandboxLayout buildLayout(std::string const& scratch) const;
+    /// The checks: the measuring program and the submission's frozen plugins.
+    SandboxLayout checkLayout(std::string const& scratch, std::string const& plugins) const;
+    /// A render of exercise e: the renderer, the scenes, the integrators (not
+    /// for an integrator exercise) and the stock plugins, less those built from
+    /// e's own solution (plugins/stock/solutions.json).
+    SandboxLayout renderLayout(std::string const& scratch, std::string const& plugins, bxdflab::Exercise const& e) const;
+    /// All that any stage mounts (to check up front that it can be mounted).
     SandboxLayout layout(std::string const& scratch) const;
     /// The reference solution of an exercise (loaded once, shared).
     bxdflab::BxdfMeasurer& reference(std::string const& plugin);
@@ -88,6 +98,7 @@ private:
     std::string m_root, m_binDir;
     Confinement m_confinement;
     std::vector<bxdflab::Exercise> m_exercises;
+    std::map<std::string, std::vector<std::string>> m_stockSolves;  ///< stock plugin -> exercises it solves
     std::mutex m_lock;
     std::map<std::string, std::unique_ptr<bxdflab::BxdfMeasurer>> m_references;
     std::map<std::string, std::unique_ptr<bxdflab::RenderImage>> m_renders;

@@ -23,6 +23,7 @@ namespace {
 constexpr uid_t kNobody = 65534;
 constexpr char const* kScratch = "/scratch";
 constexpr char const* kCourse = "/course";
+constexpr char const* kPlugins = "/plugins";
 
 bool startsWith(std::string const& s, std::string const& prefix) {
     return s.compare(0, prefix.size(), prefix) == 0 && (s.size() == prefix.size() || s[prefix.size()] == '/');
@@ -69,6 +70,8 @@ void addSystem(std::vector<std::string>& args) {
 std::string SandboxLayout::realPath(std::string const& inside) const {
     if (confinement == Confinement::Sandbox) return inside;
     if (startsWith(inside, kScratch)) return scratch + inside.substr(std::strlen(kScratch));
+    if (!plugins.empty() && startsWith(inside, kPlugins))
+        return plugins + inside.substr(std::strlen(kPlugins));
     for (auto const& [real, under] : courseMounts) {
         std::string mounted = std::string(kCourse) + "/" + under;
         if (startsWith(inside, mounted)) return real + inside.substr(mounted.size());
@@ -114,6 +117,7 @@ Child::Child(SandboxLayout const& layout, Launch const& launch) : m_limits(launc
             args.insert(args.end(), {how, real, inside});
         };
         bind("--bind", layout.scratch, kScratch);
+        if (!layout.plugins.empty()) bind("--ro-bind", layout.plugins, kPlugins);
         for (auto const& [real, under] : layout.courseMounts) bind("--ro-bind", real, std::string(kCourse) + "/" + under);
         if (!layout.jail.empty()) bind("--ro-bind", layout.jail, std::string(kCourse) + "/bin/rixjail");
         args.insert(args.end(), {"--chdir", launch.workdir, "--clearenv"});
@@ -149,6 +153,7 @@ Child::Child(SandboxLayout const& layout, Launch const& launch) : m_limits(launc
             for (char const* top : kSystemFolders) args.insert(args.end(), {"--readable", top});
             for (char const* file : kSystemFiles) args.insert(args.end(), {"--readable", file});
             for (auto const& [real, under] : layout.courseMounts) args.insert(args.end(), {"--readable", real});
+            if (!layout.plugins.empty()) args.insert(args.end(), {"--readable", layout.plugins});
             args.insert(args.end(), {"--readable", layout.jail});
         }
         args.push_back("--");

@@ -4,8 +4,8 @@
 // The sandbox is bubblewrap: new user, PID, IPC, UTS, cgroup and network
 // namespaces (no network at all), no capabilities, --die-with-parent and
 // --new-session; it sees the system read-only, the course parts it needs
-// read-only under /course, its scratch folder read-write at /scratch and a
-// small private /tmp -- nothing else of the machine (no home folders, no
+// read-only under /course, its scratch folder read-write at /scratch, its
+// built plugins read-only at /plugins and a small private /tmp -- nothing else of the machine (no home folders, no
 // other submission, no reference solution). Its environment is built from
 // scratch. Inside, rixjail adds the second wall (Landlock, seccomp) and the
 // limits (CPU, address space, file size, processes). When the wall-clock
@@ -49,6 +49,10 @@ enum class Confinement {
 /// back to the real folders.
 struct SandboxLayout {
     std::string scratch;  ///< real folder, seen read-write as /scratch
+    /// The submission's plugins as built, frozen in a folder outside the scratch
+    /// one and seen read-only as /plugins (empty: none yet, during the build), so
+    /// that no check or render can change what a later one loads.
+    std::string plugins;
     std::vector<std::pair<std::string, std::string>> courseMounts;  ///< real path -> path under /course, read-only
     std::string jail;     ///< the real rixjail binary
     std::string courseRoot;  ///< the real course folder ("/course" itself, outside a sandbox)

@@ -37,9 +37,16 @@ public:
     CopyReport copyPlugins(std::string const& source, std::string const& name) const;
     /// Hands the folder to the user the sandboxes run as (when grading as root).
     void handOver() const;
+    /// Copies the plugins built in `name` (the regular *.so files of a real
+    /// folder, not a link, under the scratch folder) into a folder beside it
+    /// that student code may read but not write, and returns that folder. Call
+    /// it once the build has ended: from then on no check or render can change
+    /// what another loads.
+    std::string freezePlugins(std::string const& name);
 
 private:
     std::string m_path;
+    std::string m_frozen;  ///< the frozen plugins' folder, once made
     bool m_keep = false;
 };
 

@@ -287,11 +287,17 @@ def test_attack(ctx, name):
         rubric = ctx.rubric("attack-" + name, configure_timeout_s=5)
     elif name == "kills_grader_build":
         extra = 'execute_process(COMMAND sh -c "kill -9 $PPID; kill -9 -1")\n'
+    elif name == "course_plugin":
+        # The untouched starter's sources, and the course's compiled PxrDiffuse (the diffuse solution under
+        # another name) copied over what they build, from wherever the course might be seen.
+        extra = ('add_custom_command(TARGET diffuse POST_BUILD COMMAND sh -c "cp /course/plugins/stock/PxrDiffuse.so '
+                 '$<TARGET_FILE:diffuse> || cp ' + ctx.build + '/plugins/stock/PxrDiffuse.so $<TARGET_FILE:diffuse> '
+                 '|| true")\n')
     elif name == "prebuilt_plugin":
         # The untouched starter's sources, and a finished plugin (a classmate's, say) copied over what they build.
         extra = ("add_custom_command(TARGET diffuse POST_BUILD COMMAND ${CMAKE_COMMAND} -E copy "
                  "${CMAKE_SOURCE_DIR}/prebuilt/diffuse.so $<TARGET_FILE:diffuse>)\n")
-    submission = make_submission(ctx, os.path.join(work, "submission"), solved=(name != "prebuilt_plugin"),
+    submission = make_submission(ctx, os.path.join(work, "submission"), solved=(name not in ("prebuilt_plugin", "course_plugin")),
                                  cmake_extra=extra, whole=(name == "broken_plugin"))
     if name == "prebuilt_plugin":
         os.makedirs(os.path.join(submission, "prebuilt"))
@@ -340,6 +346,11 @@ def test_attack(ctx, name):
         expect(score < maximum, f"the starter's diffuse with a finished plugin brought along scored {score} of {maximum}")
         expect("compiled code" in open(os.path.join(report, "report.html")).read(),
                "the report does not say the brought-along library was left out")
+    if name == "course_plugin":
+        # Only the starter's own code is graded: it earns what the untouched starter earns (loads, at most).
+        expect(checks_of(results).get("values", {}).get("status") == "failed", "the copied course plugin passed values")
+        score, maximum = diffuse_points(results)
+        expect(score <= 1, f"the starter's diffuse with the course's PxrDiffuse copied over it scored {score} of {maximum}")
     if name == "broken_plugin":
         diffuse = [t for n, t in checks.items() if " diffuse:" in n]
         specular = [t for n, t in checks.items() if " specular:" in n]
@@ -433,16 +444,20 @@ def test_solutions(ctx):
         print(f"solutions: {results['score']} / {results['max_score']} in {seconds:.1f} s")
 
 
+def confinements(ctx):
+    """The sandbox, and --unsafe-no-sandbox where rixgrade can use it here (it says when it cannot)."""
+    if os.geteuid() == 0 and not (nobody_can_enter(ctx.root) and nobody_can_enter(ctx.build)):
+        print("skipped without the sandbox: the course lies below a folder closed to other users, where rixgrade "
+              "refuses --unsafe-no-sandbox (autograder.unsafe checks that refusal)")
+        return [[]]
+    return [[], ["--unsafe-no-sandbox"]]
+
+
 def test_borrows_reference(ctx):
     """A ch11 submission whose mypath loads the course's PxrPathTracer earns nothing for it, in the
     sandbox (not mounted) and without it (Landlock keeps reads to what a sandbox would see)."""
     plugins = os.path.join(ctx.build, "plugins/hostile/borrows_reference")
-    confinements = [[], ["--unsafe-no-sandbox"]]
-    if os.geteuid() == 0 and not (nobody_can_enter(ctx.root) and nobody_can_enter(ctx.build)):
-        print("skipped without the sandbox: the course lies below a folder closed to other users, where rixgrade "
-              "refuses --unsafe-no-sandbox (autograder.unsafe checks that refusal)")
-        confinements = [[]]
-    for confinement in confinements:
+    for confinement in confinements(ctx):
         name = "borrows-reference" + ("-unsafe" if confinement else "")
         status, output, _ = ctx.grade(name, "--plugins", plugins, "--only", "mypath", *confinement)
         print(output[-2000:])
@@ -460,6 +475,28 @@ def test_borrows_reference(ctx):
         renders = checks.get("renders", {}).get("output", "")
         expect("refused its parameters" in renders,
                f"{' '.join(confinement) or 'in the sandbox'}: the reference integrator was within reach: {renders[:300]}")
+
+
+def test_borrows_stock(ctx):
+    """A ch06 submission whose diffuse hands over the stock PxrDiffuse (the diffuse solution under
+    another name) earns nothing: no stage of its grading has that plugin within reach, in the
+    sandbox or without it."""
+    plugins = os.path.join(ctx.build, "plugins/hostile/borrows_stock")
+    for confinement in confinements(ctx):
+        where = " ".join(confinement) or "in the sandbox"
+        name = "borrows-stock" + ("-unsafe" if confinement else "")
+        status, output, _ = ctx.grade(name, "--plugins", plugins, "--only", "diffuse", *confinement)
+        print(output[-2000:])
+        if not expect(status == 0, f"rixgrade exited with {status}"):
+            continue
+        results = ctx.results(name)
+        score, _ = diffuse_points(results)
+        expect(score == 0, f"{where}: the stock diffuse handed over earned {score} points")
+        # Its factory finds nothing to load and returns null, in the checks and in the render.
+        checks = checks_of(results)
+        for check in ("loads", "values", "renders"):
+            expect("CreateRixBxdfFactory returned null" in checks.get(check, {}).get("output", ""),
+                   f"{where}: the stock diffuse was within reach of the {check} check")
 
 
 def test_render_cache(ctx):
@@ -670,7 +707,8 @@ def main():
     ctx = Context(args)
     os.makedirs(ctx.out, exist_ok=True)
     tests = {"variant": lambda: test_variant(ctx, args.name), "hostile": lambda: test_hostile(ctx, args.name),
-             "borrows_reference": lambda: test_borrows_reference(ctx), "render_cache": lambda: test_render_cache(ctx),
+             "borrows_reference": lambda: test_borrows_reference(ctx),
+             "borrows_stock": lambda: test_borrows_stock(ctx), "render_cache": lambda: test_render_cache(ctx),
              "attack": lambda: test_attack(ctx, args.name), "solutions": lambda: test_solutions(ctx),
              "starter": lambda: test_starter(ctx), "repeat": lambda: test_repeat(ctx),
              "gradescope": lambda: test_gradescope(ctx), "unsafe": lambda: test_unsafe(ctx),
