@@ -453,47 +453,40 @@ def confinements(ctx):
     return [[], ["--unsafe-no-sandbox"]]
 
 
+def grade_borrowing(ctx, name, plugin):
+    """Grades the hostile plugin folder `name` (a plugin that loads the course's own) for `plugin`, in
+    the sandbox and without it; yields (where, checks) for each grading that finished."""
+    plugins = os.path.join(ctx.build, "plugins/hostile", name)
+    for confinement in confinements(ctx):
+        report = name.replace("_", "-") + ("-unsafe" if confinement else "")
+        status, output, _ = ctx.grade(report, "--plugins", plugins, "--only", plugin, *confinement)
+        print(output[-2000:])
+        if expect(status == 0, f"rixgrade exited with {status}"):
+            yield " ".join(confinement) or "in the sandbox", checks_of(ctx.results(report))
+
+
 def test_borrows_reference(ctx):
     """A ch11 submission whose mypath loads the course's PxrPathTracer earns nothing for it, in the
     sandbox (not mounted) and without it (Landlock keeps reads to what a sandbox would see)."""
-    plugins = os.path.join(ctx.build, "plugins/hostile/borrows_reference")
-    for confinement in confinements(ctx):
-        name = "borrows-reference" + ("-unsafe" if confinement else "")
-        status, output, _ = ctx.grade(name, "--plugins", plugins, "--only", "mypath", *confinement)
-        print(output[-2000:])
-        if not expect(status == 0, f"rixgrade exited with {status}"):
-            continue
-        results = ctx.results(name)
-        checks = checks_of(results)
+    for where, checks in grade_borrowing(ctx, "borrows_reference", "mypath"):
         expect("renders" in checks, "renders was not graded")
         for check in ("renders", "noise"):
             if check in checks:
-                expect(checks[check]["status"] == "failed",
-                       f"{' '.join(confinement) or 'in the sandbox'}: the borrowed reference integrator passes {check}")
+                expect(checks[check]["status"] == "failed", f"{where}: the borrowed reference integrator passes {check}")
         # Its CreateRixIntegrator finds nothing to load and returns null: the failure is isolation,
         # not a small difference between the reference and the exercise's solution.
         renders = checks.get("renders", {}).get("output", "")
-        expect("refused its parameters" in renders,
-               f"{' '.join(confinement) or 'in the sandbox'}: the reference integrator was within reach: {renders[:300]}")
+        expect("refused its parameters" in renders, f"{where}: the reference integrator was within reach: {renders[:300]}")
 
 
 def test_borrows_stock(ctx):
     """A ch06 submission whose diffuse hands over the stock PxrDiffuse (the diffuse solution under
     another name) earns nothing: no stage of its grading has that plugin within reach, in the
     sandbox or without it."""
-    plugins = os.path.join(ctx.build, "plugins/hostile/borrows_stock")
-    for confinement in confinements(ctx):
-        where = " ".join(confinement) or "in the sandbox"
-        name = "borrows-stock" + ("-unsafe" if confinement else "")
-        status, output, _ = ctx.grade(name, "--plugins", plugins, "--only", "diffuse", *confinement)
-        print(output[-2000:])
-        if not expect(status == 0, f"rixgrade exited with {status}"):
-            continue
-        results = ctx.results(name)
-        score, _ = diffuse_points(results)
+    for where, checks in grade_borrowing(ctx, "borrows_stock", "diffuse"):
+        score = sum(t["score"] for t in checks.values())
         expect(score == 0, f"{where}: the stock diffuse handed over earned {score} points")
         # Its factory finds nothing to load and returns null, in the checks and in the render.
-        checks = checks_of(results)
         for check in ("loads", "values", "renders"):
             expect("CreateRixBxdfFactory returned null" in checks.get(check, {}).get("output", ""),
                    f"{where}: the stock diffuse was within reach of the {check} check")
