@@ -17,6 +17,7 @@
 #include "RemoteMeasurer.h"
 #include "RenderCache.h"
 #include "Scratch.h"
+#include "SubmissionContents.h"
 #include "film/RawImage.h"
 #include "measure/ProbeMeasurer.h"
 
@@ -507,6 +508,14 @@ Grade grade(GradeOptions const& options, Course& course, OutputFolder const& out
         }
         RemoteMeasurer student(checking, e.plugin, "/plugins", checkLimits);
         std::string stopped;  // why the remaining checks are not run (a plugin that hung once)
+        // An exercise whose work the API already does is graded only when the code is the student's own.
+        if (options.plugins.empty()) {
+            std::string const calls = callsWhatItShouldWrite(scratch.path() + "/submission",
+                                                             e.folder.substr(std::strlen("starter/")), e.sources, e.writeYourself);
+            if (!calls.empty())
+                stopped = "chapter " + e.chapter + " asks you to write this exercise's functions yourself, not to call "
+                          "the API's; your " + calls;
+        }
         std::optional<RenderOutcome> rendered;  // the "renders" check's images, for "noise"
         for (auto const& [check, max] : points) {
             CheckResult r = CheckResult::start(e, check, max);

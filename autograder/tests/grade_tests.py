@@ -492,6 +492,82 @@ def test_borrows_stock(ctx):
                    f"{where}: the stock diffuse was within reach of the {check} check")
 
 
+API_SAMPLING = """#include "Sampling.h"
+#include "RixShadingUtils.h"
+namespace sampling {
+RtVector3 sampleUniformHemisphere(RtFloat2 const& xi, float* pdf) {
+    RtVector3 out; float c;
+    RixUniformDirectionalDistribution(xi, RtNormal3(0, 0, 1), RtVector3(1, 0, 0), RtVector3(0, 1, 0), out, c);
+    *pdf = F_INVTWOPI;
+    return out;
+}
+float uniformHemispherePdf(RtVector3 const& w) { return w.z > 0 ? F_INVTWOPI : 0.0f; }
+RtVector3 sampleCosineHemisphere(RtFloat2 const& xi, float* pdf) {
+    RtVector3 out; float c;
+    RixCosDirectionalDistribution(xi, RtNormal3(0, 0, 1), RtVector3(1, 0, 0), RtVector3(0, 1, 0), out, c);
+    *pdf = c * F_INVPI;
+    return out;
+}
+float cosineHemispherePdf(RtVector3 const& w) { return w.z > 0 ? w.z * F_INVPI : 0.0f; }
+RtVector3 samplePhongLobe(RtFloat2 const& xi, float n, float* pdf) {
+    RtVector3 out; float c;
+    RixPhongLobeDirectionalDistribution(xi, n, RtVector3(0, 0, 1), out, c);
+    *pdf = RixPhongLobePdf(c, n);
+    return out;
+}
+float phongLobePdf(RtVector3 const& w, float n) { return RixPhongLobePdf(w.z, n); }
+}  // namespace sampling
+"""
+
+
+def test_writes_it_yourself(ctx):
+    """The chapter-8 sampling exercise asks for samplers the API already has: a submission that calls
+    the API's (directly, through a header of its own, or with the name pasted together by a macro)
+    earns nothing and is told why; the reference solution's own code, submitted as sources, earns
+    everything."""
+    work = os.path.join(ctx.out, "writes-it-yourself-work")
+    shutil.rmtree(work, ignore_errors=True)
+    own = os.path.join(ctx.root, "solutions/ch08/sampling")
+    # The solution's own samplers, but its Phong pdf handed to the API through a header of the submission.
+    with open(os.path.join(own, "Sampling.cpp")) as f:
+        hidden_in_header = f.read().replace('#include "Sampling.h"\n', '#include "Sampling.h"\n#include "Helpers.h"\n')
+    hidden_in_header = hidden_in_header.replace("return (n + 1.0f) * F_INVTWOPI * std::pow(w.z, n);",
+                                                "return helper(w.z, n);")
+    expect("helper(w.z, n)" in hidden_in_header, "the solution's Phong pdf is no longer where the test expects it")
+    pasted = API_SAMPLING.replace("RixPhongLobePdf(", "PASTE(RixPhongLobe, Pdf)(").replace(
+        '#include "RixShadingUtils.h"\n', '#include "RixShadingUtils.h"\n#define PASTE(a, b) a##b\n')
+    cases = {"calls": (API_SAMPLING, {}, "Sampling.cpp calls Rix"),
+             "header": (hidden_in_header, {"common/Helpers.h": '#pragma once\n#include "RixShadingUtils.h"\n'
+                                           'inline float helper(float c, float n) { return RixPhongLobePdf(c, n); }\n'},
+                        "Helpers.h calls RixPhongLobePdf"),
+             "pasted": (pasted, {}, "pastes tokens together"),
+             "own": (None, {}, None)}
+    for case, (source, extra, said) in cases.items():
+        folder = os.path.join(work, case)
+        shutil.copytree(os.path.join(ctx.root, "starter"), folder, symlinks=True)
+        for leaf in os.listdir(own):
+            shutil.copy(os.path.join(own, leaf), os.path.join(folder, "ch08/sampling", leaf))
+        if source is not None:
+            with open(os.path.join(folder, "ch08/sampling/Sampling.cpp"), "w") as f:
+                f.write(source)
+        for relative, text in extra.items():
+            with open(os.path.join(folder, relative), "w") as f:
+                f.write(text)
+        name = "writes-it-yourself-" + case
+        status, output, _ = ctx.grade(name, "--submission", folder, "--only", "sampling")
+        print(output[-1500:])
+        if not expect(status == 0, f"{case}: rixgrade exited with {status}"):
+            continue
+        results = ctx.results(name)
+        score = sum(t["score"] for t in results["tests"])
+        maximum = sum(t["max_score"] for t in results["tests"])
+        if said is None:
+            expect(score == maximum, f"the solution's own samplers, as sources, scored {score} of {maximum}")
+        else:
+            expect(score == 0, f"{case}: samplers handed to the API scored {score} of {maximum}")
+            expect(all(said in t["output"] for t in results["tests"]), f"{case}: the report does not say '{said}'")
+
+
 def test_render_cache(ctx):
     """Reference renders kept between runs: the same grade from the cache, a damaged entry rendered again,
     a rebuilt solution never served from an entry made with the old one, one entry per scene, spp and seed."""
@@ -701,7 +777,8 @@ def main():
     os.makedirs(ctx.out, exist_ok=True)
     tests = {"variant": lambda: test_variant(ctx, args.name), "hostile": lambda: test_hostile(ctx, args.name),
              "borrows_reference": lambda: test_borrows_reference(ctx),
-             "borrows_stock": lambda: test_borrows_stock(ctx), "render_cache": lambda: test_render_cache(ctx),
+             "borrows_stock": lambda: test_borrows_stock(ctx),
+             "writes_it_yourself": lambda: test_writes_it_yourself(ctx), "render_cache": lambda: test_render_cache(ctx),
              "attack": lambda: test_attack(ctx, args.name), "solutions": lambda: test_solutions(ctx),
              "starter": lambda: test_starter(ctx), "repeat": lambda: test_repeat(ctx),
              "gradescope": lambda: test_gradescope(ctx), "unsafe": lambda: test_unsafe(ctx),

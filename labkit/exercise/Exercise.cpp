@@ -71,6 +71,7 @@ Exercise loadExercise(std::string const& courseRoot, std::string const& manifest
         e.renderSpp = j.value("renderSpp", e.renderSpp);
         if (e.compareBlock < 1 || e.compareBlock > 64) throw std::runtime_error("\"compareBlock\" must be 1 to 64");
         e.similarTo = j.value("similarTo", std::vector<std::string>{});
+        e.writeYourself = j.value("writeYourself", std::vector<std::string>{});
         e.params = j.value("params", std::string());
         e.colorParams = j.value("colorParams", e.params);
         e.hardCaseParams = j.value("hardCaseParams", std::vector<std::string>{});

@@ -1,6 +1,9 @@
 // Chapter 8 exercise: write each sampler and its pdf (see Sampling.h for
 // the recipe). Until you do, each returns the normal direction with pdf 0,
 // which callers treat as "no sample".
+// RixShadingUtils.h has samplers of its own (chapter 6 uses them); here you
+// write these yourself: a submission whose samplers call the API's earns no
+// points for this exercise (the grader reads your code and says so).
 #include "Sampling.h"
 
 #include <cmath>
