@@ -17,7 +17,6 @@
 #include "RemoteMeasurer.h"
 #include "RenderCache.h"
 #include "Scratch.h"
-#include "SubmissionContents.h"
 #include "film/RawImage.h"
 #include "measure/ProbeMeasurer.h"
 
@@ -412,6 +411,62 @@ bool selected(Exercise const& e, GradeOptions const& options) {
     return has(options.chapters, e.chapter) && has(options.only, e.plugin);
 }
 
+namespace {
+
+/// An exercise whose work the API already does (its manifest's writeYourself,
+/// e.g. chapter 8's samplers) is compiled again by the grader from the
+/// manifest's sources alone, with those API functions poisoned: a call, however
+/// it is spelt (a header of the submission, a macro pasting the name), stops
+/// the compile. Leaves the plugin at graded/<plugin>.so in the scratch folder
+/// and returns "", or returns why the exercise is not graded.
+std::string compileOwnWork(Exercise const& e, Course const& course, Scratch& scratch, nlohmann::json const& rubric) {
+    std::string const header = "writeyourself-" + e.plugin + ".h";
+    {
+        std::ofstream poison(scratch.graderFolder() + "/" + header);
+        poison << "// The API functions that do exercise " << e.plugin << "'s work: its code may not use them.\n"
+               << "#pragma once\n#include \"RixShadingUtils.h\"\n#pragma GCC poison";
+        for (auto const& name : e.writeYourself) poison << " " << name;
+        poison << "\n";
+    }
+    std::error_code error;
+    std::filesystem::remove_all(scratch.path() + "/graded", error);  // whatever the build left there, links included
+    std::filesystem::create_directory(scratch.path() + "/graded", error);
+    scratch.handOver();
+
+    std::string const folder = "/scratch/submission/" + e.folder.substr(std::strlen("starter/"));
+    Launch compile;
+    compile.argv = {"c++", "-std=c++17", "-O2", "-fPIC", "-shared", "-fvisibility=hidden", "-I", "/course/renderer/include/rix",
+                    "-I", folder, "-I", "/scratch/submission/common", "-include", "/course/grader/" + header};
+    for (auto const& source : e.sources) compile.argv.push_back(folder + "/" + source);
+    compile.argv.insert(compile.argv.end(), {"-o", "/scratch/graded/" + e.plugin + ".so"});
+    compile.allowProcesses = true;
+    compile.limits.wallSeconds = rubric.value("build_timeout_s", 600.0);
+    compile.limits.fileBytes = 512ull << 20;
+    compile.limits.processes = 64;
+    compile.limits.scratchBytes = 2ull << 30;
+    SandboxLayout layout = course.buildLayout(scratch.path());
+    layout.courseMounts.push_back({scratch.graderFolder(), "grader"});
+    Finished built = runToEnd(layout, compile);
+    if (built.status.ok()) return "";
+    // The compiler's first error, without the sandbox's folder names.
+    std::string firstError;
+    std::istringstream lines(built.err);
+    for (std::string line; std::getline(lines, line);)
+        if (line.find("error") != std::string::npos) {
+            if (firstError.empty() || line.find("poisoned") != std::string::npos) firstError = line;
+            if (line.find("poisoned") != std::string::npos) break;
+        }
+    for (std::string const& prefix : {folder + "/", std::string("/scratch/submission/")})
+        for (size_t at; (at = firstError.find(prefix)) != std::string::npos;) firstError.erase(at, prefix.size());
+    if (firstError.find("poisoned") != std::string::npos)
+        return "chapter " + e.chapter + " asks you to write this exercise's functions yourself, not to call the API's, "
+               "and your code calls one: " + firstError;
+    return "compiled from its own sources alone (as its exercise.json lists them, with its folder and common/ for "
+           "headers) it does not build: " + (firstError.empty() ? built.status.describe(compile.limits) : firstError);
+}
+
+}  // namespace
+
 Grade grade(GradeOptions const& options, Course& course, OutputFolder const& out) {
     auto start = Clock::now();
     Grade g;
@@ -471,8 +526,15 @@ Grade grade(GradeOptions const& options, Course& course, OutputFolder const& out
             std::distance(std::sregex_iterator(log.begin(), log.end(), warning), std::sregex_iterator()));
     }
 
+    // Exercises whose work the API already does, compiled again from their own sources.
+    std::map<std::string, std::string> ownWork;  // plugin -> why it is not graded ("" when it was compiled)
+    if (options.plugins.empty() && configured)
+        for (Exercise const& e : course.exercises())
+            if (selected(e, options) && !e.writeYourself.empty()) ownWork[e.plugin] = compileOwnWork(e, course, scratch, rubric);
     // What was built is what every check and render loads: no stage can change it.
     std::string const pluginFolder = scratch.freezePlugins("build/plugins");
+    for (auto const& [plugin, why] : ownWork)
+        if (why.empty()) scratch.freezeAs("graded/" + plugin + ".so", plugin + ".so");
     SandboxLayout const checking = course.checkLayout(scratch.path(), pluginFolder);
 
     Limits checkLimits;
@@ -508,14 +570,7 @@ Grade grade(GradeOptions const& options, Course& course, OutputFolder const& out
         }
         RemoteMeasurer student(checking, e.plugin, "/plugins", checkLimits);
         std::string stopped;  // why the remaining checks are not run (a plugin that hung once)
-        // An exercise whose work the API already does is graded only when the code is the student's own.
-        if (options.plugins.empty()) {
-            std::string const calls = callsWhatItShouldWrite(scratch.path() + "/submission",
-                                                             e.folder.substr(std::strlen("starter/")), e.sources, e.writeYourself);
-            if (!calls.empty())
-                stopped = "chapter " + e.chapter + " asks you to write this exercise's functions yourself, not to call "
-                          "the API's; your " + calls;
-        }
+        if (auto own = ownWork.find(e.plugin); own != ownWork.end() && !own->second.empty()) stopped = own->second;
         std::optional<RenderOutcome> rendered;  // the "renders" check's images, for "noise"
         for (auto const& [check, max] : points) {
             CheckResult r = CheckResult::start(e, check, max);

@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <sstream>
 #include <stdexcept>
+#include <vector>
 
 #include "SubmissionContents.h"
 
@@ -81,6 +82,7 @@ Scratch::~Scratch() {
     }
     fs::remove_all(m_path, error);
     if (!m_frozen.empty()) fs::remove_all(m_frozen, error);
+    if (!m_grader.empty()) fs::remove_all(m_grader, error);
 }
 
 Scratch::CopyReport Scratch::copySubmission(std::string const& source, std::string const& name) const {
@@ -154,14 +156,56 @@ void Scratch::handOver() const {
         lchown(it->path().c_str(), kNobody, kNobody);
 }
 
+namespace {
+
+/// Makes the folder `path` (0755, failing if anything is there); throws with `what` it is for.
+void makeOwnFolder(std::string const& path, char const* what) {
+    if (mkdir(path.c_str(), 0755) != 0)
+        throw std::runtime_error(std::string("cannot create the folder for ") + what + ", " + path + ": " + std::strerror(errno));
+}
+
+/// Whether relative (under root) names a regular file reached through real folders only.
+bool regularFileInside(std::string const& root, std::string const& relative) {
+    std::string path = root;
+    std::istringstream parts(relative);
+    std::string part;
+    std::vector<std::string> names;
+    while (std::getline(parts, part, '/'))
+        if (!part.empty()) names.push_back(part);
+    for (size_t k = 0; k < names.size(); ++k) {
+        if (names[k] == "." || names[k] == "..") return false;
+        path += "/" + names[k];
+        struct stat st;
+        if (lstat(path.c_str(), &st) != 0) return false;
+        if (k + 1 < names.size() ? !S_ISDIR(st.st_mode) : !S_ISREG(st.st_mode)) return false;
+    }
+    return !names.empty();
+}
+
+}  // namespace
+
+std::string const& Scratch::graderFolder() {
+    if (m_grader.empty()) {
+        makeOwnFolder(m_path + ".grader", "the grader's own files");
+        m_grader = m_path + ".grader";
+    }
+    return m_grader;
+}
+
+bool Scratch::freezeAs(std::string const& relative, std::string const& name) {
+    if (m_frozen.empty()) throw std::logic_error("freeze the plugins first");
+    if (name.find('/') != std::string::npos || !regularFileInside(m_path, relative)) return false;
+    std::string const to = m_frozen + "/" + name;
+    unlink(to.c_str());
+    struct stat st;
+    std::string const from = m_path + "/" + relative;
+    return lstat(from.c_str(), &st) == 0 && copyRegular(from, to, static_cast<unsigned long long>(st.st_size));
+}
+
 std::string Scratch::freezePlugins(std::string const& name) {
     if (!m_frozen.empty()) throw std::logic_error("the plugins are frozen once");
+    makeOwnFolder(m_path + ".plugins", "the built plugins");
     m_frozen = m_path + ".plugins";
-    if (mkdir(m_frozen.c_str(), 0755) != 0) {
-        std::string why = std::strerror(errno);
-        m_frozen.clear();
-        throw std::runtime_error("cannot create the folder for the built plugins beside " + m_path + ": " + why);
-    }
     // The grader reads here with its own rights: every folder on the way must be a
     // real one, or a link made by the build could point it at files of this machine.
     std::string folder = m_path;

@@ -43,10 +43,18 @@ public:
     /// it once the build has ended: from then on no check or render can change
     /// what another loads.
     std::string freezePlugins(std::string const& name);
+    /// Puts the plugin file `relative` (under the scratch folder, a regular file)
+    /// among the frozen plugins as `name`, in place of the one built there.
+    /// Returns false when there is no such file.
+    bool freezeAs(std::string const& relative, std::string const& name);
+    /// A folder beside the scratch one that only the grader writes (files it
+    /// hands to a sandbox read-only); made on first use.
+    std::string const& graderFolder();
 
 private:
     std::string m_path;
     std::string m_frozen;  ///< the frozen plugins' folder, once made
+    std::string m_grader;  ///< the grader's own folder, once made
     bool m_keep = false;
 };
 

@@ -521,26 +521,31 @@ float phongLobePdf(RtVector3 const& w, float n) { return RixPhongLobePdf(w.z, n)
 
 
 def test_writes_it_yourself(ctx):
-    """The chapter-8 sampling exercise asks for samplers the API already has: a submission that calls
-    the API's (directly, through a header of its own, or with the name pasted together by a macro)
-    earns nothing and is told why; the reference solution's own code, submitted as sources, earns
+    """The chapter-8 sampling exercise asks for samplers the API already has: the grader compiles it
+    from its own sources with those functions poisoned, so a submission that calls the API's
+    (directly, through a header of its own, or with the name pasted together by a macro) earns
+    nothing and is told where; the reference solution's own code, submitted as sources, earns
     everything."""
     work = os.path.join(ctx.out, "writes-it-yourself-work")
     shutil.rmtree(work, ignore_errors=True)
     own = os.path.join(ctx.root, "solutions/ch08/sampling")
-    # The solution's own samplers, but its Phong pdf handed to the API through a header of the submission.
+    # The solution's own samplers with its Phong pdf handed to the API, through a header of the
+    # submission or through a macro that pastes the name together.
     with open(os.path.join(own, "Sampling.cpp")) as f:
-        hidden_in_header = f.read().replace('#include "Sampling.h"\n', '#include "Sampling.h"\n#include "Helpers.h"\n')
-    hidden_in_header = hidden_in_header.replace("return (n + 1.0f) * F_INVTWOPI * std::pow(w.z, n);",
-                                                "return helper(w.z, n);")
-    expect("helper(w.z, n)" in hidden_in_header, "the solution's Phong pdf is no longer where the test expects it")
-    pasted = API_SAMPLING.replace("RixPhongLobePdf(", "PASTE(RixPhongLobe, Pdf)(").replace(
-        '#include "RixShadingUtils.h"\n', '#include "RixShadingUtils.h"\n#define PASTE(a, b) a##b\n')
-    cases = {"calls": (API_SAMPLING, {}, "Sampling.cpp calls Rix"),
-             "header": (hidden_in_header, {"common/Helpers.h": '#pragma once\n#include "RixShadingUtils.h"\n'
-                                           'inline float helper(float c, float n) { return RixPhongLobePdf(c, n); }\n'},
-                        "Helpers.h calls RixPhongLobePdf"),
-             "pasted": (pasted, {}, "pastes tokens together"),
+        solution = f.read()
+    phong = "return (n + 1.0f) * F_INVTWOPI * std::pow(w.z, n);"
+    expect(phong in solution, "the solution's Phong pdf is no longer where the test expects it")
+    hidden_in_header = solution.replace('#include "Sampling.h"\n', '#include "Sampling.h"\n#include "Helpers.h"\n').replace(
+        phong, "return helper(w.z, n);")
+    pasted = solution.replace('#include "Sampling.h"\n',
+                              '#include "Sampling.h"\n#include "RixShadingUtils.h"\n#define PASTE(a, b) a##b\n').replace(
+        phong, "return PASTE(RixPhongLobe, Pdf)(w.z, n);")
+    helper = ('#pragma once\n#include "RixShadingUtils.h"\n'
+              'inline float helper(float c, float n) { return RixPhongLobePdf(c, n); }\n')
+    cases = {"calls": (API_SAMPLING, {}, ["Sampling.cpp:", 'attempt to use poisoned "RixUniformDirectionalDistribution"']),
+             "header": (hidden_in_header, {"common/Helpers.h": helper},
+                        ["common/Helpers.h:", 'attempt to use poisoned "RixPhongLobePdf"']),
+             "pasted": (pasted, {}, ["Sampling.cpp:", 'attempt to use poisoned "RixPhongLobePdf"']),
              "own": (None, {}, None)}
     for case, (source, extra, said) in cases.items():
         folder = os.path.join(work, case)
@@ -565,7 +570,8 @@ def test_writes_it_yourself(ctx):
             expect(score == maximum, f"the solution's own samplers, as sources, scored {score} of {maximum}")
         else:
             expect(score == 0, f"{case}: samplers handed to the API scored {score} of {maximum}")
-            expect(all(said in t["output"] for t in results["tests"]), f"{case}: the report does not say '{said}'")
+            for words in said:
+                expect(all(words in t["output"] for t in results["tests"]), f"{case}: the report does not say '{words}'")
 
 
 def test_render_cache(ctx):

@@ -42,8 +42,8 @@ struct Exercise {
     std::string scene;    ///< rendered for the "renders" check (relative to scenes/), or empty
     std::vector<std::string> scenes;  ///< every scene the "renders" check compares ("scenes", or just "scene")
     std::vector<std::string> similarTo;  ///< course files (from the root) a copy of which the similarity report flags
-    /// API functions that do this exercise's work: its sources (and what they
-    /// include of the submission) may not call them, and the grader checks.
+    /// API functions that do this exercise's work: the grader compiles the
+    /// exercise from its sources alone with these poisoned, so none is called.
     std::vector<std::string> writeYourself;
     int renderSpp = 0;        ///< samples per pixel of the "renders" check's images (0: the rubric's render_spp)
     int compareBlock = 1;     ///< the "renders" check compares squares of this many pixels a side (see compareRenders)

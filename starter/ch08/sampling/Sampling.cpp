@@ -2,8 +2,8 @@
 // the recipe). Until you do, each returns the normal direction with pdf 0,
 // which callers treat as "no sample".
 // RixShadingUtils.h has samplers of its own (chapter 6 uses them); here you
-// write these yourself: a submission whose samplers call the API's earns no
-// points for this exercise (the grader reads your code and says so).
+// write these yourself: the grader compiles this exercise with the API's
+// samplers forbidden, and a call to one earns it no points.
 #include "Sampling.h"
 
 #include <cmath>
