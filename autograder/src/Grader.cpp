@@ -75,10 +75,11 @@ struct RawRender {
 /// `layout`; reads at most `maxBytes` of the image before `limits.wallSeconds`.
 RawRender renderRaw(SandboxLayout const& layout, std::string const& rixrender, std::string const& pluginPath,
                     std::string const& scene, int spp, int seed, Limits const& limits, size_t maxBytes,
-                    std::string const& workdir = "/scratch") {
+                    std::string const& workdir = "/scratch", float resolutionScale = 1.0f) {
     Launch launch;
     launch.argv = {rixrender,        "--quiet",  "--spp", std::to_string(spp), "--seed", std::to_string(seed),
-                   "--raw-out-fd",   "3",        "--plugin-path", pluginPath, scene};
+                   "--raw-out-fd",   "3",        "--plugin-path", pluginPath, "--resolution-scale",
+                   std::to_string(resolutionScale), scene};
     launch.workdir = workdir;
     launch.outputs = {3};
     launch.limits = limits;
@@ -166,7 +167,8 @@ SandboxLayout Course::checkLayout(std::string const& scratch, std::string const&
     return layoutWith(scratch, plugins, {{m_binDir + "/rixmeasure", "bin/rixmeasure"}}, m_binDir, m_root, m_confinement);
 }
 
-SandboxLayout Course::renderLayout(std::string const& scratch, std::string const& plugins, Exercise const& e) const {
+SandboxLayout Course::renderLayout(std::string const& scratch, std::string const& plugins, Exercise const& e,
+                                   std::vector<std::string> const& stock) const {
     std::string const compiled = m_binDir + "/../plugins";
     Mounts mounts = {{m_root + "/scenes", "scenes"},
                      {m_binDir + "/rixrender", "bin/rixrender"},
@@ -174,19 +176,14 @@ SandboxLayout Course::renderLayout(std::string const& scratch, std::string const
     // An integrator exercise renders without the course's integrators in reach,
     // so a submission cannot hand its work to PxrDirectLighting or PxrPathTracer.
     if (e.kind != "integrator") mounts.push_back({compiled + "/integrators", "plugins/integrators"});
-    // The stock plugins one by one, less those that are this exercise's solution
-    // under another name (a diffuse plugin must not hand its work to PxrDiffuse).
-    std::error_code error;
-    std::vector<std::string> stock;
-    for (auto const& entry : std::filesystem::directory_iterator(compiled + "/stock", error))
-        if (entry.path().extension() == ".so") stock.push_back(entry.path().filename().string());
-    std::sort(stock.begin(), stock.end());
-    for (std::string const& file : stock) {
-        auto solves = m_stockSolves.find(file.substr(0, file.size() - 3));
+    // The stock plugins the scene uses, one by one, less those that are this exercise's
+    // solution under another name (a diffuse plugin must not hand its work to PxrDiffuse).
+    for (std::string const& name : stock) {
+        auto solves = m_stockSolves.find(name);
         if (solves != m_stockSolves.end() &&
             std::find(solves->second.begin(), solves->second.end(), e.plugin) != solves->second.end())
             continue;
-        mounts.push_back({compiled + "/stock/" + file, "plugins/stock/" + file});
+        mounts.push_back({compiled + "/stock/" + name + ".so", "plugins/stock/" + name + ".so"});
     }
     return layoutWith(scratch, plugins, std::move(mounts), m_binDir, m_root, m_confinement);
 }
@@ -195,8 +192,40 @@ SandboxLayout Course::layout(std::string const& scratch) const {
     SandboxLayout all = buildLayout(scratch);
     for (auto const& mount : checkLayout(scratch, {}).courseMounts) all.courseMounts.push_back(mount);
     Exercise none;  // solved by no stock plugin, not an integrator: every render mount
-    for (auto const& mount : renderLayout(scratch, {}, none).courseMounts) all.courseMounts.push_back(mount);
+    std::vector<std::string> stock;
+    std::error_code error;
+    for (auto const& entry : std::filesystem::directory_iterator(m_binDir + "/../plugins/stock", error))
+        if (entry.path().extension() == ".so") stock.push_back(entry.path().stem().string());
+    std::sort(stock.begin(), stock.end());
+    for (auto const& mount : renderLayout(scratch, {}, none, stock).courseMounts) all.courseMounts.push_back(mount);
     return all;
+}
+
+std::vector<std::string> const& Course::stockPluginsOf(std::string const& scene) {
+    std::lock_guard<std::mutex> guard(m_stockLock);  // one scene at a time: a render each, once
+    auto found = m_sceneStock.find(scene);
+    if (found != m_sceneStock.end()) return found->second;
+    // A one-pixel render with the solutions says which plugins the scene loads, and from where.
+    SandboxLayout trusted;
+    trusted.confinement = Confinement::Trusted;
+    Limits limits;
+    limits.wallSeconds = 120;
+    limits.memoryBytes = 0;
+    std::string const plugins = m_binDir + "/../plugins";
+    RawRender probe = renderRaw(trusted, m_binDir + "/rixrender", plugins + "/solutions", m_root + "/scenes/" + scene, 1, 2,
+                                limits, 1u << 20, m_root, 0.01f);
+    if (!probe.status.ok())
+        throw std::runtime_error("the scene " + scene + " does not render with the solutions: " + tail(probe.said));
+    std::vector<std::string> stock;
+    std::regex const loaded(R"re(([A-Za-z0-9_]+) \(([^)]*)\))re");
+    // Its line "rixrender: plugins: NAME (PATH), ..."
+    size_t const line = probe.said.rfind("rixrender: plugins: ");
+    std::string const said = line == std::string::npos ? "" : probe.said.substr(line, probe.said.find('\n', line) - line);
+    std::string const stockFolder = std::filesystem::weakly_canonical(plugins + "/stock").string();
+    for (std::sregex_iterator it(said.begin(), said.end(), loaded), end; it != end; ++it)
+        if (std::filesystem::weakly_canonical((*it)[2].str()).parent_path().string() == stockFolder)
+            stock.push_back((*it)[1].str());
+    return m_sceneStock[scene] = stock;
 }
 
 BxdfMeasurer& Course::reference(std::string const& plugin) {
@@ -321,7 +350,13 @@ SceneRender renderScene(Exercise const& e, std::string const& scene, Course& cou
         out.problem = std::string("could not be graded: ") + error.what();
         return out;
     }
-    SandboxLayout const renderLayout = course.renderLayout(layout.scratch, layout.plugins, e);
+    SandboxLayout renderLayout;
+    try {
+        renderLayout = course.renderLayout(layout.scratch, layout.plugins, e, course.stockPluginsOf(scene));
+    } catch (std::exception const& error) {
+        out.problem = std::string("could not be graded: ") + error.what();
+        return out;
+    }
     std::string const pluginPath =
         (e.kind == "integrator" ? std::string() : std::string("/course/plugins/integrators:")) + "/course/plugins/stock:/plugins";
     Limits limits;

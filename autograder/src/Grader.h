@@ -82,9 +82,12 @@ public:
     /// The checks: the measuring program and the submission's frozen plugins.
     SandboxLayout checkLayout(std::string const& scratch, std::string const& plugins) const;
     /// A render of exercise e: the renderer, the scenes, the integrators (not
-    /// for an integrator exercise) and the stock plugins, less those built from
-    /// e's own solution (plugins/stock/solutions.json).
-    SandboxLayout renderLayout(std::string const& scratch, std::string const& plugins, bxdflab::Exercise const& e) const;
+    /// for an integrator exercise) and the `stock` plugins the scene uses, less
+    /// those built from e's own solution (plugins/stock/solutions.json).
+    SandboxLayout renderLayout(std::string const& scratch, std::string const& plugins, bxdflab::Exercise const& e,
+                               std::vector<std::string> const& stock) const;
+    /// The stock plugins (names) a scene loads, found once by rendering one pixel of it.
+    std::vector<std::string> const& stockPluginsOf(std::string const& scene);
     /// All that any stage mounts (to check up front that it can be mounted).
     SandboxLayout layout(std::string const& scratch) const;
     /// The reference solution of an exercise (loaded once, shared).
@@ -99,6 +102,8 @@ private:
     Confinement m_confinement;
     std::vector<bxdflab::Exercise> m_exercises;
     std::map<std::string, std::vector<std::string>> m_stockSolves;  ///< stock plugin -> exercises it solves
+    std::mutex m_stockLock;
+    std::map<std::string, std::vector<std::string>> m_sceneStock;  ///< scene -> stock plugins it loads
     std::mutex m_lock;
     std::map<std::string, std::unique_ptr<bxdflab::BxdfMeasurer>> m_references;
     std::map<std::string, std::unique_ptr<bxdflab::RenderImage>> m_renders;

@@ -1,9 +1,11 @@
 // A hostile submission that does no work of its own but hands over a compiled
-// plugin of the course that already does it:
+// plugin of the course (COURSE_PLUGIN, relative to the course's build) that
+// does it, or comes close:
 //   - built with BORROW_INTEGRATOR, a chapter-11 "mypath" that opens the
 //     course's PxrPathTracer, which renders exactly what the grader compares;
-//   - otherwise a chapter-6 "diffuse" that opens the stock PxrDiffuse, the
-//     diffuse solution under another name.
+//   - otherwise a Bxdf: a chapter-6 "diffuse" that opens the stock PxrDiffuse
+//     (the diffuse solution under another name), or a chapter-9 "ggx" that
+//     opens PxrDisney (a GGX lobe of its own, loaded by another chapter's scene).
 // It looks wherever the plugin could be: the build folder it was compiled in
 // (BORROWED: a student knows that path), the course folder inside the sandbox,
 // and the folder next to the program that loads it. The grader must leave none
@@ -16,10 +18,8 @@
 
 #ifdef BORROW_INTEGRATOR
 #include "RixIntegrator.h"
-#define COURSE_PLUGIN "plugins/integrators/PxrPathTracer.so"
 #else
 #include "RixBxdf.h"
-#define COURSE_PLUGIN "plugins/stock/PxrDiffuse.so"
 #endif
 
 namespace {

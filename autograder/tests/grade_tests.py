@@ -574,6 +574,16 @@ def test_writes_it_yourself(ctx):
                 expect(all(words in t["output"] for t in results["tests"]), f"{case}: the report does not say '{words}'")
 
 
+def test_borrows_other_stock(ctx):
+    """A ch09 ggx that hands over the stock PxrDisney (a GGX lobe of its own, which the chapter-11
+    scenes load) finds it in no stage: a render mounts only the stock plugins its scene loads."""
+    for where, checks in grade_borrowing(ctx, "borrows_other_stock", "ggx"):
+        expect("renders" in checks, "renders was not graded")
+        for check in ("loads", "renders"):
+            expect("CreateRixBxdfFactory returned null" in checks.get(check, {}).get("output", ""),
+                   f"{where}: PxrDisney was within reach of the {check} check")
+
+
 def test_render_cache(ctx):
     """Reference renders kept between runs: the same grade from the cache, a damaged entry rendered again,
     a rebuilt solution never served from an entry made with the old one, one entry per scene, spp and seed."""
@@ -784,6 +794,7 @@ def main():
     tests = {"variant": lambda: test_variant(ctx, args.name), "hostile": lambda: test_hostile(ctx, args.name),
              "borrows_reference": lambda: test_borrows_reference(ctx),
              "borrows_stock": lambda: test_borrows_stock(ctx),
+             "borrows_other_stock": lambda: test_borrows_other_stock(ctx),
              "writes_it_yourself": lambda: test_writes_it_yourself(ctx), "render_cache": lambda: test_render_cache(ctx),
              "attack": lambda: test_attack(ctx, args.name), "solutions": lambda: test_solutions(ctx),
              "starter": lambda: test_starter(ctx), "repeat": lambda: test_repeat(ctx),
