@@ -491,7 +491,7 @@ std::string compileOwnWork(Exercise const& e, Course const& course, Scratch& scr
             if (firstError.empty() || line.find("poisoned") != std::string::npos) firstError = line;
             if (line.find("poisoned") != std::string::npos) break;
         }
-    for (std::string const& prefix : {folder + "/", std::string("/scratch/submission/")})
+    for (std::string const& prefix : {layout.realPath(folder) + "/", layout.realPath("/scratch/submission") + "/"})
         for (size_t at; (at = firstError.find(prefix)) != std::string::npos;) firstError.erase(at, prefix.size());
     if (firstError.find("poisoned") != std::string::npos)
         return "chapter " + e.chapter + " asks you to write this exercise's functions yourself, not to call the API's, "

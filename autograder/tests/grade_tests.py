@@ -547,6 +547,9 @@ def test_writes_it_yourself(ctx):
                         ["common/Helpers.h:", 'attempt to use poisoned "RixPhongLobePdf"']),
              "pasted": (pasted, {}, ["Sampling.cpp:", 'attempt to use poisoned "RixPhongLobePdf"']),
              "own": (None, {}, None)}
+    # Without the sandbox too (rixgrade maps its folders back to the real ones there).
+    if len(confinements(ctx)) > 1:
+        cases["calls-unsafe"] = cases["calls"]
     for case, (source, extra, said) in cases.items():
         folder = os.path.join(work, case)
         shutil.copytree(os.path.join(ctx.root, "starter"), folder, symlinks=True)
@@ -559,7 +562,8 @@ def test_writes_it_yourself(ctx):
             with open(os.path.join(folder, relative), "w") as f:
                 f.write(text)
         name = "writes-it-yourself-" + case
-        status, output, _ = ctx.grade(name, "--submission", folder, "--only", "sampling")
+        unsafe = ["--unsafe-no-sandbox"] if case.endswith("-unsafe") else []
+        status, output, _ = ctx.grade(name, "--submission", folder, "--only", "sampling", *unsafe)
         print(output[-1500:])
         if not expect(status == 0, f"{case}: rixgrade exited with {status}"):
             continue
