@@ -10,7 +10,6 @@
 #include <filesystem>
 #include <sstream>
 #include <stdexcept>
-#include <vector>
 
 #include "SubmissionContents.h"
 
@@ -164,22 +163,23 @@ void makeOwnFolder(std::string const& path, char const* what) {
         throw std::runtime_error(std::string("cannot create the folder for ") + what + ", " + path + ": " + std::strerror(errno));
 }
 
-/// Whether relative (under root) names a regular file reached through real folders only.
-bool regularFileInside(std::string const& root, std::string const& relative) {
+/// The file type (S_IFREG, S_IFDIR, ...) of root/relative when every folder on the
+/// way is a real one (not a link) and no part is "." or ".."; 0 otherwise. The
+/// grader reads there with its own rights: a link made by the build could
+/// otherwise point it at files of this machine.
+mode_t typeThroughRealFolders(std::string const& root, std::string const& relative) {
     std::string path = root;
     std::istringstream parts(relative);
-    std::string part;
-    std::vector<std::string> names;
-    while (std::getline(parts, part, '/'))
-        if (!part.empty()) names.push_back(part);
-    for (size_t k = 0; k < names.size(); ++k) {
-        if (names[k] == "." || names[k] == "..") return false;
-        path += "/" + names[k];
+    mode_t type = 0;
+    for (std::string part; std::getline(parts, part, '/');) {
+        if (part.empty()) continue;
+        if (part == "." || part == ".." || (type != 0 && type != S_IFDIR)) return 0;
+        path += "/" + part;
         struct stat st;
-        if (lstat(path.c_str(), &st) != 0) return false;
-        if (k + 1 < names.size() ? !S_ISDIR(st.st_mode) : !S_ISREG(st.st_mode)) return false;
+        if (lstat(path.c_str(), &st) != 0) return 0;
+        type = st.st_mode & S_IFMT;
     }
-    return !names.empty();
+    return type;
 }
 
 }  // namespace
@@ -194,7 +194,7 @@ std::string const& Scratch::graderFolder() {
 
 bool Scratch::freezeAs(std::string const& relative, std::string const& name) {
     if (m_frozen.empty()) throw std::logic_error("freeze the plugins first");
-    if (name.find('/') != std::string::npos || !regularFileInside(m_path, relative)) return false;
+    if (name.find('/') != std::string::npos || typeThroughRealFolders(m_path, relative) != S_IFREG) return false;
     std::string const to = m_frozen + "/" + name;
     unlink(to.c_str());
     struct stat st;
@@ -206,16 +206,8 @@ std::string Scratch::freezePlugins(std::string const& name) {
     if (!m_frozen.empty()) throw std::logic_error("the plugins are frozen once");
     makeOwnFolder(m_path + ".plugins", "the built plugins");
     m_frozen = m_path + ".plugins";
-    // The grader reads here with its own rights: every folder on the way must be a
-    // real one, or a link made by the build could point it at files of this machine.
-    std::string folder = m_path;
-    std::istringstream parts(name);
-    for (std::string part; std::getline(parts, part, '/');) {
-        if (part.empty() || part == "." || part == "..") return m_frozen;
-        folder += "/" + part;
-        struct stat st;
-        if (lstat(folder.c_str(), &st) != 0 || !S_ISDIR(st.st_mode)) return m_frozen;  // nothing built there
-    }
+    if (typeThroughRealFolders(m_path, name) != S_IFDIR) return m_frozen;  // nothing built there
+    std::string const folder = m_path + "/" + name;
     std::error_code error;
     for (auto const& entry : fs::directory_iterator(folder, error)) {
         struct stat st;
