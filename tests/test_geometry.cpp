@@ -22,14 +22,23 @@ HitRecord trace(RayTracer const& tracer, Vec3 org, Vec3 dir) {
     return tracer.intersect(org, glm::normalize(dir), 0.0f, kInfinity, RayKind::Camera, counts);
 }
 
+/// A hit on quadric q at parameters (u, v), as a ray would leave it: its
+/// point (org + t dir) on the surface, t = 0 here.
+HitRecord hitAt(Quadric const& q, float u, float v) {
+    HitRecord hit;
+    hit.org = transformPoint(q.objectToWorld(), q.surfaceLocal(u, v).P);
+    hit.dir = Vec3(0, 0, 1);
+    hit.u = u;
+    hit.v = v;
+    return hit;
+}
+
 /// dPdu and dPdv must be the derivatives of P(u, v): compare with central
 /// differences of the quadric's own parameterisation.
 void checkDerivatives(Quadric const& q, float u, float v) {
     const float h = 1e-3f;
     auto P = [&](float uu, float vv) { return transformPoint(q.objectToWorld(), q.surfaceLocal(uu, vv).P); };
-    HitRecord hit;
-    hit.u = u;
-    hit.v = v;
+    HitRecord hit = hitAt(q, u, v);
     SurfaceTangents t = q.tangents(hit);
     Vec3 du = (P(u + h, v) - P(u - h, v)) / (2 * h);
     Vec3 dv = (P(u, v + h) - P(u, v - h)) / (2 * h);
@@ -82,9 +91,7 @@ TEST_CASE("partial sphere: zmin, zmax and thetamax cut the surface", "[geometry]
 TEST_CASE("sphere poles: dPdu vanishes but the normal stays defined", "[geometry]") {
     Scene scene = sceneWith("Sphere 1 -1 1 360");
     auto const& sphere = dynamic_cast<Quadric const&>(*scene.shapes[0]);
-    HitRecord top;
-    top.u = 0.3f;
-    top.v = 1.0f;
+    HitRecord top = hitAt(sphere, 0.3f, 1.0f);
     SurfaceTangents t = sphere.tangents(top);
     CHECK(glm::length(t.dPdu) == Approx(0.0f).margin(1e-5));
     SurfaceBasics b = sphere.basics(top);

@@ -40,8 +40,7 @@ struct LocalRay {
     DVec3 org, dir;
 };
 
-LocalRay toObjectSpace(Mat4 const& worldToObject, RTCRayN* ray, unsigned n, unsigned i) {
-    glm::dmat4 m(worldToObject);
+LocalRay toObjectSpace(glm::dmat4 const& m, RTCRayN* ray, unsigned n, unsigned i) {
     DVec3 org(RTCRayN_org_x(ray, n, i), RTCRayN_org_y(ray, n, i), RTCRayN_org_z(ray, n, i));
     DVec3 dir(RTCRayN_dir_x(ray, n, i), RTCRayN_dir_y(ray, n, i), RTCRayN_dir_z(ray, n, i));
     return {DVec3(m * glm::dvec4(org, 1.0)), glm::dmat3(m) * dir};
@@ -51,7 +50,7 @@ void quadricIntersect(const RTCIntersectFunctionNArguments* args) {
     auto const* quadric = static_cast<Quadric const*>(args->geometryUserPtr);
     RTCRayN* ray = RTCRayHitN_RayN(args->rayhit, args->N);
     RTCHitN* hit = RTCRayHitN_HitN(args->rayhit, args->N);
-    Mat4 const& worldToObject = quadric->worldToObject();
+    glm::dmat4 const& worldToObject = quadric->worldToObjectExact();
     for (unsigned i = 0; i < args->N; ++i) {
         if (args->valid[i] != -1) continue;
         LocalRay local = toObjectSpace(worldToObject, ray, args->N, i);
@@ -72,7 +71,7 @@ void quadricIntersect(const RTCIntersectFunctionNArguments* args) {
 
 void quadricOccluded(const RTCOccludedFunctionNArguments* args) {
     auto const* quadric = static_cast<Quadric const*>(args->geometryUserPtr);
-    Mat4 const& worldToObject = quadric->worldToObject();
+    glm::dmat4 const& worldToObject = quadric->worldToObjectExact();
     for (unsigned i = 0; i < args->N; ++i) {
         if (args->valid[i] != -1) continue;
         LocalRay local = toObjectSpace(worldToObject, args->ray, args->N, i);

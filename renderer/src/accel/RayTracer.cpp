@@ -1,6 +1,9 @@
 #include "accel/RayTracer.h"
 
 #include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <limits>
 #include <string>
 
 #include "accel/EmbreeGeometry.h"
@@ -177,6 +180,24 @@ bool RayTracer::occluded(Vec3 const& org, Vec3 const& dir, float tnear, float tf
     return ray.tfar < 0.0f;
 }
 
+namespace {
+
+/// The next float above x, as std::nextafter(x, +inf), without its call
+/// (it is on every shadow ray's path): finite floats of one sign are ordered
+/// like their bit patterns.
+float nextFloatUp(float x) {
+    if (!(x < kInfinity)) return x;  // +inf and NaN stay
+    if (x == 0.0f) return std::numeric_limits<float>::denorm_min();
+    uint32_t bits;
+    std::memcpy(&bits, &x, sizeof bits);
+    bits = x > 0.0f ? bits + 1 : bits - 1;
+    std::memcpy(&x, &bits, sizeof bits);
+    return x;
+}
+float nextFloatDown(float x) { return -nextFloatUp(-x); }
+
+}  // namespace
+
 Vec3 offsetRayOrigin(Vec3 const& P, float bias, Vec3 const& Ng, Vec3 const& w) {
     Vec3 offset = bias * Ng;
     if (glm::dot(w, Ng) < 0.0f) offset = -offset;
@@ -184,9 +205,9 @@ Vec3 offsetRayOrigin(Vec3 const& P, float bias, Vec3 const& Ng, Vec3 const& w) {
     // Round away from P so the offset is not lost to rounding.
     for (int i = 0; i < 3; ++i) {
         if (offset[i] > 0.0f)
-            origin[i] = std::nextafter(origin[i], kInfinity);
+            origin[i] = nextFloatUp(origin[i]);
         else if (offset[i] < 0.0f)
-            origin[i] = std::nextafter(origin[i], -kInfinity);
+            origin[i] = nextFloatDown(origin[i]);
     }
     return origin;
 }

@@ -25,17 +25,28 @@ Camera::Camera(CameraDesc const& desc, int xres, int yres, float pixelAspect)
     }
     float screenHeight = m_screen[3] - m_screen[2];
     m_pixelSpread = m_perspective ? 2.0f * std::atan(0.5f * screenHeight * m_tanHalfFov / static_cast<float>(yres)) : 0.0f;
+
+    // Screen x grows with raster x from the left edge; screen y falls with
+    // raster y from the top edge. Perspective rays pass through the screen
+    // window scaled by tan(fov/2) on the plane z = 1; orthographic rays start on z = 0.
+    float const scale = m_perspective ? m_tanHalfFov : 1.0f;
+    Vec3 const topLeft(m_screen[0] * scale, m_screen[3] * scale, m_perspective ? 1.0f : 0.0f);
+    Vec3 const stepX((m_screen[1] - m_screen[0]) * scale / static_cast<float>(xres), 0.0f, 0.0f);
+    Vec3 const stepY(0.0f, -(m_screen[3] - m_screen[2]) * scale / static_cast<float>(yres), 0.0f);
+    m_rasterOrigin = m_perspective ? transformVector(m_cameraToWorld, topLeft) : transformPoint(m_cameraToWorld, topLeft);
+    m_perRasterX = transformVector(m_cameraToWorld, stepX);
+    m_perRasterY = transformVector(m_cameraToWorld, stepY);
+    m_orthographicDirection = glm::normalize(transformVector(m_cameraToWorld, Vec3(0.0f, 0.0f, 1.0f)));
 }
 
 void Camera::generateRay(float rasterX, float rasterY, Vec3& org, Vec3& dir) const {
-    float sx = m_screen[0] + (m_screen[1] - m_screen[0]) * rasterX / static_cast<float>(m_xres);
-    float sy = m_screen[3] - (m_screen[3] - m_screen[2]) * rasterY / static_cast<float>(m_yres);
+    Vec3 const onPlane = m_rasterOrigin + rasterX * m_perRasterX + rasterY * m_perRasterY;
     if (m_perspective) {
         org = m_position;
-        dir = glm::normalize(transformVector(m_cameraToWorld, Vec3(sx * m_tanHalfFov, sy * m_tanHalfFov, 1.0f)));
+        dir = glm::normalize(onPlane);
     } else {
-        org = transformPoint(m_cameraToWorld, Vec3(sx, sy, 0.0f));
-        dir = glm::normalize(transformVector(m_cameraToWorld, Vec3(0.0f, 0.0f, 1.0f)));
+        org = onPlane;
+        dir = m_orthographicDirection;
     }
 }
 

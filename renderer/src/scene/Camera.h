@@ -39,6 +39,13 @@ private:
     float m_screen[4];  // left right bottom top
     int m_xres, m_yres;
     float m_pixelSpread;
+    // generateRay's plane of rays, in world space: the ray through raster
+    // (x, y) starts at m_rasterOrigin + x m_perRasterX + y m_perRasterY
+    // (orthographic) or points along m_rasterOrigin + x m_perRasterX + y m_perRasterY
+    // (perspective, before normalising). Kept so each camera ray costs two
+    // multiply-adds and one normalisation, not a matrix product.
+    Vec3 m_rasterOrigin, m_perRasterX, m_perRasterY;
+    Vec3 m_orthographicDirection;
 };
 
 }  // namespace bxdflab

@@ -10,8 +10,13 @@ namespace bxdflab {
 Quadric::Quadric(Mat4 const& objectToWorld, bool reverseOrientation, float thetaMaxDegrees)
     : m_objectToWorld(objectToWorld),
       m_worldToObject(glm::inverse(objectToWorld)),
+      m_worldToObjectExact(glm::inverse(glm::dmat4(objectToWorld))),
+      m_normalToWorld(glm::transpose(Mat3(m_worldToObject))),
       m_orientation(reverseOrientation ? -1.0f : 1.0f),
-      m_phiMax(quadric::sweepRadians(thetaMaxDegrees)) {}
+      m_phiMax(quadric::sweepRadians(thetaMaxDegrees)) {
+    Mat3 linear(m_objectToWorld);
+    m_absoluteLinear = Mat3(glm::abs(linear[0]), glm::abs(linear[1]), glm::abs(linear[2]));
+}
 
 double Quadric::azimuth(double x, double y) {
     double phi = std::atan2(y, x);
@@ -19,16 +24,14 @@ double Quadric::azimuth(double x, double y) {
 }
 
 SurfaceBasics Quadric::basics(HitRecord const& hit) const {
-    LocalSurface local = surfaceLocal(hit.u, hit.v);
+    LocalSurface local = surfaceAtHit(hit);
     SurfaceBasics out;
     out.P = transformPoint(m_objectToWorld, local.P);
-    out.Ng = m_orientation * safeNormalize(transformNormal(m_worldToObject, local.N));
+    out.Ng = m_orientation * safeNormalize(m_normalToWorld * local.N);
     out.N = out.Ng;
-    // P is evaluated from (u, v) on the exact surface; its error is a few ulps
-    // of the magnitudes involved in the transform. Bound it generously.
-    Mat3 linear(m_objectToWorld);
-    Mat3 absolute(glm::abs(linear[0]), glm::abs(linear[1]), glm::abs(linear[2]));
-    Vec3 magnitude = absolute * glm::abs(local.P) + glm::abs(Vec3(m_objectToWorld[3]));
+    // P is evaluated on the exact surface; its error is a few ulps of the
+    // magnitudes involved in the transform. Bound it generously.
+    Vec3 magnitude = m_absoluteLinear * glm::abs(local.P) + glm::abs(Vec3(m_objectToWorld[3]));
     out.pError = 4e-6f * magnitude + Vec3(1e-7f);
     out.u = hit.u;
     out.v = hit.v;
@@ -38,7 +41,7 @@ SurfaceBasics Quadric::basics(HitRecord const& hit) const {
 }
 
 SurfaceTangents Quadric::tangents(HitRecord const& hit) const {
-    LocalSurface local = surfaceLocal(hit.u, hit.v);
+    LocalSurface local = surfaceAtHit(hit);
     return {transformVector(m_objectToWorld, local.dPdu), transformVector(m_objectToWorld, local.dPdv)};
 }
 

@@ -34,15 +34,26 @@ public:
         Vec3 P, N, dPdu, dPdv;
     };
     virtual LocalSurface surfaceLocal(float u, float v) const = 0;
+    /// The same at a hit (whose point is org + t dir, at parameters u, v). By
+    /// default from (u, v); a quadric may instead work from the hit point and
+    /// spare the trigonometry of its parameterisation.
+    virtual LocalSurface surfaceAtHit(HitRecord const& hit) const { return surfaceLocal(hit.u, hit.v); }
     /// Object-space bounding box.
     virtual void boundsLocal(Vec3& lower, Vec3& upper) const = 0;
 
     Mat4 const& objectToWorld() const { return m_objectToWorld; }
     Mat4 const& worldToObject() const { return m_worldToObject; }
+    /// worldToObject in double precision, for intersecting rays.
+    glm::dmat4 const& worldToObjectExact() const { return m_worldToObjectExact; }
 
 protected:
     /// Angle of a point in [0, 2 pi).
     static double azimuth(double x, double y);
+    /// The hit point org + t dir in object space.
+    DVec3 hitPointLocal(HitRecord const& hit) const {
+        glm::dvec3 world = glm::dvec3(hit.org) + static_cast<double>(hit.t) * glm::dvec3(hit.dir);
+        return DVec3(m_worldToObjectExact * glm::dvec4(world, 1.0));
+    }
     /// The sweep angle in radians.
     double phiMax() const { return m_phiMax; }
     /// dP/du of a surface of revolution at its point p: u sweeps phi over phiMax.
@@ -78,6 +89,9 @@ protected:
 private:
     Mat4 m_objectToWorld;
     Mat4 m_worldToObject;
+    glm::dmat4 m_worldToObjectExact;
+    Mat3 m_normalToWorld;     ///< the inverse transpose of the linear part
+    Mat3 m_absoluteLinear;    ///< |objectToWorld|, element by element, for error bounds
     float m_orientation;  ///< +1, or -1 under ReverseOrientation
     double m_phiMax;
 };

@@ -35,16 +35,35 @@ std::optional<Quadric::LocalHit> Sphere::intersectLocal(DVec3 const& o, DVec3 co
 
 Quadric::LocalSurface Sphere::surfaceLocal(float u, float v) const {
     double phi = u * phiMax();
-    double deltaTheta = m_thetaZMax - m_thetaZMin;
-    double theta = m_thetaZMin + v * deltaTheta;
+    double theta = m_thetaZMin + v * (m_thetaZMax - m_thetaZMin);
     double sinTheta = std::sin(theta), cosTheta = std::cos(theta);
     double cosPhi = std::cos(phi), sinPhi = std::sin(phi);
-    DVec3 p(m_radius * sinTheta * cosPhi, m_radius * sinTheta * sinPhi, m_radius * cosTheta);
+    return surfaceAt(DVec3(m_radius * sinTheta * cosPhi, m_radius * sinTheta * sinPhi, m_radius * cosTheta), cosPhi,
+                     sinPhi);
+}
+
+Quadric::LocalSurface Sphere::surfaceAtHit(HitRecord const& hit) const {
+    // The hit point put back on the sphere: no trigonometry, and as exact as
+    // the point evaluated from (u, v).
+    DVec3 p = hitPointLocal(hit);
+    double length = glm::length(p);
+    if (!(length > 0.0)) return surfaceLocal(hit.u, hit.v);
+    p *= m_radius / length;
+    double rho = std::sqrt(p.x * p.x + p.y * p.y);
+    if (!(rho > 0.0)) {  // a pole: the azimuth is u's
+        double phi = hit.u * phiMax();
+        return surfaceAt(p, std::cos(phi), std::sin(phi));
+    }
+    return surfaceAt(p, p.x / rho, p.y / rho);
+}
+
+Quadric::LocalSurface Sphere::surfaceAt(DVec3 const& p, double cosPhi, double sinPhi) const {
+    double sinTheta = std::sqrt(p.x * p.x + p.y * p.y) / m_radius;
     LocalSurface s;
     s.P = Vec3(p);
     s.N = Vec3(p / m_radius);
     s.dPdu = sweepTangent(p);
-    s.dPdv = Vec3(deltaTheta * DVec3(p.z * cosPhi, p.z * sinPhi, -m_radius * sinTheta));
+    s.dPdv = Vec3((m_thetaZMax - m_thetaZMin) * DVec3(p.z * cosPhi, p.z * sinPhi, -m_radius * sinTheta));
     return s;
 }
 
