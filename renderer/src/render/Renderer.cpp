@@ -356,9 +356,10 @@ void Renderer::Impl::renderTile(int tileX, int tileY, int spp, Film& film, Worke
         // Camera rays, pixel by pixel and sample by sample: this order fixes
         // each pixel's sample sequence, whatever the thread count.
         int k = 0;
+        uint32_t const seedHash = RixRNG::Hash(settings.seed + 0x5bd1e995u);
         for (int y = y0; y < y1; ++y)
             for (int x = x0; x < x1; ++x) {
-                uint32_t patternid = RixRNG::Hash(static_cast<uint32_t>(y * scene.xres + x) ^ RixRNG::Hash(settings.seed + 0x5bd1e995u));
+                uint32_t patternid = RixRNG::Hash(static_cast<uint32_t>(y * scene.xres + x) ^ seedHash);
                 for (int s = s0; s < s1; ++s, ++k) {
                     RixRNG::SampleCtx& sample = w.samples[static_cast<size_t>(k)];
                     sample = {patternid, static_cast<uint32_t>(s), 0, -1.0f};
