@@ -10,6 +10,7 @@ set(RIX_SCENE_SOURCES
   parse/RibRequest.cpp
   parse/ParamList.cpp
   parse/StandardDeclarations.cpp
+  parse/RequestNames.cpp
   parse/ZipMember.cpp
   scene/SceneBuilder.cpp
   scene/requests/OptionRequests.cpp

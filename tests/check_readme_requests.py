@@ -1,5 +1,7 @@
 #!/usr/bin/env python3
-"""The README's list of RIB requests matches the scene builder's table.
+"""The README's list of RIB requests matches the scene builder's table, and
+every request the table handles is in the parser's list of RIB request names
+(renderer/src/parse/RequestNames.cpp, which the typo hints search).
 
     check_readme_requests.py <course root>
 
@@ -28,6 +30,12 @@ def main():
     bullets = section[section.index("- **RIB**"):section.index("- **Lights**")]
     problems = [f"README.md does not name the request {n}, which the scene builder handles"
                 for n in handled if n not in named]
+    with open(os.path.join(root, "renderer/src/parse/RequestNames.cpp")) as f:
+        names = f.read()
+    table = names[names.index("kRequests = {"):names.index("};", names.index("kRequests = {"))]
+    listed = set(re.findall(r'"(\w+)"', table))
+    problems += [f"RequestNames.cpp does not list {n}, which the scene builder handles"
+                 for n in handled if n not in listed]
     for name in sorted(set(re.findall(r"`([A-Z][A-Za-z0-9]+)", bullets))):
         if name not in handled and name not in NOT_IN_TABLE:
             problems.append(f"README.md names {name} as a request, but the scene builder has no such request")

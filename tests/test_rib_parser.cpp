@@ -163,6 +163,25 @@ TEST_CASE("unknown requests are warned about once with their location, then skip
     CHECK(warnings == 1);
 }
 
+TEST_CASE("a name that is no RIB request is told apart from an unsupported one, with the request it was likely meant to be",
+          "[rib]") {
+    Diagnostics diagnostics(false);
+    Scene scene = parseRib("ShadingRate 1\nWorldBegin\nTransforBegin\nsphere 1 -1 1 360\nFrobnicate 3\nSphere 1 -1 1 360\n"
+                           "WorldEnd\n",
+                           diagnostics);
+    CHECK(scene.shapes.size() == 1);
+    std::vector<std::string> warnings;
+    for (auto const& e : diagnostics.entries())
+        if (e.severity == Diagnostics::Severity::Warning) warnings.push_back(e.text);
+    REQUIRE(warnings.size() == 4u);
+    CHECK_THAT(warnings[0], Catch::Matchers::Contains("unsupported request ShadingRate"));
+    CHECK_THAT(warnings[1], Catch::Matchers::StartsWith("test.rib:3:1"));
+    CHECK_THAT(warnings[1], Catch::Matchers::Contains("TransforBegin is not a RIB request; skipped (did you mean TransformBegin?)"));
+    CHECK_THAT(warnings[2], Catch::Matchers::Contains("sphere is not a RIB request; skipped (did you mean Sphere?)"));
+    CHECK_THAT(warnings[3], Catch::Matchers::Contains("Frobnicate is not a RIB request; skipped"));
+    CHECK_THAT(warnings[3], !Catch::Matchers::Contains("did you mean"));
+}
+
 TEST_CASE("transforms compose the RenderMan way: the last one applies first", "[rib]") {
     Diagnostics diagnostics(false);
     Scene scene = parseRib(

@@ -2,6 +2,7 @@
 
 #include <filesystem>
 
+#include "parse/RequestNames.h"
 #include "parse/RibParser.h"
 #include "parse/ZipMember.h"
 
@@ -196,7 +197,7 @@ void SceneBuilder::handle(RibRequest const& request) {
     if (m_motionSamples > 0 && request.name != "MotionEnd" && m_motionSeen++ > 0) return;
     auto found = handlers().find(request.name);
     if (found == handlers().end()) {
-        warnOnce("request " + request.name, request.where, "unsupported request " + request.name + " skipped");
+        warnOnce("request " + request.name, request.where, unknownRequestMessage(request.name));
         return;
     }
     RequestReader reader(request, m_declarations, &m_diagnostics);
@@ -204,6 +205,16 @@ void SceneBuilder::handle(RibRequest const& request) {
 }
 
 void SceneBuilder::ignore(RequestReader&) {}
+
+std::string SceneBuilder::unknownRequestMessage(std::string const& name) {
+    if (isRibRequest(name)) return "unsupported request " + name + " skipped";
+    // Not a RIB request at all: usually a slip of the keyboard, which RIB
+    // (case-sensitive) does not forgive.
+    std::string message = name + " is not a RIB request; skipped";
+    std::string const meant = likelyRibRequest(name);
+    if (!meant.empty()) message += " (did you mean " + meant + "?)";
+    return message;
+}
 
 void SceneBuilder::ifBegin(RequestReader& in) {
     std::string condition = in.string("condition");

@@ -95,6 +95,9 @@ private:
     void worldEnd(RequestReader& in);
     void clipping(RequestReader& in);
     void ignore(RequestReader& in);
+    /// The warning for a request the table does not handle: unsupported, or
+    /// no request at all (with the one it was likely meant to be).
+    static std::string unknownRequestMessage(std::string const& name);
     // Conditional RIB (IfBegin / ElseIf / Else / IfEnd): conditions are not
     // evaluated; the first branch is read as if it held, the others skipped.
     void ifBegin(RequestReader& in);
