@@ -5,6 +5,7 @@
 set(RIX_SCENE_SOURCES
   core/Diagnostics.cpp
   core/ImageFiles.cpp
+  core/Spelling.cpp
   parse/RibLexer.cpp
   parse/RibParser.cpp
   parse/RibRequest.cpp

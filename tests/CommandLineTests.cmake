@@ -212,3 +212,8 @@ set_tests_properties(course_text.misspelled_integrator_suggests_the_right_name P
 add_test(NAME cli.new_workspace_outside_the_repository
          COMMAND sh -c "ws=$(mktemp -d) && rmdir $ws && ${PROJECT_SOURCE_DIR}/scripts/new-workspace.sh --no-build $ws && test -f $ws/ch06/diffuse/Diffuse.cpp && test -f $ws/WORKSPACE.md && ! ${PROJECT_SOURCE_DIR}/scripts/new-workspace.sh --no-build $ws && ! ${PROJECT_SOURCE_DIR}/scripts/new-workspace.sh --no-build ${PROJECT_SOURCE_DIR}/out/ws && cmake -S $ws -B $ws/build -DBXDFLAB_ROOT=${PROJECT_SOURCE_DIR} > /dev/null && cmake --build $ws/build --target hello > /dev/null && test -f $ws/build/plugins/hello.so && rm -rf $ws && echo workspace-ok")
 set_tests_properties(cli.new_workspace_outside_the_repository PROPERTIES PASS_REGULAR_EXPRESSION "workspace-ok" LABELS cli)
+# Typing slips in a scene are warnings that name what was meant, and the render goes on.
+add_test(NAME cli.typos_name_what_was_meant COMMAND rixrender --quiet --spp 1 -o typos.exr
+         ${CMAKE_CURRENT_SOURCE_DIR}/scenes/typos.rib WORKING_DIRECTORY ${CLI_OUT})
+set_tests_properties(cli.typos_name_what_was_meant PROPERTIES LABELS "cli;sanitize" PASS_REGULAR_EXPRESSION
+  "typos.rib:7:30: PxrDiskLight \"key\": parameter \"intensty\" is not used; ignored \\(did you mean \"intensity\"\\?\\).*typos.rib:9:3: AttributeBegn is not a RIB request; skipped \\(did you mean AttributeBegin\\?\\).*typos.rib:5:[0-9]+: Integrator \"PxrDirectLighting\": parameter \"numLightSample\" is not used; ignored \\(did you mean \"numLightSamples\"\\?\\).*wrote typos.exr")

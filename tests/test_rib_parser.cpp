@@ -182,6 +182,21 @@ TEST_CASE("a name that is no RIB request is told apart from an unsupported one, 
     CHECK_THAT(warnings[3], !Catch::Matchers::Contains("did you mean"));
 }
 
+TEST_CASE("a parameter nobody reads names the one its reader asked for when it is spelled nearly so", "[rib]") {
+    Diagnostics diagnostics(false);
+    Scene scene = parseRib("WorldBegin\nLight \"PxrDiskLight\" \"l\" \"float intensty\" [10] \"float glow\" [1]\n"
+                           "Sphere 1 -1 1 360\nWorldEnd\n",
+                           diagnostics);
+    CHECK(scene.lights.size() == 1u);
+    std::vector<std::string> warnings;
+    for (auto const& e : diagnostics.entries())
+        if (e.severity == Diagnostics::Severity::Warning) warnings.push_back(e.text);
+    REQUIRE(warnings.size() == 2u);
+    CHECK_THAT(warnings[0], Catch::Matchers::StartsWith("test.rib:2:"));
+    CHECK_THAT(warnings[0], Catch::Matchers::EndsWith("parameter \"intensty\" is not used; ignored (did you mean \"intensity\"?)"));
+    CHECK_THAT(warnings[1], Catch::Matchers::EndsWith("parameter \"glow\" is not used; ignored"));  // nothing near it
+}
+
 TEST_CASE("transforms compose the RenderMan way: the last one applies first", "[rib]") {
     Diagnostics diagnostics(false);
     Scene scene = parseRib(

@@ -1,7 +1,9 @@
 #include "parse/ParamList.h"
 
+#include <algorithm>
 #include <sstream>
 
+#include "core/Spelling.h"
 #include "parse/StandardDeclarations.h"
 
 namespace bxdflab {
@@ -179,7 +181,10 @@ Param const* ParamList::find(std::string const& name) const {
 
 Param const* ParamList::take(std::string const& name) const {
     Param const* p = find(name);
-    if (!p) return nullptr;
+    if (!p) {
+        noteAbsent(name);
+        return nullptr;
+    }
     p->used = true;
     if (p->decl.untyped)
         throw RibError(p->location, "parameter \"" + name + "\" has no type: write it as \"<type> " + name +
@@ -189,6 +194,11 @@ Param const* ParamList::take(std::string const& name) const {
 
 void ParamList::ignore(std::string const& name) const {
     if (Param const* p = find(name)) p->used = true;
+}
+
+void ParamList::noteAbsent(std::string const& name) const {
+    if (std::find(m_absentAskedFor.begin(), m_absentAskedFor.end(), name) == m_absentAskedFor.end())
+        m_absentAskedFor.push_back(name);
 }
 
 Param const& ParamList::expect(Param const& p, std::initializer_list<ParamType> types, size_t count) const {
@@ -269,8 +279,11 @@ void ParamList::warnUnused(Diagnostics& diagnostics, std::string const& owner) c
         if (p.decl.untyped)
             diagnostics.warn(p.location, owner + ": parameter \"" + p.name() +
                                              "\" has no type and is not a standard name; ignored");
-        else
-            diagnostics.warn(p.location, owner + ": parameter \"" + p.name() + "\" is not used; ignored");
+        else {
+            std::string const meant = closestSpelling(p.name(), m_absentAskedFor);
+            diagnostics.warn(p.location, owner + ": parameter \"" + p.name() + "\" is not used; ignored" +
+                                             (meant.empty() ? "" : " (did you mean \"" + meant + "\"?)"));
+        }
     }
 }
 

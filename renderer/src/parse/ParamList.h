@@ -87,6 +87,9 @@ public:
     Param const* take(std::string const& name) const;
     /// Marks a parameter as read and deliberately ignored, if present.
     void ignore(std::string const& name) const;
+    /// Notes a name a reader asked for and did not find (take() does this
+    /// itself): warnUnused offers it for a parameter spelled nearly so.
+    void noteAbsent(std::string const& name) const;
     std::vector<Param> const& all() const { return m_params; }
     bool empty() const { return m_params.empty(); }
 
@@ -102,12 +105,15 @@ public:
     std::vector<int> const* getInts(std::string const& name) const;
 
     /// Warns once for each parameter that no one read (typos, unsupported
-    /// options), and for each untyped one that is not a standard name.
+    /// options), and for each untyped one that is not a standard name; a
+    /// name a reader asked for in vain that is a letter or two away is
+    /// offered ("did you mean ...?").
     void warnUnused(Diagnostics& diagnostics, std::string const& owner) const;
 
 private:
     Param const& expect(Param const& p, std::initializer_list<ParamType> types, size_t count) const;
     std::vector<Param> m_params;
+    mutable std::vector<std::string> m_absentAskedFor;
 };
 
 }  // namespace bxdflab

@@ -2,8 +2,9 @@
 
 #include <algorithm>
 #include <array>
-#include <cctype>
 #include <vector>
+
+#include "core/Spelling.h"
 
 namespace bxdflab {
 namespace {
@@ -157,27 +158,6 @@ constexpr std::array kRequests = {
     "EditAttributeEnd",
 };
 
-std::string lowered(std::string text) {
-    std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return std::tolower(c); });
-    return text;
-}
-
-/// Levenshtein distance (insertions, deletions, substitutions).
-size_t editDistance(std::string const& a, std::string const& b) {
-    std::vector<size_t> row(b.size() + 1);
-    for (size_t j = 0; j <= b.size(); ++j) row[j] = j;
-    for (size_t i = 1; i <= a.size(); ++i) {
-        size_t diagonal = row[0];
-        row[0] = i;
-        for (size_t j = 1; j <= b.size(); ++j) {
-            size_t const above = row[j];
-            row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
-            diagonal = above;
-        }
-    }
-    return row[b.size()];
-}
-
 }  // namespace
 
 bool isRibRequest(std::string const& name) {
@@ -185,17 +165,8 @@ bool isRibRequest(std::string const& name) {
 }
 
 std::string likelyRibRequest(std::string const& name) {
-    std::string const wanted = lowered(name);
-    std::string best;
-    size_t bestDistance = 3;  // more than two letters off is no longer a slip
-    for (char const* request : kRequests) {
-        size_t const distance = editDistance(wanted, lowered(request));
-        if (distance < bestDistance) {
-            bestDistance = distance;
-            best = request;
-        }
-    }
-    return best;
+    static std::vector<std::string> const requests(kRequests.begin(), kRequests.end());
+    return closestSpelling(name, requests);
 }
 
 }  // namespace bxdflab

@@ -26,6 +26,7 @@ int RibParameterList::GetParamId(RtUString name, int* id) const {
             *id = static_cast<int>(i);
             return 0;
         }
+    m_params.noteAbsent(name.CStr());  // for a "did you mean" on a parameter spelled nearly so
     return 1;
 }
 
