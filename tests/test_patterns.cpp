@@ -168,6 +168,8 @@ TEST_CASE("bad networks: located errors for wrong handles, outputs and types; wa
     SECTION("an output the pattern does not have") {
         fails("Pattern \"PxrMix\" \"m\"\nBxdf \"PxrConstant\" \"c\" \"reference color emitColor\" [\"m:resultColour\"]\n",
               "has no output \"resultColour\" (its outputs: resultRGB)");
+        fails("Pattern \"PxrMix\" \"m\"\nBxdf \"PxrConstant\" \"c\" \"reference color emitColor\" [\"m:resultRBG\"]\n",
+              "has no output \"resultRBG\" (did you mean \"resultRGB\"? its outputs: resultRGB)");
     }
     SECTION("a float output into a colour") {
         fails("Pattern \"PxrTexture\" \"t\"\nBxdf \"PxrConstant\" \"c\" \"reference color emitColor\" [\"t:resultR\"]\n",

@@ -104,7 +104,10 @@ TEST_CASE("parameters are checked against the plugin's table", "[plugins][errors
                Contains("\"diffuseColor\" is a color, but the RIB gives a float"));
     auto r = test::renderRib(withBxdf("Bxdf \"diffuse\" \"x\" \"color difuseColor\" [1 0 0]"));
     CHECK(r.anyMessageContains("has no parameter \"difuseColor\""));
-    CHECK(r.anyMessageContains("its parameters: diffuseColor"));
+    CHECK(r.anyMessageContains("(did you mean \"diffuseColor\"? its parameters: diffuseColor"));
+    // A name nothing like any parameter gets the list alone.
+    auto far = test::renderRib(withBxdf("Bxdf \"diffuse\" \"x\" \"color albedo\" [1 0 0]"));
+    CHECK(far.anyMessageContains("has no parameter \"albedo\"; ignored (its parameters: diffuseColor"));
 }
 
 TEST_CASE("plugin search order: command line, environment, RIB option, ini file, built-in", "[plugins]") {

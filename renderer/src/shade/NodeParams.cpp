@@ -1,16 +1,27 @@
 #include "shade/NodeParams.h"
 
+#include "core/Spelling.h"
 #include "shade/PatternInstance.h"
 
 namespace bxdflab {
 namespace {
 
-std::string namesIn(std::vector<RixSCParamInfo> const& table, bool outputs) {
-    std::string names;
+std::vector<std::string> namesIn(std::vector<RixSCParamInfo> const& table, bool outputs) {
+    std::vector<std::string> names;
     for (auto const& entry : table)
-        if ((entry.access == k_RixSCOutput) == outputs)
-            names += std::string(names.empty() ? "" : ", ") + entry.name.CStr();
-    return names.empty() ? "none" : names;
+        if ((entry.access == k_RixSCOutput) == outputs) names.emplace_back(entry.name.CStr());
+    return names;
+}
+
+/// What to say about a name a plugin does not have among its inputs (or
+/// outputs): the one it was likely meant to be, then all of them.
+std::string namesHint(std::string const& name, std::vector<RixSCParamInfo> const& table, bool outputs) {
+    std::vector<std::string> const names = namesIn(table, outputs);
+    std::string list;
+    for (std::string const& known : names) list += (list.empty() ? "" : ", ") + known;
+    std::string const meant = closestSpelling(name, names);
+    return (meant.empty() ? "" : "did you mean \"" + meant + "\"? ") + (outputs ? "its outputs: " : "its parameters: ") +
+           (list.empty() ? "none" : list);
 }
 
 }  // namespace
@@ -29,7 +40,7 @@ NodeParams::NodeParams(std::string const& kind, ShadingPlugin const& plugin, Par
         int id = plugin.paramId(p.name());
         if (id < 0 || table[static_cast<size_t>(id)].access == k_RixSCOutput) {
             diagnostics.warn(p.location, owner + " has no " + (id < 0 ? "" : "input ") + "parameter \"" + p.name() +
-                                             "\"; ignored (its parameters: " + namesIn(table, false) + ")");
+                                             "\"; ignored (" + namesHint(p.name(), table, false) + ")");
             continue;
         }
         RixSCParamInfo const& info = table[static_cast<size_t>(id)];
@@ -57,7 +68,7 @@ NodeParams::NodeParams(std::string const& kind, ShadingPlugin const& plugin, Par
             if (output < 0 || from.paramTable()[static_cast<size_t>(output)].access != k_RixSCOutput)
                 throw RibError(link.where, owner + " parameter \"" + p.name() + "\": pattern \"" + source->handle() +
                                                "\" (" + from.name() + ") has no output \"" + link.output +
-                                               "\" (its outputs: " + namesIn(from.paramTable(), true) + ")");
+                                               "\" (" + namesHint(link.output, from.paramTable(), true) + ")");
             RixSCType outType = from.paramTable()[static_cast<size_t>(output)].type;
             if (!connectable(outType, info.type))
                 throw RibError(link.where, owner + " parameter \"" + p.name() + "\" is a " + ribTypeFor(info.type) +
