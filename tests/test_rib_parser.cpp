@@ -197,6 +197,25 @@ TEST_CASE("a parameter nobody reads names the one its reader asked for when it i
     CHECK_THAT(warnings[1], Catch::Matchers::EndsWith("parameter \"glow\" is not used; ignored"));  // nothing near it
 }
 
+TEST_CASE("RenderMan's older visibility attributes: transmission as a string, typed or not, and trace", "[rib]") {
+    for (std::string const form : {"\"string transmission\" [\"transparent\"]", "\"transmission\" [\"transparent\"]",
+                                   "\"transmission\" [\"opaque\"]", "\"int transmission\" [0]"}) {
+        CAPTURE(form);
+        Diagnostics diagnostics(false);
+        Scene scene = parseRib("WorldBegin\nAttribute \"visibility\" " + form + "\nSphere 1 -1 1 360\nWorldEnd\n", diagnostics);
+        REQUIRE(scene.shapes.size() == 1u);
+        CHECK(scene.shapes[0]->visibility.transmission == (form.find("opaque") != std::string::npos));
+        for (auto const& e : diagnostics.entries()) CHECK(e.severity != Diagnostics::Severity::Warning);
+    }
+    // The same era's "trace" is visibility to reflected and refracted rays.
+    Diagnostics diagnostics(false);
+    Scene scene = parseRib("WorldBegin\nAttribute \"visibility\" \"int trace\" [0]\nSphere 1 -1 1 360\nWorldEnd\n", diagnostics);
+    REQUIRE(scene.shapes.size() == 1u);
+    CHECK_FALSE(scene.shapes[0]->visibility.indirect);
+    CHECK(scene.shapes[0]->visibility.camera);
+    CHECK(diagnostics.entries().empty());
+}
+
 TEST_CASE("transforms compose the RenderMan way: the last one applies first", "[rib]") {
     Diagnostics diagnostics(false);
     Scene scene = parseRib(

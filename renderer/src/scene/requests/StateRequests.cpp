@@ -146,13 +146,18 @@ void SceneBuilder::attribute(RequestReader& in) {
         Visibility& vis = state().visibility;
         vis.camera = params.getInt("camera", vis.camera) != 0;
         vis.indirect = params.getInt("indirect", vis.indirect) != 0;
-        // RenderMan's older form: "string transmission" "opaque" | "transparent" | "Os" | "shader".
-        if (Param const* t = params.take("transmission")) {
-            if (t->decl.type == ParamType::String)
-                vis.transmission = t->strings.at(0) != "transparent";
-            else
+        // RenderMan's older form: "string transmission" "opaque" | "transparent" | "Os" | "shader",
+        // also written without its type (the standard name is an int today).
+        if (Param const* t = params.find("transmission")) {
+            if (!t->strings.empty()) {
+                t->used = true;
+                vis.transmission = t->strings[0] != "transparent";
+            } else {
                 vis.transmission = params.getInt("transmission", vis.transmission) != 0;
+            }
         }
+        // RenderMan 11 to 13: "trace" is visibility to traced (reflected and refracted) rays, our indirect rays.
+        if (params.has("trace")) vis.indirect = params.getInt("trace", 1) != 0;
         // Older files name the indirect rays by kind; any kind seeing the object makes it visible to indirect rays.
         bool olderKinds = params.has("diffuse") || params.has("specular");
         if (olderKinds) vis.indirect = params.getInt("diffuse", 0) != 0 || params.getInt("specular", 0) != 0;
