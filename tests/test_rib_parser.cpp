@@ -4,6 +4,7 @@
 #include <fstream>
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "core/Spelling.h"
 #include "parse/RibLexer.h"
 #include "parse/RibParser.h"
 #include "scene/SceneBuilder.h"
@@ -182,6 +183,17 @@ TEST_CASE("a name that is no RIB request is told apart from an unsupported one, 
     CHECK_THAT(warnings[3], !Catch::Matchers::Contains("did you mean"));
 }
 
+TEST_CASE("the spelling hint: at most two letters off, and at most a third of the name", "[rib]") {
+    CHECK(closestSpelling("intensty", {"exposure", "intensity"}) == "intensity");
+    CHECK(closestSpelling("sphere", {"Sphere", "Cone"}) == "Sphere");  // case is ignored
+    CHECK(closestSpelling("AttributeBegn", {"AttributeEnd", "AttributeBegin"}) == "AttributeBegin");
+    CHECK(closestSpelling("resultRBG", {"resultRGB", "resultR"}) == "resultRGB");  // a swap is two letters
+    CHECK(closestSpelling("Kr", {"Ka", "Kd", "Ks"}).empty());  // one letter of two is another name, not a slip
+    CHECK(closestSpelling("Sphre", {"Sphere"}) == "Sphere");
+    CHECK(closestSpelling("glow", {"intensity", "exposure"}).empty());
+    CHECK(closestSpelling("anything", {}).empty());
+}
+
 TEST_CASE("a parameter nobody reads names the one its reader asked for when it is spelled nearly so", "[rib]") {
     Diagnostics diagnostics(false);
     Scene scene = parseRib("WorldBegin\nLight \"PxrDiskLight\" \"l\" \"float intensty\" [10] \"float glow\" [1]\n"
@@ -209,11 +221,40 @@ TEST_CASE("RenderMan's older visibility attributes: transmission as a string, ty
     }
     // The same era's "trace" is visibility to reflected and refracted rays.
     Diagnostics diagnostics(false);
-    Scene scene = parseRib("WorldBegin\nAttribute \"visibility\" \"int trace\" [0]\nSphere 1 -1 1 360\nWorldEnd\n", diagnostics);
+    Scene scene = parseRib("WorldBegin\nAttribute \"visibility\" \"trace\" [0]\nSphere 1 -1 1 360\nWorldEnd\n", diagnostics);
     REQUIRE(scene.shapes.size() == 1u);
     CHECK_FALSE(scene.shapes[0]->visibility.indirect);
     CHECK(scene.shapes[0]->visibility.camera);
     CHECK(diagnostics.entries().empty());
+}
+
+TEST_CASE("a whole scene read inside a world: its WorldBegin/WorldEnd and camera requests are warned about and ignored",
+          "[rib]") {
+    Diagnostics diagnostics(false);
+    Scene scene = parseRib("Display \"mine.exr\" \"file\" \"rgba\"\nProjection \"perspective\" \"fov\" [30]\nWorldBegin\n"
+                           "Sphere 1 -1 1 360\n"
+                           "ArchiveBegin \"scene\"\n  Display \"other.tif\" \"file\" \"rgba\"\n"
+                           "  Projection \"perspective\" \"fov\" [90]\n  WorldBegin\n  Disk 0 1 360\n  WorldEnd\nArchiveEnd\n"
+                           "ReadArchive \"scene\"\nCone 1 1 360\nWorldEnd\n",
+                           diagnostics);
+    REQUIRE(scene.shapes.size() == 3u);  // the sphere, the archive's disk, and the cone after it
+    CHECK(scene.camera.fov == Approx(30.0f));
+    CHECK(scene.display.name == "mine.exr");
+    std::vector<std::string> warnings;
+    for (auto const& e : diagnostics.entries())
+        if (e.severity == Diagnostics::Severity::Warning) warnings.push_back(e.text);
+    REQUIRE(warnings.size() == 3u);
+    CHECK_THAT(warnings[0], Catch::Matchers::Contains("Display inside a world block is ignored"));
+    CHECK_THAT(warnings[1], Catch::Matchers::Contains("Projection inside a world block is ignored"));
+    CHECK_THAT(warnings[2], Catch::Matchers::Contains("WorldBegin inside a world block"));
+    // Older test files name their image just after WorldBegin: a first Display is kept.
+    Diagnostics quiet(false);
+    CHECK(parseRib("WorldBegin\nDisplay \"late.tif\" \"file\" \"rgb\"\nSphere 1 -1 1 360\nWorldEnd\n", quiet).display.name ==
+          "late.tif");
+    CHECK(quiet.entries().empty());
+    // A WorldEnd with no world still stops the file.
+    CHECK_THROWS_WITH(parseRib("WorldBegin\nWorldEnd\nWorldEnd\n", diagnostics),
+                      Catch::Matchers::Contains("WorldEnd without WorldBegin"));
 }
 
 TEST_CASE("transforms compose the RenderMan way: the last one applies first", "[rib]") {

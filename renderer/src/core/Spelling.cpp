@@ -32,7 +32,9 @@ size_t editDistance(std::string const& a, std::string const& b) {
 std::string closestSpelling(std::string const& name, std::vector<std::string> const& candidates) {
     std::string const wanted = lowered(name);
     std::string best;
-    size_t bestDistance = 3;  // more than two letters off is no longer a slip
+    // More than two letters off is no longer a slip; nor is one letter in a name
+    // of two (Kr is not a mistyped Ka): a third of the letters at most.
+    size_t bestDistance = std::min<size_t>(2, name.size() / 3) + 1;
     for (std::string const& candidate : candidates) {
         size_t const distance = editDistance(wanted, lowered(candidate));
         if (distance < bestDistance) {

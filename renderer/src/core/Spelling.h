@@ -7,8 +7,9 @@
 
 namespace bxdflab {
 
-/// The candidate closest to `name` when it is at most two letters off
-/// (insertions, deletions or substitutions, ignoring case), else "".
+/// The candidate closest to `name` when it is at most two letters off, and
+/// off by no more than a third of its letters (insertions, deletions or
+/// substitutions, ignoring case), else "".
 /// Ties go to the earlier candidate.
 std::string closestSpelling(std::string const& name, std::vector<std::string> const& candidates);
 

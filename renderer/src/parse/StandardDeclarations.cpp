@@ -37,7 +37,8 @@ std::vector<std::pair<char const*, char const*>> const& standardDeclarations() {
         {"merge", "int"}, {"origin", "int[2]"}, {"dspyParams", "string"},
         // Attributes.
         {"name", "string"}, {"shadinggroup", "string"}, {"id", "int"}, {"camera", "int"}, {"diffuse", "int"},
-        {"specular", "int"}, {"transmission", "int"}, {"indirect", "int"}, {"photon", "int"}, {"midpoint", "int"},
+        {"specular", "int"}, {"transmission", "int"}, {"indirect", "int"}, {"trace", "int"}, {"photon", "int"},
+        {"midpoint", "int"},
         {"bias", "float"}, {"maxdiffusedepth", "int"}, {"maxspeculardepth", "int"}, {"displacements", "int"},
         {"importancethreshold", "float"}, {"binary", "int"}, {"rasterorient", "int"}, {"hair", "int"},
         {"strategy", "string"}, {"referencecamera", "string"}, {"displacement", "float"}, {"backfacing", "int"},

@@ -195,6 +195,15 @@ void SceneBuilder::handle(RibRequest const& request) {
     if (!conditional && !m_conditionReading.empty() && !m_conditionReading.back()) return;
     // A motion block holds one request per time sample: the first one is used.
     if (m_motionSamples > 0 && request.name != "MotionEnd" && m_motionSeen++ > 0) return;
+    // The camera and image are fixed at WorldBegin (RenderMan reports these as
+    // misplaced). A first Display after it only names the file, as older test
+    // files expect, and is kept.
+    bool const firstDisplay = request.name == "Display" && !m_scene.display.where.known();
+    if (m_inWorld && isCameraOption(request.name) && !firstDisplay) {
+        warnOnce("option in world " + request.name, request.where,
+                 request.name + " inside a world block is ignored: the camera and image are set before WorldBegin");
+        return;
+    }
     auto found = handlers().find(request.name);
     if (found == handlers().end()) {
         warnOnce("request " + request.name, request.where, unknownRequestMessage(request.name));
@@ -205,6 +214,11 @@ void SceneBuilder::handle(RibRequest const& request) {
 }
 
 void SceneBuilder::ignore(RequestReader&) {}
+
+bool SceneBuilder::isCameraOption(std::string const& name) {
+    return name == "Display" || name == "Format" || name == "Projection" || name == "ScreenWindow" ||
+           name == "FrameAspectRatio" || name == "PixelSamples" || name == "Hider" || name == "Integrator";
+}
 
 std::string SceneBuilder::unknownRequestMessage(std::string const& name) {
     if (isRibRequest(name)) return "unsupported request " + name + " skipped";

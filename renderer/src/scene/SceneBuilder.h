@@ -98,6 +98,8 @@ private:
     /// The warning for a request the table does not handle: unsupported, or
     /// no request at all (with the one it was likely meant to be).
     static std::string unknownRequestMessage(std::string const& name);
+    /// Requests that set the camera or the image, which a world block cannot change.
+    static bool isCameraOption(std::string const& name);
     // Conditional RIB (IfBegin / ElseIf / Else / IfEnd): conditions are not
     // evaluated; the first branch is read as if it held, the others skipped.
     void ifBegin(RequestReader& in);
@@ -241,6 +243,7 @@ private:
     std::set<std::string> m_replaying;  ///< objects and archives being replayed: entering one again is a cycle
     long m_replayedRequests = 0;        ///< bounds what instancing may expand to
     bool m_inWorld = false;
+    int m_nestedWorlds = 0;  ///< WorldBegins inside the world, ignored until their WorldEnds
     int m_framesDone = 0;       ///< worlds completed so far
     bool m_skipWorld = false;   ///< this world's frame is not wanted
     bool m_keptFrame = false;   ///< without a sink: the frame asked for is in the scene already

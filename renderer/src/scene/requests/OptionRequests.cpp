@@ -245,7 +245,16 @@ void SceneBuilder::frameEnd(RequestReader& in) {
 
 void SceneBuilder::worldBegin(RequestReader& in) {
     in.finish();
-    if (m_inWorld) in.fail(in.where(), "WorldBegin inside a world block");
+    if (m_inWorld) {
+        // Most often an archive that is a whole scene, read into another. RenderMan
+        // reports the nesting and goes on; so does this renderer, reading what lies
+        // between into the enclosing world (its options and camera are ignored).
+        warnOnce("nested world", in.where(),
+                 "WorldBegin inside a world block (an archive that is a whole scene?): ignored with its WorldEnd; "
+                 "what lies between is read into the enclosing world");
+        ++m_nestedWorlds;
+        return;
+    }
     m_scene.camera.worldToCamera = state().transform;
     for (int i = 0; i < 4; ++i)
         for (int j = 0; j < 4; ++j)
@@ -270,6 +279,10 @@ void SceneBuilder::worldBegin(RequestReader& in) {
 
 void SceneBuilder::worldEnd(RequestReader& in) {
     in.finish();
+    if (m_nestedWorlds > 0) {
+        --m_nestedWorlds;
+        return;
+    }
     if (!m_inWorld) in.fail(in.where(), "WorldEnd without WorldBegin");
     m_inWorld = false;
     finishFrame();
