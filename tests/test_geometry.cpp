@@ -3,6 +3,9 @@
 // differences and closed forms.
 #include <catch2/catch.hpp>
 
+#include <memory>
+#include <vector>
+
 #include "accel/RayTracer.h"
 #include "scene/shapes/MeshBuilders.h"
 #include "scene/shapes/Quadrics.h"
@@ -191,4 +194,38 @@ TEST_CASE("cone, paraboloid and hyperboloid: RI derivatives and outward normals"
     REQUIRE(side.hit());
     CHECK(side.t == Approx(5.0f - 0.75f).epsilon(1e-4));
     CHECK(cone.shapes[0]->basics(side).Ng.x > 0.0f);
+}
+
+TEST_CASE("shadow rays traced as a stream answer as one at a time", "[geometry]") {
+    // Quadrics (Embree user geometry) and polygons (its triangles), rays of
+    // every length: some blocked, some short of what they point at.
+    Scene scene = sceneWith("Sphere 1 -1 0.5 270\nTranslate 0 0 3\nCylinder 0.5 -1 1 360\n"
+                            "Polygon \"P\" [-4 -4 -2  4 -4 -2  4 4 -2  -4 4 -2]");
+    RayTracer tracer(scene);
+    std::vector<Vec3> org, dir;
+    std::vector<float> reach;
+    uint32_t state = 12345u;
+    auto uniform = [&] {  // a small LCG: the test needs spread, not quality
+        state = state * 1664525u + 1013904223u;
+        return static_cast<float>(state >> 8) / 16777216.0f;
+    };
+    for (int k = 0; k < 600; ++k) {
+        org.emplace_back(8.0f * uniform() - 4.0f, 8.0f * uniform() - 4.0f, 6.0f * uniform() - 1.5f);
+        dir.push_back(glm::normalize(Vec3(uniform() - 0.5f, uniform() - 0.5f, uniform() - 0.5f)));
+        reach.push_back(k % 7 == 0 ? kInfinity : 6.0f * uniform());
+    }
+    RayCounts counts;
+    std::vector<char> blocked(org.size());
+    std::unique_ptr<bool[]> streamed(new bool[org.size()]);
+    tracer.occludedStream(org.data(), dir.data(), reach.data(), static_cast<int>(org.size()), streamed.get(), counts);
+    int blockedCount = 0;
+    for (size_t k = 0; k < org.size(); ++k) {
+        bool single = tracer.occluded(org[k], dir[k], 0.0f, reach[k], counts);
+        CHECK(streamed[k] == single);
+        blockedCount += single;
+    }
+    CHECK(counts.shadow == 2 * org.size());
+    // Both answers occur, or the comparison would say little.
+    CHECK(blockedCount > 60);
+    CHECK(blockedCount < 540);
 }

@@ -27,17 +27,27 @@ public:
         ctx.GetBuiltinVar(RixShadingContext::k_Nn, &Nn);
         ctx.GetBuiltinVar(RixShadingContext::k_Ngn, &Ngn);
         ctx.GetBuiltinVar(RixShadingContext::k_Vn, &Vn);
-        RtFloat2* xi = RixShadingContext::Allocator(&ctx).AllocFor<RtFloat2>(n);
+        RixShadingContext::Allocator pool(&ctx);
+        RtFloat2* xi = pool.AllocFor<RtFloat2>(n);
+        // This round's rays (ray k from point[k] toward dir[k]), traced together.
+        int* point = pool.AllocFor<int>(n);
+        RtVector3* dir = pool.AllocFor<RtVector3>(n);
+        float* reach = pool.AllocFor<float>(n);
+        bool* clear = pool.AllocFor<bool>(n);
         RtColorRGB const share(1.0f / static_cast<float>(m_numSamples));
         for (int s = 0; s < m_numSamples; ++s) {
             rng.DrawSamples2D(xi);
+            int rays = 0;
             for (int i = 0; i < n; ++i) {
-                RtVector3 dir;
                 float cosTheta;
-                RixCosDirectionalDistribution(xi[i], RixGetForwardFacingNormal(Vn[i], Nn[i]), dir, cosTheta);
-                if (RixGetForwardFacingNormal(Vn[i], Ngn[i]).Dot(dir) <= 0.0f) continue;  // below the surface
-                if (ictx.Unoccluded(ctx, i, dir, m_maxDistance)) radiance[i] += share;
+                RixCosDirectionalDistribution(xi[i], RixGetForwardFacingNormal(Vn[i], Nn[i]), dir[rays], cosTheta);
+                if (RixGetForwardFacingNormal(Vn[i], Ngn[i]).Dot(dir[rays]) <= 0.0f) continue;  // below the surface
+                point[rays] = i;
+                reach[rays++] = m_maxDistance;
             }
+            ictx.Unoccluded(ctx, rays, point, dir, reach, clear);
+            for (int k = 0; k < rays; ++k)
+                if (clear[k]) radiance[point[k]] += share;
         }
     }
 

@@ -77,9 +77,15 @@ std::string withIntegrator(std::string rib, std::string const& integrator) {
 
 int warningsContaining(Diagnostics const& diagnostics, std::string const& text) {
     int n = 0;
-    for (auto const& entry : diagnostics.entries())
-        n += entry.severity == Diagnostics::Severity::Warning && entry.text.find(text) != std::string::npos;
+    for (std::string const& warning : warningTexts(diagnostics)) n += warning.find(text) != std::string::npos;
     return n;
+}
+
+std::vector<std::string> warningTexts(Diagnostics const& diagnostics) {
+    std::vector<std::string> texts;
+    for (auto const& entry : diagnostics.entries())
+        if (entry.severity == Diagnostics::Severity::Warning) texts.push_back(entry.text);
+    return texts;
 }
 
 }  // namespace bxdflab::test

@@ -37,6 +37,8 @@ Scene parseRib(std::string const& rib, Diagnostics& diagnostics, std::string con
 
 /// How many warnings contain `text` (an empty text counts them all).
 int warningsContaining(Diagnostics const& diagnostics, std::string const& text);
+/// The texts of the warnings, in the order they were given.
+std::vector<std::string> warningTexts(Diagnostics const& diagnostics);
 
 /// Mean of channel c over the pixels for which keep(x, y) is true.
 double meanChannel(RenderOutcome const& r, int c, std::function<bool(int, int)> const& keep);

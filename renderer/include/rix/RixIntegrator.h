@@ -87,6 +87,14 @@ public:
     virtual bool Unoccluded(RixShadingContext const& ctx, int i, RtVector3 const& dir, float distance) = 0;
     /// A shadow ray toward whichever light lies along dir from point i (hit = false if none, or blocked).
     virtual RixLightHit VisibleLight(RixShadingContext const& ctx, int i, RtVector3 const& dir) = 0;
+    /// The same two questions for many points at once: ray k leaves point indices[k] of ctx toward
+    /// dirs[k]. The renderer traces them together, which is faster than a call per ray; the answers
+    /// are the ones the calls above would give. Unoccluded: clear[k] is whether the way is clear
+    /// up to distances[k]. VisibleLights: hits[k] as VisibleLight gives it.
+    virtual void Unoccluded(RixShadingContext const& ctx, int count, int const* indices, RtVector3 const* dirs,
+                            float const* distances, bool* clear) = 0;
+    virtual void VisibleLights(RixShadingContext const& ctx, int count, int const* indices, RtVector3 const* dirs,
+                               RixLightHit* hits) = 0;
 
     /// Traces count rays leaving points indices[k] of ctx in directions dirs[k]. For every ray,
     /// lightHits[k] tells whether it reaches a light before any surface. Rays that hit a surface

@@ -26,6 +26,27 @@ namespace {
 bool isFinite(RtColorRGB const& c) { return std::isfinite(c.r) && std::isfinite(c.g) && std::isfinite(c.b); }
 bool isFinite(RtVector3 const& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
+/// The shadow rays of one round of samples, gathered to be traced together:
+/// ray k leaves point[k] toward dir[k] and must stay clear for distance[k].
+struct ShadowRays {
+    ShadowRays(RixShadingContext::Allocator& pool, int size)
+        : point(pool.AllocFor<int>(size)),
+          dir(pool.AllocFor<RtVector3>(size)),
+          distance(pool.AllocFor<float>(size)),
+          clear(pool.AllocFor<bool>(size)) {}
+    void add(int i, RtVector3 const& towards, float reach) {
+        point[count] = i;
+        dir[count] = towards;
+        distance[count] = reach;
+        ++count;
+    }
+    int count = 0;
+    int* point;
+    RtVector3* dir;
+    float* distance;
+    bool* clear;
+};
+
 }  // namespace
 
 void accumulate(RixIntegratorContext& ictx, RtColorRGB& radiance, RtColorRGB const& contribution) {
@@ -53,6 +74,7 @@ void addLightSamples(RixShadingContext const& ctx, RixBxdf& bxdf, RixRNG& rng, R
     RixShadingContext::Allocator pool(&ctx);
     RtFloat2* xi = pool.AllocFor<RtFloat2>(n);
     RixLightSample* lightSample = pool.AllocFor<RixLightSample>(n);
+    ShadowRays shadow(pool, n);
     RixBxdfScratch q(ctx);
     float const nL = static_cast<float>(numLightSamples), nB = static_cast<float>(numBxdfSamples);
 
@@ -66,15 +88,21 @@ void addLightSamples(RixShadingContext const& ctx, RixBxdf& bxdf, RixRNG& rng, R
                 q.Ln[i] = lightSample[i].wi;
             }
             q.evaluate(bxdf, rng, ictx);
+            // A shadow ray for every point the light would add to, all traced at once.
+            shadow.count = 0;
             for (int i = 0; i < n; ++i) {
                 RixLightSample const& ls = lightSample[i];
-                if (!(ls.pdf > 0.0f) || ls.radiance.IsBlack()) continue;
-                RtColorRGB f = q.W.SumAtPoint(i);
-                if (f.IsBlack()) continue;
-                if (!ictx.Unoccluded(ctx, i, ls.wi, ls.distance)) continue;  // a shadow ray
+                if (!(ls.pdf > 0.0f) || ls.radiance.IsBlack() || q.W.SumAtPoint(i).IsBlack()) continue;
+                shadow.add(i, ls.wi, ls.distance);
+            }
+            ictx.Unoccluded(ctx, shadow.count, shadow.point, shadow.dir, shadow.distance, shadow.clear);
+            for (int k = 0; k < shadow.count; ++k) {
+                if (!shadow.clear[k]) continue;
+                int const i = shadow.point[k];
+                RixLightSample const& ls = lightSample[i];
                 // Weighted against the chance that Bxdf sampling finds the same light (MIS).
                 float weight = ls.delta ? 1.0f : RixPowerHeuristic(nL, ls.pdf, nB, RixMax(0.0f, q.FPdf[i]));
-                RtColorRGB contribution = f * ls.radiance * (weight / (nL * ls.pdf));
+                RtColorRGB contribution = q.W.SumAtPoint(i) * ls.radiance * (weight / (nL * ls.pdf));
                 if (throughput) contribution *= throughput[i];
                 accumulate(ictx, radiance[i], contribution);
             }
@@ -122,21 +150,29 @@ void DirectLighting::Integrate(RixShadingContext const& ctx, RixBxdf& bxdf, RixR
 
     // 4. Bxdf sampling: let the Bxdf choose directions, and see which reach a light.
     RixBxdfScratch q(ctx);
+    RixShadingContext::Allocator pool(&ctx);
+    ShadowRays shadow(pool, n);
+    RixLightHit* hit = pool.AllocFor<RixLightHit>(n);
     float const nL = static_cast<float>(m_numLightSamples), nB = static_cast<float>(m_numBxdfSamples);
     for (int s = 0; s < m_numBxdfSamples; ++s) {
         q.generate(bxdf, rng, ictx);
+        shadow.count = 0;
         for (int i = 0; i < n; ++i) {
             if (!q.lobeSampled[i].GetValid() || !(q.FPdf[i] > 0.0f)) continue;
             if (!isFinite(q.Ln[i]) || q.Ln[i].IsZero()) {
                 ictx.CountNonFinite();
                 continue;
             }
-            RtColorRGB f = q.W.SumAtPoint(i);
-            if (f.IsBlack()) continue;
-            RixLightHit hit = ictx.VisibleLight(ctx, i, Normalize(q.Ln[i]));  // a shadow ray, if a light lies that way
-            if (!hit.hit) continue;
-            float weight = q.lobeSampled[i].GetDiscrete() ? 1.0f : RixPowerHeuristic(nB, q.FPdf[i], nL, hit.pdf);
-            accumulate(ictx, radiance[i], f * hit.radiance * (weight / (nB * q.FPdf[i])));
+            if (q.W.SumAtPoint(i).IsBlack()) continue;
+            shadow.add(i, Normalize(q.Ln[i]), 0.0f);
+        }
+        // A shadow ray toward each light a sampled direction meets, all traced at once.
+        ictx.VisibleLights(ctx, shadow.count, shadow.point, shadow.dir, hit);
+        for (int k = 0; k < shadow.count; ++k) {
+            if (!hit[k].hit) continue;
+            int const i = shadow.point[k];
+            float weight = q.lobeSampled[i].GetDiscrete() ? 1.0f : RixPowerHeuristic(nB, q.FPdf[i], nL, hit[k].pdf);
+            accumulate(ictx, radiance[i], q.W.SumAtPoint(i) * hit[k].radiance * (weight / (nB * q.FPdf[i])));
         }
     }
 }

@@ -180,6 +180,23 @@ bool RayTracer::occluded(Vec3 const& org, Vec3 const& dir, float tnear, float tf
     return ray.tfar < 0.0f;
 }
 
+void RayTracer::occludedStream(Vec3 const* org, Vec3 const* dir, float const* tfar, int count, bool* blocked,
+                               RayCounts& counts) const {
+    if (count <= 0) return;
+    thread_local std::vector<RTCRay> rays;
+    rays.resize(static_cast<size_t>(count));
+    for (int i = 0; i < count; ++i) {
+        rays[static_cast<size_t>(i)] = makeRay(org[i], dir[i], 0.0f, tfar[i]);
+        if (m_observer) m_observer->traced(org[i], dir[i], 0.0f, tfar[i], RayKind::Shadow, true);
+    }
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+    rtcOccluded1M(m_shadow, &context, rays.data(), static_cast<unsigned>(count), sizeof(RTCRay));
+    counts.shadow += static_cast<uint64_t>(count);
+    for (int i = 0; i < count; ++i) blocked[i] = rays[static_cast<size_t>(i)].tfar < 0.0f;
+}
+
 namespace {
 
 /// The next float above x, as std::nextafter(x, +inf), without its call

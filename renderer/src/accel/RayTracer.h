@@ -59,6 +59,11 @@ public:
                            RayCounts& counts) const;
     /// True if anything blocks the segment (tnear, tfar).
     bool occluded(Vec3 const& org, Vec3 const& dir, float tnear, float tfar, RayCounts& counts) const;
+    /// Many shadow rays at once (a stream, as Embree's rtcOccluded1M traces
+    /// them, without a call per ray): blocked[i] as occluded() gives it for
+    /// the segment (0, tfar[i]) of ray i.
+    void occludedStream(Vec3 const* org, Vec3 const* dir, float const* tfar, int count, bool* blocked,
+                        RayCounts& counts) const;
 
     RayCounters& counters() const { return m_counters; }
     /// World-space bounds of what camera rays can hit (empty: lower > upper).

@@ -11,6 +11,23 @@ namespace {
 /// Shadow rays stop just short of the light, so a surface touching it does not count.
 float shadowReach(float distance) { return std::isinf(distance) ? kInfinity : distance * (1.0f - 1e-4f); }
 
+/// Where rays leaving the points of a batch start: pushed off each surface.
+class RayStarts {
+public:
+    explicit RayStarts(RixShadingContext const& ctx) {
+        ctx.GetBuiltinVar(RixShadingContext::k_P, &m_P);
+        ctx.GetBuiltinVar(RixShadingContext::k_Ngn, &m_Ngn);
+        ctx.GetBuiltinVar(RixShadingContext::k_biasR, &m_biasR);
+    }
+    /// The start of a ray from point i toward dir.
+    Vec3 at(int i, Vec3 const& dir) const { return offsetRayOrigin(toVec3(m_P[i]), m_biasR[i], toVec3(m_Ngn[i]), dir); }
+
+private:
+    RtPoint3 const* m_P = nullptr;
+    RtNormal3 const* m_Ngn = nullptr;
+    RtFloat const* m_biasR = nullptr;
+};
+
 }  // namespace
 
 RixLightSample IntegratorServices::SampleLight(int light, RtPoint3 const& P, RtFloat2 const& xi) const {
@@ -24,19 +41,28 @@ RixLightSample IntegratorServices::SampleLight(int light, RtPoint3 const& P, RtF
     return out;
 }
 
-Vec3 IntegratorServices::origin(RixShadingContext const& ctx, int i, Vec3 const& dir) const {
-    RtPoint3 const* P;
-    RtNormal3 const* Ngn;
-    RtFloat const* biasR;
-    ctx.GetBuiltinVar(RixShadingContext::k_P, &P);
-    ctx.GetBuiltinVar(RixShadingContext::k_Ngn, &Ngn);
-    ctx.GetBuiltinVar(RixShadingContext::k_biasR, &biasR);
-    return offsetRayOrigin(toVec3(P[i]), biasR[i], toVec3(Ngn[i]), dir);
-}
-
 bool IntegratorServices::Unoccluded(RixShadingContext const& ctx, int i, RtVector3 const& dir, float distance) {
     Vec3 d = toVec3(dir);
-    return !m_tracer.occluded(origin(ctx, i, d), d, 0.0f, shadowReach(distance), m_counts);
+    return !m_tracer.occluded(RayStarts(ctx).at(i, d), d, 0.0f, shadowReach(distance), m_counts);
+}
+
+void IntegratorServices::Unoccluded(RixShadingContext const& ctx, int count, int const* indices,
+                                    RtVector3 const* dirs, float const* distances, bool* clear) {
+    if (count <= 0) return;
+    MemoryArena::Mark mark = m_arena.mark();
+    size_t const size = static_cast<size_t>(count);
+    Vec3* from = m_arena.allocArray<Vec3>(size);
+    Vec3* d = m_arena.allocArray<Vec3>(size);
+    float* reach = m_arena.allocArray<float>(size);
+    RayStarts starts(ctx);
+    for (int k = 0; k < count; ++k) {
+        d[k] = toVec3(dirs[k]);
+        from[k] = starts.at(indices[k], d[k]);
+        reach[k] = shadowReach(distances[k]);
+    }
+    m_tracer.occludedStream(from, d, reach, count, clear, m_counts);
+    for (int k = 0; k < count; ++k) clear[k] = !clear[k];  // it was told which are blocked
+    m_arena.release(mark);
 }
 
 RixLightHit IntegratorServices::lightAlong(Vec3 const& from, Vec3 const& dir, float maxDistance) const {
@@ -47,10 +73,37 @@ RixLightHit IntegratorServices::lightAlong(Vec3 const& from, Vec3 const& dir, fl
 }
 
 RixLightHit IntegratorServices::VisibleLight(RixShadingContext const& ctx, int i, RtVector3 const& dir) {
-    Vec3 d = toVec3(dir), from = origin(ctx, i, d);
+    Vec3 d = toVec3(dir), from = RayStarts(ctx).at(i, d);
     RixLightHit light = lightAlong(from, d, kInfinity);
     if (light.hit && m_tracer.occluded(from, d, 0.0f, shadowReach(light.distance), m_counts)) light.hit = false;
     return light;
+}
+
+void IntegratorServices::VisibleLights(RixShadingContext const& ctx, int count, int const* indices,
+                                       RtVector3 const* dirs, RixLightHit* hits) {
+    if (count <= 0) return;
+    MemoryArena::Mark mark = m_arena.mark();
+    size_t const size = static_cast<size_t>(count);
+    Vec3* from = m_arena.allocArray<Vec3>(size);
+    Vec3* d = m_arena.allocArray<Vec3>(size);
+    float* reach = m_arena.allocArray<float>(size);
+    int* rayOf = m_arena.allocArray<int>(size);  // which of the hits each shadow ray tests
+    int rays = 0;
+    RayStarts starts(ctx);
+    for (int k = 0; k < count; ++k) {
+        Vec3 dir = toVec3(dirs[k]), start = starts.at(indices[k], dir);
+        hits[k] = lightAlong(start, dir, kInfinity);
+        if (!hits[k].hit) continue;  // no light that way: no shadow ray
+        from[rays] = start;
+        d[rays] = dir;
+        reach[rays] = shadowReach(hits[k].distance);
+        rayOf[rays++] = k;
+    }
+    bool* blocked = m_arena.allocArray<bool>(size);
+    m_tracer.occludedStream(from, d, reach, rays, blocked, m_counts);
+    for (int r = 0; r < rays; ++r)
+        if (blocked[r]) hits[rayOf[r]].hit = false;
+    m_arena.release(mark);
 }
 
 void IntegratorServices::TraceIndirect(RixShadingContext const& ctx, int count, int const* indices,
@@ -58,9 +111,10 @@ void IntegratorServices::TraceIndirect(RixShadingContext const& ctx, int count, 
                                        RixLightHit* lightHits, std::function<void(RixShadeBatch&)> const& visit) {
     MemoryArena::Mark mark = m_arena.mark();
     HitRecord* hits = m_arena.allocArray<HitRecord>(static_cast<size_t>(std::max(1, count)));
+    RayStarts starts(ctx);
     for (int k = 0; k < count; ++k) {
         Vec3 d = glm::normalize(toVec3(dirs[k]));
-        Vec3 from = origin(ctx, indices[k], d);
+        Vec3 from = starts.at(indices[k], d);
         HitRecord hit = m_tracer.intersect(from, d, 0.0f, kInfinity, RayKind::Indirect, m_counts);
         lightHits[k] = lightAlong(from, d, hit.hit() ? hit.t : kInfinity);
         // Rays that reach a light first, or that the integrator does not want shaded, end here.
@@ -145,7 +199,7 @@ RixCameraConnection IntegratorServices::ConnectCamera(RixShadingContext const& c
     out.pdfArea = directionPdf * std::fabs(glm::dot(toVec3(Ngn[i]), toEye)) / distSq;
     // A pixel averages camera rays spread evenly over its share of the image plane.
     out.importance = directionPdf * static_cast<float>(m_camera->pixelCount()) / distSq;
-    out.hit = !testVisibility || !m_tracer.occluded(origin(ctx, i, toEye), toEye, 0.0f, shadowReach(distance), m_counts);
+    out.hit = !testVisibility || !m_tracer.occluded(RayStarts(ctx).at(i, toEye), toEye, 0.0f, shadowReach(distance), m_counts);
     return out;
 }
 

@@ -36,6 +36,10 @@ public:
     RixLightSample SampleLight(int light, RtPoint3 const& P, RtFloat2 const& xi) const override;
     bool Unoccluded(RixShadingContext const& ctx, int i, RtVector3 const& dir, float distance) override;
     RixLightHit VisibleLight(RixShadingContext const& ctx, int i, RtVector3 const& dir) override;
+    void Unoccluded(RixShadingContext const& ctx, int count, int const* indices, RtVector3 const* dirs,
+                    float const* distances, bool* clear) override;
+    void VisibleLights(RixShadingContext const& ctx, int count, int const* indices, RtVector3 const* dirs,
+                       RixLightHit* hits) override;
     void TraceIndirect(RixShadingContext const& ctx, int count, int const* indices, RtVector3 const* dirs,
                        bool const* shade, RixRNG::SampleCtx const* samples, RixLightHit* lightHits,
                        std::function<void(RixShadeBatch&)> const& visit) override;
@@ -67,8 +71,6 @@ public:
     uint64_t takeInvalidPdf() { return std::exchange(m_invalidPdf, 0); }
 
 private:
-    /// Where a ray from point i of ctx toward dir starts (pushed off the surface).
-    Vec3 origin(RixShadingContext const& ctx, int i, Vec3 const& dir) const;
     /// The nearest light along a ray, closer than maxDistance (not tested for occlusion).
     RixLightHit lightAlong(Vec3 const& origin, Vec3 const& dir, float maxDistance) const;
 
