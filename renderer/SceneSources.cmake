@@ -4,6 +4,7 @@
 # clang and libFuzzer.
 set(RIX_SCENE_SOURCES
   core/Diagnostics.cpp
+  core/GitLfs.cpp
   core/ImageFiles.cpp
   core/Spelling.cpp
   parse/RibLexer.cpp

@@ -366,6 +366,37 @@ TEST_CASE("an archive named relative to an absolute search-path folder of anothe
                                                 "(/exporter-machine/project/shot/geometry/geo.rib) found beside the scene") == 1);
 }
 
+TEST_CASE("a file that is a Git LFS pointer is named as one: an archive is missing, a scene cannot be read", "[rib]") {
+    // A repository cloned without Git LFS holds pointers like this one in place of its large files.
+    namespace fs = std::filesystem;
+    fs::path const folder = fs::path(test::outputDir()) / "lfs-pointers";
+    fs::create_directories(folder);
+    std::string const pointer = "version https://git-lfs.github.com/spec/v1\n"
+                                "oid sha256:4d7a214614ab2935c943f9e0ff69d22eadbb8f32b1258daaa5e2ca24d17e2393\nsize 104857\n";
+    std::ofstream(folder / "geometry.rib") << pointer;
+    std::ofstream(folder / "scene.rib") << "WorldBegin\nReadArchive \"geometry.rib\"\nSphere 1 -1 1 360\nWorldEnd\n";
+    Diagnostics diagnostics(false);
+    Scene scene = loadScene((folder / "scene.rib").string(), diagnostics);
+    CHECK(scene.shapes.size() == 1u);  // rendered without the archive, as without a missing one
+    std::vector<std::string> warnings = test::warningTexts(diagnostics);
+    REQUIRE(warnings.size() == 1u);
+    CHECK_THAT(warnings[0], Catch::Matchers::Contains("scene.rib:2:1: archive"));
+    CHECK_THAT(warnings[0], Catch::Matchers::Contains("geometry.rib\" is a Git LFS pointer, not the RIB file: fetch it"));
+    LoadOptions strict;
+    strict.strict = true;
+    Diagnostics strictDiagnostics(false);
+    CHECK_THROWS_WITH(loadScene((folder / "scene.rib").string(), strictDiagnostics, strict),
+                      Catch::Matchers::Contains("is a Git LFS pointer"));
+    // The scene itself: nothing to render, and a message that says why.
+    Diagnostics top(false);
+    CHECK_THROWS_WITH(loadScene((folder / "geometry.rib").string(), top),
+                      Catch::Matchers::Contains("geometry.rib\" is a Git LFS pointer, not the RIB file"));
+    // A RIB file that merely starts with "version" is not one.
+    std::ofstream(folder / "versioned.rib") << "version 3.04\nWorldBegin\nSphere 1 -1 1 360\nWorldEnd\n";
+    Diagnostics versioned(false);
+    CHECK(loadScene((folder / "versioned.rib").string(), versioned).shapes.size() == 1u);
+}
+
 namespace {
 
 /// Writes a zip file holding `members` (name, text), as RenderMan for Maya bundles a scene's geometry.

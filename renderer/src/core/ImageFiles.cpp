@@ -3,6 +3,7 @@
 #include <atomic>
 
 #include "core/Error.h"
+#include "core/GitLfs.h"
 
 namespace bxdflab {
 namespace {
@@ -24,6 +25,10 @@ std::unique_ptr<TextureService> openTextures(Diagnostics& diagnostics) {
 
 void writeImage(std::string const& path, std::vector<float> const& pixels, int width, int height, int channels) {
     imageFiles().write(path, pixels, width, height, channels);
+}
+
+std::string notAnImageBecause(std::string const& path) {
+    return fileIsGitLfsPointer(path) ? "it is " + gitLfsPointerNote("image") : std::string();
 }
 
 }  // namespace bxdflab

@@ -59,4 +59,9 @@ std::unique_ptr<TextureService> openTextures(Diagnostics& diagnostics);
 /// Shorthand for imageFiles().write(...).
 void writeImage(std::string const& path, std::vector<float> const& pixels, int width, int height, int channels);
 
+/// Why an image file that cannot be decoded may be no image at all: a
+/// repository cloned without Git LFS holds small text pointers in place of
+/// its images. The explanation to add to the reader's error, or empty.
+std::string notAnImageBecause(std::string const& path);
+
 }  // namespace bxdflab

@@ -23,7 +23,10 @@ public:
     ImagePixels read(std::string const& path, std::string const& what) const override {
         std::string prefix = what + " \"" + path + "\": ";
         auto input = OIIO::ImageInput::open(path);
-        if (!input) throw RenderError(prefix + OIIO::geterror());
+        if (!input) {
+            std::string why = OIIO::geterror(), pointer = notAnImageBecause(path);
+            throw RenderError(prefix + (pointer.empty() ? why : pointer));
+        }
         OIIO::ImageSpec const& spec = input->spec();
         // The declared size is checked before any pixel is decoded: a small file
         // can claim an image of many gigabytes.

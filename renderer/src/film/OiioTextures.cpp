@@ -71,7 +71,8 @@ private:
         if (name.empty()) {
             m_diagnostics.warn("a texture lookup names no file; it returns missingColor");
         } else if (!m_system->get_imagespec(file, 0, spec)) {
-            m_diagnostics.warn("texture \"" + name + "\" cannot be read (" + m_system->geterror() +
+            std::string why = m_system->geterror(), pointer = notAnImageBecause(file.string());
+            m_diagnostics.warn("texture \"" + name + "\" cannot be read (" + (pointer.empty() ? why : pointer) +
                                "); its lookups return missingColor");
         } else if (spec.width > kMaxImageSide || spec.height > kMaxImageSide ||
                    static_cast<long long>(spec.width) * spec.height > kMaxImagePixels || spec.depth > 1) {

@@ -7,6 +7,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "core/GitLfs.h"
 #include "parse/RibLexer.h"
 #include "parse/ZipMember.h"
 
@@ -111,15 +112,19 @@ std::string gunzip(std::string const& compressed, std::string const& path) {
     return out;
 }
 
+
+/// The text of a RIB file's bytes: inflated when they are gzip data.
+std::string ribText(std::string const& bytes, std::string const& path) {
+    if (bytes.size() >= 2 && static_cast<unsigned char>(bytes[0]) == 0x1f && static_cast<unsigned char>(bytes[1]) == 0x8b)
+        return gunzip(bytes, path);
+    if (isGitLfsPointer(bytes)) throw RenderError("\"" + path + "\" is " + gitLfsPointerNote("RIB file"));
+    return bytes;
+}
+
 }  // namespace
 
 std::string readRibFile(std::string const& path) {
-    if (std::optional<ZipMemberName> zipped = splitZipMemberName(path)) {
-        std::string bytes = readZipMember(*zipped, kMaxRibBytes);
-        if (bytes.size() >= 2 && static_cast<unsigned char>(bytes[0]) == 0x1f && static_cast<unsigned char>(bytes[1]) == 0x8b)
-            return gunzip(bytes, path);
-        return bytes;
-    }
+    if (std::optional<ZipMemberName> zipped = splitZipMemberName(path)) return ribText(readZipMember(*zipped, kMaxRibBytes), path);
     // A folder, a FIFO or a device would make the read misbehave (empty, block
     // forever, never end): only regular files are RIB files.
     struct stat st;
@@ -132,10 +137,7 @@ std::string readRibFile(std::string const& path) {
     std::ostringstream text;
     text << in.rdbuf();
     if (in.bad()) throw RenderError("cannot read RIB file \"" + path + "\"");
-    std::string bytes = text.str();
-    if (bytes.size() >= 2 && static_cast<unsigned char>(bytes[0]) == 0x1f && static_cast<unsigned char>(bytes[1]) == 0x8b)
-        return gunzip(bytes, path);
-    return bytes;
+    return ribText(text.str(), path);
 }
 
 void parseRibFile(std::string const& path, RequestHandler const& handler) { parseRib(readRibFile(path), path, handler); }

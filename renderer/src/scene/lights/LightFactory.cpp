@@ -44,7 +44,11 @@ std::unique_ptr<Light> makeLight(std::string const& type, ParamList const& param
         } catch (RibError const&) {
             throw;
         } catch (RenderError const& error) {
-            throw RibError(where, error.what());  // an unreadable image: say which statement named it
+            // An image that cannot be decoded is treated as a missing one: RenderMan renders on
+            // without it, and a repository cloned without its LFS images should render as well.
+            missing(where, error.what());
+            map.clear();
+            dome = std::make_unique<DomeLight>(lightToWorld, map);
         }
         if (dome->repairedPixels() > 0)
             diagnostics.warn(where, "PxrDomeLight: " + std::to_string(dome->repairedPixels()) + " pixels of lightColorMap \"" +

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <sstream>
 
+#include "core/GitLfs.h"
 #include "parse/ZipMember.h"
 #include "scene/SceneBuilder.h"
 
@@ -43,6 +44,10 @@ void SceneBuilder::readArchiveNamed(std::string const& name, SourceLocation cons
     std::string const fileName = zipped ? zipped->zipFile : name;
     auto read = [&](fs::path const& found) {
         if (!zipped) {
+            if (fileIsGitLfsPointer(found.string())) {  // the archive's text is not in this clone
+                missingFile(where, "archive \"" + found.string() + "\" is " + gitLfsPointerNote("RIB file"));
+                return;
+            }
             readFile(found.string());
             return;
         }
