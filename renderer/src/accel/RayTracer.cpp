@@ -191,7 +191,6 @@ void RayTracer::occludedStream(Vec3 const* org, Vec3 const* dir, float const* tf
     }
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
-    context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
     rtcOccluded1M(m_shadow, &context, rays.data(), static_cast<unsigned>(count), sizeof(RTCRay));
     counts.shadow += static_cast<uint64_t>(count);
     for (int i = 0; i < count; ++i) blocked[i] = rays[static_cast<size_t>(i)].tfar < 0.0f;
