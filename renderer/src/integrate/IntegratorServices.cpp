@@ -28,6 +28,33 @@ private:
     RtFloat const* m_biasR = nullptr;
 };
 
+/// Shadow rays gathered (in arena memory) to be traced as one stream.
+class ShadowStream {
+public:
+    ShadowStream(MemoryArena& arena, size_t capacity)
+        : m_from(arena.allocArray<Vec3>(capacity)),
+          m_dir(arena.allocArray<Vec3>(capacity)),
+          m_reach(arena.allocArray<float>(capacity)) {}
+    /// A ray from start along dir that must stay clear up to a light `distance` away.
+    void add(Vec3 const& start, Vec3 const& dir, float distance) {
+        m_from[m_count] = start;
+        m_dir[m_count] = dir;
+        m_reach[m_count] = shadowReach(distance);
+        ++m_count;
+    }
+    int count() const { return m_count; }
+    /// blocked[k]: something lies in the way of ray k.
+    void trace(RayTracer const& tracer, bool* blocked, RayCounts& counts) const {
+        tracer.occludedStream(m_from, m_dir, m_reach, m_count, blocked, counts);
+    }
+
+private:
+    Vec3* m_from;
+    Vec3* m_dir;
+    float* m_reach;
+    int m_count = 0;
+};
+
 }  // namespace
 
 RixLightSample IntegratorServices::SampleLight(int light, RtPoint3 const& P, RtFloat2 const& xi) const {
@@ -50,17 +77,13 @@ void IntegratorServices::Unoccluded(RixShadingContext const& ctx, int count, int
                                     RtVector3 const* dirs, float const* distances, bool* clear) {
     if (count <= 0) return;
     MemoryArena::Mark mark = m_arena.mark();
-    size_t const size = static_cast<size_t>(count);
-    Vec3* from = m_arena.allocArray<Vec3>(size);
-    Vec3* d = m_arena.allocArray<Vec3>(size);
-    float* reach = m_arena.allocArray<float>(size);
+    ShadowStream stream(m_arena, static_cast<size_t>(count));
     RayStarts starts(ctx);
     for (int k = 0; k < count; ++k) {
-        d[k] = toVec3(dirs[k]);
-        from[k] = starts.at(indices[k], d[k]);
-        reach[k] = shadowReach(distances[k]);
+        Vec3 const d = toVec3(dirs[k]);
+        stream.add(starts.at(indices[k], d), d, distances[k]);
     }
-    m_tracer.occludedStream(from, d, reach, count, clear, m_counts);
+    stream.trace(m_tracer, clear, m_counts);
     for (int k = 0; k < count; ++k) clear[k] = !clear[k];  // it was told which are blocked
     m_arena.release(mark);
 }
@@ -84,25 +107,20 @@ void IntegratorServices::VisibleLights(RixShadingContext const& ctx, int count, 
     if (count <= 0) return;
     MemoryArena::Mark mark = m_arena.mark();
     size_t const size = static_cast<size_t>(count);
-    Vec3* from = m_arena.allocArray<Vec3>(size);
-    Vec3* d = m_arena.allocArray<Vec3>(size);
-    float* reach = m_arena.allocArray<float>(size);
-    int* rayOf = m_arena.allocArray<int>(size);  // which of the hits each shadow ray tests
-    int rays = 0;
+    ShadowStream stream(m_arena, size);
+    int* hitOf = m_arena.allocArray<int>(size);  // which of the hits each shadow ray tests
     RayStarts starts(ctx);
     for (int k = 0; k < count; ++k) {
-        Vec3 dir = toVec3(dirs[k]), start = starts.at(indices[k], dir);
-        hits[k] = lightAlong(start, dir, kInfinity);
+        Vec3 const d = toVec3(dirs[k]), start = starts.at(indices[k], d);
+        hits[k] = lightAlong(start, d, kInfinity);
         if (!hits[k].hit) continue;  // no light that way: no shadow ray
-        from[rays] = start;
-        d[rays] = dir;
-        reach[rays] = shadowReach(hits[k].distance);
-        rayOf[rays++] = k;
+        hitOf[stream.count()] = k;
+        stream.add(start, d, hits[k].distance);
     }
     bool* blocked = m_arena.allocArray<bool>(size);
-    m_tracer.occludedStream(from, d, reach, rays, blocked, m_counts);
-    for (int r = 0; r < rays; ++r)
-        if (blocked[r]) hits[rayOf[r]].hit = false;
+    stream.trace(m_tracer, blocked, m_counts);
+    for (int r = 0; r < stream.count(); ++r)
+        if (blocked[r]) hits[hitOf[r]].hit = false;
     m_arena.release(mark);
 }
 
