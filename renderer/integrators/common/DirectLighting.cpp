@@ -27,7 +27,8 @@ bool isFinite(RtColorRGB const& c) { return std::isfinite(c.r) && std::isfinite(
 bool isFinite(RtVector3 const& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
 /// The shadow rays of one round of samples, gathered to be traced together:
-/// ray k leaves point[k] toward dir[k] and must stay clear for distance[k].
+/// ray k leaves point[k] toward dir[k]; toward a sampled light it must stay
+/// clear for distance[k] (toward a Bxdf sample, VisibleLights finds the light).
 struct ShadowRays {
     ShadowRays(RixShadingContext::Allocator& pool, int size)
         : point(pool.AllocFor<int>(size)),
@@ -164,7 +165,7 @@ void DirectLighting::Integrate(RixShadingContext const& ctx, RixBxdf& bxdf, RixR
                 continue;
             }
             if (q.W.SumAtPoint(i).IsBlack()) continue;
-            shadow.add(i, Normalize(q.Ln[i]), 0.0f);
+            shadow.add(i, Normalize(q.Ln[i]), 0.0f);  // no distance yet: the light is found along the ray
         }
         // A shadow ray toward each light a sampled direction meets, all traced at once.
         ictx.VisibleLights(ctx, shadow.count, shadow.point, shadow.dir, hit);
