@@ -34,17 +34,20 @@ struct ShadowRays {
         : point(pool.AllocFor<int>(size)),
           dir(pool.AllocFor<RtVector3>(size)),
           distance(pool.AllocFor<float>(size)),
+          weight(pool.AllocFor<RtColorRGB>(size)),
           clear(pool.AllocFor<bool>(size)) {}
-    void add(int i, RtVector3 const& towards, float reach) {
+    void add(int i, RtVector3 const& towards, float reach, RtColorRGB const& W) {
         point[count] = i;
         dir[count] = towards;
         distance[count] = reach;
+        weight[count] = W;
         ++count;
     }
     int count = 0;
     int* point;
     RtVector3* dir;
     float* distance;
+    RtColorRGB* weight;  ///< the Bxdf's W at the point for that direction, kept for the sum
     bool* clear;
 };
 
@@ -93,8 +96,10 @@ void addLightSamples(RixShadingContext const& ctx, RixBxdf& bxdf, RixRNG& rng, R
             shadow.count = 0;
             for (int i = 0; i < n; ++i) {
                 RixLightSample const& ls = lightSample[i];
-                if (!(ls.pdf > 0.0f) || ls.radiance.IsBlack() || q.W.SumAtPoint(i).IsBlack()) continue;
-                shadow.add(i, ls.wi, ls.distance);
+                if (!(ls.pdf > 0.0f) || ls.radiance.IsBlack()) continue;
+                RtColorRGB const f = q.W.SumAtPoint(i);
+                if (f.IsBlack()) continue;
+                shadow.add(i, ls.wi, ls.distance, f);
             }
             ictx.Unoccluded(ctx, shadow.count, shadow.point, shadow.dir, shadow.distance, shadow.clear);
             for (int k = 0; k < shadow.count; ++k) {
@@ -103,7 +108,7 @@ void addLightSamples(RixShadingContext const& ctx, RixBxdf& bxdf, RixRNG& rng, R
                 RixLightSample const& ls = lightSample[i];
                 // Weighted against the chance that Bxdf sampling finds the same light (MIS).
                 float weight = ls.delta ? 1.0f : RixPowerHeuristic(nL, ls.pdf, nB, RixMax(0.0f, q.FPdf[i]));
-                RtColorRGB contribution = q.W.SumAtPoint(i) * ls.radiance * (weight / (nL * ls.pdf));
+                RtColorRGB contribution = shadow.weight[k] * ls.radiance * (weight / (nL * ls.pdf));
                 if (throughput) contribution *= throughput[i];
                 accumulate(ictx, radiance[i], contribution);
             }
@@ -164,8 +169,9 @@ void DirectLighting::Integrate(RixShadingContext const& ctx, RixBxdf& bxdf, RixR
                 ictx.CountNonFinite();
                 continue;
             }
-            if (q.W.SumAtPoint(i).IsBlack()) continue;
-            shadow.add(i, Normalize(q.Ln[i]), 0.0f);  // no distance yet: the light is found along the ray
+            RtColorRGB const f = q.W.SumAtPoint(i);
+            if (f.IsBlack()) continue;
+            shadow.add(i, Normalize(q.Ln[i]), 0.0f, f);  // no distance yet: the light is found along the ray
         }
         // A shadow ray toward each light a sampled direction meets, all traced at once.
         ictx.VisibleLights(ctx, shadow.count, shadow.point, shadow.dir, hit);
@@ -173,7 +179,7 @@ void DirectLighting::Integrate(RixShadingContext const& ctx, RixBxdf& bxdf, RixR
             if (!hit[k].hit) continue;
             int const i = shadow.point[k];
             float weight = q.lobeSampled[i].GetDiscrete() ? 1.0f : RixPowerHeuristic(nB, q.FPdf[i], nL, hit[k].pdf);
-            accumulate(ictx, radiance[i], q.W.SumAtPoint(i) * hit[k].radiance * (weight / (nB * q.FPdf[i])));
+            accumulate(ictx, radiance[i], shadow.weight[k] * hit[k].radiance * (weight / (nB * q.FPdf[i])));
         }
     }
 }
