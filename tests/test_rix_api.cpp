@@ -3,6 +3,9 @@
 
 #include "shade/LobeTable.h"
 #include <set>
+#include <string>
+#include <thread>
+#include <vector>
 
 #include "RixBxdf.h"
 #include "RixShadingUtils.h"
@@ -35,6 +38,43 @@ TEST_CASE("Rt types: vector algebra, colour arithmetic, interned strings", "[api
     CHECK(product.g == 0.0f);
     CHECK(RtUString("diffuseColor") == RtUString(std::string("diffuseColor").c_str()));
     CHECK(RtUString("a") != RtUString("b"));
+}
+
+TEST_CASE("RtUString: equal text interns to one pointer, also when threads race to add it", "[api]") {
+    // Four threads intern the same 2,000 names (more than the table's 256
+    // lists, so lists hold several), each in its own order; every thread
+    // must get the same pointer for a name, and its text must be the name.
+    int const names = 2000, threads = 4;
+    std::vector<std::vector<char const*>> seen(threads, std::vector<char const*>(names));
+    std::vector<std::thread> workers;
+    for (int t = 0; t < threads; ++t)
+        workers.emplace_back([&, t] {
+            for (int k = 0; k < names; ++k) {
+                int i = (t % 2 == 0) ? k : names - 1 - k;
+                std::string name = "param" + std::to_string(i);
+                seen[t][i] = RtUString(name.c_str()).CStr();
+            }
+        });
+    for (auto& w : workers) w.join();
+    int mismatches = 0, wrongText = 0;
+    std::set<char const*> distinct;
+    for (int i = 0; i < names; ++i) {
+        for (int t = 1; t < threads; ++t) mismatches += seen[t][i] != seen[0][i];
+        wrongText += std::string(seen[0][i]) != "param" + std::to_string(i);
+        distinct.insert(seen[0][i]);
+    }
+    CHECK(mismatches == 0);
+    CHECK(wrongText == 0);
+    CHECK(distinct.size() == static_cast<size_t>(names));
+    // The text is copied: the RtUString outlives the buffer it was made from.
+    RtUString kept;
+    {
+        std::string buffer = "temporary";
+        kept = RtUString(buffer.c_str());
+        buffer = "overwritten";
+    }
+    CHECK(std::string(kept.CStr()) == "temporary");
+    CHECK(RtUString().CStr() == std::string());
 }
 
 TEST_CASE("lobe traits: sets of lobes combine with & and |", "[api]") {
