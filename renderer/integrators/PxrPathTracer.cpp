@@ -101,9 +101,13 @@ private:
         float* misWeightPdf = pool.AllocFor<float>(n);          // FPdf, for the MIS weight of a light hit
         bool* discrete = pool.AllocFor<bool>(n);
         int rays = 0;
+        // The other Bxdf samples only look for light: one shadow ray each, a round's traced together.
+        ShadowRays look(pool, n);
+        RixLightHit* lookHits = pool.AllocFor<RixLightHit>(n);
 
         for (int s = 0; s < m_numBxdfSamples; ++s) {
             q.generate(bxdf, rng, ictx);
+            look.count = 0;
             for (int i = 0; i < n; ++i) {
                 if (!q.lobeSampled[i].GetValid() || !(q.FPdf[i] > 0.0f)) continue;
                 RtVector3 L = q.Ln[i];
@@ -116,11 +120,7 @@ private:
                 if (f.IsBlack()) continue;
                 if (!m_allowCaustics && diffusePath[i] && q.lobeSampled[i].GetSpecular()) continue;  // a caustic
                 if (s != 0 || !continues) {
-                    // This sample only looks for light: a shadow ray toward the light it points at.
-                    RixLightHit light = ictx.VisibleLight(ctx, i, L);
-                    if (!light.hit) continue;
-                    float w = q.lobeSampled[i].GetDiscrete() ? 1.0f : RixPowerHeuristic(nB, q.FPdf[i], nL, light.pdf);
-                    accumulate(ictx, radiance[i], throughput[i] * f * light.radiance * (w / (nB * q.FPdf[i])));
+                    look.add(i, L, 0.0f, throughput[i] * f);  // the light is found along the ray
                     continue;
                 }
                 RtColorRGB carried = throughput[i] * f / q.FPdf[i];
@@ -141,6 +141,13 @@ private:
                 misWeightPdf[rays] = q.FPdf[i];
                 discrete[rays] = q.lobeSampled[i].GetDiscrete();
                 ++rays;
+            }
+            ictx.VisibleLights(ctx, look.count, look.point, look.dir, lookHits);
+            for (int k = 0; k < look.count; ++k) {
+                if (!lookHits[k].hit) continue;
+                int const i = look.point[k];
+                float w = q.lobeSampled[i].GetDiscrete() ? 1.0f : RixPowerHeuristic(nB, q.FPdf[i], nL, lookHits[k].pdf);
+                accumulate(ictx, radiance[i], look.weight[k] * lookHits[k].radiance * (w / (nB * q.FPdf[i])));
             }
         }
         if (rays == 0) return;

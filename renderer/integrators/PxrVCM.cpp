@@ -249,6 +249,7 @@ private:
         std::vector<RixLightSample> sampleStorage(static_cast<size_t>(n));
         RtFloat2* xi = xiStorage.data();
         RixLightSample* sample = sampleStorage.data();
+        ShadowRays shadow(pool, n);
         for (int light = 0; light < ictx.GetNumLights(); ++light) {
             bool const emits = ictx.CanEmit(light);
             rng.DrawSamples2D(xi);
@@ -257,11 +258,20 @@ private:
                 q.Ln[i] = sample[i].wi;
             }
             q.evaluate(bxdf, rng, ictx);
+            // A shadow ray for every point the light would add to, all traced at once.
+            shadow.count = 0;
             for (int i = 0; i < n; ++i) {
                 RixLightSample const& ls = sample[i];
                 if (!(ls.pdf > 0.0f) || ls.radiance.IsBlack()) continue;
                 RtColorRGB f = q.W.SumAtPoint(i);
-                if (f.IsBlack() || !ictx.Unoccluded(ctx, i, ls.wi, ls.distance)) continue;
+                if (!f.IsBlack()) shadow.add(i, ls.wi, ls.distance, f);
+            }
+            ictx.Unoccluded(ctx, shadow.count, shadow.point, shadow.dir, shadow.distance, shadow.clear);
+            for (int k = 0; k < shadow.count; ++k) {
+                if (!shadow.clear[k]) continue;
+                int const i = shadow.point[k];
+                RixLightSample const& ls = sample[i];
+                RtColorRGB const& f = shadow.weight[k];
                 float weight;
                 if (!emits) {
                     // A light at infinity: only Bxdf sampling competes.
@@ -373,6 +383,7 @@ private:
         // each light vertex, and a shadow ray between them.
         RtPoint3 const* P = nullptr;
         ctx.GetBuiltinVar(RixShadingContext::k_P, &P);
+        ShadowRays shadow(pool, n);
         for (int round = 0; round < maxLightSurfaces; ++round) {
             bool any = false;
             for (int i = 0; i < n; ++i) {
@@ -382,19 +393,29 @@ private:
             }
             if (!any) continue;
             q.evaluate(bxdf, rng, ictx);
+            // A shadow ray for every join, all traced at once.
+            shadow.count = 0;
             for (int i = 0; i < n; ++i) {
                 Connection const& c = joins[i * maxLightSurfaces + round];
                 if (!c.valid) continue;
                 RtColorRGB f = q.W.SumAtPoint(i);
                 if (f.IsBlack()) continue;
                 RtVector3 toLight = c.P - P[i];
-                float distSq = toLight.LengthSq(), distance = std::sqrt(distSq);
+                float distance = std::sqrt(toLight.LengthSq());
+                shadow.add(i, toLight / distance, distance, f);
+            }
+            ictx.Unoccluded(ctx, shadow.count, shadow.point, shadow.dir, shadow.distance, shadow.clear);
+            for (int k = 0; k < shadow.count; ++k) {
+                if (!shadow.clear[k]) continue;
+                int const i = shadow.point[k];
+                Connection const& c = joins[i * maxLightSurfaces + round];
+                RtVector3 toLight = c.P - P[i];
+                float distSq = toLight.LengthSq();
                 float revLightVertex = q.FPdf[i] * c.cosine / distSq;
                 float revPrevious = revOfPrevious(level, i, q.RPdf[i], false);
                 float sum = cameraSideSum(&level, i, c.pdfRevCamera, revPrevious, false, 1.0f, emitters.lightTracing) +
                             remapZero(revLightVertex) * remapZero(revLightVertex) * c.lightSum;
-                if (!ictx.Unoccluded(ctx, i, toLight / distance, distance)) continue;
-                accumulate(ictx, radiance[i], throughput[i] * f * c.carried * (1.0f / ((1.0f + sum) * distSq)));
+                accumulate(ictx, radiance[i], throughput[i] * shadow.weight[k] * c.carried * (1.0f / ((1.0f + sum) * distSq)));
             }
         }
     }

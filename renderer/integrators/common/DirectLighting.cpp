@@ -26,31 +26,6 @@ namespace {
 bool isFinite(RtColorRGB const& c) { return std::isfinite(c.r) && std::isfinite(c.g) && std::isfinite(c.b); }
 bool isFinite(RtVector3 const& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
-/// The shadow rays of one round of samples, gathered to be traced together:
-/// ray k leaves point[k] toward dir[k]; toward a sampled light it must stay
-/// clear for distance[k] (toward a Bxdf sample, VisibleLights finds the light).
-struct ShadowRays {
-    ShadowRays(RixShadingContext::Allocator& pool, int size)
-        : point(pool.AllocFor<int>(size)),
-          dir(pool.AllocFor<RtVector3>(size)),
-          distance(pool.AllocFor<float>(size)),
-          weight(pool.AllocFor<RtColorRGB>(size)),
-          clear(pool.AllocFor<bool>(size)) {}
-    void add(int i, RtVector3 const& towards, float reach, RtColorRGB const& W) {
-        point[count] = i;
-        dir[count] = towards;
-        distance[count] = reach;
-        weight[count] = W;
-        ++count;
-    }
-    int count = 0;
-    int* point;
-    RtVector3* dir;
-    float* distance;
-    RtColorRGB* weight;  ///< the Bxdf's W at the point for that direction, kept for the sum
-    bool* clear;
-};
-
 }  // namespace
 
 void accumulate(RixIntegratorContext& ictx, RtColorRGB& radiance, RtColorRGB const& contribution) {

@@ -7,6 +7,32 @@
 
 namespace bxdflab {
 
+/// The shadow rays of one round of samples, gathered to be traced together
+/// (RixIntegratorContext's batched Unoccluded and VisibleLights): ray k leaves
+/// point[k] toward dir[k]; toward a sampled light it must stay clear for
+/// distance[k] (toward a Bxdf sample, VisibleLights finds the light).
+struct ShadowRays {
+    ShadowRays(RixShadingContext::Allocator& pool, int size)
+        : point(pool.AllocFor<int>(size)),
+          dir(pool.AllocFor<RtVector3>(size)),
+          distance(pool.AllocFor<float>(size)),
+          weight(pool.AllocFor<RtColorRGB>(size)),
+          clear(pool.AllocFor<bool>(size)) {}
+    void add(int i, RtVector3 const& towards, float reach, RtColorRGB const& W) {
+        point[count] = i;
+        dir[count] = towards;
+        distance[count] = reach;
+        weight[count] = W;
+        ++count;
+    }
+    int count = 0;
+    int* point;
+    RtVector3* dir;
+    float* distance;
+    RtColorRGB* weight;  ///< what the light found is multiplied by (the Bxdf's W for that direction, times any path throughput)
+    bool* clear;
+};
+
 /// Next-event estimation for a batch: adds to radiance[i] the light arriving
 /// straight from the lights and reflected toward the viewer, times
 /// throughput[i] (or 1 when throughput is null), from numLightSamples samples
