@@ -17,6 +17,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
+#include <stdexcept>  // with <string>: what plugin code often uses without including it
 #include <string>
 
 typedef float RtFloat;
