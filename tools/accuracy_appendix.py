@@ -9,6 +9,11 @@ def table(folder, name):
     return (Path(folder) / name / "table.md").read_text().strip()
 
 
+def tables(folder, captioned):
+    """One study's table after another, each under its caption."""
+    return "\n\n".join(f"{caption}:\n\n{table(folder, name)}" for caption, name in captioned)
+
+
 def main(folder):
     bench = (Path(folder) / "bench.txt").read_text().strip()
     cycles_file = Path(folder) / "vs-cycles.txt"
@@ -45,29 +50,9 @@ The same scene with a Phong sphere (exponent n) and a Ward sphere
 (roughness alpha). The narrower the lobe, the more cosine sampling wastes its
 samples where the lobe is dark, and the larger the gap grows.
 
-Phong, n = 10:
-
-{table(folder, "ch06-phong-n10")}
-
-Phong, n = 100:
-
-{table(folder, "ch06-phong-n100")}
-
-Phong, n = 1000:
-
-{table(folder, "ch06-phong-n1000")}
-
-Ward, alpha = 0.3:
-
-{table(folder, "ch08-ward-a0.3")}
-
-Ward, alpha = 0.1:
-
-{table(folder, "ch08-ward-a0.1")}
-
-Ward, alpha = 0.03:
-
-{table(folder, "ch08-ward-a0.03")}
+{tables(folder, [("Phong, n = 10", "ch06-phong-n10"), ("Phong, n = 100", "ch06-phong-n100"),
+                  ("Phong, n = 1000", "ch06-phong-n1000"), ("Ward, alpha = 0.3", "ch08-ward-a0.3"),
+                  ("Ward, alpha = 0.1", "ch08-ward-a0.1"), ("Ward, alpha = 0.03", "ch08-ward-a0.03")])}
 
 ![Ward, alpha = 0.03: relMSE against time](figures/studies/ch08-ward-a0.03/error_vs_time.png)
 
@@ -79,13 +64,7 @@ the sphere's silhouette, where the view grazes the surface, most of its
 samples fall below the horizon and the few left carry large weights. The
 normals the viewer sees give every sample a weight of at most 1.
 
-GGX, alpha = 0.3:
-
-{table(folder, "ch09-ggx-a0.3")}
-
-GGX, alpha = 0.1:
-
-{table(folder, "ch09-ggx-a0.1")}
+{tables(folder, [("GGX, alpha = 0.3", "ch09-ggx-a0.3"), ("GGX, alpha = 0.1", "ch09-ggx-a0.1")])}
 
 ![GGX, alpha = 0.1: relMSE against time](figures/studies/ch09-ggx-a0.1/error_vs_time.png)
 
