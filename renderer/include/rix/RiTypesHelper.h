@@ -68,20 +68,32 @@ public:
     bool operator<(RtUString const& o) const { return std::strcmp(CStr(), o.CStr()) < 0; }
 
 private:
-    // One table per loaded module; equality falls back to strcmp, so strings
-    // interned by different plugins still compare equal. The table is 256
-    // lists that only ever grow at the front, so a lookup takes no lock and
-    // the header needs no <mutex> or hash containers: every plugin source
-    // includes it, and those headers would make each one compile 20% slower.
+    // One table per loaded module, freed when the module unloads; equality
+    // falls back to strcmp, so strings interned by different plugins still
+    // compare equal. The table is 256 lists that only ever grow at the front,
+    // so a lookup takes no lock and the header needs no <mutex> or hash
+    // containers: every plugin source includes it, and those headers would
+    // make each one compile 20% slower.
     static const char* Intern(const char* text) {
         struct Entry {
             Entry* next;
             std::string text;
         };
-        static std::atomic<Entry*> lists[256];
+        struct Table {
+            std::atomic<Entry*> lists[256];
+            ~Table() {
+                for (auto& list : lists)
+                    for (Entry* e = list.load(); e;) {
+                        Entry* next = e->next;
+                        delete e;
+                        e = next;
+                    }
+            }
+        };
+        static Table table;
         unsigned hash = 2166136261u;  // FNV-1a
         for (const char* c = text; *c; ++c) hash = (hash ^ static_cast<unsigned char>(*c)) * 16777619u;
-        std::atomic<Entry*>& list = lists[hash % 256];
+        std::atomic<Entry*>& list = table.lists[hash % 256];
         Entry* head = list.load(std::memory_order_acquire);
         Entry* added = nullptr;
         for (;;) {
