@@ -86,7 +86,8 @@ private:
         addLightSamples(ctx, bxdf, rng, ictx, m_numLightSamples, m_numBxdfSamples, throughput, radiance);
 
         // 3. Bxdf samples: light they reach directly, and where the path goes next.
-        float const nL = static_cast<float>(ictx.GetNumLights() == 0 ? 0 : m_numLightSamples);
+        int const lightSamples = ictx.GetNumLights() == 0 ? 0 : m_numLightSamples;
+        float const nL = static_cast<float>(lightSamples);
         float const nB = static_cast<float>(m_numBxdfSamples);
         bool const continues = depth < m_maxPathLength;
         RixBxdfScratch q(ctx);
@@ -142,13 +143,7 @@ private:
                 discrete[rays] = q.lobeSampled[i].GetDiscrete();
                 ++rays;
             }
-            ictx.VisibleLights(ctx, look.count, look.point, look.dir, lookHits);
-            for (int k = 0; k < look.count; ++k) {
-                if (!lookHits[k].hit) continue;
-                int const i = look.point[k];
-                float w = q.lobeSampled[i].GetDiscrete() ? 1.0f : RixPowerHeuristic(nB, q.FPdf[i], nL, lookHits[k].pdf);
-                accumulate(ictx, radiance[i], look.weight[k] * lookHits[k].radiance * (w / (nB * q.FPdf[i])));
-            }
+            addLightsFound(ctx, ictx, q, look, lookHits, lightSamples, m_numBxdfSamples, radiance);
         }
         if (rays == 0) return;
 

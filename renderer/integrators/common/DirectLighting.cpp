@@ -91,6 +91,20 @@ void addLightSamples(RixShadingContext const& ctx, RixBxdf& bxdf, RixRNG& rng, R
     }
 }
 
+void addLightsFound(RixShadingContext const& ctx, RixIntegratorContext& ictx, RixBxdfScratch const& q,
+                    ShadowRays const& rays, RixLightHit* hit, int numLightSamples, int numBxdfSamples,
+                    RtColorRGB* radiance) {
+    float const nL = static_cast<float>(numLightSamples), nB = static_cast<float>(numBxdfSamples);
+    // A shadow ray toward each light a sampled direction meets, all traced at once.
+    ictx.VisibleLights(ctx, rays.count, rays.point, rays.dir, hit);
+    for (int k = 0; k < rays.count; ++k) {
+        if (!hit[k].hit) continue;
+        int const i = rays.point[k];
+        float weight = q.lobeSampled[i].GetDiscrete() ? 1.0f : RixPowerHeuristic(nB, q.FPdf[i], nL, hit[k].pdf);
+        accumulate(ictx, radiance[i], rays.weight[k] * hit[k].radiance * (weight / (nB * q.FPdf[i])));
+    }
+}
+
 void DirectLighting::DescribeEffects(int numLights, RixEffects& effects) const {
     effects.Simulate("camera rays");
     effects.Simulate("emission (EmitLocal)");
@@ -134,7 +148,6 @@ void DirectLighting::Integrate(RixShadingContext const& ctx, RixBxdf& bxdf, RixR
     RixShadingContext::Allocator pool(&ctx);
     ShadowRays shadow(pool, n);
     RixLightHit* hit = pool.AllocFor<RixLightHit>(n);
-    float const nL = static_cast<float>(m_numLightSamples), nB = static_cast<float>(m_numBxdfSamples);
     for (int s = 0; s < m_numBxdfSamples; ++s) {
         q.generate(bxdf, rng, ictx);
         shadow.count = 0;
@@ -148,14 +161,7 @@ void DirectLighting::Integrate(RixShadingContext const& ctx, RixBxdf& bxdf, RixR
             if (f.IsBlack()) continue;
             shadow.add(i, Normalize(q.Ln[i]), 0.0f, f);  // no distance yet: the light is found along the ray
         }
-        // A shadow ray toward each light a sampled direction meets, all traced at once.
-        ictx.VisibleLights(ctx, shadow.count, shadow.point, shadow.dir, hit);
-        for (int k = 0; k < shadow.count; ++k) {
-            if (!hit[k].hit) continue;
-            int const i = shadow.point[k];
-            float weight = q.lobeSampled[i].GetDiscrete() ? 1.0f : RixPowerHeuristic(nB, q.FPdf[i], nL, hit[k].pdf);
-            accumulate(ictx, radiance[i], shadow.weight[k] * hit[k].radiance * (weight / (nB * q.FPdf[i])));
-        }
+        addLightsFound(ctx, ictx, q, shadow, hit, m_numLightSamples, m_numBxdfSamples, radiance);
     }
 }
 

@@ -3,6 +3,7 @@
 // course's example integrator.
 #pragma once
 
+#include "RixBxdfScratch.h"
 #include "RixIntegrator.h"
 
 namespace bxdflab {
@@ -39,6 +40,14 @@ struct ShadowRays {
 /// per light, MIS-weighted against numBxdfSamples Bxdf samples.
 void addLightSamples(RixShadingContext const& ctx, RixBxdf& bxdf, RixRNG& rng, RixIntegratorContext& ictx,
                      int numLightSamples, int numBxdfSamples, RtColorRGB const* throughput, RtColorRGB* radiance);
+
+/// The second half of Bxdf sampling for a round: traces the gathered rays
+/// along q's sampled directions (RixIntegratorContext::VisibleLights) and adds
+/// to radiance[point[k]] the light each finds times its weight, MIS-weighted
+/// against numLightSamples light samples (hit: room for rays.count answers).
+void addLightsFound(RixShadingContext const& ctx, RixIntegratorContext& ictx, RixBxdfScratch const& q,
+                    ShadowRays const& rays, RixLightHit* hit, int numLightSamples, int numBxdfSamples,
+                    RtColorRGB* radiance);
 
 /// Adds a contribution, or reports it when it is not finite (a Bxdf bug).
 void accumulate(RixIntegratorContext& ictx, RtColorRGB& radiance, RtColorRGB const& contribution);
