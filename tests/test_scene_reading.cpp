@@ -131,6 +131,64 @@ TEST_CASE("a negative quadric radius turns the surface inside out", "[rib][geome
     CHECK(scene.shapes[0]->basics(hit).Ng.z == Approx(-1.0f));  // a positive radius faces +z
 }
 
+TEST_CASE("Option Ri and Attribute Ri, as RenderMan 21 and later write requests, are read as the requests", "[rib]") {
+    // The header a RenderMan 23 export starts with, against the same camera written as requests.
+    std::string const asOption =
+        "Option \"Ri\" \"int Frame\" [1] \"float PixelVariance\" [0.015] \"int[2] FormatResolution\" [64 32]\n"
+        "  \"float FormatPixelAspectRatio\" [1] \"float[2] Clipping\" [0.1 10000] \"float[4] ScreenWindow\" [-2 2 -1 1]\n"
+        "  \"float[4] CropWindow\" [0 1 0 1]\n"
+        "Projection \"perspective\" \"fov\" [30]\nWorldBegin\n";
+    std::string const asRequests = "Format 64 32 1\nScreenWindow -2 2 -1 1\nProjection \"perspective\" \"fov\" [30]\nWorldBegin\n";
+    Diagnostics diagnostics(false);
+    Scene viaOption = test::parseRib(asOption, diagnostics);
+    Scene viaRequests = test::parseRib(asRequests, diagnostics);
+    CHECK(viaOption.xres == 64);
+    CHECK(viaOption.yres == 32);
+    CHECK(viaOption.pixelAspect == 1.0f);
+    REQUIRE(viaOption.camera.hasScreenWindow);
+    for (int i = 0; i < 4; ++i) CHECK(viaOption.camera.screenWindow[i] == viaRequests.camera.screenWindow[i]);
+    // Requests this renderer skips are named as such; the ones it needs no value from are not mentioned.
+    CHECK(test::warningsContaining(diagnostics, "\"CropWindow\" is not used") == 1);
+    CHECK(test::warningsContaining(diagnostics, "\"PixelVariance\" is not used") == 1);
+    CHECK(test::warningsContaining(diagnostics, "FormatResolution") == 0);
+    CHECK(test::warningsContaining(diagnostics, "Clipping") == 0);
+    CHECK(test::warningsContaining(diagnostics, "Option \"Ri\" is not used") == 0);
+
+    // A resolution that cannot be rendered is an error at the parameter, as Format's is.
+    try {
+        test::parseRib("Option \"Ri\" \"int[2] FormatResolution\" [0 32]\nWorldBegin\n", diagnostics, "bad.rib");
+        FAIL("a zero width was accepted");
+    } catch (RibError const& e) {
+        CHECK_THAT(e.what(), Catch::Contains("bad.rib:1:13") && Catch::Contains("whole numbers of at least 1 pixel"));
+    }
+
+    // Attribute "Ri" "Orientation" turns a disk over as Orientation does; Sides and Matte 0 are accepted quietly.
+    Diagnostics quiet(false);
+    Scene inside = test::parseRib("WorldBegin\nTranslate 0 0 5\nAttribute \"Ri\" \"string Orientation\" [\"inside\"] "
+                                  "\"int Sides\" [2] \"int Matte\" [0] \"float ShadingRate\" [1]\nDisk 0 1 360\n",
+                                  quiet);
+    REQUIRE(inside.shapes.size() == 1u);
+    RayTracer tracer(inside);
+    HitRecord hit = trace(tracer, Vec3(0.2f, 0, 0), Vec3(0, 0, 1));
+    REQUIRE(hit.hit());
+    CHECK(inside.shapes[0]->basics(hit).Ng.z == Approx(-1.0f));  // outside, a disk faces +z
+    CHECK(test::warningsContaining(quiet, "Ri") == 0);
+    // A holdout is not modelled, and says so.
+    test::parseRib("WorldBegin\nAttribute \"Ri\" \"int Matte\" [1]\nSphere 1 -1 1 360\n", quiet);
+    CHECK(test::warningsContaining(quiet, "\"Matte\" [1] (a holdout) is not modelled") == 1);
+}
+
+TEST_CASE("RenderMan's bookkeeping parameters (a leading __) are accepted on any node without a warning", "[rib]") {
+    // What exporters add to lights, materials and patterns; a misspelt real parameter is still named.
+    auto r = test::renderRib("Format 4 4 1\nProjection \"perspective\" \"fov\" [40]\nTranslate 0 0 5\nWorldBegin\n"
+                             "Light \"PxrDomeLight\" \"sky\" \"string __category\" [\"keys\"] \"int __islight\" [1]\n"
+                             "Pattern \"PxrFractal\" \"noise\" \"string __instanceid\" [\"noise_0\"]\n"
+                             "Bxdf \"PxrDisney\" \"paint\" \"string __materialid\" [\"paint\"] \"string __instanceid\" [\"paint_0\"] "
+                             "\"float roughnes\" [0.2]\nSphere 1 -1 1 360\n");
+    CHECK_FALSE(r.anyMessageContains("__"));
+    CHECK(r.anyMessageContains("\"roughnes\""));
+}
+
 TEST_CASE("GeneralPolygon and PointsGeneralPolygons: holes are holes", "[rib][geometry]") {
     Diagnostics diagnostics(false);
     // A square with a triangular hole (either winding of the hole).
@@ -307,6 +365,40 @@ TEST_CASE("area lights from geometry: AreaLightSource and PxrMeshLight shapes be
     CHECK(glow.plugin == "PxrConstant");
     CHECK(glow.params.getColor("emitColor", Vec3(0)) == Vec3(3.0f));
     CHECK(scene.materials[static_cast<size_t>(scene.shapes[1]->material)].plugin == "PxrDiffuse");
+}
+
+TEST_CASE("RenderMan 20's distant light is Geometry distantlight under an area light: the same light as PxrDistantLight",
+          "[rib][lights]") {
+    Diagnostics diagnostics(false);
+    auto both = [&](std::string const& angle, std::string const& extent) {
+        return test::parseRib(
+            "WorldBegin\nAttributeBegin\nRotate 30 1 0 0\n"
+            "AreaLightSource \"PxrStdAreaLight\" \"sun\" \"float exposure\" [12] \"string rman__Shape\" [\"distant\"]\n"
+            "Geometry \"distantlight\" \"constant float anglesubtended\" [" + angle + "]\nAttributeEnd\n"
+            "AttributeBegin\nRotate 30 1 0 0\nLight \"PxrDistantLight\" \"sun2\" \"float exposure\" [12]" + extent +
+                "\nAttributeEnd\n",
+            diagnostics);
+    };
+    // -1, as RenderMan for Maya writes it, is the default size (the sun's); a positive angle is the light's own.
+    for (auto const& [angle, extent] : {std::pair<std::string, std::string>{"-1", ""}, {"4", " \"float angleExtent\" [4]"}}) {
+        Scene scene = both(angle, extent);
+        REQUIRE(scene.lights.size() == 2u);
+        CHECK(std::string(scene.lights[0]->kind()) == "PxrDistantLight");
+        CHECK(scene.lights[0]->color.r == Approx(scene.lights[1]->color.r));
+        Vec3 const P(0.0f);
+        LightSample a = scene.lights[0]->sample(P, Vec2(0.3f, 0.6f)), b = scene.lights[1]->sample(P, Vec2(0.3f, 0.6f));
+        CHECK(glm::length(a.wi - b.wi) < 1e-5f);
+        CHECK(a.radiance.r == Approx(b.radiance.r));
+    }
+    CHECK(test::warningsContaining(diagnostics, "distantlight") == 0);
+
+    // An area light with no shape in its block lights nothing, and says so where it was given.
+    Diagnostics unshaped(false);
+    Scene none = test::parseRib("WorldBegin\nAttributeBegin\nAreaLightSource \"PxrStdAreaLight\" \"lost\"\nAttributeEnd\n"
+                                "Sphere 1 -1 1 360\n",
+                                unshaped, "lost.rib");
+    CHECK(none.lights.empty());
+    CHECK(test::warningsContaining(unshaped, "lost.rib:3:1: AreaLightSource \"PxrStdAreaLight\" \"lost\": no shape follows") == 1);
 }
 
 TEST_CASE("RenderMan 20's environment lights: an envsphere is the light at infinity, whatever its shader is called",

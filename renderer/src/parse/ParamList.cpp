@@ -156,6 +156,14 @@ Param colorParam(std::string const& name, Vec3 const& value) {
     return p;
 }
 
+Param floatParam(std::string const& name, float value) {
+    Param p;
+    p.decl.name = name;
+    p.decl.type = ParamType::Float;
+    p.floats = {value};
+    return p;
+}
+
 Param stringParam(std::string const& name, std::string const& value) {
     Param p;
     p.decl.name = name;
@@ -275,7 +283,7 @@ std::vector<int> const* ParamList::getInts(std::string const& name) const {
 
 void ParamList::warnUnused(Diagnostics& diagnostics, std::string const& owner) const {
     for (auto const& p : m_params) {
-        if (p.used) continue;
+        if (p.used || isRendererMetadata(p.name())) continue;
         if (p.decl.untyped)
             diagnostics.warn(p.location, owner + ": parameter \"" + p.name() +
                                              "\" has no type and is not a standard name; ignored");

@@ -72,6 +72,13 @@ struct Param {
 
 /// A "color <name>" parameter made by the renderer itself (no source location).
 Param colorParam(std::string const& name, Vec3 const& value);
+/// A name RenderMan keeps for its own bookkeeping: a leading "__", as in
+/// "__materialid", "__instanceid", "__category" and "__islight". Exporters add
+/// them to any node; they carry no value a plugin reads, so nobody warns about them.
+inline bool isRendererMetadata(std::string const& name) { return name.rfind("__", 0) == 0; }
+
+/// A "float <name>" parameter made by the renderer itself.
+Param floatParam(std::string const& name, float value);
 /// A "string <name>" parameter made by the renderer itself.
 Param stringParam(std::string const& name, std::string const& value);
 

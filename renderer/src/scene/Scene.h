@@ -76,6 +76,7 @@ struct AreaLightDesc {
     Vec3 radiance{1.0f};  ///< what the shapes emit
     bool environment = false;  ///< PxrStdEnvMapLight or PxrStdEnvDayLight: the light at infinity
     bool daylight = false;     ///< PxrStdEnvDayLight: a sky and sun rather than an image
+    bool shaped = false;       ///< a shape in its block has become the light or glows with it
 };
 
 /// What a frame's options say: image, camera, display, integrator.

@@ -82,12 +82,18 @@ private:
     // Options, camera and frames (scene/requests/OptionRequests.cpp).
     void display(RequestReader& in);
     void format(RequestReader& in);
+    /// Why a Format resolution cannot be rendered, or "" when it can.
+    static std::string resolutionProblem(float xres, float yres);
+    void setFormat(float xres, float yres, float pixelAspect);
     void projection(RequestReader& in);
     void screenWindow(RequestReader& in);
+    void setScreenWindow(std::vector<float> const& window);
     void pixelSamples(RequestReader& in);
     void hider(RequestReader& in);
     void integrator(RequestReader& in);
     void option(RequestReader& in);
+    /// Option "Ri": the camera and image requests as RenderMan 21+ writes them.
+    void riOptions(ParamList const& params, SourceLocation const& where);
     void declare(RequestReader& in);
     void frameBegin(RequestReader& in);
     void frameEnd(RequestReader& in);
@@ -128,6 +134,10 @@ private:
     void opacity(RequestReader& in);
     void reverseOrientation(RequestReader& in);
     void orientation(RequestReader& in);
+    /// Orientation's value ("outside", "inside", "lh", "rh"); false for any other.
+    bool setOrientation(std::string const& value);
+    /// Attribute "Ri": the state requests as RenderMan 21+ writes them.
+    void riAttributes(ParamList const& params);
     void sides(RequestReader& in);
     void basis(RequestReader& in);
     void textureCoordinates(RequestReader& in);
@@ -152,9 +162,11 @@ private:
     int classicMaterial();
     /// With an area light in effect, a shape that has a light of its own kind (a
     /// full sphere, disk or rectangle) becomes that light: true when it did.
-    bool shapeAsLight(char const* lightType, Mat4 const& lightToWorld);
+    bool shapeAsLight(char const* lightType, Mat4 const& lightToWorld, ParamList params = {});
     /// The emissive material of the area light in effect (for shapes with no light of their own kind).
     int emissiveMaterial(SourceLocation const& where);
+    /// Warns when an area light closed with its block never met a shape.
+    void warnIfUnshaped(std::shared_ptr<AreaLightDesc> const& closing, std::shared_ptr<AreaLightDesc> const& outer);
     /// Makes a light of either request (Light or LightSource) at lightToWorld.
     void makeLightFrom(std::string const& request, std::string const& type, std::string const& handle,
                        ParamList const& params, Mat4 const& lightToWorld, SourceLocation const& where);

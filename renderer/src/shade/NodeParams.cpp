@@ -38,6 +38,7 @@ NodeParams::NodeParams(std::string const& kind, ShadingPlugin const& plugin, Par
 
     for (Param const& p : params.all()) {
         int id = plugin.paramId(p.name());
+        if (id < 0 && isRendererMetadata(p.name())) continue;
         if (id < 0 || table[static_cast<size_t>(id)].access == k_RixSCOutput) {
             diagnostics.warn(p.location, owner + " has no " + (id < 0 ? "" : "input ") + "parameter \"" + p.name() +
                                              "\"; ignored (" + namesHint(p.name(), table, false) + ")");

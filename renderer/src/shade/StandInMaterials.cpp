@@ -28,14 +28,6 @@ std::optional<float> floatOf(ParamList const& params, char const* name) {
     return std::nullopt;
 }
 
-Param floatParam(std::string const& name, float value) {
-    Param p;
-    p.decl.name = name;
-    p.decl.type = ParamType::Float;
-    p.floats = {value};
-    return p;
-}
-
 /// Connects the stand-in's `to` where the material connects `from` to a
 /// pattern (a textured diffuse colour stays textured); true if it did. Where
 /// the pattern cannot be loaded, `to` takes `unconnected`: the original's value

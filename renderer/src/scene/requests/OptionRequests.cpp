@@ -81,19 +81,29 @@ void SceneBuilder::display(RequestReader& in) {
 void SceneBuilder::format(RequestReader& in) {
     std::vector<float> v = in.numbers(3, "xresolution yresolution pixelaspectratio");
     in.finish();
-    if (v[0] < 1 || v[1] < 1 || v[0] != std::floor(v[0]) || v[1] != std::floor(v[1]))
-        in.fail(in.where(), "resolution must be whole numbers of at least 1 pixel, got " + std::to_string(v[0]) + " x " +
-                                std::to_string(v[1]));
-    if (v[0] > kMaxResolution || v[1] > kMaxResolution) {
+    std::string const problem = resolutionProblem(v[0], v[1]);
+    if (!problem.empty()) in.fail(in.where(), problem);
+    setFormat(v[0], v[1], v[2]);
+}
+
+std::string SceneBuilder::resolutionProblem(float x, float y) {
+    if (!(x >= 1 && y >= 1) || x != std::floor(x) || y != std::floor(y))
+        return "resolution must be whole numbers of at least 1 pixel, got " + std::to_string(x) + " x " +
+               std::to_string(y);
+    if (x > kMaxResolution || y > kMaxResolution) {
         std::ostringstream size;  // the numbers as given: they may be far beyond any integer type
-        size << v[0] << " x " << v[1];
-        in.fail(in.where(), "resolution " + size.str() + " exceeds the limit of " + std::to_string(kMaxResolution) +
-                                " pixels per side");
+        size << x << " x " << y;
+        return "resolution " + size.str() + " exceeds the limit of " + std::to_string(kMaxResolution) +
+               " pixels per side";
     }
-    m_scene.xres = static_cast<int>(v[0]);
-    m_scene.yres = static_cast<int>(v[1]);
+    return "";
+}
+
+void SceneBuilder::setFormat(float x, float y, float pixelAspect) {
+    m_scene.xres = static_cast<int>(x);
+    m_scene.yres = static_cast<int>(y);
     // A pixel aspect ratio of 0 or less means "square pixels" (RI specification).
-    m_scene.pixelAspect = v[2] > 0.0f ? v[2] : 1.0f;
+    m_scene.pixelAspect = pixelAspect > 0.0f ? pixelAspect : 1.0f;
 }
 
 void SceneBuilder::projection(RequestReader& in) {
@@ -124,8 +134,12 @@ void SceneBuilder::screenWindow(RequestReader& in) {
     std::vector<float> v = in.numbers(4, "left right bottom top");
     in.finish();
     if (v[0] == v[1] || v[2] == v[3]) in.fail(in.where(), "screen window has zero width or height");
+    setScreenWindow(v);
+}
+
+void SceneBuilder::setScreenWindow(std::vector<float> const& window) {
     m_scene.camera.hasScreenWindow = true;
-    std::copy(v.begin(), v.end(), m_scene.camera.screenWindow);
+    std::copy(window.begin(), window.end(), m_scene.camera.screenWindow);
 }
 
 void SceneBuilder::pixelSamples(RequestReader& in) {
@@ -180,6 +194,10 @@ void SceneBuilder::option(RequestReader& in) {
         }
         return;
     }
+    if (category == "Ri") {
+        riOptions(params, in.where());
+        return;
+    }
     if (category != "searchpath") {
         warnOnce("option " + category, in.where(), "Option \"" + category + "\" is not used by this renderer; skipped");
         return;
@@ -212,6 +230,45 @@ void SceneBuilder::option(RequestReader& in) {
     update(m_proceduralSearchPath, "procedural");
     for (auto const& p : params.all())
         if (!p.used) warnOnce("searchpath " + p.name(), p.location, "Option \"searchpath\" \"" + p.name() + "\" is not used; skipped");
+}
+
+void SceneBuilder::riOptions(ParamList const& params, SourceLocation const& where) {
+    // RenderMan 21 and later write the camera and image requests as one Option "Ri",
+    // each request a parameter of its own name (Format's values as "FormatResolution"
+    // and "FormatPixelAspectRatio").
+    if (m_inWorld) {
+        warnOnce("option in world Ri", where,
+                 "Option \"Ri\" inside a world block is ignored: the camera and image are set before WorldBegin");
+        for (auto const& p : params.all()) p.used = true;
+        return;
+    }
+    if (Param const* p = params.take("FormatResolution")) {
+        std::vector<float> const* size = params.getFloats("FormatResolution", ParamType::Float);
+        if (!size || size->size() != 2)
+            throw RibError(p->location, "Option \"Ri\" \"FormatResolution\" takes two numbers (width, height)");
+        std::string const problem = resolutionProblem((*size)[0], (*size)[1]);
+        if (!problem.empty()) throw RibError(p->location, "Option \"Ri\" \"FormatResolution\": " + problem);
+        setFormat((*size)[0], (*size)[1], params.getFloat("FormatPixelAspectRatio", m_scene.pixelAspect));
+    } else if (params.has("FormatPixelAspectRatio")) {
+        setFormat(static_cast<float>(m_scene.xres), static_cast<float>(m_scene.yres),
+                  params.getFloat("FormatPixelAspectRatio", 1.0f));
+    }
+    if (Param const* p = params.take("ScreenWindow")) {
+        std::vector<float> const* window = params.getFloats("ScreenWindow", ParamType::Float);
+        if (!window || window->size() != 4 || (*window)[0] == (*window)[1] || (*window)[2] == (*window)[3])
+            throw RibError(p->location,
+                           "Option \"Ri\" \"ScreenWindow\" takes four numbers (left right bottom top) that span an area");
+        setScreenWindow(*window);
+    }
+    // Ray tracing needs no near and far planes; the frame number is a label.
+    params.ignore("Clipping");
+    params.ignore("Frame");
+    // The rest are requests this renderer skips when written out (CropWindow,
+    // PixelVariance, PixelFilter, Shutter, FrameAspectRatio, Exposure, ...).
+    for (auto const& p : params.all())
+        if (!p.used)
+            warnOnce("option Ri " + p.name(), p.location,
+                     "Option \"Ri\" \"" + p.name() + "\" is not used by this renderer; skipped");
 }
 
 void SceneBuilder::declare(RequestReader& in) {

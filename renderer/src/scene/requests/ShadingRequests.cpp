@@ -6,6 +6,7 @@
 #include <filesystem>
 
 #include "scene/SceneBuilder.h"
+#include "scene/lights/InfiniteLights.h"
 #include "scene/lights/LightFactory.h"
 
 namespace bxdflab {
@@ -232,12 +233,12 @@ void SceneBuilder::startAreaLight(std::string const& shader, std::string const& 
     state().areaLight = area;
 }
 
-bool SceneBuilder::shapeAsLight(char const* lightType, Mat4 const& lightToWorld) {
+bool SceneBuilder::shapeAsLight(char const* lightType, Mat4 const& lightToWorld, ParamList params) {
     if (!state().areaLight) return false;
+    state().areaLight->shaped = true;
     if (!building()) return true;
     AreaLightDesc const& area = *state().areaLight;
     std::string type = area.environment ? "PxrDomeLight" : lightType;
-    ParamList params;
     if (type == "PxrDomeLight" && area.daylight) {
         // PxrStdEnvDayLight's parameters are PxrEnvDayLight's, its sun's "direction" aside.
         type = "PxrEnvDayLight";
@@ -256,7 +257,11 @@ bool SceneBuilder::shapeAsLight(char const* lightType, Mat4 const& lightToWorld)
         makeLight(type, params, lightToWorld, currentDirectory(), area.where, m_diagnostics,
                   [this](SourceLocation const& at, std::string const& message) { missingFile(at, message); });
     if (!light) return false;
-    light->color = RtColorRGB(area.radiance.x, area.radiance.y, area.radiance.z);
+    Vec3 radiance = area.radiance;
+    // A distant light's intensity is spread over the disc it subtends, as PxrDistantLight's is.
+    if (type == "PxrDistantLight")
+        radiance *= distantLightIrradianceScale(params.getFloat("angleExtent", kSunAngleExtent), false);
+    light->color = RtColorRGB(radiance.x, radiance.y, radiance.z);
     light->handle = area.handle;
     light->visibility = state().visibility;
     if (light->color.IsBlack()) {
@@ -270,6 +275,7 @@ bool SceneBuilder::shapeAsLight(char const* lightType, Mat4 const& lightToWorld)
 
 int SceneBuilder::emissiveMaterial(SourceLocation const& where) {
     std::shared_ptr<AreaLightDesc> const& area = state().areaLight;
+    area->shaped = true;
     auto found = m_emissiveMaterials.find(area);
     if (found != m_emissiveMaterials.end()) return found->second;
     warnOnce("glowing area light", where,

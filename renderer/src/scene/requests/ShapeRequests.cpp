@@ -304,20 +304,27 @@ void SceneBuilder::geometry(RequestReader& in) {
     std::string type = in.string("geometry type");
     ParamList params = in.params();
     // RenderMan 20's light shapes, for the AreaLightSource in effect.
-    if (type == "spherelight" || type == "envsphere" || type == "disklight" || type == "rectlight") {
+    if (type == "spherelight" || type == "envsphere" || type == "disklight" || type == "rectlight" ||
+        type == "distantlight") {
         float diameter = 2.0f * params.getFloat("radius", 0.5f);
+        // A distant light's angular size; RenderMan for Maya 20 writes -1 for the default (the sun's).
+        ParamList shape;
+        if (float angle = params.getFloat("anglesubtended", -1.0f); angle > 0.0f)
+            shape.add(floatParam("angleExtent", angle));
         params.warnUnused(m_diagnostics, "Geometry \"" + type + "\"");
         if (!state().areaLight) {
             warnOnce("geometry " + type, in.where(), "Geometry \"" + type + "\" outside an AreaLightSource block; skipped");
             return;
         }
         // An envsphere is the environment whatever the shader (RenderMan for Maya 20 names it after its node).
-        char const* light = type == "rectlight"   ? "PxrRectLight"
-                            : type == "disklight" ? "PxrDiskLight"
-                            : type == "envsphere" ? "PxrDomeLight"
-                                                  : "PxrSphereLight";
-        Mat4 scaled = type == "envsphere" ? state().transform : glm::scale(state().transform, Vec3(diameter));
-        if (!shapeAsLight(light, scaled))
+        char const* light = type == "rectlight"      ? "PxrRectLight"
+                            : type == "disklight"    ? "PxrDiskLight"
+                            : type == "envsphere"    ? "PxrDomeLight"
+                            : type == "distantlight" ? "PxrDistantLight"
+                                                     : "PxrSphereLight";
+        bool const sized = type == "spherelight" || type == "disklight" || type == "rectlight";
+        Mat4 scaled = sized ? glm::scale(state().transform, Vec3(diameter)) : state().transform;
+        if (!shapeAsLight(light, scaled, shape))
             warnOnce("geometry " + type, in.where(), "Geometry \"" + type + "\": no light made; skipped");
         return;
     }

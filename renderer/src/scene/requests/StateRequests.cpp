@@ -20,7 +20,18 @@ void SceneBuilder::attributeEnd(RequestReader& in) {
         in.fail(in.where(), m_blocks.empty() ? "AttributeEnd without a matching AttributeBegin"
                                              : "AttributeEnd closes a TransformBegin block (expected TransformEnd)");
     m_blocks.pop_back();
+    warnIfUnshaped(m_attributes.back().areaLight, m_attributes[m_attributes.size() - 2].areaLight);
     m_attributes.pop_back();
+}
+
+void SceneBuilder::warnIfUnshaped(std::shared_ptr<AreaLightDesc> const& closing,
+                                  std::shared_ptr<AreaLightDesc> const& outer) {
+    // An area light is the shapes that follow it in its block; with none it lights nothing.
+    if (!closing || closing == outer || closing->shaped || !building()) return;
+    warnOnce("area light without a shape", closing->where,
+             std::string(closing->shader == "PxrMeshLight" ? "Light" : "AreaLightSource") + " \"" + closing->shader + "\" \"" + closing->handle +
+                 "\": no shape follows it in its attribute block, so it lights nothing (give it a Sphere, a Disk or "
+                 "a Geometry \"rectlight\", \"spherelight\", \"disklight\" or \"distantlight\")");
 }
 
 void SceneBuilder::transformBegin(RequestReader& in) {
@@ -161,6 +172,8 @@ void SceneBuilder::attribute(RequestReader& in) {
         // Older files name the indirect rays by kind; any kind seeing the object makes it visible to indirect rays.
         bool olderKinds = params.has("diffuse") || params.has("specular");
         if (olderKinds) vis.indirect = params.getInt("diffuse", 0) != 0 || params.getInt("specular", 0) != 0;
+    } else if (category == "Ri") {
+        riAttributes(params);
     } else if (category == "identifier") {
         if (Param const* name = params.take("name")) state().name = name->strings.empty() ? state().name : name->strings[0];
         for (auto const& p : params.all()) p.used = true;  // shadinggroup, id: labels only
@@ -197,12 +210,18 @@ void SceneBuilder::reverseOrientation(RequestReader& in) {
 void SceneBuilder::orientation(RequestReader& in) {
     std::string value = in.string("orientation");
     in.finish();
+    if (!setOrientation(value))
+        in.fail(in.where(), "orientation must be \"outside\", \"inside\", \"lh\" or \"rh\", not \"" + value + "\"");
+}
+
+bool SceneBuilder::setOrientation(std::string const& value) {
     if (value == "outside" || value == "lh")
         state().reverseOrientation = false;
     else if (value == "inside" || value == "rh")
         state().reverseOrientation = true;
     else
-        in.fail(in.where(), "orientation must be \"outside\", \"inside\", \"lh\" or \"rh\", not \"" + value + "\"");
+        return false;
+    return true;
 }
 
 void SceneBuilder::sides(RequestReader& in) {
@@ -211,6 +230,28 @@ void SceneBuilder::sides(RequestReader& in) {
     float sides = in.number("number of sides");
     in.finish();
     if (sides != 1.0f && sides != 2.0f) in.fail(in.where(), "Sides must be 1 or 2");
+}
+
+void SceneBuilder::riAttributes(ParamList const& params) {
+    // RenderMan 21 and later write the state requests as one Attribute "Ri",
+    // each request a parameter of its own name.
+    if (Param const* p = params.take("Orientation"))
+        if (!setOrientation(params.getString("Orientation", "")))
+            throw RibError(p->location, "Attribute \"Ri\" \"Orientation\" must be \"outside\", \"inside\", \"lh\" or \"rh\"");
+    if (Param const* p = params.take("Sides")) {
+        float const sides = params.getFloat("Sides", 2.0f);
+        if (sides != 1.0f && sides != 2.0f) throw RibError(p->location, "Attribute \"Ri\" \"Sides\" must be 1 or 2");
+    }
+    if (params.has("Color")) {
+        state().color = params.getColor("Color", state().color);
+        state().colorSet = true;
+    }
+    // Dicing controls, meaningless to a ray tracer that does not dice.
+    params.ignore("ShadingRate");
+    params.ignore("ShadingInterpolation");
+    if (Param const* matte = params.take("Matte"); matte && params.getInt("Matte", 0) != 0)
+        warnOnce("attribute Ri Matte", matte->location,
+                 "Attribute \"Ri\" \"Matte\" [1] (a holdout) is not modelled: the object renders as any other");
 }
 
 void SceneBuilder::basis(RequestReader& in) {
