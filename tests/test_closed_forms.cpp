@@ -86,6 +86,43 @@ TEST_CASE("sphere light: radiance of a facing point is L (r/d)^2", "[closed-form
     CHECK(centreRadiance(result) == Approx(expected).epsilon(0.01));
 }
 
+TEST_CASE("cylinder light: radiance of a facing point is the irradiance of its lit side, for every sampling strategy",
+          "[closed-form]") {
+    // A tube 4 long and 1 across, its axis along x at height h below the plane's centre.
+    const double length = 4.0, radius = 0.5, h = 2.0, L = 10.0;
+    std::string light = "    Translate 0 0 " + std::to_string(5.0 - h) + "\n    Scale " + std::to_string(length) +
+                        " 1 1\n    Light \"PxrCylinderLight\" \"tube\" \"float intensity\" [" + std::to_string(L) + "]\n";
+    // E = L * integral over the side of cos(at the plane) cos(at the tube) / d^2 dA, by the midpoint rule;
+    // the plane's point is at the origin of this sum, facing the tube along -z.
+    double E = 0.0;
+    const int steps = 1000;
+    const double ds = length / steps, dphi = 2.0 * F_PI / steps;
+    for (int i = 0; i < steps; ++i)
+        for (int j = 0; j < steps; ++j) {
+            double const x = -0.5 * length + (i + 0.5) * ds, phi = (j + 0.5) * dphi;
+            double const ny = std::cos(phi), nz = std::sin(phi);
+            double const qx = x, qy = radius * ny, qz = -h + radius * nz;  // the point on the side, from the plane's
+            double const d2 = qx * qx + qy * qy + qz * qz, d = std::sqrt(d2);
+            double const cosPlane = -qz / d, cosTube = -(qy * ny + qz * nz) / d;
+            if (cosPlane > 0.0 && cosTube > 0.0) E += L * cosPlane * cosTube / d2 * radius * dphi * ds;
+        }
+    const double expected = E / F_PI;
+    // Against the infinitely long tube's irradiance, pi L r / h: the finite one is a little less.
+    CHECK(expected < L * radius / h);
+    CHECK(expected > 0.8 * L * radius / h);
+    auto strategy = GENERATE(values<const char*>({
+        "Integrator \"PxrDirectLighting\" \"d\" \"int numLightSamples\" [1] \"int numBxdfSamples\" [1]\n",
+        "Integrator \"PxrDirectLighting\" \"d\" \"int numLightSamples\" [1] \"int numBxdfSamples\" [0]\n",
+        "Integrator \"PxrDirectLighting\" \"d\" \"int numLightSamples\" [0] \"int numBxdfSamples\" [1]\n",
+    }));
+    CAPTURE(strategy);
+    RenderSettings settings;
+    settings.spp = 2048;
+    auto result = test::renderRib(planeScene(light, strategy), settings);
+    CHECK(centreRadiance(result) == Approx(expected).epsilon(0.015));
+    CHECK(result.stats.nonFiniteSamples == 0u);
+}
+
 TEST_CASE("distant light: E cos(theta) / pi, exactly (a delta light has no noise)", "[closed-form]") {
     // Light travelling along +z (toward the plane), turned 60 degrees: it arrives at 60 degrees.
     // Its intensity is the radiance of a sun-sized disk: E = intensity * pi sin^2(0.265 degrees).

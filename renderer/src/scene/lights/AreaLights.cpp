@@ -138,4 +138,83 @@ EmissionDensity SphereLight::emissionDensity(Vec3 const& point, Vec3 const& dir)
     return {1.0f / (4.0f * kPi * m_radius * m_radius), std::max(0.0f, cosine) / kPi, std::fabs(cosine)};
 }
 
+CylinderLight::CylinderLight(Mat4 const& lightToWorld) {
+    m_center = transformPoint(lightToWorld, Vec3(0.0f));
+    Vec3 const along = transformVector(lightToWorld, Vec3(1.0f, 0.0f, 0.0f));
+    Vec3 const acrossY = transformVector(lightToWorld, Vec3(0.0f, 1.0f, 0.0f));
+    Vec3 const acrossZ = transformVector(lightToWorld, Vec3(0.0f, 0.0f, 1.0f));
+    m_length = glm::length(along);
+    m_radius = 0.25f * (glm::length(acrossY) + glm::length(acrossZ));
+    m_axis = safeNormalize(along);
+    m_across1 = safeNormalize(acrossY - glm::dot(acrossY, m_axis) * m_axis);
+    m_across2 = glm::cross(m_axis, m_across1);
+    m_area = 2.0f * kPi * m_radius * m_length;
+}
+
+Vec3 CylinderLight::pointAt(float s, float phi, Vec3& normal) const {
+    normal = std::cos(phi) * m_across1 + std::sin(phi) * m_across2;
+    return m_center + s * m_length * m_axis + m_radius * normal;
+}
+
+float CylinderLight::solidAnglePdf(Vec3 const& towardLight, float distance, Vec3 const& normal) const {
+    float cosLight = -glm::dot(towardLight, normal);
+    if (cosLight <= 0.0f || !(m_area > 0.0f)) return 0.0f;  // the inside of the tube does not emit
+    return distance * distance / (cosLight * m_area);
+}
+
+LightSample CylinderLight::sample(Vec3 const& P, Vec2 const& xi) const {
+    Vec3 normal;
+    Vec3 const onLight = pointAt(xi.x - 0.5f, 2.0f * kPi * xi.y, normal);
+    LightSample s;
+    Vec3 const toLight = onLight - P;
+    s.distance = glm::length(toLight);
+    if (!(s.distance > 0.0f)) return s;
+    s.wi = toLight / s.distance;
+    s.pdf = solidAnglePdf(s.wi, s.distance, normal);
+    if (s.pdf > 0.0f) s.radiance = color;
+    return s;
+}
+
+bool CylinderLight::intersect(Vec3 const& org, Vec3 const& dir, float& distance, RtColorRGB& radiance,
+                              float& pdf) const {
+    // In the tube's own orthonormal frame the side is y^2 + z^2 = r^2 for |x| <= length / 2.
+    Vec3 const o = org - m_center;
+    float const ox = glm::dot(o, m_axis), oy = glm::dot(o, m_across1), oz = glm::dot(o, m_across2);
+    float const dx = glm::dot(dir, m_axis), dy = glm::dot(dir, m_across1), dz = glm::dot(dir, m_across2);
+    double const a = double(dy) * dy + double(dz) * dz;
+    if (a < 1e-24) return false;  // along the axis: never meets the side
+    double const halfB = double(oy) * dy + double(oz) * dz;
+    double const c = double(oy) * oy + double(oz) * oz - double(m_radius) * m_radius;
+    double const discriminant = halfB * halfB - a * c;
+    if (discriminant < 0.0) return false;
+    double const root = std::sqrt(discriminant);
+    for (double t : {(-halfB - root) / a, (-halfB + root) / a}) {
+        if (!(t > 0.0) || std::fabs(ox + t * dx) > 0.5 * m_length) continue;
+        Vec3 const hit = o + static_cast<float>(t) * dir;
+        Vec3 const normal = safeNormalize(hit - glm::dot(hit, m_axis) * m_axis);
+        distance = static_cast<float>(t);
+        pdf = solidAnglePdf(dir, distance, normal);
+        radiance = pdf > 0.0f ? color : RtColorRGB(0.0f);
+        return true;
+    }
+    return false;
+}
+
+bool CylinderLight::sampleEmission(Vec2 const& xiPosition, Vec2 const& xiDirection, LightEmission& out) const {
+    if (color.IsBlack() || !(m_area > 0.0f)) return false;
+    out.origin = pointAt(xiPosition.x - 0.5f, 2.0f * kPi * xiPosition.y, out.normal);
+    out.dir = cosineDirection(out.normal, xiDirection);
+    out.radiance = color;
+    out.pdfArea = 1.0f / m_area;
+    out.pdfDir = std::max(0.0f, glm::dot(out.dir, out.normal)) / kPi;
+    return out.pdfDir > 0.0f;
+}
+
+EmissionDensity CylinderLight::emissionDensity(Vec3 const& point, Vec3 const& dir) const {
+    Vec3 const fromCenter = point - m_center;
+    Vec3 const normal = safeNormalize(fromCenter - glm::dot(fromCenter, m_axis) * m_axis);
+    float const cosine = glm::dot(dir, normal);
+    return {1.0f / m_area, std::max(0.0f, cosine) / kPi, std::fabs(cosine)};
+}
+
 }  // namespace bxdflab

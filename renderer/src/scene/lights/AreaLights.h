@@ -60,4 +60,33 @@ private:
     float m_radius;
 };
 
+/// PxrCylinderLight: a tube along its local x axis, 1 long and 1 across
+/// (x from -0.5 to 0.5, radius 0.5), that emits outward from its side only;
+/// its open ends emit nothing. Points are sampled uniformly over the side.
+/// As in RenderMan, the cross-section's scale should be uniform; an uneven
+/// one is averaged, as a sphere light's is.
+class CylinderLight final : public Light {
+public:
+    explicit CylinderLight(Mat4 const& lightToWorld);
+    const char* kind() const override { return "PxrCylinderLight"; }
+    LightSample sample(Vec3 const& P, Vec2 const& xi) const override;
+    bool intersect(Vec3 const& org, Vec3 const& dir, float& distance, RtColorRGB& radiance, float& pdf) const override;
+    bool canEmit() const override { return m_area > 0.0f; }
+    bool sampleEmission(Vec2 const& xiPosition, Vec2 const& xiDirection, LightEmission& out) const override;
+    EmissionDensity emissionDensity(Vec3 const& point, Vec3 const& dir) const override;
+    bool boundingSphere(Vec3& center, float& radius) const override {
+        center = m_center;
+        radius = std::sqrt(0.25f * m_length * m_length + m_radius * m_radius);
+        return true;
+    }
+    float area() const { return m_area; }
+
+private:
+    /// The point of the side at axial fraction s (-0.5 to 0.5) and angle phi, and its outward normal.
+    Vec3 pointAt(float s, float phi, Vec3& normal) const;
+    float solidAnglePdf(Vec3 const& towardLight, float distance, Vec3 const& normal) const;
+    Vec3 m_center, m_axis, m_across1, m_across2;  ///< unit axis; the two unit directions across it
+    float m_length, m_radius, m_area;
+};
+
 }  // namespace bxdflab

@@ -22,6 +22,8 @@ std::unique_ptr<Light> makeLight(std::string const& type, ParamList const& param
         light = std::make_unique<PlanarLight>(PlanarLight::Shape::Rect, lightToWorld);
     } else if (type == "PxrSphereLight") {
         light = std::make_unique<SphereLight>(lightToWorld);
+    } else if (type == "PxrCylinderLight") {
+        light = std::make_unique<CylinderLight>(lightToWorld);
     } else if (type == "PxrDistantLight") {
         float extent = params.getFloat("angleExtent", kSunAngleExtent);
         if (extent < 0.0f || extent > 180.0f)
@@ -66,6 +68,8 @@ std::unique_ptr<Light> makeLight(std::string const& type, ParamList const& param
         radiance /= std::max(planar->area(), 1e-12f);
     if (auto const* sphere = dynamic_cast<SphereLight const*>(light.get()); sphere && areaNormalize)
         radiance /= std::max(4.0f * kPi * sphere->radius() * sphere->radius(), 1e-12f);
+    if (auto const* tube = dynamic_cast<CylinderLight const*>(light.get()); tube && areaNormalize)
+        radiance /= std::max(tube->area(), 1e-12f);
     if (type == "PxrDistantLight")
         radiance *= distantLightIrradianceScale(params.getFloat("angleExtent", kSunAngleExtent), areaNormalize);
     light->color = RtColorRGB(radiance.x, radiance.y, radiance.z);
