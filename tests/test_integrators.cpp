@@ -256,6 +256,28 @@ TEST_CASE("PxrVCM and PxrPathTracer agree on a box lit through its ceiling", "[i
         CHECK(test::meanChannel(vcm, c, kAll) == Approx(test::meanChannel(paths, c, kAll)).epsilon(0.006));
 }
 
+TEST_CASE("PxrVCM and PxrPathTracer agree where the camera sees a light in front of what it lights", "[integrators][vcm]") {
+    // A light just in front of a lit wall: the camera sees the light (or, for a one-sided
+    // light turned away, its dark back), never the bright wall behind it. Light subpaths
+    // joined to the camera must be hidden by the light just as camera rays are; they were
+    // not, and this scene came out 9% (sphere) to 39% (disk) too bright.
+    for (char const* light : {"PxrSphereLight", "PxrDiskLight", "PxrCylinderLight"}) {
+        CAPTURE(light);
+        auto scene = [&](char const* integrator) {
+            return std::string("Format 32 32 1\nProjection \"perspective\" \"fov\" [45]\n") + integrator +
+                   "\nTranslate 0 0 4\nWorldBegin\n  AttributeBegin\n    Scale 0.6 0.6 0.6\n    Light \"" + light +
+                   "\" \"l\" \"float intensity\" [8]\n  AttributeEnd\n"
+                   "  Bxdf \"PxrDiffuse\" \"wall\" \"color diffuseColor\" [0.6 0.6 0.6]\n"
+                   "  Polygon \"P\" [-5 -5 0.5  5 -5 0.5  5 5 0.5  -5 5 0.5]\nWorldEnd\n";
+        };
+        RenderSettings settings;
+        settings.spp = 256;
+        auto vcm = test::renderRib(scene("Integrator \"PxrVCM\" \"v\" \"int maxPathLength\" [2]"), settings);
+        auto paths = test::renderRib(scene("Integrator \"PxrPathTracer\" \"p\" \"int maxPathLength\" [2]"), settings);
+        CHECK(test::meanChannel(vcm, 0, kAll) == Approx(test::meanChannel(paths, 0, kAll)).epsilon(0.005));
+    }
+}
+
 TEST_CASE("PxrVCM renders a caustic as a path tracer does, and finds it from a small light", "[integrators][vcm]") {
     std::string scene = readScene("ch04/caustic.rib");
     scene.replace(scene.find("Format 320 240 1"), 16, "Format 64 48 1");

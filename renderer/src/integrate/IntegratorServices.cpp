@@ -218,6 +218,12 @@ RixCameraConnection IntegratorServices::ConnectCamera(RixShadingContext const& c
     // A pixel averages camera rays spread evenly over its share of the image plane.
     out.importance = directionPdf * static_cast<float>(m_camera->pixelCount()) / distSq;
     out.hit = !testVisibility || !m_tracer.occluded(RayStarts(ctx).at(i, toEye), toEye, 0.0f, shadowReach(distance), m_counts);
+    // A light the camera sees in front of the point hides it, as it does from camera rays:
+    // the pixel shows the light (or its dark back), never what lies behind.
+    if (out.hit && testVisibility && m_cameraLights) {
+        Vec3 const eye = toVec3(P[i]) + distance * toEye;
+        if (nearestLightAlong(*m_cameraLights, eye, -toEye, distance).light) out.hit = false;
+    }
     return out;
 }
 

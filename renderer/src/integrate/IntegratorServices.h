@@ -54,10 +54,12 @@ public:
     void CountLightPaths(int count) override {
         if (m_film) m_film->countSplatPaths(static_cast<uint64_t>(count));
     }
-    /// Light tracing: the camera to join points to and the film they add to.
-    void connectCamera(Camera const& camera, SplatTarget& film) {
+    /// Light tracing: the camera to join points to, the film they add to, and
+    /// the lights the camera sees (which hide what lies behind them).
+    void connectCamera(Camera const& camera, SplatTarget& film, std::vector<Light const*> const& cameraLights) {
         m_camera = &camera;
         m_film = &film;
+        m_cameraLights = &cameraLights;
     }
     void CountNonFinite() override { ++m_nonFinite; }
     void CountInvalidPdf() override { ++m_invalidPdf; }
@@ -80,6 +82,7 @@ private:
     MemoryArena& m_arena;
     Camera const* m_camera = nullptr;
     SplatTarget* m_film = nullptr;
+    std::vector<Light const*> const* m_cameraLights = nullptr;
     RayCounts m_counts;
     uint64_t m_nonFinite = 0;
     uint64_t m_invalidPdf = 0;
