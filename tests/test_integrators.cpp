@@ -61,7 +61,7 @@ TEST_CASE("chapter 10 furnace: a smooth glass sphere in a white sky vanishes; a 
     CHECK(r.stats.indirectRays > 0u);
 }
 
-TEST_CASE("PxrPathTracer with maxPathLength 1 is PxrDirectLighting", "[integrators][pathtracer]") {
+TEST_CASE("PxrPathTracer with maxPathLength 1 (maxIndirectBounces 0) is PxrDirectLighting", "[integrators][pathtracer]") {
     std::string rib = readScene("ch06/plastic.rib");
     RenderSettings settings;
     settings.spp = 2;
@@ -69,6 +69,18 @@ TEST_CASE("PxrPathTracer with maxPathLength 1 is PxrDirectLighting", "[integrato
     auto paths = test::renderRib(withIntegrator(rib, "Integrator \"PxrPathTracer\" \"p\" \"int maxPathLength\" [1]"), settings);
     CHECK(paths.stats.indirectRays == 0u);
     CHECK(paths.rgba == direct.rgba);  // the same estimator, sample for sample
+    // RenderMan 23 and later count bounces instead: maxIndirectBounces 0 is direct lighting,
+    // 2 is maxPathLength 3.
+    auto bounces0 =
+        test::renderRib(withIntegrator(rib, "Integrator \"PxrPathTracer\" \"p\" \"int maxIndirectBounces\" [0]"), settings);
+    CHECK(bounces0.rgba == direct.rgba);
+    auto bounces2 =
+        test::renderRib(withIntegrator(rib, "Integrator \"PxrPathTracer\" \"p\" \"int maxIndirectBounces\" [2]"), settings);
+    auto length3 =
+        test::renderRib(withIntegrator(rib, "Integrator \"PxrPathTracer\" \"p\" \"int maxPathLength\" [3]"), settings);
+    CHECK(bounces2.stats.indirectRays > 0u);
+    CHECK(bounces2.rgba == length3.rgba);
+    CHECK_FALSE(bounces2.anyMessageContains("maxIndirectBounces"));
 }
 
 TEST_CASE("light-only, Bxdf-only and MIS estimates agree on a glossy surface", "[integrators][mis]") {

@@ -8,6 +8,8 @@
 //
 // Parameters
 //   int maxPathLength    [10]  surfaces a path may visit (1 = direct lighting only)
+//   int maxIndirectBounces     RenderMan 23's name for the same limit, counted in
+//                              bounces: N bounces is maxPathLength N + 1 (0 = direct only)
 //   int numLightSamples  [1]   light samples per light at every vertex
 //   int numBxdfSamples   [1]   Bxdf samples at every vertex (the first continues the path)
 //   int allowCaustics    [0]   0: once a path has bounced off a diffuse lobe, a specular
@@ -186,6 +188,11 @@ RIX_INTEGRATORCREATE {
         !ReadInt(params, messages, "numBxdfSamples", 1, 1, 4096, bxdfSamples) ||
         !ReadInt(params, messages, "allowCaustics", 0, 0, 1, caustics))
         return nullptr;
+    if (HasParam(params, "maxIndirectBounces")) {
+        int bounces;
+        if (!ReadInt(params, messages, "maxIndirectBounces", 9, 0, 999, bounces)) return nullptr;
+        maxPathLength = bounces + 1;
+    }
     return new PathTracer(maxPathLength, lightSamples, bxdfSamples, caustics != 0);
 }
 

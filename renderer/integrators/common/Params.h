@@ -8,6 +8,12 @@
 
 namespace bxdflab {
 
+/// Whether the RIB gave the parameter `name` at all.
+inline bool HasParam(RixParameterList const* params, const char* name) {
+    int id;
+    return params->GetParamId(RtUString(name), &id) == 0;
+}
+
 /// The integer parameter `name` (or dflt); false after reporting an error if outside [lo, hi].
 inline bool ReadInt(RixParameterList const* params, RixMessages* messages, const char* name, int dflt, int lo, int hi,
                     int& out) {
