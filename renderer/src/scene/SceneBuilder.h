@@ -165,6 +165,8 @@ private:
     bool shapeAsLight(char const* lightType, Mat4 const& lightToWorld, ParamList params = {});
     /// The emissive material of the area light in effect (for shapes with no light of their own kind).
     int emissiveMaterial(SourceLocation const& where);
+    /// The warning for a Light type this renderer does not make.
+    static std::string unsupportedLightMessage(std::string const& type);
     /// Warns when an area light closed with its block never met a shape.
     void warnIfUnshaped(std::shared_ptr<AreaLightDesc> const& closing, std::shared_ptr<AreaLightDesc> const& outer);
     /// Makes a light of either request (Light or LightSource) at lightToWorld.

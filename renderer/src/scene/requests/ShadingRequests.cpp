@@ -149,7 +149,7 @@ void SceneBuilder::makeLightFrom(std::string const& request, std::string const& 
         light = makeLight(type, params, lightToWorld, currentDirectory(), where, m_diagnostics,
                           [this](SourceLocation const& at, std::string const& message) { missingFile(at, message); });
         if (!light) {
-            warnOnce("light " + type, where, "unsupported light type \"" + type + "\" skipped");
+            warnOnce("light " + type, where, unsupportedLightMessage(type));
             return;
         }
         params.warnUnused(m_diagnostics, type + " \"" + handle + "\"");
@@ -173,6 +173,16 @@ void SceneBuilder::makeLightFrom(std::string const& request, std::string const& 
     }
     m_lightHandles[handle] = m_scene.lights.size();
     m_scene.lights.push_back(std::move(light));
+}
+
+std::string SceneBuilder::unsupportedLightMessage(std::string const& type) {
+    // Two of RenderMan's lights change nothing a render here would show: say so, rather than
+    // leave the reader to wonder what is missing from the image.
+    if (type == "PxrPortalLight")
+        return "PxrPortalLight skipped: it only guides the sampling of its dome light through an opening, and the "
+               "dome light lights the scene through it all the same (with more noise)";
+    if (type == "PxrAovLight") return "PxrAovLight skipped: it lights nothing (RenderMan uses it to draw masks into AOVs)";
+    return "unsupported light type \"" + type + "\" skipped";
 }
 
 void SceneBuilder::light(RequestReader& in) {
