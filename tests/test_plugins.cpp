@@ -108,6 +108,16 @@ TEST_CASE("parameters are checked against the plugin's table", "[plugins][errors
     // A name nothing like any parameter gets the list alone.
     auto far = test::renderRib(withBxdf("Bxdf \"diffuse\" \"x\" \"color albedo\" [1 0 0]"));
     CHECK(far.anyMessageContains("has no parameter \"albedo\"; ignored (its parameters: diffuseColor"));
+    // Written without a type, a parameter takes the plugin's, as RenderMan types a shader's
+    // parameters from the shader; values that cannot be that type are a located error.
+    auto untyped = test::renderRib(withBxdf("Bxdf \"diffuse\" \"x\" \"diffuseColor\" [0.25 0.5 1]"));
+    auto typed = test::renderRib(withBxdf("Bxdf \"diffuse\" \"x\" \"color diffuseColor\" [0.25 0.5 1]"));
+    CHECK(untyped.rgba == typed.rgba);
+    CHECK_FALSE(untyped.anyMessageContains("diffuseColor"));
+    CHECK_THAT(renderError(withBxdf("Bxdf \"diffuse\" \"x\" \"diffuseColor\" [0.25 0.5]")),
+               Contains("\"diffuseColor\" is a color, and its value cannot be one (write \"color diffuseColor\" with 3 numbers)"));
+    CHECK_THAT(renderError(withBxdf("Bxdf \"diffuse\" \"x\" \"diffuseColor\" \"red\"")),
+               Contains("\"diffuseColor\" is a color, and its value cannot be one"));
 }
 
 TEST_CASE("plugin search order: command line, environment, RIB option, ini file, built-in", "[plugins]") {

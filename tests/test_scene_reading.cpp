@@ -189,6 +189,30 @@ TEST_CASE("RenderMan's bookkeeping parameters (a leading __) are accepted on any
     CHECK(r.anyMessageContains("\"roughnes\""));
 }
 
+TEST_CASE("lights and integrators type a parameter written without a type, as RenderMan types it from their declarations",
+          "[rib]") {
+    auto scene = [](std::string const& light, std::string const& integrator) {
+        return "Format 8 8 1\nProjection \"perspective\" \"fov\" [40]\n" + integrator +
+               "\nTranslate 0 0 5\nWorldBegin\nAttributeBegin\nTranslate 0 0 -3\nRotate 180 0 1 0\n" + light +
+               "\nAttributeEnd\nBxdf \"PxrDiffuse\" \"d\"\nSphere 1 -1 1 360\nWorldEnd\n";
+    };
+    auto untyped = test::renderRib(scene("Light \"PxrRectLight\" \"key\" \"lightColor\" [1 0.5 0.25] \"exposure\" [2]",
+                                         "Integrator \"PxrPathTracer\" \"p\" \"maxPathLength\" [2]"));
+    auto typed = test::renderRib(
+        scene("Light \"PxrRectLight\" \"key\" \"color lightColor\" [1 0.5 0.25] \"float exposure\" [2]",
+              "Integrator \"PxrPathTracer\" \"p\" \"int maxPathLength\" [2]"));
+    CHECK(untyped.rgba == typed.rgba);
+    CHECK(test::meanChannel(typed, 0, [](int, int) { return true; }) > 0.0);
+    CHECK_FALSE(untyped.anyMessageContains("type"));
+    // A value that cannot be the declared type is a located error.
+    try {
+        test::renderRib(scene("Light \"PxrRectLight\" \"key\" \"lightColor\" [1 0.5]", ""), {}, "light.rib");
+        FAIL("a colour of two numbers was accepted");
+    } catch (RibError const& e) {
+        CHECK_THAT(e.what(), Catch::Contains("light.rib:9:28") && Catch::Contains("\"lightColor\" is a color"));
+    }
+}
+
 TEST_CASE("GeneralPolygon and PointsGeneralPolygons: holes are holes", "[rib][geometry]") {
     Diagnostics diagnostics(false);
     // A square with a triangular hole (either winding of the hole).

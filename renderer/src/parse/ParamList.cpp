@@ -172,6 +172,37 @@ Param stringParam(std::string const& name, std::string const& value) {
     return p;
 }
 
+bool giveType(Param& param, ParamType type, int arraySize) {
+    if (!param.decl.untyped || param.decl.reference || type == ParamType::Unknown) return false;
+    Param typed = param;
+    typed.decl.type = type;
+    typed.decl.arraySize = arraySize;
+    typed.decl.untyped = false;
+    if (type == ParamType::String) {
+        if (param.strings.empty() || !param.floats.empty()) return false;
+    } else {
+        size_t const group = static_cast<size_t>(componentsOf(type) * arraySize);
+        if (!param.strings.empty() || param.floats.empty() || param.floats.size() % group != 0) return false;
+        for (float f : param.floats) {
+            if (!std::isfinite(f) || (type == ParamType::Int && !isWholeInt(f))) return false;
+            if (type == ParamType::Int) typed.ints.push_back(static_cast<int>(f));
+        }
+    }
+    param = std::move(typed);
+    return true;
+}
+
+void ParamList::typeUntyped(std::map<std::string, ParamType> const& declared, std::string const& owner) {
+    for (Param& p : m_params) {
+        auto found = declared.find(p.name());
+        if (!p.decl.untyped || p.decl.reference || found == declared.end()) continue;
+        if (!giveType(p, found->second))
+            throw RibError(p.location, owner + ": parameter \"" + p.name() + "\" is a " + paramTypeName(found->second) +
+                                           ", and its value cannot be one (write \"" + paramTypeName(found->second) +
+                                           " " + p.name() + "\")");
+    }
+}
+
 void ParamList::add(Param param) {
     for (auto& existing : m_params)
         if (existing.name() == param.name()) {

@@ -77,6 +77,12 @@ Param colorParam(std::string const& name, Vec3 const& value);
 /// them to any node; they carry no value a plugin reads, so nobody warns about them.
 inline bool isRendererMetadata(std::string const& name) { return name.rfind("__", 0) == 0; }
 
+/// Gives a parameter written without a type the type its owner declares for it
+/// (a plugin's table, a light's parameters), with `arraySize` elements per item;
+/// false, leaving it as it was, when its values cannot be of that type (strings
+/// for numbers, a count that is no multiple of the type's size, a fraction for an int).
+bool giveType(Param& param, ParamType type, int arraySize = 1);
+
 /// A "float <name>" parameter made by the renderer itself.
 Param floatParam(std::string const& name, float value);
 /// A "string <name>" parameter made by the renderer itself.
@@ -85,6 +91,9 @@ Param stringParam(std::string const& name, std::string const& value);
 class ParamList {
 public:
     void add(Param param);
+    /// Types each parameter written without a type that `declared` names, as giveType
+    /// does; a located RibError (naming `owner`) when its values cannot be that type.
+    void typeUntyped(std::map<std::string, ParamType> const& declared, std::string const& owner);
     bool has(std::string const& name) const { return find(name) != nullptr; }
     /// The parameter, or nullptr when absent. Only looks: see take().
     Param const* find(std::string const& name) const;

@@ -1,5 +1,7 @@
 #include "shade/NodeParams.h"
 
+#include <cmath>
+
 #include "core/Spelling.h"
 #include "shade/PatternInstance.h"
 
@@ -26,6 +28,29 @@ std::string namesHint(std::string const& name, std::vector<RixSCParamInfo> const
 
 }  // namespace
 
+namespace {
+
+/// An untyped parameter given the type the plugin declares for it, its values
+/// checked as a typed one's are; a located error when they cannot be that type.
+Param typedByPlugin(Param const& written, RixSCParamInfo const& info, std::string const& owner) {
+    Param typed = written;
+    ParamType const type = paramTypeFor(info.type);
+    int const arraySize = info.type == k_RixSCFloat2 ? 2 : 1;
+    if (!giveType(typed, type, arraySize)) {
+        size_t const numbers = static_cast<size_t>(componentsOf(type) * arraySize);
+        throw RibError(written.location, owner + " parameter \"" + written.name() + "\" is a " + ribTypeFor(info.type) +
+                                             ", and its value cannot be one (write \"" + ribTypeFor(info.type) + " " +
+                                             written.name() + "\" with " +
+                                             (type == ParamType::String ? std::string("a string")
+                                                                        : std::to_string(numbers) + " number" +
+                                                                              (numbers > 1 ? "s" : "")) +
+                                             ")");
+    }
+    return typed;
+}
+
+}  // namespace
+
 NodeParams::NodeParams(std::string const& kind, ShadingPlugin const& plugin, ParamList const& params,
                        std::map<std::string, Connection> const& connections, PatternLookup const& patternOf,
                        Diagnostics& diagnostics)
@@ -36,15 +61,19 @@ NodeParams::NodeParams(std::string const& kind, ShadingPlugin const& plugin, Par
     for (size_t i = 0; i < table.size(); ++i) m_values[i].type = table[i].type;
     std::string const owner = kind + " \"" + plugin.name() + "\"";
 
-    for (Param const& p : params.all()) {
-        int id = plugin.paramId(p.name());
-        if (id < 0 && isRendererMetadata(p.name())) continue;
+    for (Param const& written : params.all()) {
+        int id = plugin.paramId(written.name());
+        if (id < 0 && isRendererMetadata(written.name())) continue;
         if (id < 0 || table[static_cast<size_t>(id)].access == k_RixSCOutput) {
-            diagnostics.warn(p.location, owner + " has no " + (id < 0 ? "" : "input ") + "parameter \"" + p.name() +
-                                             "\"; ignored (" + namesHint(p.name(), table, false) + ")");
+            diagnostics.warn(written.location, owner + " has no " + (id < 0 ? "" : "input ") + "parameter \"" +
+                                                   written.name() + "\"; ignored (" +
+                                                   namesHint(written.name(), table, false) + ")");
             continue;
         }
         RixSCParamInfo const& info = table[static_cast<size_t>(id)];
+        // As RenderMan types a shader's parameters from the shader, a parameter written
+        // without a type takes the plugin's: "baseColor" [1 0 0] sets a color.
+        Param const p = written.decl.untyped && !written.decl.reference ? typedByPlugin(written, info, owner) : written;
         // RenderMan's structs (a manifold) travel as a point here: see RixPattern.h.
         bool structOk = p.decl.reference && p.decl.type == ParamType::Unknown && info.type == k_RixSCPoint;
         if (!structOk && !ribValueSets(info.type, p.decl.type))

@@ -22,6 +22,37 @@ inline const char* ribTypeFor(RixSCType type) {
     }
 }
 
+/// The RIB type that declares a plugin's type (float[2] is two floats), for a
+/// parameter the RIB wrote without one; Unknown for a type RIB cannot write.
+inline ParamType paramTypeFor(RixSCType type) {
+    switch (type) {
+        case k_RixSCFloat:
+        case k_RixSCFloat2: return ParamType::Float;
+        case k_RixSCInteger: return ParamType::Int;
+        case k_RixSCColor: return ParamType::Color;
+        case k_RixSCNormal: return ParamType::Normal;
+        case k_RixSCVector: return ParamType::Vector;
+        case k_RixSCPoint: return ParamType::Point;
+        case k_RixSCString: return ParamType::String;
+        default: return ParamType::Unknown;
+    }
+}
+
+/// The plugin type a RIB declaration gives (k_RixSCInvalidType for a type a
+/// plugin cannot declare, or none).
+inline RixSCType rixTypeFor(ParamType type) {
+    switch (type) {
+        case ParamType::Float: return k_RixSCFloat;
+        case ParamType::Int: return k_RixSCInteger;
+        case ParamType::Color: return k_RixSCColor;
+        case ParamType::Point: return k_RixSCPoint;
+        case ParamType::Vector: return k_RixSCVector;
+        case ParamType::Normal: return k_RixSCNormal;
+        case ParamType::String: return k_RixSCString;
+        default: return k_RixSCInvalidType;
+    }
+}
+
 inline bool isGeometricType(RixSCType type) {
     return type == k_RixSCNormal || type == k_RixSCVector || type == k_RixSCPoint;
 }

@@ -1,22 +1,8 @@
 #include "shade/RibParameterList.h"
 
+#include "shade/ParamTypes.h"
+
 namespace bxdflab {
-namespace {
-
-RixSCType typeOf(ParamType type) {
-    switch (type) {
-        case ParamType::Float: return k_RixSCFloat;
-        case ParamType::Int: return k_RixSCInteger;
-        case ParamType::Color: return k_RixSCColor;
-        case ParamType::Point: return k_RixSCPoint;
-        case ParamType::Vector: return k_RixSCVector;
-        case ParamType::Normal: return k_RixSCNormal;
-        case ParamType::String: return k_RixSCString;
-        default: return k_RixSCInvalidType;
-    }
-}
-
-}  // namespace
 
 int RibParameterList::GetParamId(RtUString name, int* id) const {
     auto const& all = m_params.all();
@@ -34,16 +20,21 @@ int RibParameterList::GetParamInfo(int id, RtUString* name, RixSCType* type) con
     auto const& all = m_params.all();
     if (id < 0 || static_cast<size_t>(id) >= all.size()) return 1;
     if (name) *name = RtUString(all[static_cast<size_t>(id)].name().c_str());
-    if (type) *type = typeOf(all[static_cast<size_t>(id)].decl.type);
+    if (type) *type = rixTypeFor(all[static_cast<size_t>(id)].decl.type);
     return 0;
 }
 
 RixSCDetail RibParameterList::Eval(int id, int arrayIndex, RixSCType wanted, void* result) const {
     auto const& all = m_params.all();
     if (id < 0 || static_cast<size_t>(id) >= all.size()) return k_RixSCInvalidDetail;
-    Param const& p = all[static_cast<size_t>(id)];
+    // A parameter written without a type takes the type its reader asks for, when its
+    // values can be that: the integrator's request is its declaration, as a plugin's
+    // .args file is RenderMan's.
+    Param typed = all[static_cast<size_t>(id)];
+    if (typed.decl.untyped) giveType(typed, paramTypeFor(wanted));
+    Param const& p = typed;
     size_t index = arrayIndex > 0 ? static_cast<size_t>(arrayIndex) : 0;
-    RixSCType type = typeOf(p.decl.type);
+    RixSCType type = rixTypeFor(p.decl.type);
     bool triple = type == k_RixSCColor || type == k_RixSCPoint || type == k_RixSCVector || type == k_RixSCNormal;
     if (wanted == k_RixSCFloat && (type == k_RixSCFloat || type == k_RixSCInteger) && index < p.floats.size()) {
         *static_cast<float*>(result) = p.floats[index];

@@ -76,6 +76,22 @@ std::unique_ptr<Light> makeLight(std::string const& type, ParamList const& param
     return light;
 }
 
+std::map<std::string, ParamType> const& lightParameterTypes() {
+    static const std::map<std::string, ParamType> types = {
+        // Every RIS light.
+        {"intensity", ParamType::Float}, {"exposure", ParamType::Float}, {"lightColor", ParamType::Color},
+        {"enableTemperature", ParamType::Int}, {"temperature", ParamType::Float}, {"areaNormalize", ParamType::Int},
+        // PxrDistantLight and PxrDomeLight.
+        {"angleExtent", ParamType::Float}, {"lightColorMap", ParamType::String},
+        // PxrEnvDayLight.
+        {"sunDirection", ParamType::Vector}, {"haziness", ParamType::Float}, {"skyTint", ParamType::Color},
+        {"sunTint", ParamType::Color}, {"sunSize", ParamType::Float}, {"month", ParamType::Int},
+        {"day", ParamType::Int}, {"year", ParamType::Int}, {"hour", ParamType::Float}, {"zone", ParamType::Float},
+        {"latitude", ParamType::Float}, {"longitude", ParamType::Float},
+    };
+    return types;
+}
+
 Vec3 risLightRadiance(std::string const& type, ParamList const& params, SourceLocation const& where) {
     float intensity = params.getFloat("intensity", 1.0f);
     float exposure = params.getFloat("exposure", 0.0f);

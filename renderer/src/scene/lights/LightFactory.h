@@ -1,6 +1,7 @@
 #pragma once
 
 #include <functional>
+#include <map>
 #include <memory>
 #include <string>
 
@@ -19,6 +20,11 @@ using MissingFileReport = std::function<void(SourceLocation const& where, std::s
 std::unique_ptr<Light> makeLight(std::string const& type, ParamList const& params, Mat4 const& lightToWorld,
                                  std::string const& baseDir, SourceLocation const& where, Diagnostics& diagnostics,
                                  MissingFileReport const& missing);
+
+/// The types of the RenderMan light parameters this renderer reads, as
+/// RenderMan's own declarations give them: a RIB may write them without a
+/// type ("exposure" [2]), as RenderMan types them from the light's declaration.
+std::map<std::string, ParamType> const& lightParameterTypes();
 
 /// What a RenderMan (RIS) light's parameters make of its radiance:
 /// intensity * 2^exposure * lightColor, tinted by a black body's colour when

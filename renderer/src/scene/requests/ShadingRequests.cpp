@@ -189,6 +189,7 @@ void SceneBuilder::light(RequestReader& in) {
     std::string type = in.string("light type");
     std::string handle = in.string("light handle");
     ParamList params = in.params();
+    params.typeUntyped(lightParameterTypes(), type + " \"" + handle + "\"");
     if (type == "PxrMeshLight") {  // RenderMan 21+: the geometry in this attribute block is the light
         startAreaLight(type, handle, params, in.where());
         return;
@@ -216,6 +217,7 @@ void SceneBuilder::areaLightSource(RequestReader& in) {
     std::string type = in.string("area light shader name");
     std::string handle = in.nextIsString() ? in.string("light handle") : std::to_string(in.integer("light handle"));
     ParamList params = in.params();
+    params.typeUntyped(lightParameterTypes(), "AreaLightSource \"" + type + "\"");
     startAreaLight(type, handle, params, in.where());
 }
 
