@@ -148,7 +148,7 @@ TEST_CASE("Option Ri and Attribute Ri, as RenderMan 21 and later write requests,
     REQUIRE(viaOption.camera.hasScreenWindow);
     for (int i = 0; i < 4; ++i) CHECK(viaOption.camera.screenWindow[i] == viaRequests.camera.screenWindow[i]);
     // Requests this renderer skips are named as such; the ones it needs no value from are not mentioned.
-    CHECK(test::warningsContaining(diagnostics, "\"CropWindow\" is not used") == 1);
+    CHECK(test::warningsContaining(diagnostics, "CropWindow") == 0);  // the whole image: nothing to skip
     CHECK(test::warningsContaining(diagnostics, "\"PixelVariance\" is not used") == 1);
     CHECK(test::warningsContaining(diagnostics, "FormatResolution") == 0);
     CHECK(test::warningsContaining(diagnostics, "Clipping") == 0);
@@ -211,6 +211,21 @@ TEST_CASE("lights and integrators type a parameter written without a type, as Re
     } catch (RibError const& e) {
         CHECK_THAT(e.what(), Catch::Contains("light.rib:9:28") && Catch::Contains("\"lightColor\" is a color"));
     }
+}
+
+TEST_CASE("what exporters always write is accepted quietly: the whole CropWindow, Shutter, ShadingRate", "[rib]") {
+    Diagnostics quiet(false);
+    test::parseRib("CropWindow 0 1 0 1\nShutter 0 0\nShadingRate 1\nOption \"Ri\" \"float[4] CropWindow\" [0 1 0 1] "
+                   "\"float[2] Shutter\" [0 1]\nWorldBegin\nShadingRate 10\n",
+                   quiet);
+    CHECK(quiet.warningCount() == 0);
+    // A part of the image is not rendered alone: that changes the picture, so it is said.
+    Diagnostics cropped(false);
+    test::parseRib("CropWindow 0.25 0.75 0 1\nWorldBegin\n", cropped, "crop.rib");
+    CHECK(test::warningsContaining(cropped, "crop.rib:1:1: CropWindow (a part of the image) is not supported") == 1);
+    Diagnostics croppedRi(false);
+    test::parseRib("Option \"Ri\" \"float[4] CropWindow\" [0 0.5 0 0.5]\nWorldBegin\n", croppedRi, "crop.rib");
+    CHECK(test::warningsContaining(croppedRi, "Option \"Ri\" \"CropWindow\" (a part of the image) is not supported") == 1);
 }
 
 TEST_CASE("GeneralPolygon and PointsGeneralPolygons: holes are holes", "[rib][geometry]") {

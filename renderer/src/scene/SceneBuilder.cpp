@@ -38,6 +38,9 @@ std::map<std::string, SceneBuilder::Handler> const& SceneBuilder::handlers() {
         {"WorldBegin", &SceneBuilder::worldBegin},
         {"WorldEnd", &SceneBuilder::worldEnd},
         {"Clipping", &SceneBuilder::clipping},
+        {"CropWindow", &SceneBuilder::cropWindow},
+        {"Shutter", &SceneBuilder::shutter},
+        {"ShadingRate", &SceneBuilder::shadingRate},
         // The graphics state.
         {"AttributeBegin", &SceneBuilder::attributeBegin},
         {"AttributeEnd", &SceneBuilder::attributeEnd},

@@ -100,6 +100,11 @@ private:
     void worldBegin(RequestReader& in);
     void worldEnd(RequestReader& in);
     void clipping(RequestReader& in);
+    void cropWindow(RequestReader& in);
+    void shutter(RequestReader& in);
+    void shadingRate(RequestReader& in);
+    /// A crop window (xmin xmax ymin ymax): the whole image is accepted, a part of it warned about.
+    void checkCropWindow(std::vector<float> const& window, SourceLocation const& where, std::string const& what);
     void ignore(RequestReader& in);
     /// The warning for a request the table does not handle: unsupported, or
     /// no request at all (with the one it was likely meant to be).

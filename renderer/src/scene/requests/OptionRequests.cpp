@@ -260,9 +260,16 @@ void SceneBuilder::riOptions(ParamList const& params, SourceLocation const& wher
                            "Option \"Ri\" \"ScreenWindow\" takes four numbers (left right bottom top) that span an area");
         setScreenWindow(*window);
     }
-    // Ray tracing needs no near and far planes; the frame number is a label.
+    // Ray tracing needs no near and far planes; the frame number is a label; the shutter
+    // matters only to motion blocks, which are warned about where they are.
     params.ignore("Clipping");
     params.ignore("Frame");
+    params.ignore("Shutter");
+    if (params.has("CropWindow")) {
+        std::vector<float> const* crop = params.getFloats("CropWindow", ParamType::Float);
+        checkCropWindow(crop ? *crop : std::vector<float>{}, params.find("CropWindow")->location,
+                        "Option \"Ri\" \"CropWindow\"");
+    }
     // The rest are requests this renderer skips when written out (CropWindow,
     // PixelVariance, PixelFilter, Shutter, FrameAspectRatio, Exposure, ...).
     for (auto const& p : params.all())
@@ -348,6 +355,33 @@ void SceneBuilder::worldEnd(RequestReader& in) {
 void SceneBuilder::clipping(RequestReader& in) {
     // Ray tracing needs no near and far planes; accepted for compatibility.
     in.numbers(2, "near far");
+    in.finish();
+}
+
+void SceneBuilder::cropWindow(RequestReader& in) {
+    std::vector<float> v = in.numbers(4, "xmin xmax ymin ymax");
+    in.finish();
+    checkCropWindow(v, in.where(), "CropWindow");
+}
+
+void SceneBuilder::checkCropWindow(std::vector<float> const& window, SourceLocation const& where,
+                                   std::string const& what) {
+    // Exporters write the whole image (0 1 0 1) as a matter of course: that asks for nothing.
+    bool const whole = window.size() == 4 && window[0] <= 0.0f && window[1] >= 1.0f && window[2] <= 0.0f &&
+                       window[3] >= 1.0f;
+    if (!whole)
+        warnOnce("crop window", where, what + " (a part of the image) is not supported: the whole image is rendered");
+}
+
+void SceneBuilder::shutter(RequestReader& in) {
+    // Open and close times matter only to motion blocks, which are warned about where they are.
+    in.numbers(2, "open close");
+    in.finish();
+}
+
+void SceneBuilder::shadingRate(RequestReader& in) {
+    // How finely a REYES renderer dices surfaces; a ray tracer shades where rays hit.
+    in.number("shading rate");
     in.finish();
 }
 
