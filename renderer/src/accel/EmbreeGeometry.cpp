@@ -75,8 +75,8 @@ void quadricOccluded(const RTCOccludedFunctionNArguments* args) {
     for (unsigned i = 0; i < args->N; ++i) {
         if (args->valid[i] != -1) continue;
         LocalRay local = toObjectSpace(worldToObject, args->ray, args->N, i);
-        if (quadric->intersectLocal(local.org, local.dir, RTCRayN_tnear(args->ray, args->N, i),
-                                    RTCRayN_tfar(args->ray, args->N, i)))
+        if (quadric->hitsLocal(local.org, local.dir, RTCRayN_tnear(args->ray, args->N, i),
+                               RTCRayN_tfar(args->ray, args->N, i)))
             RTCRayN_tfar(args->ray, args->N, i) = -kInfinity;
     }
 }

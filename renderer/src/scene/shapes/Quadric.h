@@ -29,6 +29,12 @@ public:
     /// Nearest hit with t in (tnear, tfar) of an object-space ray.
     virtual std::optional<LocalHit> intersectLocal(DVec3 const& org, DVec3 const& dir, double tnear,
                                                    double tfar) const = 0;
+    /// Whether an object-space ray hits with t in (tnear, tfar): what a shadow ray
+    /// asks. By default intersectLocal's answer; a shape may answer without
+    /// working out the hit's (u, v).
+    virtual bool hitsLocal(DVec3 const& org, DVec3 const& dir, double tnear, double tfar) const {
+        return intersectLocal(org, dir, tnear, tfar).has_value();
+    }
     /// Object-space surface point, outward normal (unit) and derivatives at (u, v).
     struct LocalSurface {
         Vec3 P, N, dPdu, dPdv;

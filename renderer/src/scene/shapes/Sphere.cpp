@@ -15,6 +15,16 @@ Sphere::Sphere(float radius, float zmin, float zmax, float thetaMaxDegrees, Mat4
     m_zMax = std::clamp(static_cast<double>(std::max(zmin, zmax)), -m_radius, m_radius);
     m_thetaZMin = std::acos(m_zMin / m_radius);
     m_thetaZMax = std::acos(m_zMax / m_radius);
+    m_whole = m_zMin <= -m_radius && m_zMax >= m_radius && phiMax() >= quadric::kTwoPi;
+}
+
+bool Sphere::hitsLocal(DVec3 const& o, DVec3 const& d, double tnear, double tfar) const {
+    // A whole sphere refuses no point of its surface, so a shadow ray needs none
+    // of the angles (acos, atan2) that (u, v) cost; the same answer as intersectLocal's.
+    if (!m_whole) return Quadric::hitsLocal(o, d, tnear, tfar);
+    double t0, t1;
+    if (!solveQuadratic(glm::dot(d, d), 2.0 * glm::dot(o, d), glm::dot(o, o) - m_radius * m_radius, t0, t1)) return false;
+    return (t0 > tnear && t0 < tfar) || (t1 > tnear && t1 < tfar);
 }
 
 std::optional<Quadric::LocalHit> Sphere::intersectLocal(DVec3 const& o, DVec3 const& d, double tnear,
