@@ -3,6 +3,7 @@
 // differences and closed forms.
 #include <catch2/catch.hpp>
 
+#include <glm/gtc/matrix_transform.hpp>
 #include <memory>
 #include <vector>
 
@@ -228,4 +229,31 @@ TEST_CASE("shadow rays traced as a stream answer as one at a time", "[geometry]"
     // Both answers occur, or the comparison would say little.
     CHECK(blockedCount > 60);
     CHECK(blockedCount < 540);
+}
+
+TEST_CASE("a shadow ray's answer for a sphere is the nearest-hit answer, for whole and cut spheres", "[geometry]") {
+    // hitsLocal skips (u, v) for a whole sphere; it must still agree with intersectLocal
+    // on every ray: starting outside, inside, on the surface, grazing, short of it.
+    Mat4 const place = glm::translate(Mat4(1.0f), Vec3(0.3f, -0.2f, 0.1f));
+    Sphere const whole(1.0f, -1.0f, 1.0f, 360.0f, place, false);
+    Sphere const cut(1.0f, -0.5f, 0.8f, 300.0f, place, false);
+    uint32_t state = 777u;
+    auto uniform = [&] {
+        state = state * 1664525u + 1013904223u;
+        return static_cast<double>(state >> 8) / 16777216.0;
+    };
+    int hits = 0;
+    for (int k = 0; k < 4000; ++k) {
+        DVec3 org(3.0 * uniform() - 1.5, 3.0 * uniform() - 1.5, 3.0 * uniform() - 1.5);
+        if (k % 10 == 0) org = glm::normalize(org);  // on the surface
+        DVec3 dir = glm::normalize(DVec3(uniform() - 0.5, uniform() - 0.5, uniform() - 0.5));
+        double tnear = k % 3 == 0 ? 1e-4 : 0.0, tfar = k % 5 == 0 ? 0.5 : 1e30;
+        for (Sphere const* s : {&whole, &cut}) {
+            bool const nearest = s->intersectLocal(org, dir, tnear, tfar).has_value();
+            CHECK(s->hitsLocal(org, dir, tnear, tfar) == nearest);
+            hits += nearest;
+        }
+    }
+    CHECK(hits > 1000);  // both answers occur (1799 of 8000)
+    CHECK(hits < 7000);
 }
