@@ -228,6 +228,19 @@ TEST_CASE("what exporters always write is accepted quietly: the whole CropWindow
     CHECK(test::warningsContaining(croppedRi, "Option \"Ri\" \"CropWindow\" (a part of the image) is not supported") == 1);
 }
 
+TEST_CASE("a stand-in reads the material's parameters also when they are written without a type", "[rib][plugins]") {
+    auto scene = [](std::string const& params) {
+        return "Format 16 16 1\nProjection \"perspective\" \"fov\" [30]\nTranslate 0 0 5\nWorldBegin\n"
+               "Light \"PxrDomeLight\" \"sky\"\nBxdf \"PxrSurface\" \"skin\" " + params + "\nSphere 1 -1 1 360\nWorldEnd\n";
+    };
+    auto untyped = test::renderRib(scene("\"diffuseGain\" [0.55] \"diffuseColor\" [0.68 0.36 0.22] \"specularRoughness\" [0.38]"));
+    auto typed = test::renderRib(
+        scene("\"float diffuseGain\" [0.55] \"color diffuseColor\" [0.68 0.36 0.22] \"float specularRoughness\" [0.38]"));
+    CHECK(untyped.rgba == typed.rgba);
+    auto all = [](int, int) { return true; };
+    CHECK(test::meanChannel(untyped, 0, all) > 1.05 * test::meanChannel(untyped, 2, all));  // orange, not grey
+}
+
 TEST_CASE("GeneralPolygon and PointsGeneralPolygons: holes are holes", "[rib][geometry]") {
     Diagnostics diagnostics(false);
     // A square with a triangular hole (either winding of the hole).

@@ -7,24 +7,32 @@ namespace {
 
 bool isRenderMansOwn(std::string const& name) { return name.rfind("Pxr", 0) == 0 || name.rfind("Lama", 0) == 0; }
 
+/// The parameter `name` as a plain (not connected) value of `type`; one written
+/// without a type counts when its values can be that type, as RenderMan would
+/// type it from the material's declaration.
+std::optional<Param> plainValue(ParamList const& params, char const* name, ParamType type) {
+    for (Param const& p : params.all()) {
+        if (p.name() != name || p.decl.reference) continue;
+        Param typed = p;
+        if (typed.decl.untyped) giveType(typed, type);
+        bool const fits = typed.decl.type == type || (type == ParamType::Float && typed.decl.type == ParamType::Int);
+        if (!fits || typed.floats.size() < static_cast<size_t>(componentsOf(type))) continue;
+        p.used = true;
+        return typed;
+    }
+    return std::nullopt;
+}
+
 /// The first of `names` the material sets as a plain (not connected) colour.
 std::optional<Vec3> colorOf(ParamList const& params, std::initializer_list<char const*> names) {
     for (char const* name : names)
-        for (Param const& p : params.all())
-            if (p.name() == name && !p.decl.reference && p.decl.type == ParamType::Color && p.floats.size() >= 3) {
-                p.used = true;
-                return Vec3(p.floats[0], p.floats[1], p.floats[2]);
-            }
+        if (std::optional<Param> p = plainValue(params, name, ParamType::Color))
+            return Vec3(p->floats[0], p->floats[1], p->floats[2]);
     return std::nullopt;
 }
 
 std::optional<float> floatOf(ParamList const& params, char const* name) {
-    for (Param const& p : params.all())
-        if (p.name() == name && !p.decl.reference && (p.decl.type == ParamType::Float || p.decl.type == ParamType::Int) &&
-            !p.floats.empty()) {
-            p.used = true;
-            return p.floats[0];
-        }
+    if (std::optional<Param> p = plainValue(params, name, ParamType::Float)) return p->floats[0];
     return std::nullopt;
 }
 
