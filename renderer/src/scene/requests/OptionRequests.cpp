@@ -270,8 +270,8 @@ void SceneBuilder::riOptions(ParamList const& params, SourceLocation const& wher
         checkCropWindow(crop ? *crop : std::vector<float>{}, params.find("CropWindow")->location,
                         "Option \"Ri\" \"CropWindow\"");
     }
-    // The rest are requests this renderer skips when written out (CropWindow,
-    // PixelVariance, PixelFilter, Shutter, FrameAspectRatio, Exposure, ...).
+    // The rest are requests this renderer skips when written out (PixelVariance,
+    // PixelFilterName, FrameAspectRatio, Exposure, ...).
     for (auto const& p : params.all())
         if (!p.used)
             warnOnce("option Ri " + p.name(), p.location,

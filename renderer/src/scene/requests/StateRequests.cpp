@@ -28,8 +28,9 @@ void SceneBuilder::warnIfUnshaped(std::shared_ptr<AreaLightDesc> const& closing,
                                   std::shared_ptr<AreaLightDesc> const& outer) {
     // An area light is the shapes that follow it in its block; with none it lights nothing.
     if (!closing || closing == outer || closing->shaped || !building()) return;
+    std::string const request = closing->shader == "PxrMeshLight" ? "Light" : "AreaLightSource";
     warnOnce("area light without a shape", closing->where,
-             std::string(closing->shader == "PxrMeshLight" ? "Light" : "AreaLightSource") + " \"" + closing->shader + "\" \"" + closing->handle +
+             request + " \"" + closing->shader + "\" \"" + closing->handle +
                  "\": no shape follows it in its attribute block, so it lights nothing (give it a Sphere, a Disk or "
                  "a Geometry \"rectlight\", \"spherelight\", \"disklight\" or \"distantlight\")");
 }
