@@ -45,7 +45,7 @@ TEST_CASE("cell integration matches closed forms for the cosine and Phong densit
     }
 }
 
-TEST_CASE("a cell whose samples the adaptive rule cannot explain is integrated finely; an empty one is left alone",
+TEST_CASE("a cell whose samples the adaptive rule cannot explain is integrated finely, an empty one is left alone",
           "[checks][stats]") {
     // A density that lives in a thin band of phi inside one cell (like the edge of the
     // directions a refraction can reach), missed by every node of the first passes.

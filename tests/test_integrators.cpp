@@ -35,7 +35,7 @@ TEST_CASE("path tracer furnace: an emitting, reflecting enclosure converges to E
     CHECK(r.stats.shadowRays == 0u);  // no lights: nothing to sample
 }
 
-TEST_CASE("chapter 10 furnace: a smooth glass sphere in a white sky vanishes; a rough one loses light", "[integrators][ch10]") {
+TEST_CASE("chapter 10 furnace: a smooth glass sphere in a white sky vanishes, a rough one loses light", "[integrators][ch10]") {
     // Radiance / eta^2 crosses a lossless boundary unchanged, so inside a sky of
     // radiance 1 the smooth sphere is 1 everywhere; the single-scattering rough
     // one is darker. The inner disks (0.7 of the radius) keep the rim, where
@@ -129,7 +129,7 @@ TEST_CASE("chapter 7: PxrValidateBxdf shows the planted bugs and equal channels 
     CHECK(blue == Approx(red).epsilon(0.01));
 }
 
-TEST_CASE("PxrDebugShadingContext shows builtins; unknown channels are located errors", "[integrators][debug]") {
+TEST_CASE("PxrDebugShadingContext shows builtins, unknown channels are located errors", "[integrators][debug]") {
     auto view = [](std::string const& channel, bool inside) {
         return "Format 9 9 1\nProjection \"perspective\" \"fov\" [10]\n"
                "Integrator \"PxrDebugShadingContext\" \"dbg\" \"string viewchannel\" [\"" + channel + "\"]\n"

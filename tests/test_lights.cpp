@@ -133,7 +133,7 @@ TEST_CASE("a light given before WorldBegin is placed in camera space", "[lights]
     CHECK(test::meanChannel(r, 0, [](int, int) { return true; }) == Approx(8.0 / 25.0).epsilon(1e-3));
 }
 
-TEST_CASE("areaNormalize keeps a light's power whatever its size; without it power grows with area", "[lights]") {
+TEST_CASE("areaNormalize keeps a light's power whatever its size, without it power grows with area", "[lights]") {
     // A tiny patch of a white plane 20 units in front of a rect light of side 1 or 2.
     auto irradiance = [](float side, bool normalize) {
         std::string rib = "Format 4 4 1\nProjection \"orthographic\"\nScreenWindow -0.01 0.01 -0.01 0.01\n"
@@ -227,7 +227,7 @@ TEST_CASE("PxrEnvDayLight: the sun and Preetham's sky light a floor as much as t
     CHECK(sunIrradiance(sun, turbidity).x * sun.y > 2.0 * skyIrradiance);
 }
 
-TEST_CASE("PxrEnvDayLight: the sun's place by date, time and place; a bluer zenith, a redder low sun", "[lights][daylight]") {
+TEST_CASE("PxrEnvDayLight: the sun's place by date, time and place, a bluer zenith, a redder low sun", "[lights][daylight]") {
     // 21 June at 47.6 degrees north, local noon on the zone's own meridian: the sun stands
     // 90 - 47.6 + 23.44 = 65.8 degrees high, due south (-z); at 8 in the morning it is east (+x).
     DaylightParams p;

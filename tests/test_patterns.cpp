@@ -101,7 +101,7 @@ TEST_CASE("patterns run only for the parameters asked for, each once per batch",
     }
 }
 
-TEST_CASE("PxrTexture reads what OpenImageIO's texture system reads; a missing file is magenta and a warning",
+TEST_CASE("PxrTexture reads what OpenImageIO's texture system reads, a missing file is magenta and a warning",
           "[patterns][textures]") {
     // A 64 x 64 image: red grows with x, green with y (top row 0), blue constant.
     int const size = 64;
@@ -149,13 +149,13 @@ TEST_CASE("PxrTexture reads what OpenImageIO's texture system reads; a missing f
                                          "Bxdf \"PxrConstant\" \"c\" \"reference color emitColor\" [\"t:resultRGB\"]\n" +
                                      kSquare,
                                  fewSamples());
-        CHECK(r.anyMessageContains("no/such/maple.tx"));
+        CHECK(r.anyMessageContains("texture \"no/such/maple.tx\" does not exist (looked for from the current folder"));
         CHECK(r.channel(8, 8, 0) == Approx(1.0f));
         CHECK(r.channel(8, 8, 1) == Approx(0.0f));
     }
 }
 
-TEST_CASE("bad networks: located errors for wrong handles, outputs and types; warnings for what is missing",
+TEST_CASE("bad networks: located errors for wrong handles, outputs and types, warnings for what is missing",
           "[patterns][errors]") {
     auto fails = [](std::string const& body, std::string const& text) {
         CHECK_THROWS_WITH(test::renderRib(kHead + body + kSquare), Catch::Matchers::Contains(text));

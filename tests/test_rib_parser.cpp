@@ -137,7 +137,7 @@ TEST_CASE("malformed RIB gives file:line:col and what was expected", "[rib][erro
     CHECK_THAT(message, Catch::Matchers::Contains(c.mentions));
 }
 
-TEST_CASE("standard names need no type; an unknown untyped name in a skipped request is only a warning", "[rib]") {
+TEST_CASE("standard names need no type, an unknown untyped name in a skipped request is only a warning", "[rib]") {
     Diagnostics diagnostics(false);
     Scene scene = parseRib("Option \"limits\" \"bucketsize\" [16 16] \"gridsize\" 256\n"
                            "Option \"statistics\" \"endofframe\" 1\nHider \"hidden\" \"jitter\" 1\n"
@@ -550,7 +550,7 @@ TEST_CASE("what 1990s RIB files write: mpoint, a standard name as a shader's own
     CHECK(test::warningsContaining(lenient, "no object \"1\" was defined with ObjectBegin (perhaps in the archive") == 1);
 }
 
-TEST_CASE("a missing archive or sky image is a warning naming what was tried; --strict makes it an error", "[rib]") {
+TEST_CASE("a missing archive or sky image is a warning naming what was tried, --strict makes it an error", "[rib]") {
     LoadOptions strict;
     strict.strict = true;
     std::string message = ribErrorOf("WorldBegin\nReadArchive \"nowhere.rib\"\n", strict);

@@ -99,7 +99,7 @@ TEST_CASE("named coordinate systems: CoordinateSystem, ScopedCoordinateSystem an
     CHECK(test::warningsContaining(diagnostics, "no coordinate system \"aside\"") == 1);
 }
 
-TEST_CASE("classic Surface shaders become the ClassicSurface Bxdf with the Color in effect; a Bxdf wins", "[rib]") {
+TEST_CASE("classic Surface shaders become the ClassicSurface Bxdf with the Color in effect, a Bxdf wins", "[rib]") {
     Diagnostics diagnostics(false);
     Scene scene = test::parseRib("WorldBegin\nColor [1 0 0]\nSurface \"plastic\" \"Ks\" [0.7]\nSphere 1 -1 1 360\n"
                                  "Surface \"wobbly\"\nSphere 1 -1 1 360\n"
@@ -266,7 +266,7 @@ TEST_CASE("GeneralPolygon and PointsGeneralPolygons: holes are holes", "[rib][ge
     CHECK(trace(tracer, Vec3(2.5f, 0.8f, 0), Vec3(0, 0, 1)).hit());
 }
 
-TEST_CASE("a face of a million vertices is triangulated in about as many steps; an absurd one is refused",
+TEST_CASE("a face of a million vertices is triangulated in about as many steps, an absurd one is refused",
           "[rib][geometry][errors]") {
     // A star: every other vertex reflex, the worst kind of face for a naive ear clipper.
     size_t const n = 1'000'000;
@@ -286,7 +286,7 @@ TEST_CASE("a face of a million vertices is triangulated in about as many steps; 
     CHECK(trace(tracer, Vec3(0.3f, 0.2f, 0), Vec3(0, 0, 1)).hit());
 }
 
-TEST_CASE("RenderMan's camera plugins are perspective cameras; with no Projection the camera is orthographic",
+TEST_CASE("RenderMan's camera plugins are perspective cameras, with no Projection the camera is orthographic",
           "[rib]") {
     Diagnostics diagnostics(false);
     Scene pxr = test::parseRib("Projection \"PxrCamera\" \"float fov\" [35]\nWorldBegin\n", diagnostics);

@@ -244,7 +244,7 @@ TEST_CASE("solutions: FPdf integrates to 1 over the hemisphere, or to the valid 
     CHECK(valid / 20000.0 == Approx(integral).margin(0.01));
 }
 
-TEST_CASE("chapter 9: sampling visible normals bounds every sample's weight by 1; sampling D does not", "[solutions][ch09]") {
+TEST_CASE("chapter 9: sampling visible normals bounds every sample's weight by 1, sampling D does not", "[solutions][ch09]") {
     // With F0 = 1 the weight a visible-normal sample carries is W / FPdf = G2(V, L) / G1(V) <= 1 at every
     // view and roughness, grazing included; sampling D(m) cos(theta_m) lets it grow at grazing views.
     auto const alpha = GENERATE(0.01, 0.3, 1.0);
@@ -320,7 +320,7 @@ TEST_CASE("chapter 10: glass by hand, and a lossless smooth boundary", "[solutio
     }
 }
 
-TEST_CASE("chapter 7: the buggydiffuse starter's GenerateSample and EvaluateSample disagree; the solution's agree",
+TEST_CASE("chapter 7: the buggydiffuse starter's GenerateSample and EvaluateSample disagree, the solution's agree",
           "[solutions][ch07]") {
     Diagnostics diagnostics(false);
     BxdfProbe buggy("buggydiffuse", "", {std::string(STARTER_PLUGIN_DIR)}, diagnostics);

@@ -72,8 +72,13 @@ private:
             m_diagnostics.warn("a texture lookup names no file; it returns missingColor");
         } else if (!m_system->get_imagespec(file, 0, spec)) {
             std::string why = m_system->geterror(), pointer = notAnImageBecause(file.string());
-            m_diagnostics.warn("texture \"" + name + "\" cannot be read (" + (pointer.empty() ? why : pointer) +
-                               "); its lookups return missingColor");
+            why = why.substr(0, why.find('\n'));  // OpenImageIO says it again on a second line
+            if (std::error_code error; !std::filesystem::exists(file.string(), error))
+                m_diagnostics.warn("texture \"" + name + "\" does not exist (looked for from " + searchedPlaces() +
+                                   "); its lookups return missingColor");
+            else
+                m_diagnostics.warn("texture \"" + name + "\" cannot be read (" + (pointer.empty() ? why : pointer) +
+                                   "); its lookups return missingColor");
         } else if (spec.width > kMaxImageSide || spec.height > kMaxImageSide ||
                    static_cast<long long>(spec.width) * spec.height > kMaxImagePixels || spec.depth > 1) {
             m_diagnostics.warn("texture \"" + name + "\" declares " + std::to_string(spec.width) + " x " +
@@ -84,6 +89,13 @@ private:
         }
         m_files.emplace(name, handle);
         return handle;
+    }
+
+    /// Where resolve() looks, for a message.
+    std::string searchedPlaces() const {
+        std::string places = "the current folder";
+        for (std::string const& folder : m_searchPath) places += ", " + folder;
+        return places;
     }
 
     /// A relative name is looked for from the current folder, then in each search folder.
