@@ -73,7 +73,10 @@ NodeParams::NodeParams(std::string const& kind, ShadingPlugin const& plugin, Par
         RixSCParamInfo const& info = table[static_cast<size_t>(id)];
         // As RenderMan types a shader's parameters from the shader, a parameter written
         // without a type takes the plugin's: "baseColor" [1 0 0] sets a color.
-        Param const p = written.decl.untyped && !written.decl.reference ? typedByPlugin(written, info, owner) : written;
+        Param typed;
+        bool const needsType = written.decl.untyped && !written.decl.reference;
+        if (needsType) typed = typedByPlugin(written, info, owner);
+        Param const& p = needsType ? typed : written;
         // RenderMan's structs (a manifold) travel as a point here: see RixPattern.h.
         bool structOk = p.decl.reference && p.decl.type == ParamType::Unknown && info.type == k_RixSCPoint;
         if (!structOk && !ribValueSets(info.type, p.decl.type))

@@ -30,9 +30,13 @@ RixSCDetail RibParameterList::Eval(int id, int arrayIndex, RixSCType wanted, voi
     // A parameter written without a type takes the type its reader asks for, when its
     // values can be that: the integrator's request is its declaration, as a plugin's
     // .args file is RenderMan's.
-    Param typed = all[static_cast<size_t>(id)];
-    if (typed.decl.untyped) giveType(typed, paramTypeFor(wanted));
-    Param const& p = typed;
+    Param const& given = all[static_cast<size_t>(id)];
+    Param typed;
+    if (given.decl.untyped) {
+        typed = given;
+        giveType(typed, paramTypeFor(wanted));
+    }
+    Param const& p = given.decl.untyped ? typed : given;
     size_t index = arrayIndex > 0 ? static_cast<size_t>(arrayIndex) : 0;
     RixSCType type = rixTypeFor(p.decl.type);
     bool triple = type == k_RixSCColor || type == k_RixSCPoint || type == k_RixSCVector || type == k_RixSCNormal;
