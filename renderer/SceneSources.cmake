@@ -7,6 +7,7 @@ set(RIX_SCENE_SOURCES
   core/GitLfs.cpp
   core/ImageFiles.cpp
   core/Spelling.cpp
+  core/TextureLocator.cpp
   parse/RibLexer.cpp
   parse/RibParser.cpp
   parse/RibRequest.cpp
@@ -15,6 +16,7 @@ set(RIX_SCENE_SOURCES
   parse/RequestNames.cpp
   parse/ZipMember.cpp
   scene/SceneBuilder.cpp
+  scene/PatternReach.cpp
   scene/requests/OptionRequests.cpp
   scene/requests/StateRequests.cpp
   scene/requests/ShadingRequests.cpp

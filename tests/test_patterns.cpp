@@ -155,6 +155,59 @@ TEST_CASE("PxrTexture reads what OpenImageIO's texture system reads, a missing f
     }
 }
 
+TEST_CASE("classic paintedplastic multiplies Cs by its texture map at (s, t), and MakeTexture's texture is its picture",
+          "[patterns][textures][classic]") {
+    // A 64 x 64 image whose green grows from its top row (0) to its bottom row (1).
+    int const size = 64;
+    std::vector<float> pixels(static_cast<size_t>(size * size * 3), 0.0f);
+    for (int y = 0; y < size; ++y)
+        for (int x = 0; x < size; ++x) pixels[static_cast<size_t>(3 * (y * size + x) + 1)] = static_cast<float>(y) / (size - 1);
+    std::string const picture = test::outputDir() + "/classic-ramp.exr";
+    writeImage(picture, pixels, size, size, 3);
+    // Ambient light only (Kd and Ks 0): each pixel is Cs * texture * Ka * ambient. The
+    // patch's first two points are its top edge, where the classic t is 0.
+    std::string const head = "Format 16 16 1\nProjection \"orthographic\"\nScreenWindow -1 1 -1 1\n";
+    std::string const world = "WorldBegin\nTranslate 0 0 5\nLightSource \"ambientlight\" 1 \"intensity\" [1]\n"
+                              "Color [0.5 1 1]\n";
+    std::string const surface = "Surface \"paintedplastic\" \"Ka\" [1] \"Kd\" [0] \"Ks\" [0] \"texturename\" [\"ramp.tex\"]\n"
+                                "Patch \"bilinear\" \"P\" [-1 1 0  1 1 0  -1 -1 0  1 -1 0]\nWorldEnd\n";
+
+    SECTION("MakeTexture made ramp.tex from the picture: the image's top row is at t = 0, the patch's top") {
+        auto r = test::renderRib("MakeTexture \"" + picture + "\" \"./ramp.tex\" \"periodic\" \"periodic\" \"gaussian\" 2 2\n" +
+                                     head + world + surface,
+                                 fewSamples());
+        CHECK(r.messages.empty());
+        CHECK(r.stats.textureLookups > 0u);
+        for (int y : {2, 5, 10, 13}) CHECK(r.channel(8, y, 1) == Approx(1.0f - pixelV(y)).margin(0.03));
+        CHECK(r.channel(8, 8, 0) == Approx(0.0f).margin(1e-6));  // Cs's red times the image's
+    }
+    SECTION("MakeLatLongEnvironment makes a texture the same way") {
+        auto r = test::renderRib("MakeLatLongEnvironment \"" + picture + "\" \"ramp.tex\" \"gaussian\" 2 2\n" + head +
+                                     world + surface,
+                                 fewSamples());
+        CHECK(r.messages.empty());
+        CHECK(r.channel(8, 13, 1) == Approx(1.0f - pixelV(13)).margin(0.03));
+    }
+    SECTION("a dome light's image made by MakeLatLongEnvironment is its picture") {
+        Diagnostics diagnostics(false);
+        Scene scene = test::parseRib("MakeLatLongEnvironment \"" + picture + "\" \"sky.tex\" \"gaussian\" 2 2\nWorldBegin\n"
+                                     "Light \"PxrDomeLight\" \"sky\" \"string lightColorMap\" [\"sky.tex\"]\n",
+                                     diagnostics);
+        CHECK(test::warningTexts(diagnostics).empty());
+        test::parseRib("WorldBegin\nLight \"PxrDomeLight\" \"sky\" \"string lightColorMap\" [\"sky.tex\"]\n", diagnostics);
+        CHECK(test::warningsContaining(diagnostics, "\"sky.tex\" does not exist") == 1);
+    }
+    SECTION("a texture that is not there: one located warning, and the surface keeps Cs") {
+        auto r = test::renderRib(head + world + surface, fewSamples());
+        REQUIRE(r.messages.size() == 1u);
+        INFO(r.messages[0].text);
+        CHECK(r.messages[0].text.find("test.rib:8:53: Surface \"paintedplastic\": texture \"ramp.tex\" does not exist") !=
+              std::string::npos);
+        CHECK(r.channel(8, 8, 0) == Approx(0.5f).margin(1e-4));
+        CHECK(r.channel(8, 8, 1) == Approx(1.0f).margin(1e-4));
+    }
+}
+
 TEST_CASE("bad networks: located errors for wrong handles, outputs and types, warnings for what is missing",
           "[patterns][errors]") {
     auto fails = [](std::string const& body, std::string const& text) {

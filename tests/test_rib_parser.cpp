@@ -550,7 +550,8 @@ TEST_CASE("what 1990s RIB files write: mpoint, a standard name as a shader's own
     CHECK(test::warningsContaining(lenient, "no object \"1\" was defined with ObjectBegin (perhaps in the archive") == 1);
 }
 
-TEST_CASE("a missing archive or sky image is a warning naming what was tried, --strict makes it an error", "[rib]") {
+TEST_CASE("a missing archive, sky image or texture is a warning naming what was tried, --strict makes it an error",
+          "[rib]") {
     LoadOptions strict;
     strict.strict = true;
     std::string message = ribErrorOf("WorldBegin\nReadArchive \"nowhere.rib\"\n", strict);
@@ -565,6 +566,16 @@ TEST_CASE("a missing archive or sky image is a warning naming what was tried, --
     // A device is not an archive, strict or not.
     CHECK_THAT(ribErrorOf("WorldBegin\nReadArchive \"/dev/zero\"\n"), Catch::Matchers::Contains("not a regular file"));
 
+    // A texture a used pattern or classic shader names: located at its parameter.
+    std::string const texture = "WorldBegin\nPattern \"PxrTexture\" \"t\" \"string filename\" [\"no-such.tx\"]\n"
+                                "Bxdf \"PxrDiffuse\" \"d\" \"reference color diffuseColor\" [\"t:resultRGB\"]\n"
+                                "Sphere 1 -1 1 360\nWorldEnd\n";
+    CHECK_THAT(ribErrorOf(texture, strict), Catch::Matchers::StartsWith("bad.rib:2:26: Pattern \"PxrTexture\" \"t\": "
+                                                                        "texture \"no-such.tx\" does not exist"));
+    CHECK_THAT(ribErrorOf("WorldBegin\nSurface \"paintedplastic\" \"texturename\" \"no-such.tex\"\nSphere 1 -1 1 360\n",
+                          strict),
+               Catch::Matchers::StartsWith("bad.rib:2:26: Surface \"paintedplastic\": texture \"no-such.tex\" does not exist"));
+
     // Without --strict the scene is read on, as RenderMan does, with one located warning each.
     Diagnostics diagnostics(false);
     Scene scene = parseRib("WorldBegin\nReadArchive \"nowhere.rib\"\nLight \"PxrDomeLight\" \"d\" \"string lightColorMap\" "
@@ -573,9 +584,12 @@ TEST_CASE("a missing archive or sky image is a warning naming what was tried, --
     CHECK(scene.shapes.size() == 1u);
     REQUIRE(scene.lights.size() == 1u);  // the dome light, with its plain colour
     std::vector<std::string> warnings = test::warningTexts(diagnostics);
-    CHECK(warnings.size() == 2u);
-    for (std::string const& warning : warnings) {
-        CHECK_THAT(warning, Catch::Matchers::StartsWith("lenient.rib:"));
-        CHECK_THAT(warning, Catch::Matchers::Contains("tried"));
-    }
+    REQUIRE(warnings.size() == 2u);
+    CHECK_THAT(warnings[0], Catch::Matchers::StartsWith("lenient.rib:2:1:") && Catch::Matchers::Contains("tried"));
+    CHECK_THAT(warnings[1], Catch::Matchers::StartsWith("lenient.rib:3:1:") &&
+                                Catch::Matchers::Contains("\"no-sky.exr\" does not exist (looked for from the current folder"));
+    Diagnostics textureWarnings(false);
+    Scene textured = parseRib(texture, textureWarnings, "lenient.rib");
+    CHECK(textured.missingTextures == std::set<std::string>{"no-such.tx"});
+    CHECK(test::warningTexts(textureWarnings).size() == 1u);
 }

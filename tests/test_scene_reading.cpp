@@ -120,6 +120,26 @@ TEST_CASE("classic Surface shaders become the ClassicSurface Bxdf with the Color
     CHECK(scene.materials[static_cast<size_t>(scene.shapes[2]->material)].handle == "d");
 }
 
+TEST_CASE("a classic shader's parameters are its own: others are warned about by the shader's name", "[rib]") {
+    Diagnostics diagnostics(false);
+    Scene scene = test::parseRib("WorldBegin\nSurface \"metal\" \"Kd\" [0.5] \"roughnes\" [0.2] \"Ks\" [0.8] "
+                                 "\"string __materialid\" [\"m\"]\nSphere 1 -1 1 360\n"
+                                 "Surface \"shinymetal\" \"Kr\" [1] \"texturename\" [\"env.tex\"]\nSphere 1 -1 1 360\n",
+                                 diagnostics);
+    std::vector<std::string> const warnings = test::warningTexts(diagnostics);
+    REQUIRE(warnings.size() == 3u);
+    CHECK(warnings[0] == "test.rib:2:17: Surface \"metal\" has no parameter \"Kd\"; ignored (its parameters: Ka, Ks, roughness)");
+    CHECK_THAT(warnings[1], Catch::Matchers::StartsWith("test.rib:2:28: Surface \"metal\" has no parameter \"roughnes\"; "
+                                                        "ignored (did you mean \"roughness\"?"));
+    // shinymetal's reflection of an environment: one warning for both of its parameters.
+    CHECK_THAT(warnings[2], Catch::Matchers::Contains("Surface \"shinymetal\": its reflection of an environment map"));
+    REQUIRE(scene.shapes.size() == 2u);
+    MaterialDesc const& metal = scene.materials[static_cast<size_t>(scene.shapes[0]->material)];
+    CHECK(metal.params.getFloat("Ks", 0.0f) == 0.8f);
+    CHECK_FALSE(metal.params.has("Kd"));  // not handed on: ClassicSurface's metal would have no use for it
+    CHECK(scene.patterns.empty());              // no texture is read for shinymetal
+}
+
 TEST_CASE("a negative quadric radius turns the surface inside out", "[rib][geometry]") {
     Diagnostics diagnostics(false);
     Scene scene = test::parseRib("WorldBegin\nTranslate 0 0 5\nDisk 0 -1 360\n", diagnostics);

@@ -6,9 +6,12 @@
 //   constant        Cs, unlit (an emitter with no reflection)
 //   matte           Kd Cs / pi
 //   plastic         Kd Cs / pi  +  Ks specularcolor * glossy lobe
-//   paintedplastic  as plastic (its texture map is not read)
+//   paintedplastic  as plastic, Cs times the texture map at (s, t)
 //   metal           Ks Cs * glossy lobe
 //   shinymetal      as metal (its environment map is not read)
+//
+// The scene reader reads paintedplastic's texturename with a PxrTexture node
+// connected to textureColor (white where there is none).
 //
 // plus Ka Cs ambient emitted by all but constant (the shaders' ambient()
 // term, from the scene's ambientlight shaders). Cs and Os are the shape's
@@ -58,7 +61,10 @@ private:
 
 class ClassicSurfaceFactory : public stockbxdfs::StockBxdfFactory {
 public:
-    enum Param { k_shader, k_surfaceColor, k_surfaceOpacity, k_ambient, k_Ka, k_Kd, k_Ks, k_roughness, k_specularcolor };
+    enum Param {
+        k_shader, k_surfaceColor, k_surfaceOpacity, k_ambient, k_Ka, k_Kd, k_Ks, k_roughness, k_specularcolor,
+        k_textureColor
+    };
 
     RixSCParamInfo const* GetParamTable() override {
         static RixSCParamInfo table[] = {
@@ -71,6 +77,7 @@ public:
             RixSCParamInfo(RtUString("Ks"), k_RixSCFloat, k_RixSCScatterInput),
             RixSCParamInfo(RtUString("roughness"), k_RixSCFloat, k_RixSCScatterInput),
             RixSCParamInfo(RtUString("specularcolor"), k_RixSCColor, k_RixSCScatterInput),
+            RixSCParamInfo(RtUString("textureColor"), k_RixSCColor, k_RixSCScatterInput),
             RixSCParamInfo()};
         return table;
     }
@@ -83,7 +90,7 @@ public:
 
     RixBxdf* BeginScatter(RixShadingContext const* sCtx, RixBXLobeTraits const&, RixSCShadingMode, void*,
                           RtPointer) override {
-        // Every parameter is uniform: the scene reader writes one value per material.
+        // Every parameter but the texture's colour is uniform: the scene reader writes one value per material.
         RtUString const* name;
         RtColorRGB const *Cs, *Os, *ambient, *specularColor;
         float const *Ka, *Kd, *Ks, *roughness;
@@ -95,6 +102,8 @@ public:
         sCtx->EvalParam(k_surfaceOpacity, -1, &Os, &white, false);
         sCtx->EvalParam(k_ambient, -1, &ambient, &black, false);
         sCtx->EvalParam(k_specularcolor, -1, &specularColor, &white, false);
+        RtColorRGB const* textureColor;
+        sCtx->EvalParam(k_textureColor, -1, &textureColor, &white, true);
         Shader shader = shaderNamed(name->CStr());
         // The shaders' own defaults: matte Ka 1 Kd 1; plastic Ka 1 Kd .5 Ks .5; metal Ka 1 Ks 1; roughness .1.
         float const kdDefault = shader == Shader::Matte ? 1.0f : 0.5f;
@@ -111,7 +120,8 @@ public:
         RixShadingContext::Allocator pool(sCtx);
         int const n = sCtx->numPts;
         RtColorRGB* color = pool.AllocForBxdf<RtColorRGB>(n);
-        for (int i = 0; i < n; ++i) color[i] = (CsVarying ? CsVarying[i] : *Cs) * (OsVarying ? OsVarying[i] : *Os);
+        for (int i = 0; i < n; ++i)
+            color[i] = (CsVarying ? CsVarying[i] : *Cs) * (OsVarying ? OsVarying[i] : *Os) * textureColor[i];
         if (shader == Shader::Constant) return new (pool.AllocForBxdf<Emissive>(1)) Emissive(sCtx, this, color);
         PlasticParams params;
         RtColorRGB* diffuseColors = pool.AllocForBxdf<RtColorRGB>(n);

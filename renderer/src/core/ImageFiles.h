@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "RixInterfaces.h"
+#include "core/TextureLocator.h"
 
 namespace bxdflab {
 
@@ -25,8 +26,8 @@ class Diagnostics;
 /// The renderer's RixTexture, with the count of points looked up (for the stats).
 class TextureService : public RixTexture {
 public:
-    /// Folders where relative file names are looked for, in order.
-    virtual void setSearchPath(std::vector<std::string> const& folders) = 0;
+    /// Where the files that lookups name are found.
+    virtual void setLocator(TextureLocator locator) = 0;
     uint64_t lookups() const { return m_lookups.load(std::memory_order_relaxed); }
 
 protected:

@@ -26,7 +26,7 @@ public:
         m_system->attribute("automip", 1);
     }
 
-    void setSearchPath(std::vector<std::string> const& folders) override { m_searchPath = folders; }
+    void setLocator(TextureLocator locator) override { m_locator = std::move(locator); }
 
     int Texture(RtUString filename, TxParams const& params, int numPts, RtFloat2 const* st, RtFloat const* width,
                 int numChannels, RtFloat* result) override {
@@ -67,18 +67,20 @@ private:
         if (found != m_files.end()) return found->second;
         OIIO::TextureSystem::TextureHandle* handle = nullptr;
         OIIO::ImageSpec spec;
-        OIIO::ustring file(resolve(name));
+        OIIO::ustring file(m_locator.find(name).value_or(name));
         if (name.empty()) {
             m_diagnostics.warn("a texture lookup names no file; it returns missingColor");
         } else if (!m_system->get_imagespec(file, 0, spec)) {
             std::string why = m_system->geterror(), pointer = notAnImageBecause(file.string());
             why = why.substr(0, why.find('\n'));  // OpenImageIO says it again on a second line
-            if (std::error_code error; !std::filesystem::exists(file.string(), error))
-                m_diagnostics.warn("texture \"" + name + "\" does not exist (looked for from " + searchedPlaces() +
-                                   "); its lookups return missingColor");
-            else
+            if (std::error_code error; !std::filesystem::exists(file.string(), error)) {
+                if (!m_locator.reportedMissing.count(name))
+                    m_diagnostics.warn("texture \"" + name + "\" does not exist (looked for from " +
+                                       m_locator.searchedPlaces() + "); its lookups return missingColor");
+            } else {
                 m_diagnostics.warn("texture \"" + name + "\" cannot be read (" + (pointer.empty() ? why : pointer) +
                                    "); its lookups return missingColor");
+            }
         } else if (spec.width > kMaxImageSide || spec.height > kMaxImageSide ||
                    static_cast<long long>(spec.width) * spec.height > kMaxImagePixels || spec.depth > 1) {
             m_diagnostics.warn("texture \"" + name + "\" declares " + std::to_string(spec.width) + " x " +
@@ -91,26 +93,8 @@ private:
         return handle;
     }
 
-    /// Where resolve() looks, for a message.
-    std::string searchedPlaces() const {
-        std::string places = "the current folder";
-        for (std::string const& folder : m_searchPath) places += ", " + folder;
-        return places;
-    }
-
-    /// A relative name is looked for from the current folder, then in each search folder.
-    std::string resolve(std::string const& name) const {
-        std::error_code error;
-        if (name.empty() || std::filesystem::path(name).is_absolute() || std::filesystem::exists(name, error)) return name;
-        for (std::string const& folder : m_searchPath) {
-            std::filesystem::path candidate = std::filesystem::path(folder) / name;
-            if (std::filesystem::exists(candidate, error)) return candidate.string();
-        }
-        return name;
-    }
-
     Diagnostics& m_diagnostics;
-    std::vector<std::string> m_searchPath;
+    TextureLocator m_locator;
     OIIO::TextureSystem* m_system;
     std::mutex m_lock;
     std::map<std::string, OIIO::TextureSystem::TextureHandle*> m_files;

@@ -11,8 +11,8 @@
 
 namespace bxdflab {
 
-/// A texture service that finds relative file names in `searchPath` (then
-/// the current folder) and reports unreadable files to `diagnostics` once each.
+/// A texture service that finds files as its TextureLocator says and reports
+/// unreadable ones to `diagnostics` once each.
 std::unique_ptr<TextureService> makeOiioTextures(Diagnostics& diagnostics);
 
 }  // namespace bxdflab

@@ -164,6 +164,14 @@ Param floatParam(std::string const& name, float value) {
     return p;
 }
 
+Param intParam(std::string const& name, int value) {
+    Param p;
+    p.decl.name = name;
+    p.decl.type = ParamType::Int;
+    p.ints = {value};
+    return p;
+}
+
 Param stringParam(std::string const& name, std::string const& value) {
     Param p;
     p.decl.name = name;

@@ -85,6 +85,8 @@ bool giveType(Param& param, ParamType type, int arraySize = 1);
 
 /// A "float <name>" parameter made by the renderer itself.
 Param floatParam(std::string const& name, float value);
+/// An "int <name>" parameter made by the renderer itself.
+Param intParam(std::string const& name, int value);
 /// A "string <name>" parameter made by the renderer itself.
 Param stringParam(std::string const& name, std::string const& value);
 

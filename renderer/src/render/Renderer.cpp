@@ -10,7 +10,6 @@
 #include <atomic>
 #include <chrono>
 #include <cstdio>
-#include <filesystem>
 #include <map>
 #include <mutex>
 #include <optional>
@@ -21,6 +20,7 @@
 #include "core/ImageFiles.h"
 #include "shade/BatchShader.h"
 #include "scene/Camera.h"
+#include "scene/PatternReach.h"
 #include "scene/lights/HeadLight.h"
 #include "shade/BxdfInstance.h"
 #include "shade/MemoryArena.h"
@@ -30,7 +30,6 @@
 #include "shade/StandInMaterials.h"
 
 namespace bxdflab {
-namespace fs = std::filesystem;
 namespace {
 
 using Clock = std::chrono::steady_clock;
@@ -166,15 +165,7 @@ struct Renderer::Impl {
 };
 
 void Renderer::Impl::loadPatterns(std::vector<MaterialDesc> const& usedMaterials) {
-    // Connections only point at earlier patterns, so one sweep from the last
-    // pattern to the first finds everything reachable.
-    std::vector<char> reached(scene.patterns.size(), 0);
-    auto reach = [&reached](std::map<std::string, Connection> const& connections) {
-        for (auto const& [name, link] : connections) reached[static_cast<size_t>(link.pattern)] = 1;
-    };
-    for (MaterialDesc const& material : usedMaterials) reach(material.connections);
-    for (size_t i = reached.size(); i-- > 0;)
-        if (reached[i]) reach(scene.patterns[i].connections);
+    std::vector<char> const reached = patternsReached(usedMaterials, scene.patterns);
 
     patterns.resize(scene.patterns.size());
     auto patternOf = [this](int index) -> PatternInstance const* { return patterns[static_cast<size_t>(index)].get(); };
@@ -205,11 +196,7 @@ void Renderer::Impl::loadPatterns(std::vector<MaterialDesc> const& usedMaterials
         patterns[i] = std::make_unique<PatternInstance>(desc, *plugin, patternOf, patternCounters, diagnostics);
         if (!textures) {
             textures = openTextures(diagnostics);
-            if (textures) {
-                std::vector<std::string> folders = scene.textureSearchPath;
-                if (!scene.file.empty()) folders.push_back(fs::path(scene.file).parent_path().string());
-                textures->setSearchPath(folders);
-            }
+            if (textures) textures->setLocator(scene.textureLocator());
         }
     }
     for (auto const& [name, absent] : missing)

@@ -2,6 +2,7 @@
 // materials (Bxdf statements), lights and shapes.
 #pragma once
 
+#include <filesystem>
 #include <map>
 #include <memory>
 #include <set>
@@ -10,6 +11,7 @@
 
 #include "core/Error.h"
 #include "core/Math.h"
+#include "core/TextureLocator.h"
 #include "parse/ParamList.h"
 #include "scene/lights/Light.h"
 #include "scene/shapes/Shape.h"
@@ -90,6 +92,8 @@ struct SceneOptions {
     IntegratorDesc integrator;
     std::vector<std::string> pluginSearchPath;  ///< from Option "searchpath" "rixplugin"
     std::vector<std::string> textureSearchPath; ///< from Option "searchpath" "texture" (then the RIB's folder)
+    /// What MakeTexture and MakeLatLongEnvironment made: texture name -> picture name.
+    std::map<std::string, std::string> madeTextures;
     int frame = -1;  ///< the FrameBegin number (-1: the file has no frames)
 };
 
@@ -103,6 +107,16 @@ struct Scene : SceneOptions {
     std::vector<std::unique_ptr<Light>> lights;
     /// Things dropped at load, e.g. "light 'fill' has zero intensity" (for the stats).
     std::vector<std::string> dropped;
+    /// Textures the scene names that were not found when it was read (and said so, with the RIB line).
+    std::set<std::string> missingTextures;
+
+    /// Where the files textures name are found: the texture search path, then the RIB's folder.
+    TextureLocator textureLocator() const {
+        TextureLocator locator{textureSearchPath, madeTextures, missingTextures};
+        std::string const folder = std::filesystem::path(file).parent_path().string();
+        if (!folder.empty()) locator.folders.push_back(folder);
+        return locator;
+    }
 };
 
 }  // namespace bxdflab

@@ -1,10 +1,12 @@
 #include "scene/SceneBuilder.h"
 
+#include <algorithm>
 #include <filesystem>
 
 #include "parse/RequestNames.h"
 #include "parse/RibParser.h"
 #include "parse/ZipMember.h"
+#include "scene/PatternReach.h"
 
 namespace bxdflab {
 namespace fs = std::filesystem;
@@ -69,6 +71,8 @@ std::map<std::string, SceneBuilder::Handler> const& SceneBuilder::handlers() {
         {"Bxdf", &SceneBuilder::bxdf},
         {"Pattern", &SceneBuilder::pattern},
         {"Surface", &SceneBuilder::surface},
+        {"MakeTexture", &SceneBuilder::makeTexture},
+        {"MakeLatLongEnvironment", &SceneBuilder::makeLatLongEnvironment},
         {"Light", &SceneBuilder::light},
         {"LightSource", &SceneBuilder::lightSource},
         {"AreaLightSource", &SceneBuilder::areaLightSource},
@@ -166,6 +170,14 @@ std::string SceneBuilder::currentDirectory() const {
     return parent.empty() ? "." : parent.string();
 }
 
+TextureLocator SceneBuilder::textures() const {
+    TextureLocator locator = m_scene.textureLocator();
+    std::string const here = currentDirectory();  // beside the file being read first
+    if (here != "." && std::find(locator.folders.begin(), locator.folders.end(), here) == locator.folders.end())
+        locator.folders.insert(locator.folders.begin(), here);
+    return locator;
+}
+
 void SceneBuilder::warnOnce(std::string const& kind, SourceLocation const& where, std::string const& message) {
     if (m_warnedKinds.insert(kind).second)
         m_diagnostics.warn(where, message);
@@ -260,6 +272,16 @@ void SceneBuilder::finishFrame() {
     ++m_framesDone;
     if (m_skipWorld) return;  // read, not built
     m_scene.frame = m_frameNumber;
+    // A texture a used PxrTexture names and that is not there, said with its RIB line.
+    std::vector<char> const reached = patternsReached(m_scene.materials, m_scene.patterns);
+    for (size_t i = 0; i < reached.size(); ++i) {
+        PatternDesc const& node = m_scene.patterns[i];
+        if (!reached[i] || node.plugin != "PxrTexture") continue;
+        for (Param const& p : node.params.all())
+            if (p.name() == "filename" && !p.decl.reference && !p.strings.empty())
+                checkTexture(p.strings[0], p.location, "Pattern \"PxrTexture\" \"" + node.handle + "\"",
+                             "its lookups return missingColor");
+    }
     // The classic shaders' ambient term sums every ambientlight of the world, wherever it was given.
     for (MaterialDesc& material : m_scene.materials)
         if (material.plugin == "ClassicSurface")

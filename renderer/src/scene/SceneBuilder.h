@@ -152,6 +152,15 @@ private:
     /// The connections of a parameter list's "reference" parameters, to the
     /// patterns declared so far (a located error for a handle not declared before).
     std::map<std::string, Connection> connectionsOf(ParamList const& params, std::string const& owner);
+    /// Gives a classic shader's texture map to `shader` through a pattern node that reads it.
+    void classicTexture(std::string const& file, SourceLocation const& where, MaterialDesc& shader);
+    /// A texture file the scene names: one that is not found is a missing file, said once
+    /// with what `owner` does without it (`consequence`).
+    void checkTexture(std::string const& file, SourceLocation const& where, std::string const& owner,
+                      std::string const& consequence);
+    /// MakeTexture, MakeLatLongEnvironment: the texture named is read from the picture.
+    void makeTexture(RequestReader& in);
+    void makeLatLongEnvironment(RequestReader& in);
     void surface(RequestReader& in);
     void light(RequestReader& in);
     void lightSource(RequestReader& in);
@@ -223,9 +232,13 @@ private:
     /// makes a new list instead of changing this one.
     void replay(std::string const& what, Recording requests, SourceLocation const& where);
 
+    /// Notes that `texture` is made from `picture` (MakeTexture and its kin).
+    void madeTexture(RequestReader& in, std::string const& picture, std::string const& texture);
     /// A file the scene names that is not there: an error with --strict, else a warning.
     void missingFile(SourceLocation const& where, std::string const& message);
     std::string currentDirectory() const;
+    /// Where an image a light names is found: beside the file being read, then as any texture.
+    TextureLocator textures() const;
     /// Warns once per request (or parameter) kind, counting the rest.
     void warnOnce(std::string const& kind, SourceLocation const& where, std::string const& message);
     Attributes& state() { return m_attributes.back(); }

@@ -13,7 +13,7 @@
 namespace bxdflab {
 
 std::unique_ptr<Light> makeLight(std::string const& type, ParamList const& params, Mat4 const& lightToWorld,
-                                 std::string const& baseDir, SourceLocation const& where, Diagnostics& diagnostics,
+                                 TextureLocator const& textures, SourceLocation const& where, Diagnostics& diagnostics,
                                  MissingFileReport const& missing) {
     std::unique_ptr<Light> light;
     if (type == "PxrDiskLight") {
@@ -30,14 +30,12 @@ std::unique_ptr<Light> makeLight(std::string const& type, ParamList const& param
             throw RibError(where, "PxrDistantLight: angleExtent must be between 0 and 180 degrees");
         light = std::make_unique<DistantLight>(lightToWorld, extent);
     } else if (type == "PxrDomeLight") {
-        std::string map = params.getString("lightColorMap", "");
-        if (!map.empty() && std::filesystem::path(map).is_relative())
-            map = (std::filesystem::path(baseDir) / map).string();
-        std::error_code lookup;  // a name the file system rejects (too long, ...) does not exist either
-        if (!map.empty() && !std::filesystem::exists(map, lookup)) {
-            missing(where, "PxrDomeLight: lightColorMap \"" + map + "\" does not exist (tried " + map + ")");
-            map.clear();  // RenderMan lights the scene with the plain colour then
-        }
+        std::string const written = params.getString("lightColorMap", "");
+        std::string map = textures.find(written).value_or("");
+        if (!written.empty() && map.empty())  // RenderMan lights the scene with the plain colour then
+            missing(where, "PxrDomeLight: lightColorMap \"" + written + "\" does not exist (looked for from " +
+                               textures.searchedPlaces() + ")");
+        std::error_code lookup;  // a name the file system rejects (too long, ...) is not a file either
         if (!map.empty() && !std::filesystem::is_regular_file(map, lookup))
             throw RibError(where, "PxrDomeLight: lightColorMap \"" + map + "\" is not a regular file");
         std::unique_ptr<DomeLight> dome;

@@ -5,6 +5,7 @@
 #include <memory>
 #include <string>
 
+#include "core/TextureLocator.h"
 #include "parse/ParamList.h"
 #include "scene/lights/Light.h"
 
@@ -14,11 +15,11 @@ namespace bxdflab {
 using MissingFileReport = std::function<void(SourceLocation const& where, std::string const& message)>;
 
 /// The light a `Light "<type>" ...` statement describes, or nullptr when the
-/// type is not one this renderer knows. `baseDir` resolves relative image
-/// paths; a missing image goes to `missing` (the light then has its plain
+/// type is not one this renderer knows. `textures` finds the images it
+/// names; a missing image goes to `missing` (the light then has its plain
 /// colour), other problems with it that do not stop the render are warned about.
 std::unique_ptr<Light> makeLight(std::string const& type, ParamList const& params, Mat4 const& lightToWorld,
-                                 std::string const& baseDir, SourceLocation const& where, Diagnostics& diagnostics,
+                                 TextureLocator const& textures, SourceLocation const& where, Diagnostics& diagnostics,
                                  MissingFileReport const& missing);
 
 /// The types of the RenderMan light parameters this renderer reads, as

@@ -1,10 +1,12 @@
 // Shading and lights: RIS Bxdfs and lights (Bxdf, Light), the classic
 // shaders of older RIB files (Surface, LightSource, Illuminate), and the
 // material a surface gets when it names none.
+#include <algorithm>
 #include <cmath>
 
 #include <filesystem>
 
+#include "core/Spelling.h"
 #include "scene/SceneBuilder.h"
 #include "scene/lights/InfiniteLights.h"
 #include "scene/lights/LightFactory.h"
@@ -12,11 +14,22 @@
 namespace bxdflab {
 namespace {
 
-/// The classic surface shaders this renderer gives their meaning (stock plugin ClassicSurface).
-bool isClassicSurface(std::string const& name) {
-    for (char const* known : {"constant", "matte", "plastic", "metal", "shinymetal", "paintedplastic"})
-        if (name == known) return true;
-    return false;
+namespace fs = std::filesystem;
+
+/// The classic surface shaders this renderer gives their meaning (stock
+/// plugin ClassicSurface), each with its parameters as the RenderMan
+/// Interface Specification lists them; null for any other shader.
+std::vector<std::string> const* classicSurfaceParameters(std::string const& shader) {
+    static const std::map<std::string, std::vector<std::string>> parameters = {
+        {"constant", {}},
+        {"matte", {"Ka", "Kd"}},
+        {"metal", {"Ka", "Ks", "roughness"}},
+        {"shinymetal", {"Ka", "Ks", "Kr", "roughness", "texturename"}},
+        {"plastic", {"Ka", "Kd", "Ks", "roughness", "specularcolor"}},
+        {"paintedplastic", {"Ka", "Kd", "Ks", "roughness", "specularcolor", "texturename"}},
+    };
+    auto found = parameters.find(shader);
+    return found == parameters.end() ? nullptr : &found->second;
 }
 
 }  // namespace
@@ -79,7 +92,8 @@ std::map<std::string, Connection> SceneBuilder::connectionsOf(ParamList const& p
 void SceneBuilder::surface(RequestReader& in) {
     std::string name = in.string("surface shader name");
     ParamList params = in.params();
-    if (!isClassicSurface(name)) {
+    std::vector<std::string> const* known = classicSurfaceParameters(name);
+    if (!known) {
         warnOnce("surface " + name, in.where(),
                  "Surface \"" + name + "\" is a shader this renderer does not have: its surfaces get the default "
                  "material (PxrDiffuse in the current Color)");
@@ -91,8 +105,96 @@ void SceneBuilder::surface(RequestReader& in) {
     shader->handle = name;
     shader->where = in.where();
     shader->params.add(stringParam("shader", name));
-    for (auto const& p : params.all()) shader->params.add(p);
+    std::string const owner = "Surface \"" + name + "\"";
+    for (Param const& p : params.all()) {
+        if (isRendererMetadata(p.name())) continue;
+        if (std::find(known->begin(), known->end(), p.name()) == known->end()) {
+            std::string list;
+            for (std::string const& k : *known) list += (list.empty() ? "" : ", ") + k;
+            std::string const meant = closestSpelling(p.name(), *known);
+            m_diagnostics.warn(p.location, owner + " has no parameter \"" + p.name() + "\"; ignored (" +
+                                               (meant.empty() ? "" : "did you mean \"" + meant + "\"? ") +
+                                               "its parameters: " + (list.empty() ? "none" : list) + ")");
+        } else if (name == "shinymetal" && (p.name() == "Kr" || p.name() == "texturename")) {
+            warnOnce("shinymetal reflection", p.location,
+                     "Surface \"shinymetal\": its reflection of an environment map (Kr, texturename) is not "
+                     "rendered; it shades as metal");
+        } else if (p.name() == "texturename") {
+            std::string const file = p.strings.empty() ? "" : p.strings[0];
+            if (!file.empty() && building()) classicTexture(file, p.location, *shader);
+        } else {
+            shader->params.add(p);
+        }
+    }
     state().surface = shader;
+}
+
+void SceneBuilder::classicTexture(std::string const& file, SourceLocation const& where, MaterialDesc& shader) {
+    // The classic texture(texturename) at the surface's s and t, as a PxrTexture
+    // node: its t runs down the image (t = 0 is the top row, invertT 0), and a
+    // file that cannot be read leaves the colour as it is (missingColor white).
+    PatternDesc node;
+    node.plugin = "PxrTexture";
+    node.handle = "texture \"" + file + "\"";
+    node.where = where;
+    node.params.add(stringParam("filename", file));
+    node.params.add(intParam("invertT", 0));
+    node.params.add(colorParam("missingColor", Vec3(1.0f)));
+    checkTexture(file, where, "Surface \"" + shader.handle + "\"", "the surface keeps its colour");
+    Param link;
+    link.decl.name = "textureColor";
+    link.decl.type = ParamType::Color;
+    link.decl.reference = true;
+    link.strings = {node.handle + ":resultRGB"};
+    link.fallback = {1.0f, 1.0f, 1.0f};  // where PxrTexture cannot be loaded: the untextured colour
+    link.location = where;
+    shader.params.add(link);
+    shader.connections["textureColor"] = {static_cast<int>(m_scene.patterns.size()), "resultRGB", where};
+    m_scene.patterns.push_back(std::move(node));
+}
+
+void SceneBuilder::checkTexture(std::string const& file, SourceLocation const& where, std::string const& owner,
+                                std::string const& consequence) {
+    // Said here, where the RIB line is known; the texture service then does not say it again.
+    TextureLocator const textures = m_scene.textureLocator();
+    if (file.empty() || textures.find(file) || !m_scene.missingTextures.insert(file).second) return;
+    missingFile(where, owner + ": texture \"" + file + "\" does not exist (looked for from " + textures.searchedPlaces() +
+                           "); " + consequence);
+}
+
+void SceneBuilder::makeTexture(RequestReader& in) {
+    std::string const picture = in.string("picture file name");
+    std::string const texture = in.string("texture file name");
+    in.string("s wrap mode");
+    in.string("t wrap mode");
+    in.string("filter name");
+    in.number("filter width in s");
+    in.number("filter width in t");
+    in.params();  // txmake's options ("resize", ...): the picture is read as it is
+    madeTexture(in, picture, texture);
+}
+
+void SceneBuilder::makeLatLongEnvironment(RequestReader& in) {
+    std::string const picture = in.string("picture file name");
+    std::string const texture = in.string("texture file name");
+    in.string("filter name");
+    in.number("filter width in s");
+    in.number("filter width in t");
+    in.params();
+    madeTexture(in, picture, texture);
+}
+
+void SceneBuilder::madeTexture(RequestReader& in, std::string const& picture, std::string const& texture) {
+    // RenderMan makes the texture file from the picture before it renders. Here
+    // the picture itself is read wherever the texture is named: OpenImageIO
+    // tiles, mip-maps and filters it as it would the texture file.
+    if (picture.empty() || texture.empty()) in.fail(in.where(), "a file name is empty");
+    // The picture as found from the file being read, when it is there (RenderMan
+    // looks from the folder it runs in, which is most often that one).
+    std::error_code lookup;
+    fs::path const beside = fs::path(currentDirectory()) / picture;
+    bool const found = fs::path(picture).is_relative() && fs::exists(beside, lookup);
+    m_scene.madeTextures[fs::path(texture).lexically_normal().string()] = found ? beside.string() : picture;
 }
 
 int SceneBuilder::classicMaterial() {
@@ -146,7 +248,7 @@ void SceneBuilder::makeLightFrom(std::string const& request, std::string const& 
                                  ParamList const& params, Mat4 const& lightToWorld, SourceLocation const& where) {
     std::unique_ptr<Light> light;
     if (request == "Light") {
-        light = makeLight(type, params, lightToWorld, currentDirectory(), where, m_diagnostics,
+        light = makeLight(type, params, lightToWorld, textures(), where, m_diagnostics,
                           [this](SourceLocation const& at, std::string const& message) { missingFile(at, message); });
         if (!light) {
             warnOnce("light " + type, where, unsupportedLightMessage(type));
@@ -266,7 +368,7 @@ bool SceneBuilder::shapeAsLight(char const* lightType, Mat4 const& lightToWorld,
                 if (!map->strings.empty() && !map->strings[0].empty()) params.add(stringParam("lightColorMap", map->strings[0]));
     }
     std::unique_ptr<Light> light =
-        makeLight(type, params, lightToWorld, currentDirectory(), area.where, m_diagnostics,
+        makeLight(type, params, lightToWorld, textures(), area.where, m_diagnostics,
                   [this](SourceLocation const& at, std::string const& message) { missingFile(at, message); });
     if (!light) return false;
     Vec3 radiance = area.radiance;
