@@ -76,4 +76,11 @@ TEST_CASE("PxrDefault lights an unlit scene with a headlight and samples no Bxdf
     // A white Lambertian facing the camera at the centre has radiance ~1 under the headlight.
     CHECK(r.channel(12, 12, 0) == Approx(1.0f).epsilon(0.02));
     CHECK(skipped(r.stats, "bxdf sampling"));
+    CHECK_FALSE(r.anyMessageContains("not used"));  // no lights to leave unused
+
+    // With lights of its own, the scene is still lit from the camera, and a note says how to use them.
+    auto lit = test::renderRib(sceneWith("Bxdf \"diffuse\" \"d\" \"color diffuseColor\" [1 1 1]", kDiskLight, ""));
+    CHECK(lit.channel(12, 12, 0) == Approx(r.channel(12, 12, 0)));
+    CHECK(lit.anyMessageContains("the scene names no Integrator, so PxrDefault lights it from the camera, as in "
+                                 "RenderMan, and its light is not used; Integrator \"PxrDirectLighting\""));
 }

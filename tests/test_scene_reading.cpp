@@ -140,6 +140,42 @@ TEST_CASE("a classic shader's parameters are its own: others are warned about by
     CHECK(scene.patterns.empty());              // no texture is read for shinymetal
 }
 
+TEST_CASE("Imager background and clamptoalpha, and PxrBackgroundDisplayFilter, finish each pixel", "[rib][film]") {
+    // A 4 x 4 view whose left half is a square glowing 3, whose right half is empty.
+    auto render = [](std::string const& imager) {
+        return test::renderRib("Format 4 4 1\nProjection \"orthographic\"\nScreenWindow -1 1 -1 1\n" + imager +
+                               "\nWorldBegin\nTranslate 0 0 5\nBxdf \"PxrConstant\" \"c\" \"color emitColor\" [3 2 1]\n"
+                               "Patch \"bilinear\" \"P\" [-1 1 0  0 1 0  -1 -1 0  0 -1 0]\nWorldEnd\n",
+                               test::withSpp(4));
+    };
+    auto pixel = [](test::RenderOutcome const& r, int x) {
+        return std::vector<float>{r.channel(x, 2, 0), r.channel(x, 2, 1), r.channel(x, 2, 2), r.channel(x, 2, 3)};
+    };
+    using V = std::vector<float>;
+    auto plain = render("");
+    CHECK(pixel(plain, 0) == V{3, 2, 1, 1});
+    CHECK(pixel(plain, 3) == V{0, 0, 0, 0});
+    // The specification's background: the colour under the image, alpha made 1.
+    auto classic = render("Imager \"background\" \"background\" [0.25 0.5 0.75]");
+    CHECK(pixel(classic, 0) == V{3, 2, 1, 1});
+    CHECK(pixel(classic, 3) == V{0.25f, 0.5f, 0.75f, 1});
+    CHECK(classic.messages.empty());
+    // RenderMan 21's form, with the background's alpha, and a script's "bgcolor".
+    CHECK(pixel(render("Imager \"background\" \"color color\" [0 0 0.5] \"float alpha\" [0]"), 3) == V{0, 0, 0.5f, 0});
+    CHECK(pixel(render("Imager \"background\" \"color bgcolor\" [1 0 0]"), 3) == V{1, 0, 0, 1});
+    // RenderMan's display filter keeps alpha as rendered.
+    auto filter = render("DisplayFilter \"PxrBackgroundDisplayFilter\" \"bg\" \"color backgroundColor\" [0 1 0]");
+    CHECK(pixel(filter, 3) == V{0, 1, 0, 0});
+    CHECK(pixel(filter, 0) == V{3, 2, 1, 1});
+    // clamptoalpha: no channel above alpha.
+    CHECK(pixel(render("Imager \"clamptoalpha\""), 0) == V{1, 1, 1, 1});
+    // Another imager or display filter: a warning, and the image as it is.
+    auto other = render("Imager \"vignette\" \"float radius\" [0.8]");
+    CHECK(pixel(other, 3) == V{0, 0, 0, 0});
+    CHECK(other.anyMessageContains("test.rib:4:1: Imager \"vignette\" is not an imager this renderer has"));
+    CHECK(render("DisplayFilter \"PxrEdgeDetect\" \"e\"").anyMessageContains("DisplayFilter \"PxrEdgeDetect\" is not one"));
+}
+
 TEST_CASE("a negative quadric radius turns the surface inside out", "[rib][geometry]") {
     Diagnostics diagnostics(false);
     Scene scene = test::parseRib("WorldBegin\nTranslate 0 0 5\nDisk 0 -1 360\n", diagnostics);

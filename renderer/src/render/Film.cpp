@@ -58,6 +58,7 @@ std::vector<float> Film::rgba() const {
             out[4 * i + static_cast<size_t>(c)] = static_cast<float>(p.sum[c] / p.count + splat);
         }
         out[4 * i + 3] = static_cast<float>(p.alpha / p.count);
+        m_finish.apply(&out[4 * i]);
     }
     return out;
 }

@@ -12,6 +12,7 @@
 
 #include "RiTypesHelper.h"
 #include "core/ImageFiles.h"
+#include "core/ImageFinish.h"
 #include "integrate/SplatTarget.h"
 
 namespace bxdflab {
@@ -21,7 +22,7 @@ public:
     Film(int width, int height);
     Film(Film&& other) noexcept
         : m_width(other.m_width), m_height(other.m_height), m_pixels(std::move(other.m_pixels)),
-          m_splats(std::move(other.m_splats)), m_splatPaths(other.m_splatPaths.load()) {}
+          m_splats(std::move(other.m_splats)), m_splatPaths(other.m_splatPaths.load()), m_finish(other.m_finish) {}
     int width() const override { return m_width; }
     int height() const override { return m_height; }
 
@@ -38,7 +39,9 @@ public:
     void addSplat(int x, int y, RtColorRGB const& value) override;
     void countSplatPaths(uint64_t paths) override { m_splatPaths.fetch_add(paths, std::memory_order_relaxed); }
 
-    /// Per-pixel mean as RGBA floats (row-major from the top left).
+    /// What rgba() does to each pixel last (a background, a clamp): the scene's Imager.
+    void setFinish(ImageFinish const& finish) { m_finish = finish; }
+    /// Per-pixel mean as RGBA floats (row-major from the top left), finished.
     std::vector<float> rgba() const;
     /// Per-pixel variance of the mean (sample variance / n) as RGB floats.
     std::vector<float> varianceOfMean() const;
@@ -54,6 +57,7 @@ private:
     std::vector<Pixel> m_pixels;
     std::shared_ptr<std::atomic<int64_t>[]> m_splats;  ///< 3 per pixel, in units of kSplatUnit
     std::atomic<uint64_t> m_splatPaths{0};
+    ImageFinish m_finish;
 };
 
 }  // namespace bxdflab

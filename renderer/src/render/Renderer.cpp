@@ -275,6 +275,17 @@ Renderer::Renderer(Scene& scene, RenderSettings settings, Diagnostics& diagnosti
     if (r.integrator->WantsHeadlight()) {
         r.headlight = std::make_unique<HeadLight>(r.camera->position());
         r.shadingLights.push_back(r.headlight.get());
+        // RenderMan does the same, silently; a file written for lights it no longer
+        // runs (classic LightSource shaders) would look lit from the camera without a word.
+        if (!scene.lights.empty()) {
+            std::string const unused = scene.lights.size() == 1 ? "its light is"
+                                                                : "its " + std::to_string(scene.lights.size()) + " lights are";
+            diagnostics.info((scene.integrator.given ? "Integrator \"" + scene.integrator.name + "\" lights"
+                                                     : std::string("the scene names no Integrator, so PxrDefault lights")) +
+                             " it from the camera, as in RenderMan, and " + unused +
+                             " not used; Integrator \"PxrDirectLighting\" \"d\" (or \"PxrPathTracer\") before WorldBegin "
+                             "renders with them");
+        }
     } else {
         for (auto const& light : scene.lights) r.shadingLights.push_back(light.get());
     }
@@ -417,6 +428,7 @@ Film Renderer::render() {
         *counter = 0;
     uint64_t const lookupsBefore = r.textures ? r.textures->lookups() : 0;
     Film film(r.scene.xres, r.scene.yres);
+    film.setFinish(r.scene.finish);
     if (r.integrator->WantsLightTracing()) film.enableSplats();
     int size = tileSizeFor(r.settings.tileSize, spp);
     int tilesX = (r.scene.xres + size - 1) / size, tilesY = (r.scene.yres + size - 1) / size;

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/Error.h"
+#include "core/ImageFinish.h"
 #include "core/Math.h"
 #include "core/TextureLocator.h"
 #include "parse/ParamList.h"
@@ -89,6 +90,7 @@ struct SceneOptions {
     int spp = 16;
     CameraDesc camera;
     DisplayDesc display;
+    ImageFinish finish;  ///< Imager and DisplayFilter
     IntegratorDesc integrator;
     std::vector<std::string> pluginSearchPath;  ///< from Option "searchpath" "rixplugin"
     std::vector<std::string> textureSearchPath; ///< from Option "searchpath" "texture" (then the RIB's folder)

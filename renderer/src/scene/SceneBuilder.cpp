@@ -32,6 +32,8 @@ std::map<std::string, SceneBuilder::Handler> const& SceneBuilder::handlers() {
         {"ScreenWindow", &SceneBuilder::screenWindow},
         {"PixelSamples", &SceneBuilder::pixelSamples},
         {"Hider", &SceneBuilder::hider},
+        {"Imager", &SceneBuilder::imager},
+        {"DisplayFilter", &SceneBuilder::displayFilter},
         {"Integrator", &SceneBuilder::integrator},
         {"Option", &SceneBuilder::option},
         {"Declare", &SceneBuilder::declare},

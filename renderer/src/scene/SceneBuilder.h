@@ -90,6 +90,8 @@ private:
     void setScreenWindow(std::vector<float> const& window);
     void pixelSamples(RequestReader& in);
     void hider(RequestReader& in);
+    void imager(RequestReader& in);
+    void displayFilter(RequestReader& in);
     void integrator(RequestReader& in);
     void option(RequestReader& in);
     /// Option "Ri": the camera and image requests as RenderMan 21+ writes them.

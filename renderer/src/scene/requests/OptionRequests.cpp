@@ -168,6 +168,57 @@ void SceneBuilder::hider(RequestReader& in) {
     for (auto const& p : params.all()) p.used = true;  // adaptive sampling, jitter, photon emission: not modelled
 }
 
+void SceneBuilder::imager(RequestReader& in) {
+    // One imager at a time: the last Imager line wins; "null" or "" turns it off.
+    std::string const name = in.string("imager shader name");
+    ParamList params = in.params();
+    ImageFinish& finish = m_scene.finish;
+    finish.clampToAlpha = false;
+    finish.overBackground = false;
+    std::string const owner = "Imager \"" + name + "\"";
+    if (name == "background") {
+        // The colour goes by different names: the RenderMan Interface Specification's
+        // "background", RenderMan 21's "color", and "bgcolor" in many scripts.
+        params.typeUntyped({{"background", ParamType::Color}, {"color", ParamType::Color}, {"bgcolor", ParamType::Color},
+                            {"alpha", ParamType::Float}},
+                           owner);
+        finish.overBackground = true;
+        finish.background = Vec3(1.0f);  // the specification's default
+        for (char const* colorName : {"background", "color", "bgcolor"})
+            if (params.take(colorName)) finish.background = params.getColor(colorName, finish.background);
+        finish.backgroundAlpha = params.take("alpha") ? params.getFloat("alpha", 1.0f) : 1.0f;
+        params.warnUnused(m_diagnostics, owner);
+    } else if (name == "clamptoalpha") {
+        finish.clampToAlpha = true;
+        params.warnUnused(m_diagnostics, owner);
+    } else if (name != "null" && !name.empty()) {
+        for (Param const& p : params.all()) p.used = true;
+        warnOnce("imager " + name, in.where(),
+                 owner + " is not an imager this renderer has (it has \"background\" and \"clamptoalpha\"); skipped");
+    }
+}
+
+void SceneBuilder::displayFilter(RequestReader& in) {
+    std::string const name = in.string("display filter plugin name");
+    in.string("display filter handle");
+    ParamList params = in.params();
+    if (name != "PxrBackgroundDisplayFilter") {
+        for (Param const& p : params.all()) p.used = true;
+        warnOnce("display filter " + name, in.where(),
+                 "DisplayFilter \"" + name + "\" is not one this renderer has (it has PxrBackgroundDisplayFilter); skipped");
+        return;
+    }
+    // Composes the image over a colour; alpha is left as rendered.
+    std::string const owner = "DisplayFilter \"" + name + "\"";
+    params.typeUntyped({{"backgroundColor", ParamType::Color}}, owner);
+    ImageFinish& finish = m_scene.finish;
+    finish.overBackground = true;
+    finish.background = params.getColor("backgroundColor", Vec3(0.0f));
+    params.take("backgroundColor");
+    finish.backgroundAlpha = 0.0f;
+    params.warnUnused(m_diagnostics, owner);
+}
+
 void SceneBuilder::integrator(RequestReader& in) {
     // The last Integrator line wins, as in RenderMan.
     m_scene.integrator.name = in.string("integrator name");
