@@ -174,6 +174,12 @@ TEST_CASE("Imager background and clamptoalpha, and PxrBackgroundDisplayFilter, f
     CHECK(pixel(other, 3) == V{0, 0, 0, 0});
     CHECK(other.anyMessageContains("test.rib:4:1: Imager \"vignette\" is not an imager this renderer has"));
     CHECK(render("DisplayFilter \"PxrEdgeDetect\" \"e\"").anyMessageContains("DisplayFilter \"PxrEdgeDetect\" is not one"));
+    // Exposure gain gamma, after the imager: (gain c)^(1/gamma).
+    V const exposed = pixel(render("Imager \"clamptoalpha\"\nExposure 0.5 2"), 0);
+    CHECK(exposed[0] == Approx(std::sqrt(0.5f)));
+    CHECK(exposed[3] == 1.0f);
+    CHECK(pixel(render("Exposure 2 1"), 0) == V{6, 4, 2, 1});
+    CHECK_THROWS_WITH(render("Exposure 1 0"), Catch::Matchers::Contains("test.rib:4:1: Exposure: the gamma must be more than 0"));
 }
 
 TEST_CASE("a negative quadric radius turns the surface inside out", "[rib][geometry]") {

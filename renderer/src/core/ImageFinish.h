@@ -1,9 +1,11 @@
-// What is done to each finished pixel before the image is written: the
-// classic imagers `Imager "background"` and `Imager "clamptoalpha"`, and
-// RenderMan's `DisplayFilter "PxrBackgroundDisplayFilter"`.
+// What is done to each finished pixel before the image is written, in the
+// order the RenderMan Interface Specification gives: the imager (`Imager
+// "background"` or `"clamptoalpha"`, or RenderMan's `DisplayFilter
+// "PxrBackgroundDisplayFilter"`), then `Exposure gain gamma`.
 #pragma once
 
 #include <algorithm>
+#include <cmath>
 
 #include "core/Math.h"
 
@@ -16,6 +18,8 @@ struct ImageFinish {
     float backgroundAlpha = 0.0f;
     /// No colour channel above the pixel's alpha (nor below 0).
     bool clampToAlpha = false;
+    /// Exposure: each colour channel c becomes (gain c)^(1 / gamma).
+    float exposureGain = 1.0f, exposureGamma = 1.0f;
 
     /// Applies the finish to one pixel's RGBA.
     void apply(float* rgba) const {
@@ -26,6 +30,9 @@ struct ImageFinish {
         }
         if (clampToAlpha)
             for (int c = 0; c < 3; ++c) rgba[c] = std::min(std::max(rgba[c], 0.0f), rgba[3]);
+        if (exposureGain != 1.0f || exposureGamma != 1.0f)
+            for (int c = 0; c < 3; ++c)
+                rgba[c] = rgba[c] > 0.0f ? std::pow(exposureGain * rgba[c], 1.0f / exposureGamma) : exposureGain * rgba[c];
     }
 };
 

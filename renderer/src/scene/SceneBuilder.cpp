@@ -33,6 +33,7 @@ std::map<std::string, SceneBuilder::Handler> const& SceneBuilder::handlers() {
         {"PixelSamples", &SceneBuilder::pixelSamples},
         {"Hider", &SceneBuilder::hider},
         {"Imager", &SceneBuilder::imager},
+        {"Exposure", &SceneBuilder::exposure},
         {"DisplayFilter", &SceneBuilder::displayFilter},
         {"Integrator", &SceneBuilder::integrator},
         {"Option", &SceneBuilder::option},

@@ -91,6 +91,7 @@ private:
     void pixelSamples(RequestReader& in);
     void hider(RequestReader& in);
     void imager(RequestReader& in);
+    void exposure(RequestReader& in);
     void displayFilter(RequestReader& in);
     void integrator(RequestReader& in);
     void option(RequestReader& in);

@@ -198,6 +198,16 @@ void SceneBuilder::imager(RequestReader& in) {
     }
 }
 
+void SceneBuilder::exposure(RequestReader& in) {
+    float const gain = in.number("gain");
+    float const gamma = in.number("gamma");
+    in.finish();
+    if (!(gain >= 0.0f) || !std::isfinite(gain)) in.fail(in.where(), "the gain must be 0 or more");
+    if (!(gamma > 0.0f) || !std::isfinite(gamma)) in.fail(in.where(), "the gamma must be more than 0");
+    m_scene.finish.exposureGain = gain;
+    m_scene.finish.exposureGamma = gamma;
+}
+
 void SceneBuilder::displayFilter(RequestReader& in) {
     std::string const name = in.string("display filter plugin name");
     in.string("display filter handle");
