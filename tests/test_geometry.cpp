@@ -3,6 +3,7 @@
 // differences and closed forms.
 #include <catch2/catch.hpp>
 
+#include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
 #include <memory>
 #include <vector>
@@ -181,7 +182,8 @@ TEST_CASE("bilinear patch and teapot tessellate with exact derivatives", "[geome
 }
 
 TEST_CASE("cone, paraboloid and hyperboloid: RI derivatives and outward normals", "[geometry]") {
-    Scene scene = sceneWith("Cone 2 1 300\nParaboloid 1 0.2 2 360\nHyperboloid 1 0 0.5 0.5 1 -0.5 270");
+    Scene scene = sceneWith("Cone 2 1 300\nParaboloid 1 0.2 2 360\nHyperboloid 1 0 0.5 0.5 1 -0.5 270\n"
+                            "Hyperboloid 0.2 0 1  1 0.3 1  300");
     for (size_t k = 0; k < scene.shapes.size(); ++k) {
         CAPTURE(scene.shapes[k]->kind());
         auto const& q = dynamic_cast<Quadric const&>(*scene.shapes[k]);
@@ -195,6 +197,45 @@ TEST_CASE("cone, paraboloid and hyperboloid: RI derivatives and outward normals"
     REQUIRE(side.hit());
     CHECK(side.t == Approx(5.0f - 0.75f).epsilon(1e-4));
     CHECK(cone.shapes[0]->basics(side).Ng.x > 0.0f);
+}
+
+TEST_CASE("a hyperboloid with both points at one height is a flat ring", "[geometry]") {
+    // From the axis out to radius 1: the surface of Disk 0 1 360, with the same u. Its v runs
+    // out from the axis where the disk's runs in from the rim, so dPdu x dPdv points down.
+    Scene flat = sceneWith("Hyperboloid 0 0 0  1 0 0  360");
+    Scene disk = sceneWith("Disk 0 1 360");
+    REQUIRE(flat.shapes.size() == 1u);
+    RayTracer flatTracer(flat), diskTracer(disk);
+    int hits = 0;
+    for (float x = -1.2f; x <= 1.2f; x += 0.15f)
+        for (float y = -1.2f; y <= 1.2f; y += 0.15f) {
+            Vec3 const org(x, y, 3.0f), dir(0.1f, -0.05f, -1.0f);
+            HitRecord a = trace(flatTracer, org, dir), b = trace(diskTracer, org, dir);
+            REQUIRE(a.hit() == b.hit());
+            if (!a.hit()) continue;
+            ++hits;
+            CHECK(a.t == Approx(b.t).epsilon(1e-5));
+            SurfaceBasics sa = flat.shapes[0]->basics(a), sb = disk.shapes[0]->basics(b);
+            CHECK(sa.Ng.z == Approx(-sb.Ng.z));
+            CHECK(sa.u == Approx(sb.u).margin(1e-4));
+            CHECK(sa.v == Approx(1.0f - sb.v).margin(1e-4));
+        }
+    CHECK(hits > 100);
+    // A ring from 0.5 to 1, a quarter of it: only those points.
+    Scene ring = sceneWith("Hyperboloid 0.5 0 2  1 0 2  90");
+    RayTracer ringTracer(ring);
+    auto hitsAt = [&](float x, float y) { return trace(ringTracer, Vec3(x, y, 5.0f), Vec3(0, 0, -1)).hit(); };
+    CHECK(hitsAt(0.5f, 0.5f));
+    CHECK_FALSE(hitsAt(0.3f, 0.3f));   // inside the hole
+    CHECK_FALSE(hitsAt(-0.5f, 0.5f));  // outside the quarter
+    CHECK_FALSE(hitsAt(0.9f, 0.9f));   // beyond the rim
+    HitRecord at = trace(ringTracer, Vec3(0.75f * std::cos(0.5f), 0.75f * std::sin(0.5f), 5.0f), Vec3(0, 0, -1));
+    REQUIRE(at.hit());
+    CHECK(at.t == Approx(3.0f));
+    SurfaceBasics const atRing = ring.shapes[0]->basics(at);
+    CHECK(atRing.u == Approx(0.5f / (0.5f * kPi)).epsilon(1e-4));
+    CHECK(atRing.v == Approx(0.5f).epsilon(1e-4));
+    CHECK(atRing.Ng.z == Approx(-1.0f));  // dPdu x dPdv, as for the ring above
 }
 
 TEST_CASE("shadow rays traced as a stream answer as one at a time", "[geometry]") {

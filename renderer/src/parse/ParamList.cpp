@@ -320,9 +320,11 @@ std::vector<int> const* ParamList::getInts(std::string const& name) const {
     return &p->ints;
 }
 
-void ParamList::warnUnused(Diagnostics& diagnostics, std::string const& owner) const {
+void ParamList::warnUnused(Diagnostics& diagnostics, std::string const& owner,
+                           std::function<bool(std::string const& name)> const& firstTime) const {
     for (auto const& p : m_params) {
         if (p.used || isRendererMetadata(p.name())) continue;
+        if (firstTime && !firstTime(p.name())) continue;
         if (p.decl.untyped)
             diagnostics.warn(p.location, owner + ": parameter \"" + p.name() +
                                              "\" has no type and is not a standard name; ignored");

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cmath>
+#include <functional>
 #include <map>
 #include <string>
 #include <vector>
@@ -126,7 +127,10 @@ public:
     /// options), and for each untyped one that is not a standard name; a
     /// name a reader asked for in vain that is a letter or two away is
     /// offered ("did you mean ...?").
-    void warnUnused(Diagnostics& diagnostics, std::string const& owner) const;
+    /// With `firstTime`, a parameter is warned about only when firstTime(its name)
+    /// is true (a caller that warns once per name across many statements).
+    void warnUnused(Diagnostics& diagnostics, std::string const& owner,
+                    std::function<bool(std::string const& name)> const& firstTime = {}) const;
 
 private:
     Param const& expect(Param const& p, std::initializer_list<ParamType> types, size_t count) const;

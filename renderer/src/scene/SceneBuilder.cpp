@@ -182,10 +182,13 @@ TextureLocator SceneBuilder::textures() const {
 }
 
 void SceneBuilder::warnOnce(std::string const& kind, SourceLocation const& where, std::string const& message) {
-    if (m_warnedKinds.insert(kind).second)
-        m_diagnostics.warn(where, message);
-    else
-        ++m_repeatedWarnings;
+    if (firstOfKind(kind)) m_diagnostics.warn(where, message);
+}
+
+bool SceneBuilder::firstOfKind(std::string const& kind) {
+    if (m_warnedKinds.insert(kind).second) return true;
+    ++m_repeatedWarnings;
+    return false;
 }
 
 void SceneBuilder::missingFile(SourceLocation const& where, std::string const& message) {

@@ -244,6 +244,8 @@ private:
     TextureLocator textures() const;
     /// Warns once per request (or parameter) kind, counting the rest.
     void warnOnce(std::string const& kind, SourceLocation const& where, std::string const& message);
+    /// True the first time `kind` is asked about; later times are counted as repeated warnings.
+    bool firstOfKind(std::string const& kind);
     Attributes& state() { return m_attributes.back(); }
     /// Whether the world being read is kept (a frame not asked for is read, not built).
     bool building() const { return !m_skipWorld; }

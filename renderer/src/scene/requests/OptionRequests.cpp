@@ -281,7 +281,7 @@ void SceneBuilder::option(RequestReader& in) {
                 continue;  // the built-in default is always searched last
             } else {
                 fs::path path(item);
-                add(path.is_relative() ? (fs::path(currentDirectory()) / path).string() : item);
+                add(path.is_relative() ? (fs::path(currentDirectory()) / path).lexically_normal().string() : item);
             }
         }
     };

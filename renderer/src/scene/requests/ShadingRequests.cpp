@@ -254,7 +254,10 @@ void SceneBuilder::makeLightFrom(std::string const& request, std::string const& 
             warnOnce("light " + type, where, unsupportedLightMessage(type));
             return;
         }
-        params.warnUnused(m_diagnostics, type + " \"" + handle + "\"");
+        // Exporters write every parameter of every light: each unused name is said once.
+        params.warnUnused(m_diagnostics, type + " \"" + handle + "\"", [&](std::string const& name) {
+            return firstOfKind("light " + type + " parameter " + name);
+        });
     } else {
         bool guessed = false;
         std::string leftOut;

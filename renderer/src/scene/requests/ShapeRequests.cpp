@@ -169,8 +169,8 @@ void SceneBuilder::hyperboloid(RequestReader& in) {
     ParamList params = in.params();
     PrimvarSet vars = shapePrimvars(params, 4);
     params.warnUnused(m_diagnostics, "Hyperboloid");
-    if (v[2] == v[5]) {
-        warnOnce("flat hyperboloid", in.where(), "Hyperboloid with both points at the same height is not supported; skipped");
+    if (v[2] == v[5] && v[0] == v[3] && v[1] == v[4]) {
+        warnOnce("point hyperboloid", in.where(), "Hyperboloid with both points the same describes no surface; skipped");
         return;
     }
     addShape(std::make_unique<Hyperboloid>(Vec3(v[0], v[1], v[2]), Vec3(v[3], v[4], v[5]), v[6], state().transform,

@@ -20,6 +20,7 @@ std::optional<Quadric::LocalHit> Hyperboloid::intersectLocal(DVec3 const& o, DVe
     // surface where x(t)^2 + y(t)^2 = r2(v(t)): a quadratic in t.
     DVec3 e = m_p2 - m_p1;
     double A = e.x * e.x + e.y * e.y, B = 2.0 * (m_p1.x * e.x + m_p1.y * e.y), C = m_p1.x * m_p1.x + m_p1.y * m_p1.y;
+    if (e.z == 0.0) return intersectFlat(o, d, tnear, tfar, A, B, C);
     double v0 = (o.z - m_p1.z) / e.z, vd = d.z / e.z;
     double a = d.x * d.x + d.y * d.y - A * vd * vd;
     double b = 2.0 * (o.x * d.x + o.y * d.y) - 2.0 * A * v0 * vd - B * vd;
@@ -37,6 +38,28 @@ std::optional<Quadric::LocalHit> Hyperboloid::intersectLocal(DVec3 const& o, DVe
     });
 }
 
+std::optional<Quadric::LocalHit> Hyperboloid::intersectFlat(DVec3 const& o, DVec3 const& d, double tnear, double tfar,
+                                                             double A, double B, double C) const {
+    // Both points at one height: the swept line is a ring in the plane z = p1.z.
+    // The ray meets the plane once; the point is on the ring where its squared
+    // distance from the axis is r2(v) = A v^2 + B v + C for some v in [0, 1].
+    if (d.z == 0.0 || A == 0.0) return std::nullopt;
+    double const t = (m_p1.z - o.z) / d.z;
+    return firstRoot(t, t, tnear, tfar, [&](double at) -> std::optional<Uv> {
+        DVec3 p = o + at * d;
+        double v0, v1;
+        if (!solveQuadratic(A, B, C - (p.x * p.x + p.y * p.y), v0, v1)) return std::nullopt;
+        for (double v : {v0, v1}) {
+            if (v < 0.0 || v > 1.0) continue;
+            DVec3 line = m_p1 + v * (m_p2 - m_p1);
+            double phi = azimuth(p.x, p.y) - azimuth(line.x, line.y);
+            if (phi < 0.0) phi += kTwoPi;
+            if (std::optional<Uv> uv = swept(phi, v)) return uv;
+        }
+        return std::nullopt;
+    });
+}
+
 Quadric::LocalSurface Hyperboloid::surfaceLocal(float u, float v) const {
     double phi = u * phiMax(), cosPhi = std::cos(phi), sinPhi = std::sin(phi);
     DVec3 line = m_p1 + static_cast<double>(v) * (m_p2 - m_p1);
@@ -47,7 +70,8 @@ Quadric::LocalSurface Hyperboloid::surfaceLocal(float u, float v) const {
     s.dPdu = sweepTangent(p);
     s.dPdv = Vec3(DVec3(e.x * cosPhi - e.y * sinPhi, e.x * sinPhi + e.y * cosPhi, e.z));
     Vec3 n = glm::cross(s.dPdu, s.dPdv);
-    if (glm::length(n) < 1e-12f) n = Vec3(float(cosPhi), float(sinPhi), 0.0f);  // on the axis
+    if (glm::length(n) < 1e-12f)  // on the axis, where the sweep does not move: its direction instead
+        n = e.z == 0.0 ? glm::cross(Vec3(float(-sinPhi), float(cosPhi), 0.0f), s.dPdv) : Vec3(float(cosPhi), float(sinPhi), 0.0f);
     s.N = safeNormalize(n);
     return s;
 }
