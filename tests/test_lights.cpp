@@ -120,6 +120,29 @@ TEST_CASE("classic light shaders: pointlight, spotlight and distantlight light w
                                                 "the same point, so the light has no direction; it is left out") == 1);
 }
 
+TEST_CASE("a light shader this renderer does not have is placed by its name, then by its parameters", "[lights]") {
+    auto kindOf = [](std::string const& lightSource, bool known = false) {
+        Diagnostics diagnostics(false);
+        Scene scene = test::parseRib("WorldBegin\n" + lightSource + "\n", diagnostics);
+        CHECK(test::warningsContaining(diagnostics, "is a shader this renderer does not have; it is rendered as the") ==
+              (known ? 0 : 1));
+        return scene.lights.size() == 1u ? std::string(scene.lights[0]->kind()) : std::string("none");
+    };
+    std::string const fromTo = " 1 \"from\" [0 0 0] \"to\" [0 0 1]";
+    std::string const distant = kindOf("LightSource \"distantlight\"" + fromTo, true);
+    std::string const spot = kindOf("LightSource \"spotlight\"" + fromTo, true);
+    std::string const point = kindOf("LightSource \"pointlight\" 1 \"from\" [0 0 0]", true);
+    CHECK(distant != spot);
+    CHECK(spot != point);
+    CHECK(kindOf("LightSource \"RMsoftDistant\"" + fromTo) == distant);  // MayaMan's soft-shadowed distant light
+    CHECK(kindOf("LightSource \"mySpot\"" + fromTo) == spot);
+    CHECK(kindOf("LightSource \"sunlight\"" + fromTo) == distant);
+    CHECK(kindOf("LightSource \"omniLight\"" + fromTo) == point);
+    CHECK(kindOf("LightSource \"key\"" + fromTo + " \"coneangle\" [0.5]") == spot);
+    CHECK(kindOf("LightSource \"key\"" + fromTo) == distant);  // a "to" and no cone: a direction
+    CHECK(kindOf("LightSource \"key\" 1 \"from\" [0 0 0]") == point);
+}
+
 TEST_CASE("a light given before WorldBegin is placed in camera space", "[lights]") {
     // A headlight-like pointlight at the camera, then the camera moves back by 3: the light moves with it.
     std::string rib = "Format 8 8 1\nProjection \"orthographic\"\nScreenWindow -0.01 0.01 -0.01 0.01\n"

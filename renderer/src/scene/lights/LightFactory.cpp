@@ -1,5 +1,7 @@
 #include "scene/lights/LightFactory.h"
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <map>
@@ -151,7 +153,19 @@ std::unique_ptr<Light> makeClassicLight(std::string const& shader, ParamList con
             hasTo = hasTo || p.name() == "to";
             hasCone = hasCone || p.name() == "coneangle";
         }
-        kind = hasCone ? "spotlight" : hasFrom ? "pointlight" : hasTo ? "distantlight" : "";
+        // The shader's name says what it is more often than its parameters do
+        // (MayaMan's "RMsoftDistant" has "from" and "to", as a spotlight would).
+        std::string name = shader;
+        std::transform(name.begin(), name.end(), name.begin(), [](unsigned char c) { return std::tolower(c); });
+        auto named = [&name](char const* word) { return name.find(word) != std::string::npos; };
+        if (hasCone || named("spot"))
+            kind = "spotlight";
+        else if (named("distant") || named("direction") || named("sun"))
+            kind = "distantlight";
+        else if (named("point") || named("omni"))
+            kind = "pointlight";
+        else  // a "to" without a cone points a distant light; "from" alone places a point
+            kind = hasTo ? "distantlight" : hasFrom ? "pointlight" : "";
         if (kind.empty()) return nullptr;
     }
     Vec3 worldFrom = transformPoint(lightToWorld, from), worldTo = transformPoint(lightToWorld, to);

@@ -35,9 +35,10 @@ Vec3 risLightRadiance(std::string const& type, ParamList const& params, SourceLo
 /// The classic light shaders of a LightSource request: "pointlight",
 /// "spotlight" and "distantlight" become lights; "ambientlight" adds its
 /// colour to `ambient` (the classic surface shaders' Ka term) and makes no
-/// light. Another shader name is placed by its parameters when they say
-/// enough (a cone: a spot; "from": a point; "to": a distant light); else
-/// nullptr. `guessed` tells the caller that it was placed that way. A light
+/// light. Another shader is placed by its name when it says spot, distant
+/// (direction, sun) or point (omni), else by its parameters when they say
+/// enough (a cone: a spot; "to": a distant light; "from" alone: a point);
+/// else nullptr. `guessed` tells the caller that it was placed that way. A light
 /// that cannot shine (a distant light whose "from" and "to" coincide, so it
 /// has no direction) is also nullptr, with the reason in `leftOut`: the file
 /// still renders, as it does in RenderMan, where such a light adds nothing.
