@@ -148,34 +148,38 @@ size_t Param::count() const {
     return floats.size() / static_cast<size_t>(componentsOf(decl.type));
 }
 
-Param colorParam(std::string const& name, Vec3 const& value) {
+namespace {
+
+/// A parameter the renderer makes itself (no source location): its name and type, values to come.
+Param madeParam(std::string const& name, ParamType type) {
     Param p;
     p.decl.name = name;
-    p.decl.type = ParamType::Color;
+    p.decl.type = type;
+    return p;
+}
+
+}  // namespace
+
+Param colorParam(std::string const& name, Vec3 const& value) {
+    Param p = madeParam(name, ParamType::Color);
     p.floats = {value.x, value.y, value.z};
     return p;
 }
 
 Param floatParam(std::string const& name, float value) {
-    Param p;
-    p.decl.name = name;
-    p.decl.type = ParamType::Float;
+    Param p = madeParam(name, ParamType::Float);
     p.floats = {value};
     return p;
 }
 
 Param intParam(std::string const& name, int value) {
-    Param p;
-    p.decl.name = name;
-    p.decl.type = ParamType::Int;
+    Param p = madeParam(name, ParamType::Int);
     p.ints = {value};
     return p;
 }
 
 Param stringParam(std::string const& name, std::string const& value) {
-    Param p;
-    p.decl.name = name;
-    p.decl.type = ParamType::String;
+    Param p = madeParam(name, ParamType::String);
     p.strings = {value};
     return p;
 }

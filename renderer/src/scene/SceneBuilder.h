@@ -235,8 +235,8 @@ private:
     /// makes a new list instead of changing this one.
     void replay(std::string const& what, Recording requests, SourceLocation const& where);
 
-    /// Notes that `texture` is made from `picture` (MakeTexture and its kin).
-    void madeTexture(RequestReader& in, std::string const& picture, std::string const& texture);
+    /// Notes the texture a MakeTexture (with `wrapModes`) or MakeLatLongEnvironment makes, and from what.
+    void madeTexture(RequestReader& in, bool wrapModes);
     /// A file the scene names that is not there: an error with --strict, else a warning.
     void missingFile(SourceLocation const& where, std::string const& message);
     std::string currentDirectory() const;

@@ -162,32 +162,24 @@ void SceneBuilder::checkTexture(std::string const& file, SourceLocation const& w
                            "); " + consequence);
 }
 
-void SceneBuilder::makeTexture(RequestReader& in) {
+void SceneBuilder::makeTexture(RequestReader& in) { madeTexture(in, true); }
+
+void SceneBuilder::makeLatLongEnvironment(RequestReader& in) { madeTexture(in, false); }
+
+void SceneBuilder::madeTexture(RequestReader& in, bool wrapModes) {
+    // RenderMan makes the texture file from the picture before it renders. Here
+    // the picture itself is read wherever the texture is named: OpenImageIO
+    // tiles, mip-maps and filters it as it would the texture file.
     std::string const picture = in.string("picture file name");
     std::string const texture = in.string("texture file name");
-    in.string("s wrap mode");
-    in.string("t wrap mode");
+    if (wrapModes) {  // MakeTexture's; an environment wraps around by itself
+        in.string("s wrap mode");
+        in.string("t wrap mode");
+    }
     in.string("filter name");
     in.number("filter width in s");
     in.number("filter width in t");
     in.params();  // txmake's options ("resize", ...): the picture is read as it is
-    madeTexture(in, picture, texture);
-}
-
-void SceneBuilder::makeLatLongEnvironment(RequestReader& in) {
-    std::string const picture = in.string("picture file name");
-    std::string const texture = in.string("texture file name");
-    in.string("filter name");
-    in.number("filter width in s");
-    in.number("filter width in t");
-    in.params();
-    madeTexture(in, picture, texture);
-}
-
-void SceneBuilder::madeTexture(RequestReader& in, std::string const& picture, std::string const& texture) {
-    // RenderMan makes the texture file from the picture before it renders. Here
-    // the picture itself is read wherever the texture is named: OpenImageIO
-    // tiles, mip-maps and filters it as it would the texture file.
     if (picture.empty() || texture.empty()) in.fail(in.where(), "a file name is empty");
     // The picture as found from the file being read, when it is there (RenderMan
     // looks from the folder it runs in, which is most often that one).
