@@ -182,6 +182,59 @@ TEST_CASE("Imager background and clamptoalpha, and PxrBackgroundDisplayFilter, f
     CHECK_THROWS_WITH(render("Exposure 1 0"), Catch::Matchers::Contains("test.rib:4:1: Exposure: the gamma must be more than 0"));
 }
 
+TEST_CASE("DepthOfField: a thin lens blurs a point by its circle of confusion, and keeps the focal plane sharp",
+          "[rib][camera]") {
+    // A small glowing square (2.4 pixels wide at depth 20) on the axis at depth z, seen by a
+    // 64 x 64 camera with a 30 degree view; some 1,500 of the samples hit it.
+    auto render = [](std::string const& camera, float z, std::string const& integrator = "") {
+        std::ostringstream rib;
+        rib << "Format 64 64 1\nProjection \"perspective\" \"fov\" [30]\n" << camera << "\n" << integrator
+            << "\nWorldBegin\nBxdf \"PxrConstant\" \"c\" \"color emitColor\" [1 1 1]\nTranslate 0 0 " << z
+            << "\nPolygon \"P\" [-0.2 -0.2 0  0.2 -0.2 0  0.2 0.2 0  -0.2 0.2 0]\nWorldEnd\n";
+        return test::renderRib(rib.str(), test::withSpp(256));
+    };
+    // The image's total, and the variance of x over it (pixels squared).
+    auto spread = [](test::RenderOutcome const& r) {
+        double total = 0.0, sumX = 0.0, sumXX = 0.0;
+        for (int y = 0; y < r.height; ++y)
+            for (int x = 0; x < r.width; ++x) {
+                double const w = r.channel(x, y, 0), px = x + 0.5;
+                total += w;
+                sumX += w * px;
+                sumXX += w * px * px;
+            }
+        double const mean = sumX / total;
+        return std::pair<double, double>{total, sumXX / total - mean * mean};
+    };
+    // Lens diameter A = 0.5 / 1; sharp at depth 5. A point at depth 20 spreads over a disc of
+    // diameter A |20 - 5| / (20 5) on the plane z = 1, whose variance along x is radius^2 / 4.
+    double const pixel = 2.0 * std::tan(glm::radians(15.0)) / 64.0;
+    double const radius = 0.5 * (0.5 * 15.0 / 100.0) / pixel;
+    auto [pinholeTotal, pinholeSpread] = spread(render("", 20.0f));
+    auto [lensTotal, lensSpread] = spread(render("DepthOfField 1 0.5 5", 20.0f));
+    CHECK(lensTotal == Approx(pinholeTotal).epsilon(0.06));  // every lens point sees the same area
+    CHECK(lensSpread - pinholeSpread == Approx(radius * radius / 4.0).epsilon(0.08));
+    // RenderMan 21's camera parameters say the same.
+    auto [cameraTotal, cameraSpread] =
+        spread(render("Projection \"PxrCamera\" \"fov\" [30] \"fStop\" [1] \"focalLength\" [0.5] \"focalDistance\" [5]", 20.0f));
+    CHECK(cameraSpread == Approx(lensSpread).epsilon(0.03));
+    // On the focal plane, the lens changes nothing.
+    auto [focusedTotal, focusedSpread] = spread(render("DepthOfField 1 0.5 5", 5.0f));
+    auto [pinholeNearTotal, pinholeNearSpread] = spread(render("", 5.0f));
+    CHECK(focusedSpread == Approx(pinholeNearSpread).margin(0.02));
+    // An fstop of 1e38 or a focal length of 0 (what exporters write for none) is a pinhole, sample for sample.
+    CHECK(render("DepthOfField 1e38 1e-10 1", 20.0f).rgba == render("", 20.0f).rgba);
+    CHECK(render("Projection \"PxrPerspective\" \"fov\" [30] \"fStop\" [1e38] \"focalLength\" [0] \"focalDistance\" [0]",
+                 20.0f)
+              .rgba == render("", 20.0f).rgba);
+    // PxrVCM joins light paths to a pinhole: it says it renders no depth of field.
+    auto vcm = render("DepthOfField 1 0.5 5", 20.0f, "Integrator \"PxrVCM\" \"v\"");
+    CHECK(vcm.anyMessageContains("joins light paths to a pinhole camera: depth of field is not rendered"));
+    CHECK(spread(vcm).second == Approx(pinholeSpread).margin(0.05));
+    CHECK_THROWS_WITH(render("DepthOfField 0 0.5 5", 20.0f),
+                      Catch::Matchers::Contains("test.rib:3:1: DepthOfField: fstop, focallength and focaldistance must be"));
+}
+
 TEST_CASE("a negative quadric radius turns the surface inside out", "[rib][geometry]") {
     Diagnostics diagnostics(false);
     Scene scene = test::parseRib("WorldBegin\nTranslate 0 0 5\nDisk 0 -1 360\n", diagnostics);

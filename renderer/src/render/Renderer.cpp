@@ -33,6 +33,7 @@ namespace bxdflab {
 namespace {
 
 using Clock = std::chrono::steady_clock;
+constexpr uint32_t kLensDomain = 0x6c656e73u;  ///< the lens's numbers: "lens"
 double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
 /// Peak resident memory of this process so far, in MiB (Linux reports KiB).
@@ -272,6 +273,18 @@ Renderer::Renderer(Scene& scene, RenderSettings settings, Diagnostics& diagnosti
     r.integratorPlugin = r.loader.integrator(integrator.name, integrator.params, integrator.where);
     r.integrator = &r.integratorPlugin->integrator();
     m_stats.plugins.insert(m_stats.plugins.begin(), r.integratorPlugin->name() + " (" + r.integratorPlugin->path() + ")");
+    if (r.camera->hasLens()) {
+        if (r.integrator->WantsLightTracing()) {
+            // Light subpaths are joined to a pinhole; a lens would need them joined to
+            // points on it, with their own weights. Without that, no depth of field.
+            r.camera->removeLens();
+            diagnostics.warn(integrator.where, "Integrator \"" + integrator.name +
+                                                   "\" joins light paths to a pinhole camera: depth of field is not rendered");
+            m_stats.effects.skip("depth of field", integrator.name + " joins light paths to a pinhole camera");
+        } else {
+            m_stats.effects.simulate("depth of field");
+        }
+    }
     if (r.integrator->WantsHeadlight()) {
         r.headlight = std::make_unique<HeadLight>(r.camera->position());
         r.shadingLights.push_back(r.headlight.get());
@@ -295,7 +308,8 @@ Renderer::Renderer(Scene& scene, RenderSettings settings, Diagnostics& diagnosti
         if (!light->visibility.camera) continue;
         Vec3 center;
         float radius;
-        if (light->boundingSphere(center, radius) && !r.camera->mightSee(center, radius)) continue;
+        // (A lens sees beyond the pinhole's frustum: then every light is tested.)
+        if (!r.camera->hasLens() && light->boundingSphere(center, radius) && !r.camera->mightSee(center, radius)) continue;
         r.cameraLights.push_back(light.get());
     }
     r.tracer = std::make_unique<RayTracer>(scene);
@@ -355,6 +369,7 @@ void Renderer::Impl::renderTile(int tileX, int tileY, int spp, Film& film, Worke
         // each pixel's sample sequence, whatever the thread count.
         int k = 0;
         uint32_t const seedHash = RixRNG::Hash(settings.seed + 0x5bd1e995u);
+        bool const lens = camera->hasLens();
         for (int y = y0; y < y1; ++y)
             for (int x = x0; x < x1; ++x) {
                 uint32_t patternid = RixRNG::Hash(static_cast<uint32_t>(y * scene.xres + x) ^ seedHash);
@@ -362,8 +377,16 @@ void Renderer::Impl::renderTile(int tileX, int tileY, int spp, Film& film, Worke
                     RixRNG::SampleCtx& sample = w.samples[static_cast<size_t>(k)];
                     sample = {patternid, static_cast<uint32_t>(s), 0, -1.0f};
                     RtFloat2 jitter = RixRNG::Sample2D(sample);
-                    camera->generateRay(static_cast<float>(x) + jitter.x, static_cast<float>(y) + jitter.y,
-                                        w.rayOrigins[static_cast<size_t>(k)], w.rayDirections[static_cast<size_t>(k)]);
+                    float const rasterX = static_cast<float>(x) + jitter.x, rasterY = static_cast<float>(y) + jitter.y;
+                    Vec3& org = w.rayOrigins[static_cast<size_t>(k)];
+                    Vec3& dir = w.rayDirections[static_cast<size_t>(k)];
+                    if (lens) {
+                        // Numbers of their own, so the integrator's draws are those of a pinhole render.
+                        RixRNG::SampleCtx onLens = sample.NewDomain(kLensDomain);
+                        camera->generateRay(rasterX, rasterY, RixRNG::Sample2D(onLens), org, dir);
+                    } else {
+                        camera->generateRay(rasterX, rasterY, org, dir);
+                    }
                 }
             }
         tracer->intersectCoherent(w.rayOrigins.data(), w.rayDirections.data(), count, RayKind::Camera, w.hits.data(),

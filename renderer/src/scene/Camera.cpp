@@ -10,7 +10,9 @@ Camera::Camera(CameraDesc const& desc, int xres, int yres, float pixelAspect)
       m_perspective(desc.projection != "orthographic"),
       m_tanHalfFov(std::tan(0.5f * desc.fov * kPi / 180.0f)),
       m_xres(xres),
-      m_yres(yres) {
+      m_yres(yres),
+      m_lensRadius(desc.lensRadius()),
+      m_focalDistance(desc.focalDistance) {
     m_position = transformPoint(m_cameraToWorld, Vec3(0.0f));
     if (desc.hasScreenWindow) {
         for (int i = 0; i < 4; ++i) m_screen[i] = desc.screenWindow[i];
@@ -37,6 +39,8 @@ Camera::Camera(CameraDesc const& desc, int xres, int yres, float pixelAspect)
     m_perRasterX = transformVector(m_cameraToWorld, stepX);
     m_perRasterY = transformVector(m_cameraToWorld, stepY);
     m_orthographicDirection = glm::normalize(transformVector(m_cameraToWorld, Vec3(0.0f, 0.0f, 1.0f)));
+    m_lensX = transformVector(m_cameraToWorld, Vec3(m_lensRadius, 0.0f, 0.0f));
+    m_lensY = transformVector(m_cameraToWorld, Vec3(0.0f, m_lensRadius, 0.0f));
 }
 
 void Camera::generateRay(float rasterX, float rasterY, Vec3& org, Vec3& dir) const {
@@ -48,6 +52,25 @@ void Camera::generateRay(float rasterX, float rasterY, Vec3& org, Vec3& dir) con
         org = onPlane;
         dir = m_orthographicDirection;
     }
+}
+
+void Camera::generateRay(float rasterX, float rasterY, RtFloat2 const& lens, Vec3& org, Vec3& dir) const {
+    // The pinhole ray's direction has camera-space z 1, so it meets the focal
+    // plane at focalDistance times it; every lens point's ray passes there too.
+    Vec3 const onFocalPlane = m_focalDistance * (m_rasterOrigin + rasterX * m_perRasterX + rasterY * m_perRasterY);
+    // A uniform point on the unit disc, by Shirley and Chiu's concentric map (it keeps strata apart).
+    float const a = 2.0f * lens.x - 1.0f, b = 2.0f * lens.y - 1.0f;
+    float r = 0.0f, phi = 0.0f;
+    if (a * a > b * b) {
+        r = a;
+        phi = 0.25f * kPi * (b / a);
+    } else if (b != 0.0f) {
+        r = b;
+        phi = 0.5f * kPi - 0.25f * kPi * (a / b);
+    }
+    Vec3 const onLens = r * std::cos(phi) * m_lensX + r * std::sin(phi) * m_lensY;
+    org = m_position + onLens;
+    dir = glm::normalize(onFocalPlane - onLens);
 }
 
 bool Camera::project(Vec3 const& P, float& rasterX, float& rasterY, Vec3& toEye, float& distance,

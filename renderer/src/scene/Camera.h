@@ -3,6 +3,7 @@
 // left corner of the image.
 #pragma once
 
+#include "RiTypesHelper.h"
 #include "core/Math.h"
 #include "scene/Scene.h"
 
@@ -13,6 +14,13 @@ public:
     Camera(CameraDesc const& desc, int xres, int yres, float pixelAspect);
     /// The world-space ray through raster position (x, y) (pixels, fractional).
     void generateRay(float rasterX, float rasterY, Vec3& org, Vec3& dir) const;
+    /// With a lens (hasLens()): the ray from the lens point `lens` (two numbers
+    /// in [0, 1)) through the point of the focal plane the pinhole ray meets.
+    void generateRay(float rasterX, float rasterY, RtFloat2 const& lens, Vec3& org, Vec3& dir) const;
+    /// Whether DepthOfField gave the camera a lens of some size.
+    bool hasLens() const { return m_lensRadius > 0.0f; }
+    /// Makes the camera a pinhole whatever its DepthOfField said.
+    void removeLens() { m_lensRadius = 0.0f; }
     /// False only when no camera ray can reach the sphere (center, radius):
     /// it lies behind the camera or wholly outside the image's frustum.
     bool mightSee(Vec3 const& center, float radius) const;
@@ -46,6 +54,8 @@ private:
     // multiply-adds and one normalisation, not a matrix product.
     Vec3 m_rasterOrigin, m_perRasterX, m_perRasterY;
     Vec3 m_orthographicDirection;
+    float m_lensRadius, m_focalDistance;  ///< camera space
+    Vec3 m_lensX, m_lensY;                ///< the lens's axes in world space, of the lens's radius
 };
 
 }  // namespace bxdflab

@@ -2,6 +2,7 @@
 // materials (Bxdf statements), lights and shapes.
 #pragma once
 
+#include <cmath>
 #include <filesystem>
 #include <map>
 #include <memory>
@@ -25,6 +26,14 @@ struct CameraDesc {
     float fov = 90.0f;  ///< degrees, across the shorter image axis
     bool hasScreenWindow = false;
     float screenWindow[4] = {-1.0f, 1.0f, -1.0f, 1.0f};  ///< left right bottom top
+    /// DepthOfField fstop focallength focaldistance: a thin lens of diameter
+    /// focallength / fstop, sharp on the plane z = focaldistance. fstop 0 (or
+    /// infinite, RenderMan's default, or the 1e38 exporters write for it) is a pinhole.
+    float fStop = 0.0f, focalLength = 0.0f, focalDistance = 0.0f;
+    /// The lens's radius in camera space (0: a pinhole).
+    float lensRadius() const {
+        return projection == "perspective" && fStop > 0.0f && fStop < 1e30f ? 0.5f * focalLength / fStop : 0.0f;
+    }
 };
 
 struct DisplayDesc {

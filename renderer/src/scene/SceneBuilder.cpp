@@ -32,6 +32,7 @@ std::map<std::string, SceneBuilder::Handler> const& SceneBuilder::handlers() {
         {"ScreenWindow", &SceneBuilder::screenWindow},
         {"PixelSamples", &SceneBuilder::pixelSamples},
         {"Hider", &SceneBuilder::hider},
+        {"DepthOfField", &SceneBuilder::depthOfField},
         {"Imager", &SceneBuilder::imager},
         {"Exposure", &SceneBuilder::exposure},
         {"DisplayFilter", &SceneBuilder::displayFilter},

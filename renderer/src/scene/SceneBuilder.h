@@ -91,6 +91,9 @@ private:
     void pixelSamples(RequestReader& in);
     void hider(RequestReader& in);
     void imager(RequestReader& in);
+    void depthOfField(RequestReader& in);
+    /// The camera's thin lens; a located error for numbers that make none.
+    void setDepthOfField(float fStop, float focalLength, float focalDistance, SourceLocation const& where);
     void exposure(RequestReader& in);
     void displayFilter(RequestReader& in);
     void integrator(RequestReader& in);

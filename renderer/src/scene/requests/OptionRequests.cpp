@@ -112,7 +112,8 @@ void SceneBuilder::projection(RequestReader& in) {
     // RenderMan's camera plugins: PxrCamera and PxrPerspective are perspective cameras with a fov.
     if (type == "PxrCamera" || type == "PxrPerspective") {
         warnOnce("projection " + type, in.where(),
-                 "Projection \"" + type + "\" is rendered as a plain perspective camera (its lens effects are not)");
+                 "Projection \"" + type + "\" is rendered as a perspective camera with a thin lens (its other lens "
+                 "effects are not)");
         type = "perspective";
     }
     if (type != "perspective" && type != "orthographic")
@@ -127,7 +128,42 @@ void SceneBuilder::projection(RequestReader& in) {
     } else if (type == "perspective") {
         m_scene.camera.fov = 90.0f;  // the RI specification's default
     }
+    // RenderMan's perspective cameras take DepthOfField's three numbers as parameters.
+    params.typeUntyped({{"fStop", ParamType::Float}, {"focalLength", ParamType::Float}, {"focalDistance", ParamType::Float}},
+                       "Projection");
+    Param const* fStop = params.take("fStop");
+    Param const* focalLength = params.take("focalLength");
+    Param const* focalDistance = params.take("focalDistance");
+    if (fStop && focalLength && focalDistance)
+        setDepthOfField(params.getFloat("fStop", 0.0f), params.getFloat("focalLength", 0.0f),
+                        params.getFloat("focalDistance", 0.0f), fStop->location);
+    else if (fStop || focalLength || focalDistance)
+        m_diagnostics.warn((fStop ? fStop : focalLength ? focalLength : focalDistance)->location,
+                           "Projection: depth of field needs all of fStop, focalLength and focalDistance; the camera "
+                           "stays a pinhole");
     params.warnUnused(m_diagnostics, "Projection");
+}
+
+void SceneBuilder::depthOfField(RequestReader& in) {
+    if (in.atEnd()) {  // no arguments: a pinhole again
+        m_scene.camera.fStop = 0.0f;
+        return;
+    }
+    std::vector<float> v = in.numbers(3, "fstop focallength focaldistance");
+    in.finish();
+    setDepthOfField(v[0], v[1], v[2], in.where());
+}
+
+void SceneBuilder::setDepthOfField(float fStop, float focalLength, float focalDistance, SourceLocation const& where) {
+    // Exporters write a pinhole as an fstop of 1e38 or a focal length of 0 (its focal distance then means nothing).
+    bool const pinhole = fStop >= 1e30f || focalLength == 0.0f;
+    if (!(fStop > 0.0f) || !(focalLength >= 0.0f) || !std::isfinite(focalLength) ||
+        (!pinhole && !(focalDistance > 0.0f && std::isfinite(focalDistance))))
+        throw RibError(where, "DepthOfField: fstop, focallength and focaldistance must be more than 0 (an infinite fstop "
+                              "or a focal length of 0 is a pinhole)");
+    m_scene.camera.fStop = fStop;
+    m_scene.camera.focalLength = focalLength;
+    m_scene.camera.focalDistance = focalDistance;
 }
 
 void SceneBuilder::screenWindow(RequestReader& in) {
