@@ -138,6 +138,19 @@ TEST_CASE("a classic shader's parameters are its own: others are warned about by
     CHECK(metal.params.getFloat("Ks", 0.0f) == 0.8f);
     CHECK_FALSE(metal.params.has("Kd"));  // not handed on: ClassicSurface's metal would have no use for it
     CHECK(scene.patterns.empty());              // no texture is read for shinymetal
+
+    // A scene's own copy of a standard shader ("shaders/plastic") is read as the standard one, with a warning.
+    Diagnostics own(false);
+    Scene copied = test::parseRib("WorldBegin\nSurface \"shaders/plastic\" \"Ks\" [0.7]\nSphere 1 -1 1 360\n"
+                                  "Surface \"shaders/wobbly\"\nSphere 1 -1 1 360\n",
+                                  own);
+    REQUIRE(copied.shapes.size() == 2u);
+    MaterialDesc const& plastic = copied.materials[static_cast<size_t>(copied.shapes[0]->material)];
+    CHECK(plastic.plugin == "ClassicSurface");
+    CHECK(plastic.params.getString("shader", "") == "plastic");
+    CHECK(plastic.params.getFloat("Ks", 0.0f) == 0.7f);
+    CHECK(test::warningsContaining(own, "test.rib:2:1: Surface \"shaders/plastic\" is a shader file of the scene's own") == 1);
+    CHECK(copied.materials[static_cast<size_t>(copied.shapes[1]->material)].plugin == "PxrDiffuse");
 }
 
 TEST_CASE("Imager background and clamptoalpha, and PxrBackgroundDisplayFilter, finish each pixel", "[rib][film]") {

@@ -93,6 +93,15 @@ void SceneBuilder::surface(RequestReader& in) {
     std::string name = in.string("surface shader name");
     ParamList params = in.params();
     std::vector<std::string> const* known = classicSurfaceParameters(name);
+    // "shaders/plastic": a compiled shader the scene brings along, most often a copy
+    // of the standard one; the standard one is the closest this renderer can come.
+    std::string const base = std::filesystem::path(name).filename().string();
+    if (!known && base != name && (known = classicSurfaceParameters(base))) {
+        warnOnce("surface " + name, in.where(),
+                 "Surface \"" + name + "\" is a shader file of the scene's own, which this renderer cannot run; it is "
+                 "rendered as the standard \"" + base + "\"");
+        name = base;
+    }
     if (!known) {
         warnOnce("surface " + name, in.where(),
                  "Surface \"" + name + "\" is a shader this renderer does not have: its surfaces get the default "
