@@ -100,24 +100,30 @@ TEST_CASE("named coordinate systems: CoordinateSystem, ScopedCoordinateSystem an
 }
 
 TEST_CASE("classic Surface shaders become the ClassicSurface Bxdf with the Color in effect, a Bxdf wins", "[rib]") {
-    Diagnostics diagnostics(false);
-    Scene scene = test::parseRib("WorldBegin\nColor [1 0 0]\nSurface \"plastic\" \"Ks\" [0.7]\nSphere 1 -1 1 360\n"
-                                 "Surface \"wobbly\"\nSphere 1 -1 1 360\n"
-                                 "Surface \"matte\"\nBxdf \"PxrDiffuse\" \"d\"\nSphere 1 -1 1 360\n",
-                                 diagnostics);
-    REQUIRE(scene.shapes.size() == 3u);
-    MaterialDesc const& plastic = scene.materials[static_cast<size_t>(scene.shapes[0]->material)];
-    CHECK(plastic.plugin == "ClassicSurface");
-    CHECK(plastic.params.getString("shader", "") == "plastic");
-    CHECK(plastic.params.getFloat("Ks", 0.0f) == 0.7f);
-    CHECK(plastic.params.getColor("surfaceColor", Vec3(0)) == Vec3(1, 0, 0));
-    // An unknown shader: one warning, and the default material in the current Color.
-    MaterialDesc const& unknown = scene.materials[static_cast<size_t>(scene.shapes[1]->material)];
-    CHECK(unknown.plugin == "PxrDiffuse");
-    CHECK(unknown.params.getColor("diffuseColor", Vec3(0)) == Vec3(1, 0, 0));
-    CHECK(test::warningsContaining(diagnostics, "Surface \"wobbly\"") == 1);
-    CHECK(scene.materials[static_cast<size_t>(scene.shapes[2]->material)].plugin == "PxrDiffuse");
-    CHECK(scene.materials[static_cast<size_t>(scene.shapes[2]->material)].handle == "d");
+    // A scene's own copy of a standard shader ("shaders/plastic") is read as the standard one, with a warning.
+    for (std::string const folder : {"", "shaders/"}) {
+        CAPTURE(folder);
+        Diagnostics diagnostics(false);
+        std::string const rib = "WorldBegin\nColor [1 0 0]\nSurface \"" + folder + "plastic\" \"Ks\" [0.7]\n" +
+                                "Sphere 1 -1 1 360\nSurface \"" + folder + "wobbly\"\nSphere 1 -1 1 360\n" +
+                                "Surface \"matte\"\nBxdf \"PxrDiffuse\" \"d\"\nSphere 1 -1 1 360\n";
+        Scene scene = test::parseRib(rib, diagnostics);
+        CHECK(test::warningsContaining(diagnostics, "test.rib:3:1: Surface \"shaders/plastic\" is a shader file of "
+                                                    "the scene's own") == (folder.empty() ? 0 : 1));
+        REQUIRE(scene.shapes.size() == 3u);
+        MaterialDesc const& plastic = scene.materials[static_cast<size_t>(scene.shapes[0]->material)];
+        CHECK(plastic.plugin == "ClassicSurface");
+        CHECK(plastic.params.getString("shader", "") == "plastic");
+        CHECK(plastic.params.getFloat("Ks", 0.0f) == 0.7f);
+        CHECK(plastic.params.getColor("surfaceColor", Vec3(0)) == Vec3(1, 0, 0));
+        // An unknown shader: one warning, and the default material in the current Color.
+        MaterialDesc const& unknown = scene.materials[static_cast<size_t>(scene.shapes[1]->material)];
+        CHECK(unknown.plugin == "PxrDiffuse");
+        CHECK(unknown.params.getColor("diffuseColor", Vec3(0)) == Vec3(1, 0, 0));
+        CHECK(test::warningsContaining(diagnostics, "Surface \"" + folder + "wobbly\"") == 1);
+        CHECK(scene.materials[static_cast<size_t>(scene.shapes[2]->material)].plugin == "PxrDiffuse");
+        CHECK(scene.materials[static_cast<size_t>(scene.shapes[2]->material)].handle == "d");
+    }
 }
 
 TEST_CASE("a classic shader's parameters are its own: others are warned about by the shader's name", "[rib]") {
@@ -138,19 +144,6 @@ TEST_CASE("a classic shader's parameters are its own: others are warned about by
     CHECK(metal.params.getFloat("Ks", 0.0f) == 0.8f);
     CHECK_FALSE(metal.params.has("Kd"));  // not handed on: ClassicSurface's metal would have no use for it
     CHECK(scene.patterns.empty());              // no texture is read for shinymetal
-
-    // A scene's own copy of a standard shader ("shaders/plastic") is read as the standard one, with a warning.
-    Diagnostics own(false);
-    Scene copied = test::parseRib("WorldBegin\nSurface \"shaders/plastic\" \"Ks\" [0.7]\nSphere 1 -1 1 360\n"
-                                  "Surface \"shaders/wobbly\"\nSphere 1 -1 1 360\n",
-                                  own);
-    REQUIRE(copied.shapes.size() == 2u);
-    MaterialDesc const& plastic = copied.materials[static_cast<size_t>(copied.shapes[0]->material)];
-    CHECK(plastic.plugin == "ClassicSurface");
-    CHECK(plastic.params.getString("shader", "") == "plastic");
-    CHECK(plastic.params.getFloat("Ks", 0.0f) == 0.7f);
-    CHECK(test::warningsContaining(own, "test.rib:2:1: Surface \"shaders/plastic\" is a shader file of the scene's own") == 1);
-    CHECK(copied.materials[static_cast<size_t>(copied.shapes[1]->material)].plugin == "PxrDiffuse");
 }
 
 TEST_CASE("Imager background and clamptoalpha, and PxrBackgroundDisplayFilter, finish each pixel", "[rib][film]") {
