@@ -39,6 +39,7 @@ set(RIX_SCENE_SOURCES
   scene/shapes/NurbsSurface.cpp
   scene/shapes/BlobbySurface.cpp
   scene/lights/AreaLights.cpp
+  scene/lights/MeshLight.cpp
   scene/lights/InfiniteLights.cpp
   scene/lights/DayLight.cpp
   scene/lights/LightFactory.cpp

@@ -61,6 +61,31 @@ TEST_CASE("a rect light under a ceiling turned with Rotate 90 1 0 0 lights the f
                    16) > 0.1);
 }
 
+TEST_CASE("polygons under an area light are a light the integrators sample, as bright as a rect light of their shape",
+          "[lights]") {
+    // The same 2 x 2 square 3 above the floor: a PxrRectLight, then polygons.
+    std::string const place = "  Translate 0 1 0\n  Rotate 90 1 0 0\n  Scale 2 2 1\n";
+    double const rect = litFloor(place + "  Light \"PxrRectLight\" \"ceiling\" \"float intensity\" [4]\n", 64);
+    // Counter-clockwise seen from +z (the rect light's emitting side): the front faces the floor.
+    std::string const facingFloor = "  Polygon \"P\" [-0.5 -0.5 0  0.5 -0.5 0  0.5 0.5 0  -0.5 0.5 0]\n";
+    std::string const facingUp = "  Polygon \"P\" [-0.5 -0.5 0  -0.5 0.5 0  0.5 0.5 0  0.5 -0.5 0]\n";
+    std::string const classic = "  AreaLightSource \"PxrAreaLight\" \"ceiling\" \"float intensity\" [4]\n";
+    std::string const meshLight = "  Light \"PxrMeshLight\" \"ceiling\" \"float intensity\" [4]\n";
+    CHECK(rect > 0.1);
+    // Two-sided (RIB's default Sides 2): either way round.
+    CHECK(litFloor(place + classic + facingFloor, 64) == Approx(rect).epsilon(0.01));
+    CHECK(litFloor(place + meshLight + facingUp, 64) == Approx(rect).epsilon(0.01));
+    // Sides 1: the front face only.
+    CHECK(litFloor(place + "  Sides 1\n" + meshLight + facingFloor, 64) == Approx(rect).epsilon(0.01));
+    CHECK(litFloor(place + "  Sides 1\n" + meshLight + facingUp, 64) == 0.0);
+    // A bilinear patch, as exporters write a card light, made of two triangles.
+    CHECK(litFloor(place + meshLight + "  Patch \"bilinear\" \"P\" [-0.5 -0.5 0  0.5 -0.5 0  -0.5 0.5 0  0.5 0.5 0]\n",
+                   64) == Approx(rect).epsilon(0.01));
+    // A light hidden from every ray type still lights the scene (the openvkl smoke scene's cards).
+    std::string const hidden = "  Attribute \"visibility\" \"int camera\" [0] \"int indirect\" [0] \"int transmission\" [0]\n";
+    CHECK(litFloor(place + meshLight + hidden + facingFloor, 64) == Approx(rect).epsilon(0.01));
+}
+
 TEST_CASE("classic light shaders: pointlight, spotlight and distantlight light what they face, ambientlight adds Ka",
           "[lights]") {
     // pointlight: intensity I at distance d gives a matte (Kd = 1) surface facing it the radiance I / d^2,

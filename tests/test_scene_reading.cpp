@@ -7,6 +7,7 @@
 
 #include "accel/RayTracer.h"
 #include "scene/SceneBuilder.h"
+#include "scene/lights/MeshLight.h"
 #include "scene/shapes/Quadrics.h"
 #include "scene/shapes/TriangleMesh.h"
 #include "support/RenderHelpers.h"
@@ -526,14 +527,20 @@ TEST_CASE("area lights from geometry: AreaLightSource and PxrMeshLight shapes be
                                  "AreaLightSource \"PxrStdAreaLight\" \"key\" \"float exposure\" [2]\n"
                                  "Translate 0 3 0\nSphere 0.5 -0.5 0.5 360\nDisk 0 1 360\nAttributeEnd\n"
                                  "AttributeBegin\nLight \"PxrMeshLight\" \"panel\" \"float intensity\" [3]\n"
-                                 "Polygon \"P\" [0 0 4  1 0 4  1 1 4  0 1 4]\nAttributeEnd\nSphere 1 -1 1 360\n",
+                                 "Polygon \"P\" [0 0 4  1 0 4  1 1 4  0 1 4]\nTorus 1 0.2 0 360 360\nAttributeEnd\n"
+                                 "Sphere 1 -1 1 360\n",
                                  diagnostics);
-    // The sphere and the disk are lights of their own kind; the polygon glows; the last sphere is ordinary.
-    REQUIRE(scene.lights.size() == 2u);
+    // The sphere and the disk are lights of their own kind, the polygon a mesh light of
+    // two triangles; the torus glows; the last sphere is ordinary.
+    REQUIRE(scene.lights.size() == 3u);
     CHECK(std::string(scene.lights[0]->kind()) == "PxrSphereLight");
     CHECK(std::string(scene.lights[1]->kind()) == "PxrDiskLight");
+    CHECK(std::string(scene.lights[2]->kind()) == "PxrMeshLight");
     CHECK(scene.lights[0]->color.r == Approx(4.0f));  // 2^exposure
+    CHECK(scene.lights[2]->color.r == Approx(3.0f));
+    CHECK(static_cast<MeshLight const&>(*scene.lights[2]).area() == Approx(1.0f));
     REQUIRE(scene.shapes.size() == 2u);
+    CHECK(std::string(scene.shapes[0]->kind()) == "Torus");
     MaterialDesc const& glow = scene.materials[static_cast<size_t>(scene.shapes[0]->material)];
     CHECK(glow.plugin == "PxrConstant");
     CHECK(glow.params.getColor("emitColor", Vec3(0)) == Vec3(3.0f));

@@ -54,6 +54,7 @@ private:
         Vec3 color{1.0f};
         Vec3 opacity{1.0f};
         bool reverseOrientation = false;
+        bool twoSided = true;  ///< Sides 2 (RIB's default); only a mesh light reads it
         bool colorSet = false;
         bool volume = false;  ///< the Bxdf in effect is a volume's (PxrVolume): its shapes are not rendered
         std::set<std::string> lightsOff;  ///< handles turned off with Illuminate for the shapes that follow
@@ -183,6 +184,11 @@ private:
     /// With an area light in effect, a shape that has a light of its own kind (a
     /// full sphere, disk or rectangle) becomes that light: true when it did.
     bool shapeAsLight(char const* lightType, Mat4 const& lightToWorld, ParamList params = {});
+    /// With an area light in effect, a polygon mesh of at most MeshLight::kMaxTriangles
+    /// triangles becomes a mesh light: true when it did.
+    bool meshAsLight(Shape const& shape);
+    /// Gives a light made for the area light in effect its radiance, handle and visibility.
+    void addAreaLight(std::unique_ptr<Light> light, AreaLightDesc const& area);
     /// The emissive material of the area light in effect (for shapes with no light of their own kind).
     int emissiveMaterial(SourceLocation const& where);
     /// The warning for a Light type this renderer does not make.

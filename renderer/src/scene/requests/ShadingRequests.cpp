@@ -10,6 +10,7 @@
 #include "scene/SceneBuilder.h"
 #include "scene/lights/InfiniteLights.h"
 #include "scene/lights/LightFactory.h"
+#include "scene/lights/MeshLight.h"
 
 namespace bxdflab {
 namespace {
@@ -375,20 +376,40 @@ bool SceneBuilder::shapeAsLight(char const* lightType, Mat4 const& lightToWorld,
         makeLight(type, params, lightToWorld, textures(), area.where, m_diagnostics,
                   [this](SourceLocation const& at, std::string const& message) { missingFile(at, message); });
     if (!light) return false;
-    Vec3 radiance = area.radiance;
     // A distant light's intensity is spread over the disc it subtends, as PxrDistantLight's is.
-    if (type == "PxrDistantLight")
-        radiance *= distantLightIrradianceScale(params.getFloat("angleExtent", kSunAngleExtent), false);
-    light->color = RtColorRGB(radiance.x, radiance.y, radiance.z);
+    if (type == "PxrDistantLight") {
+        Vec3 const radiance =
+            area.radiance * distantLightIrradianceScale(params.getFloat("angleExtent", kSunAngleExtent), false);
+        light->color = RtColorRGB(radiance.x, radiance.y, radiance.z);
+    } else {
+        light->color = RtColorRGB(area.radiance.x, area.radiance.y, area.radiance.z);
+    }
+    addAreaLight(std::move(light), area);
+    return true;
+}
+
+bool SceneBuilder::meshAsLight(Shape const& shape) {
+    auto const* mesh = dynamic_cast<TriangleMesh const*>(&shape);
+    if (!state().areaLight || state().areaLight->environment || !mesh ||
+        mesh->data().triangleCount() > MeshLight::kMaxTriangles)
+        return false;
+    state().areaLight->shaped = true;
+    if (!building()) return true;
+    auto light = std::make_unique<MeshLight>(mesh->data(), mesh->orientation(), state().twoSided);
+    light->color = RtColorRGB(state().areaLight->radiance.x, state().areaLight->radiance.y, state().areaLight->radiance.z);
+    addAreaLight(std::move(light), *state().areaLight);
+    return true;
+}
+
+void SceneBuilder::addAreaLight(std::unique_ptr<Light> light, AreaLightDesc const& area) {
     light->handle = area.handle;
     light->visibility = state().visibility;
     if (light->color.IsBlack()) {
         m_scene.dropped.push_back("area light \"" + area.handle + "\" (" + area.shader + ") has zero intensity");
-        return true;
+        return;
     }
     m_lightHandles[area.handle] = m_scene.lights.size();
     m_scene.lights.push_back(std::move(light));
-    return true;
 }
 
 int SceneBuilder::emissiveMaterial(SourceLocation const& where) {
@@ -397,9 +418,9 @@ int SceneBuilder::emissiveMaterial(SourceLocation const& where) {
     auto found = m_emissiveMaterials.find(area);
     if (found != m_emissiveMaterials.end()) return found->second;
     warnOnce("glowing area light", where,
-             area->shader + " \"" + area->handle + "\" on this shape: it glows, but only a sphere, a disk or a "
-             "Geometry \"rectlight\" becomes a light the integrators sample, so it lights the scene through "
-             "indirect paths only");
+             area->shader + " \"" + area->handle + "\" on this shape: it glows, but only a sphere, a disk, a "
+             "Geometry \"rectlight\" or polygons of at most " + std::to_string(MeshLight::kMaxTriangles) +
+             " triangles become a light the integrators sample, so it lights the scene through indirect paths only");
     MaterialDesc material;
     material.plugin = "PxrConstant";
     material.handle = "area light \"" + area->handle + "\"";

@@ -77,6 +77,8 @@ void SceneBuilder::addShape(std::unique_ptr<Shape> shape, SourceLocation const& 
     shape->visibility = state().visibility;
     shape->name = state().name;
     shape->where = where;
+    // Polygons under an area light are the light (seen by the rays its visibility allows).
+    if (meshAsLight(*shape)) return;
     if (state().volume) {
         m_scene.dropped.push_back(std::string(shape->kind()) + " at " + where.str() + " holds a volume (PxrVolume)");
         return;

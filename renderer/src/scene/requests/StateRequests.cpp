@@ -227,10 +227,11 @@ bool SceneBuilder::setOrientation(std::string const& value) {
 
 void SceneBuilder::sides(RequestReader& in) {
     // Every surface is shaded from the side it is seen from, so one- and
-    // two-sided surfaces render alike here; accepted for compatibility.
+    // two-sided surfaces render alike here; a mesh light emits from one face or both.
     float sides = in.number("number of sides");
     in.finish();
     if (sides != 1.0f && sides != 2.0f) in.fail(in.where(), "Sides must be 1 or 2");
+    state().twoSided = sides == 2.0f;
 }
 
 void SceneBuilder::riAttributes(ParamList const& params) {
@@ -242,6 +243,7 @@ void SceneBuilder::riAttributes(ParamList const& params) {
     if (Param const* p = params.take("Sides")) {
         float const sides = params.getFloat("Sides", 2.0f);
         if (sides != 1.0f && sides != 2.0f) throw RibError(p->location, "Attribute \"Ri\" \"Sides\" must be 1 or 2");
+        state().twoSided = sides == 2.0f;
     }
     if (params.has("Color")) {
         state().color = params.getColor("Color", state().color);

@@ -56,6 +56,8 @@ public:
     SurfaceTangents tangents(HitRecord const& hit) const override;
     void primvar(Primvar const& var, HitRecord const& hit, float* out) const override;
     MeshData const& data() const { return m_data; }
+    /// +1 or -1: the sign that turns (p1 - p0) x (p2 - p0) into the facet normal.
+    float orientation() const { return m_orientation; }
 
 private:
     template <typename T>
