@@ -290,6 +290,28 @@ TEST_CASE("PxrVCM and PxrPathTracer agree where the camera sees a light in front
     }
 }
 
+TEST_CASE("PxrVCM and PxrPathTracer agree on a ceiling above a light that faces down", "[integrators][vcm]") {
+    // The ceiling is lit only by the sphere below the light, through the light's
+    // place. Light subpaths stopped at the light's face, as camera paths that
+    // reach a light do, though lights are no surface they can land on: the
+    // ceiling above the light came out half as bright.
+    std::string const rib =
+        "Format 32 32 1\nProjection \"perspective\" \"fov\" [40]\nINTEGRATOR\nTranslate 0 0 5\nWorldBegin\n"
+        "  AttributeBegin\n    Translate 0 1 0\n    Rotate 90 1 0 0\n    Attribute \"visibility\" \"int camera\" [0]\n"
+        "    Light \"PxrRectLight\" \"l\" \"float intensity\" [5]\n  AttributeEnd\n"
+        "  Bxdf \"PxrDiffuse\" \"w\" \"color diffuseColor\" [0.7 0.7 0.7]\n  Sphere 0.7 -0.7 0.7 360\n"
+        "  Polygon \"P\" [-2 2 -2  2 2 -2  2 2 2  -2 2 2]\nWorldEnd\n";
+    auto with = [&](char const* integrator) {
+        std::string scene = rib;
+        return scene.replace(scene.find("INTEGRATOR"), 10, integrator);
+    };
+    auto ceiling = [](int, int y) { return y < 8; };
+    auto vcm = test::renderRib(with("Integrator \"PxrVCM\" \"v\" \"int maxPathLength\" [2]"), test::withSpp(4096));
+    auto paths = test::renderRib(with("Integrator \"PxrPathTracer\" \"p\" \"int maxPathLength\" [2]"), test::withSpp(4096));
+    CHECK(test::meanChannel(paths, 0, ceiling) > 0.005);
+    CHECK(test::meanChannel(vcm, 0, ceiling) == Approx(test::meanChannel(paths, 0, ceiling)).epsilon(0.03));
+}
+
 TEST_CASE("PxrVCM renders a caustic as a path tracer does, and finds it from a small light", "[integrators][vcm]") {
     std::string scene = readScene("ch04/caustic.rib");
     scene.replace(scene.find("Format 320 240 1"), 16, "Format 64 48 1");

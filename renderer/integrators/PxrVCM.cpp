@@ -509,8 +509,8 @@ private:
             ++rays;
         }
         if (rays == 0) return;
-        RixLightHit* lightHits = pool.AllocFor<RixLightHit>(rays);  // lights are not surfaces: ignored
-        ictx.TraceIndirect(ctx, rays, index, dir, shade, samples, lightHits, [&](RixShadeBatch& child) {
+        // Lights are not surfaces: a light subpath passes through them, as shadow rays do.
+        ictx.TraceIndirect(ctx, rays, index, dir, shade, samples, nullptr, [&](RixShadeBatch& child) {
             lightVertex(child, ictx, path, level, index, cameraIndex, nextCarried, nextPdfDir, depth + 1);
         });
     }

@@ -134,9 +134,14 @@ void IntegratorServices::TraceIndirect(RixShadingContext const& ctx, int count, 
         Vec3 d = glm::normalize(toVec3(dirs[k]));
         Vec3 from = starts.at(indices[k], d);
         HitRecord hit = m_tracer.intersect(from, d, 0.0f, kInfinity, RayKind::Indirect, m_counts);
-        lightHits[k] = lightAlong(from, d, hit.hit() ? hit.t : kInfinity);
-        // Rays that reach a light first, or that the integrator does not want shaded, end here.
-        if (lightHits[k].hit || !shade[k]) hit.forget();
+        // Rays that reach a light first, or that the integrator does not want shaded, end here;
+        // without lightHits (a light subpath's rays) lights are not looked for.
+        bool reachesLight = false;
+        if (lightHits) {
+            lightHits[k] = lightAlong(from, d, hit.hit() ? hit.t : kInfinity);
+            reachesLight = lightHits[k].hit;
+        }
+        if (reachesLight || !shade[k]) hit.forget();
         hits[k] = hit;
     }
     m_shader.shade(hits, samples, count, m_arena, [&](ShadeGroup& group) {
