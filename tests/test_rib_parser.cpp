@@ -262,6 +262,18 @@ TEST_CASE("a whole scene read inside a world: its WorldBegin/WorldEnd and camera
                       Catch::Matchers::Contains("WorldEnd without WorldBegin"));
 }
 
+TEST_CASE("Display \"+name\" adds an output to the image in effect, and with none is the image", "[rib]") {
+    Diagnostics diagnostics(false);
+    // Blender's RIBMosaic writes every frame's only Display with a "+".
+    CHECK(parseRib("Display \"+out/frame.exr\" \"openexr\" \"rgba\"\nWorldBegin\nWorldEnd\n", diagnostics).display.name ==
+          "out/frame.exr");
+    CHECK(diagnostics.entries().empty());
+    Scene withAov =
+        parseRib("Display \"beauty.exr\" \"file\" \"rgba\"\nDisplay \"+z.exr\" \"file\" \"z\"\nWorldBegin\nWorldEnd\n", diagnostics);
+    CHECK(withAov.display.name == "beauty.exr");
+    CHECK(test::warningsContaining(diagnostics, "secondary Display \"+z.exr\" (AOV output) is not supported") == 1);
+}
+
 TEST_CASE("transforms compose the RenderMan way: the last one applies first", "[rib]") {
     Diagnostics diagnostics(false);
     Scene scene = parseRib(

@@ -72,8 +72,14 @@ void SceneBuilder::display(RequestReader& in) {
     std::string mode = in.string("display mode");
     ParamList params = in.params();
     if (!name.empty() && name[0] == '+') {
-        warnOnce("secondary Display", in.where(), "secondary Display \"" + name + "\" (AOV output) is not supported; skipped");
-        return;
+        // "+" adds a display to those in effect; with none yet (as Blender's RIBMosaic
+        // writes every frame's), it is the image.
+        if (m_scene.display.where.known()) {
+            warnOnce("secondary Display", in.where(),
+                     "secondary Display \"" + name + "\" (AOV output) is not supported; skipped");
+            return;
+        }
+        name.erase(0, 1);
     }
     m_scene.display = {name, type, mode, in.where()};
 }
