@@ -312,6 +312,26 @@ TEST_CASE("PxrVCM and PxrPathTracer agree on a ceiling above a light that faces 
     CHECK(test::meanChannel(vcm, 0, ceiling) == Approx(test::meanChannel(paths, 0, ceiling)).epsilon(0.03));
 }
 
+TEST_CASE("PxrVCM and PxrPathTracer agree on a room lit by a two-sided panel just under its ceiling",
+          "[integrators][vcm]") {
+    // Both faces of the panel are lit: a camera path from the ceiling that meets it ends
+    // there, so a light path or a connection crossing the panel must be stopped too; they
+    // were not, and the room came out 25% too bright.
+    auto scene = [](char const* integrator) {
+        return std::string("Format 32 32 1\nProjection \"perspective\" \"fov\" [40]\n") + integrator +
+               "\nTranslate 0 0 5\nWorldBegin\n  AttributeBegin\n    Translate 0 1.9 0\n    Rotate 90 1 0 0\n"
+               "    Attribute \"visibility\" \"int camera\" [0]\n"
+               "    Light \"PxrMeshLight\" \"panel\" \"float intensity\" [5]\n"
+               "    Polygon \"P\" [-0.5 -0.5 0  0.5 -0.5 0  0.5 0.5 0  -0.5 0.5 0]\n  AttributeEnd\n"
+               "  Bxdf \"PxrDiffuse\" \"w\" \"color diffuseColor\" [0.7 0.7 0.7]\n"
+               "  Polygon \"P\" [-2 -2 -2  2 -2 -2  2 -2 2  -2 -2 2]\n  Polygon \"P\" [-2 2 -2  2 2 -2  2 2 2  -2 2 2]\n"
+               "  Polygon \"P\" [-2 -2 2  2 -2 2  2 2 2  -2 2 2]\n  Sphere 0.7 -0.7 0.7 360\nWorldEnd\n";
+    };
+    auto vcm = test::renderRib(scene("Integrator \"PxrVCM\" \"v\" \"int maxPathLength\" [3]"), test::withSpp(1024));
+    auto paths = test::renderRib(scene("Integrator \"PxrPathTracer\" \"p\" \"int maxPathLength\" [3]"), test::withSpp(1024));
+    CHECK(test::meanChannel(vcm, 0, kAll) == Approx(test::meanChannel(paths, 0, kAll)).epsilon(0.02));
+}
+
 TEST_CASE("PxrVCM renders a caustic as a path tracer does, and finds it from a small light", "[integrators][vcm]") {
     std::string scene = readScene("ch04/caustic.rib");
     scene.replace(scene.find("Format 320 240 1"), 16, "Format 64 48 1");

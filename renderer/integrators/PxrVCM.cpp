@@ -509,7 +509,7 @@ private:
             ++rays;
         }
         if (rays == 0) return;
-        // Lights are not surfaces: a light subpath passes through them, as shadow rays do.
+        // Lights add nothing to a light subpath; it ends at one where a camera subpath would.
         ictx.TraceIndirect(ctx, rays, index, dir, shade, samples, nullptr, [&](RixShadeBatch& child) {
             lightVertex(child, ictx, path, level, index, cameraIndex, nextCarried, nextPdfDir, depth + 1);
         });

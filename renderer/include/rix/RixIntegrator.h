@@ -100,8 +100,9 @@ public:
     /// lightHits[k] tells whether it reaches a light before any surface. Rays that hit a surface
     /// first and have shade[k] set are shaded, as batches grouped by Bxdf, and each batch is handed
     /// to visit; samples[k] is where ray k's point is in its random sequence (it carries on there).
-    /// A null lightHits looks for no light: every ray goes on to the surface it meets (a light
-    /// subpath's rays, for which lights are not surfaces, as they are not for shadow rays).
+    /// A null lightHits traces a light subpath's rays: lights add nothing to them, and a ray ends
+    /// at a light only where a camera path crossing the same segment the other way would (at a
+    /// light that emits along the ray; a light's dark back lets both through).
     virtual void TraceIndirect(RixShadingContext const& ctx, int count, int const* indices, RtVector3 const* dirs,
                                bool const* shade, RixRNG::SampleCtx const* samples, RixLightHit* lightHits,
                                std::function<void(RixShadeBatch&)> const& visit) = 0;

@@ -21,6 +21,12 @@ public:
     }
     /// The start of a ray from point i toward dir.
     Vec3 at(int i, Vec3 const& dir) const { return offsetRayOrigin(toVec3(m_P[i]), m_biasR[i], toVec3(m_Ngn[i]), dir); }
+    /// How far the lights may lie along a shadow ray from `start` (point i's) toward a light
+    /// `distance` away from the point: short of that light, whatever the push off the surface.
+    float lightReach(int i, Vec3 const& start, float distance) const {
+        if (std::isinf(distance)) return kInfinity;
+        return (distance - glm::length(start - toVec3(m_P[i]))) * (1.0f - 1e-3f);
+    }
 
 private:
     RtPoint3 const* m_P = nullptr;
@@ -69,8 +75,10 @@ RixLightSample IntegratorServices::SampleLight(int light, RtPoint3 const& P, RtF
 }
 
 bool IntegratorServices::Unoccluded(RixShadingContext const& ctx, int i, RtVector3 const& dir, float distance) {
-    Vec3 d = toVec3(dir);
-    return !m_tracer.occluded(RayStarts(ctx).at(i, d), d, 0.0f, shadowReach(distance), m_counts);
+    RayStarts starts(ctx);
+    Vec3 const d = toVec3(dir), from = starts.at(i, d);
+    return !m_tracer.occluded(from, d, 0.0f, shadowReach(distance), m_counts) &&
+           !lightEmitsAcross(from, d, starts.lightReach(i, from, distance), -d);
 }
 
 void IntegratorServices::Unoccluded(RixShadingContext const& ctx, int count, int const* indices,
@@ -83,8 +91,13 @@ void IntegratorServices::Unoccluded(RixShadingContext const& ctx, int count, int
         Vec3 const d = toVec3(dirs[k]);
         stream.add(starts.at(indices[k], d), d, distances[k]);
     }
-    stream.trace(m_tracer, clear, m_counts);
-    for (int k = 0; k < count; ++k) clear[k] = !clear[k];  // it was told which are blocked
+    bool* blocked = m_arena.allocArray<bool>(static_cast<size_t>(count));
+    stream.trace(m_tracer, blocked, m_counts);
+    for (int k = 0; k < count; ++k) {
+        // A light whose lit face the ray meets stops it, as it stops the Bxdf's rays.
+        Vec3 const d = toVec3(dirs[k]), from = starts.at(indices[k], d);
+        clear[k] = !blocked[k] && !lightEmitsAcross(from, d, starts.lightReach(indices[k], from, distances[k]), -d);
+    }
     m_arena.release(mark);
 }
 
@@ -93,6 +106,14 @@ RixLightHit IntegratorServices::lightAlong(Vec3 const& from, Vec3 const& dir, fl
     // A light that sends nothing this way (the back of a rect light) is no hit for MIS.
     if (!seen.light || seen.radiance.IsBlack()) return {};
     return {true, seen.distance, seen.radiance, seen.pdf, seen.index};
+}
+
+bool IntegratorServices::lightEmitsAcross(Vec3 const& from, Vec3 const& dir, float maxDistance,
+                                          Vec3 const& toward) const {
+    if (!m_finiteLights) return false;
+    LightAlongRay seen = nearestLightAlong(m_lights, from, dir, maxDistance);
+    if (!seen.light || seen.light->isInfinite()) return false;
+    return seen.light->emissionDensity(from + seen.distance * dir, toward).pdfDir > 0.0f;
 }
 
 RixLightHit IntegratorServices::VisibleLight(RixShadingContext const& ctx, int i, RtVector3 const& dir) {
@@ -134,14 +155,17 @@ void IntegratorServices::TraceIndirect(RixShadingContext const& ctx, int count, 
         Vec3 d = glm::normalize(toVec3(dirs[k]));
         Vec3 from = starts.at(indices[k], d);
         HitRecord hit = m_tracer.intersect(from, d, 0.0f, kInfinity, RayKind::Indirect, m_counts);
-        // Rays that reach a light first, or that the integrator does not want shaded, end here;
-        // without lightHits (a light subpath's rays) lights are not looked for.
-        bool reachesLight = false;
+        // Rays that reach a light first, or that the integrator does not want shaded, end here.
+        bool endsAtLight = false;
         if (lightHits) {
             lightHits[k] = lightAlong(from, d, hit.hit() ? hit.t : kInfinity);
-            reachesLight = lightHits[k].hit;
+            endsAtLight = lightHits[k].hit;
+        } else {
+            // It crosses the segment a camera path would cross the other way, and ends
+            // where that path would: at a light that emits along the ray.
+            endsAtLight = lightEmitsAcross(from, d, hit.hit() ? hit.t : kInfinity, d);
         }
-        if (reachesLight || !shade[k]) hit.forget();
+        if (endsAtLight || !shade[k]) hit.forget();
         hits[k] = hit;
     }
     m_shader.shade(hits, samples, count, m_arena, [&](ShadeGroup& group) {

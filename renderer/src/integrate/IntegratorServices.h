@@ -30,7 +30,9 @@ class IntegratorServices final : public RixIntegratorContext {
 public:
     IntegratorServices(RayTracer const& tracer, std::vector<Light const*> lights, BatchShader const& shader,
                        MemoryArena& arena)
-        : m_tracer(tracer), m_lights(std::move(lights)), m_shader(shader), m_arena(arena) {}
+        : m_tracer(tracer), m_lights(std::move(lights)), m_shader(shader), m_arena(arena) {
+        for (Light const* light : m_lights) m_finiteLights |= !light->isDelta() && !light->isInfinite();
+    }
 
     int GetNumLights() const override { return static_cast<int>(m_lights.size()); }
     RixLightSample SampleLight(int light, RtPoint3 const& P, RtFloat2 const& xi) const override;
@@ -75,9 +77,15 @@ public:
 private:
     /// The nearest light along a ray, closer than maxDistance (not tested for occlusion).
     RixLightHit lightAlong(Vec3 const& origin, Vec3 const& dir, float maxDistance) const;
+    /// Whether the nearest light along the ray, closer than maxDistance, emits along `toward`
+    /// where the ray meets it. A camera path ends at a light whose lit face it meets and passes
+    /// a dark back; shadow rays (toward = -dir) and light subpaths (toward = dir) are stopped
+    /// where that path would be, so every strategy sees the same segments clear.
+    bool lightEmitsAcross(Vec3 const& from, Vec3 const& dir, float maxDistance, Vec3 const& toward) const;
 
     RayTracer const& m_tracer;
     std::vector<Light const*> m_lights;
+    bool m_finiteLights = false;  ///< some light has a shape a ray can meet
     BatchShader const& m_shader;
     MemoryArena& m_arena;
     Camera const* m_camera = nullptr;
