@@ -2,7 +2,9 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <fstream>
+#include <functional>
 #include <sstream>
+#include <utility>
 
 #include "support/RenderHelpers.h"
 
@@ -14,6 +16,16 @@ using test::readScene;
 using test::withIntegrator;
 
 auto const kAll = [](int, int) { return true; };
+
+/// The mean red over `pixels` of a scene (given its Integrator line) rendered by PxrVCM,
+/// then by PxrPathTracer, both with paths of up to maxPathLength.
+std::pair<double, double> vcmAndPathTracer(std::function<std::string(std::string const&)> const& scene,
+                                           int maxPathLength, int spp, std::function<bool(int, int)> const& pixels) {
+    std::string const length = " \"int maxPathLength\" [" + std::to_string(maxPathLength) + "]";
+    auto vcm = test::renderRib(scene("Integrator \"PxrVCM\" \"v\"" + length), test::withSpp(spp));
+    auto paths = test::renderRib(scene("Integrator \"PxrPathTracer\" \"p\"" + length), test::withSpp(spp));
+    return {test::meanChannel(vcm, 0, pixels), test::meanChannel(paths, 0, pixels)};
+}
 
 }  // namespace
 
@@ -301,15 +313,30 @@ TEST_CASE("PxrVCM and PxrPathTracer agree on a ceiling above a light that faces 
         "    Light \"PxrRectLight\" \"l\" \"float intensity\" [5]\n  AttributeEnd\n"
         "  Bxdf \"PxrDiffuse\" \"w\" \"color diffuseColor\" [0.7 0.7 0.7]\n  Sphere 0.7 -0.7 0.7 360\n"
         "  Polygon \"P\" [-2 2 -2  2 2 -2  2 2 2  -2 2 2]\nWorldEnd\n";
-    auto with = [&](char const* integrator) {
+    auto with = [&](std::string const& integrator) {
         std::string scene = rib;
         return scene.replace(scene.find("INTEGRATOR"), 10, integrator);
     };
-    auto ceiling = [](int, int y) { return y < 8; };
-    auto vcm = test::renderRib(with("Integrator \"PxrVCM\" \"v\" \"int maxPathLength\" [2]"), test::withSpp(4096));
-    auto paths = test::renderRib(with("Integrator \"PxrPathTracer\" \"p\" \"int maxPathLength\" [2]"), test::withSpp(4096));
-    CHECK(test::meanChannel(paths, 0, ceiling) > 0.005);
-    CHECK(test::meanChannel(vcm, 0, ceiling) == Approx(test::meanChannel(paths, 0, ceiling)).epsilon(0.03));
+    auto const [vcm, paths] = vcmAndPathTracer(with, 2, 4096, [](int, int y) { return y < 8; });  // the ceiling
+    CHECK(paths > 0.005);
+    CHECK(vcm == Approx(paths).epsilon(0.03));
+}
+
+TEST_CASE("PxrVCM and PxrPathTracer agree on a floor under a rect light: a light subpath does not stop at its own light",
+          "[integrators][vcm]") {
+    // Light subpaths leave the light's own plane; looking for lights in their way from
+    // there found the light they leave, and the floor came out half as bright.
+    auto scene = [](std::string const& integrator) {
+        return "Format 24 24 1\nProjection \"perspective\" \"fov\" [30]\n" + integrator +
+               "\nRotate -30 1 0 0\nTranslate 0 -1 8\nWorldBegin\n  AttributeBegin\n"
+               "    Attribute \"visibility\" \"int camera\" [0]\n    Translate 0 -1 0\n    Rotate 90 1 0 0\n"
+               "    Scale 3 3 1\n    Light \"PxrRectLight\" \"panel\" \"float intensity\" [1]\n  AttributeEnd\n"
+               "  Bxdf \"PxrDiffuse\" \"white\" \"color diffuseColor\" [1 1 1]\n"
+               "  Polygon \"P\" [-4 -2 -4  4 -2 -4  4 -2 4  -4 -2 4]\nWorldEnd\n";
+    };
+    auto const [vcm, paths] = vcmAndPathTracer(scene, 1, 256, kAll);
+    CHECK(paths > 0.05);
+    CHECK(vcm == Approx(paths).epsilon(0.02));
 }
 
 TEST_CASE("PxrVCM and PxrPathTracer agree on a room lit by a two-sided panel just under its ceiling",
@@ -317,8 +344,8 @@ TEST_CASE("PxrVCM and PxrPathTracer agree on a room lit by a two-sided panel jus
     // Both faces of the panel are lit: a camera path from the ceiling that meets it ends
     // there, so a light path or a connection crossing the panel must be stopped too; they
     // were not, and the room came out 25% too bright.
-    auto scene = [](char const* integrator) {
-        return std::string("Format 32 32 1\nProjection \"perspective\" \"fov\" [40]\n") + integrator +
+    auto scene = [](std::string const& integrator) {
+        return "Format 32 32 1\nProjection \"perspective\" \"fov\" [40]\n" + integrator +
                "\nTranslate 0 0 5\nWorldBegin\n  AttributeBegin\n    Translate 0 1.9 0\n    Rotate 90 1 0 0\n"
                "    Attribute \"visibility\" \"int camera\" [0]\n"
                "    Light \"PxrMeshLight\" \"panel\" \"float intensity\" [5]\n"
@@ -327,9 +354,8 @@ TEST_CASE("PxrVCM and PxrPathTracer agree on a room lit by a two-sided panel jus
                "  Polygon \"P\" [-2 -2 -2  2 -2 -2  2 -2 2  -2 -2 2]\n  Polygon \"P\" [-2 2 -2  2 2 -2  2 2 2  -2 2 2]\n"
                "  Polygon \"P\" [-2 -2 2  2 -2 2  2 2 2  -2 2 2]\n  Sphere 0.7 -0.7 0.7 360\nWorldEnd\n";
     };
-    auto vcm = test::renderRib(scene("Integrator \"PxrVCM\" \"v\" \"int maxPathLength\" [3]"), test::withSpp(1024));
-    auto paths = test::renderRib(scene("Integrator \"PxrPathTracer\" \"p\" \"int maxPathLength\" [3]"), test::withSpp(1024));
-    CHECK(test::meanChannel(vcm, 0, kAll) == Approx(test::meanChannel(paths, 0, kAll)).epsilon(0.02));
+    auto const [vcm, paths] = vcmAndPathTracer(scene, 3, 1024, kAll);
+    CHECK(vcm == Approx(paths).epsilon(0.02));
 }
 
 TEST_CASE("PxrVCM renders a caustic as a path tracer does, and finds it from a small light", "[integrators][vcm]") {

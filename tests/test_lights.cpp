@@ -91,24 +91,30 @@ TEST_CASE("a light's lit face shadows what lies behind it from other lights, as 
     // A dim two-sided panel 1 above the floor and a bright small light 2.5 above the panel:
     // the floor under the panel sees the panel's faint face, not the light beyond it. Shadow
     // rays used to pass the panel while the Bxdf's rays stopped at it, and MIS then counted
-    // a part of the bright light there (350 times the panel's own light).
+    // a part of the bright light there (350 times the panel's own light); PxrVCM's light
+    // subpaths passed it too.
     std::string const hidden = "  Attribute \"visibility\" \"int camera\" [0]\n";
     std::string const panel = "  AttributeBegin\n" + hidden + "  Translate 0 -1 0\n  Rotate 90 1 0 0\n  Scale 3 3 1\n"
                               "  Light \"PxrMeshLight\" \"panel\" \"float intensity\" [0.001]\n"
                               "  Polygon \"P\" [-0.5 -0.5 0  0.5 -0.5 0  0.5 0.5 0  -0.5 0.5 0]\n  AttributeEnd\n";
     std::string const key = "  AttributeBegin\n" + hidden + "  Translate 0 1.5 0\n  Rotate 90 1 0 0\n  Scale 0.5 0.5 1\n"
                             "  Light \"PxrRectLight\" \"key\" \"float intensity\" [40]\n  AttributeEnd\n";
-    auto underPanel = [](std::string const& lights) {
-        std::string rib = "Format 16 16 1\nProjection \"perspective\" \"fov\" [30]\nIntegrator \"PxrDirectLighting\" \"d\"\n"
-                          "Rotate -90 1 0 0\nTranslate 0 -6 0\nWorldBegin\n" + lights +
+    std::string integrator;
+    auto underPanel = [&integrator](std::string const& lights) {
+        std::string rib = "Format 16 16 1\nProjection \"perspective\" \"fov\" [30]\n" + integrator +
+                          "\nRotate -90 1 0 0\nTranslate 0 -6 0\nWorldBegin\n" + lights +
                           "  Bxdf \"diffuse\" \"white\" \"color diffuseColor\" [1 1 1]\n"
                           "  Polygon \"P\" [-4 -2 -4  4 -2 -4  4 -2 4  -4 -2 4]\nWorldEnd\n";
         return test::meanChannel(test::renderRib(rib, test::withSpp(64)), 0,
                                  [](int x, int y) { return x >= 6 && x < 10 && y >= 6 && y < 10; });
     };
-    double const panelAlone = underPanel(panel);
-    CHECK(panelAlone > 0.0);
-    CHECK(underPanel(panel + key) == Approx(panelAlone).epsilon(0.05));
+    for (char const* name : {"Integrator \"PxrDirectLighting\" \"d\"", "Integrator \"PxrVCM\" \"v\" \"int maxPathLength\" [1]"}) {
+        CAPTURE(name);
+        integrator = name;
+        double const panelAlone = underPanel(panel);
+        CHECK(panelAlone > 0.0);
+        CHECK(underPanel(panel + key) == Approx(panelAlone).epsilon(0.05));
+    }
 }
 
 TEST_CASE("classic light shaders: pointlight, spotlight and distantlight light what they face, ambientlight adds Ka",

@@ -83,7 +83,8 @@ public:
     virtual int GetNumLights() const = 0;
     virtual RixLightSample SampleLight(int light, RtPoint3 const& P, RtFloat2 const& xi) const = 0;
 
-    /// A shadow ray: is the way from point i of ctx toward dir, up to distance, clear?
+    /// A shadow ray: is the way from point i of ctx toward dir, up to distance, clear? A light
+    /// whose lit face lies in the way blocks it, as it ends a path that meets it.
     virtual bool Unoccluded(RixShadingContext const& ctx, int i, RtVector3 const& dir, float distance) = 0;
     /// A shadow ray toward whichever light lies along dir from point i (hit = false if none, or blocked).
     virtual RixLightHit VisibleLight(RixShadingContext const& ctx, int i, RtVector3 const& dir) = 0;
@@ -115,7 +116,8 @@ public:
     virtual RixEmissionPdf EmissionPdf(int light, RtPoint3 const& P, RtPoint3 const& receiver) const = 0;
     /// Traces count rays leaving lights. Those that reach a surface are shaded, as batches grouped
     /// by Bxdf, and each batch is handed to visit (point j continues ray source[j]); samples[k] is
-    /// where ray k's random sequence starts. Lights are not surfaces: these rays pass through them.
+    /// where ray k's random sequence starts. Lights add nothing to these rays; they end at one
+    /// only as TraceIndirect's light subpath rays do.
     virtual void TraceEmitted(int count, RixLightEmission const* rays, RixRNG::SampleCtx const* samples,
                               std::function<void(RixShadeBatch&)> const& visit) = 0;
 

@@ -220,6 +220,9 @@ void IntegratorServices::TraceEmitted(int count, RixLightEmission const* rays, R
         // A light may sit on a surface (a lamp on a ceiling): start just off the light.
         float const start = 1e-5f * (1.0f + std::max({std::fabs(from.x), std::fabs(from.y), std::fabs(from.z)}));
         hits[k] = m_tracer.intersect(from, d, start, kInfinity, RayKind::Indirect, m_counts);
+        // Like a light subpath's later rays, it ends at a light where a camera path would
+        // (looked for from the same start, off the light it leaves).
+        if (hits[k].hit() && lightEmitsAcross(from + start * d, d, hits[k].t - start, d)) hits[k].forget();
     }
     m_shader.shade(hits, samples, count, m_arena, [&](ShadeGroup& group) {
         RixShadeBatch batch{group.ctx, group.bxdf, group.rng, group.source};

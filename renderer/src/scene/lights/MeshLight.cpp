@@ -32,6 +32,12 @@ MeshLight::MeshLight(MeshData const& mesh, float orientation, bool twoSided) : m
     }
 }
 
+bool MeshLight::boundingSphere(Vec3& center, float& radius) const {
+    center = m_center;
+    radius = m_radius;
+    return true;
+}
+
 Vec3 MeshLight::samplePoint(Vec2 const& xi, Vec3& normal) const {
     // The triangle by its share of the area, then xi.x reused within it.
     float const target = xi.x * m_area;

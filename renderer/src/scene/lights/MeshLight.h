@@ -17,7 +17,7 @@
 namespace bxdflab {
 
 class MeshLight final : public Light {
-   public:
+public:
     /// Lights with more triangles than this stay glowing geometry: every
     /// camera and Bxdf-sampled ray tests each triangle of a light.
     static constexpr size_t kMaxTriangles = 256;
@@ -28,20 +28,14 @@ class MeshLight final : public Light {
     MeshLight(MeshData const& mesh, float orientation, bool twoSided);
     const char* kind() const override { return "PxrMeshLight"; }
     LightSample sample(Vec3 const& P, Vec2 const& xi) const override;
-    bool intersect(Vec3 const& org, Vec3 const& dir, float& distance, RtColorRGB& radiance,
-                   float& pdf) const override;
+    bool intersect(Vec3 const& org, Vec3 const& dir, float& distance, RtColorRGB& radiance, float& pdf) const override;
     bool canEmit() const override { return m_area > 0.0f; }
     bool sampleEmission(Vec2 const& xiPosition, Vec2 const& xiDirection, LightEmission& out) const override;
     EmissionDensity emissionDensity(Vec3 const& point, Vec3 const& dir) const override;
-    bool boundingSphere(Vec3& center, float& radius) const override {
-        center = m_center;
-        radius = m_radius;
-        return true;
-    }
+    bool boundingSphere(Vec3& center, float& radius) const override;
     float area() const { return m_area; }
-    size_t triangleCount() const { return m_triangles.size(); }
 
-   private:
+private:
     struct Triangle {
         Vec3 p0, edge1, edge2;
         Vec3 normal;  ///< unit, toward the front
