@@ -49,6 +49,7 @@ public:
         ++m_count;
     }
     int count() const { return m_count; }
+    Vec3 const& from(int k) const { return m_from[k]; }
     /// blocked[k]: something lies in the way of ray k.
     void trace(RayTracer const& tracer, bool* blocked, RayCounts& counts) const {
         tracer.occludedStream(m_from, m_dir, m_reach, m_count, blocked, counts);
@@ -95,8 +96,10 @@ void IntegratorServices::Unoccluded(RixShadingContext const& ctx, int count, int
     stream.trace(m_tracer, blocked, m_counts);
     for (int k = 0; k < count; ++k) {
         // A light whose lit face the ray meets stops it, as it stops the Bxdf's rays.
-        Vec3 const d = toVec3(dirs[k]), from = starts.at(indices[k], d);
-        clear[k] = !blocked[k] && !lightEmitsAcross(from, d, starts.lightReach(indices[k], from, distances[k]), -d);
+        clear[k] = !blocked[k];
+        if (!clear[k] || !m_finiteLights) continue;
+        Vec3 const d = toVec3(dirs[k]), from = stream.from(k);
+        clear[k] = !lightEmitsAcross(from, d, starts.lightReach(indices[k], from, distances[k]), -d);
     }
     m_arena.release(mark);
 }

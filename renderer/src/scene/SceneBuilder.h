@@ -187,8 +187,8 @@ private:
     /// With an area light in effect, a polygon mesh of at most MeshLight::kMaxTriangles
     /// triangles becomes a mesh light: true when it did.
     bool meshAsLight(Shape const& shape);
-    /// Gives a light made for the area light in effect its radiance, handle and visibility.
-    void addAreaLight(std::unique_ptr<Light> light, AreaLightDesc const& area);
+    /// Adds a light made for the area light in effect, with its radiance, handle and visibility.
+    void addAreaLight(std::unique_ptr<Light> light, AreaLightDesc const& area, Vec3 const& radiance);
     /// The emissive material of the area light in effect (for shapes with no light of their own kind).
     int emissiveMaterial(SourceLocation const& where);
     /// The warning for a Light type this renderer does not make.

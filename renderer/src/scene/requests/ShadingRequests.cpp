@@ -376,15 +376,11 @@ bool SceneBuilder::shapeAsLight(char const* lightType, Mat4 const& lightToWorld,
         makeLight(type, params, lightToWorld, textures(), area.where, m_diagnostics,
                   [this](SourceLocation const& at, std::string const& message) { missingFile(at, message); });
     if (!light) return false;
+    Vec3 radiance = area.radiance;
     // A distant light's intensity is spread over the disc it subtends, as PxrDistantLight's is.
-    if (type == "PxrDistantLight") {
-        Vec3 const radiance =
-            area.radiance * distantLightIrradianceScale(params.getFloat("angleExtent", kSunAngleExtent), false);
-        light->color = RtColorRGB(radiance.x, radiance.y, radiance.z);
-    } else {
-        light->color = RtColorRGB(area.radiance.x, area.radiance.y, area.radiance.z);
-    }
-    addAreaLight(std::move(light), area);
+    if (type == "PxrDistantLight")
+        radiance *= distantLightIrradianceScale(params.getFloat("angleExtent", kSunAngleExtent), false);
+    addAreaLight(std::move(light), area, radiance);
     return true;
 }
 
@@ -395,13 +391,13 @@ bool SceneBuilder::meshAsLight(Shape const& shape) {
         return false;
     state().areaLight->shaped = true;
     if (!building()) return true;
-    auto light = std::make_unique<MeshLight>(mesh->data(), mesh->orientation(), state().twoSided);
-    light->color = RtColorRGB(state().areaLight->radiance.x, state().areaLight->radiance.y, state().areaLight->radiance.z);
-    addAreaLight(std::move(light), *state().areaLight);
+    AreaLightDesc const& area = *state().areaLight;
+    addAreaLight(std::make_unique<MeshLight>(mesh->data(), mesh->orientation(), state().twoSided), area, area.radiance);
     return true;
 }
 
-void SceneBuilder::addAreaLight(std::unique_ptr<Light> light, AreaLightDesc const& area) {
+void SceneBuilder::addAreaLight(std::unique_ptr<Light> light, AreaLightDesc const& area, Vec3 const& radiance) {
+    light->color = RtColorRGB(radiance.x, radiance.y, radiance.z);
     light->handle = area.handle;
     light->visibility = state().visibility;
     if (light->color.IsBlack()) {
