@@ -49,7 +49,7 @@ const std::vector<Model> kModels = {
     {"ggx", "\"float uRoughness\" [0.3] \"float vRoughness\" [0.1] \"int samplingMode\" [0]", false},
     {"ggx", "\"float uRoughness\" [0.02] \"float vRoughness\" [0.02]", true},
     {"finishedwood", "", false},
-    {"finishedwood", "\"vector fiberAxis\" [0.6 0.8 0] \"float beta\" [0.3] \"float eta\" [1.3]", false},
+    {"finishedwood", "\"vector fiberAxis\" [0.6 0.64 0.48] \"float beta\" [0.3] \"float eta\" [1.3]", false},
 };
 
 /// Runs one of the autograder's checks with the plugin as both the student's
