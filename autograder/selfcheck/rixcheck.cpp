@@ -66,7 +66,9 @@ int main(int argc, char** argv) {
             try {
                 outcome = runCheck(check, context);
             } catch (MeasurementError const& e) {
-                outcome = CheckOutcome::fail("while running " + e.call() + ": " + e.what());
+                outcome = CheckOutcome::fail(e.kind() == MeasurementError::Kind::Overran
+                                                 ? std::string(e.what())
+                                                 : "while running " + e.call() + ": " + e.what());
             }
             char const* verdict = outcome.status == CheckOutcome::Status::Passed   ? "PASS"
                                   : outcome.status == CheckOutcome::Status::Failed ? "FAIL"

@@ -647,6 +647,8 @@ Grade grade(GradeOptions const& options, Course& course, OutputFolder const& out
                         r.summary = "your plugin could not be loaded: " + std::string(m.what());
                     } else if (m.kind() == Kind::PluginError) {
                         r.summary = "your plugin threw an exception in " + m.call() + ": " + m.what();
+                    } else if (m.kind() == Kind::Overran) {
+                        r.summary = "your plugin's " + std::string(m.what());
                     } else {
                         r.summary = "the measuring process " + std::string(m.what());
                     }

@@ -95,7 +95,9 @@ std::vector<char> RemoteMeasurer::exchange(Op op, std::string const& params, uin
             std::string message(rest[1], '\0');
             io(m_child->read(4, message.data(), message.size(), deadline));
             std::string call = m_lastCall;
-            throw MeasurementError(MeasurementError::Kind::PluginError, call, message);
+            throw MeasurementError(rest[2] == wire::kErrorOverran ? MeasurementError::Kind::Overran
+                                                                  : MeasurementError::Kind::PluginError,
+                                   call, message);
         }
         if (rest[1] != expectedItems) failed(MeasurementError::Kind::BadReply, "answered with the wrong number of items");
         std::vector<char> reply(static_cast<size_t>(expectedItems) * wire::replyItemBytes(op));

@@ -13,11 +13,20 @@ Frame::Frame() {
     m_R = Mat3(1.0f) + s * K + (1.0f - c) * (K * K);
 }
 
-ProbePoint Frame::point(Vec3 const& localV) const { return point(localV, Vec3(2.5f, 0.0f, 0.8f)); }
+ProbePoint Frame::point(Vec3 const& localV) const { return point(localV, defaultTangent()); }
+
+ProbePoint Frame::bentPoint(Vec3 const& localV) const {
+    return point(localV, bentGeometricNormal(), defaultTangent());
+}
 
 ProbePoint Frame::point(Vec3 const& localV, Vec3 const& localTangent) const {
+    return point(localV, Vec3(0.0f, 0.0f, 1.0f), localTangent);
+}
+
+ProbePoint Frame::point(Vec3 const& localV, Vec3 const& localNg, Vec3 const& localTangent) const {
     ProbePoint p;
-    p.N = p.Ng = toWorld(Vec3(0.0f, 0.0f, 1.0f));
+    p.N = toWorld(Vec3(0.0f, 0.0f, 1.0f));
+    p.Ng = toWorld(localNg);
     p.dPdu = toWorld(localTangent);
     p.V = toWorld(localV);
     return p;
@@ -33,6 +42,8 @@ Vec3 direction(double thetaDegrees, double phiDegrees) {
     return Vec3(static_cast<float>(std::sin(t) * std::cos(p)), static_cast<float>(std::sin(t) * std::sin(p)),
                 static_cast<float>(std::cos(t)));
 }
+
+Vec3 bentGeometricNormal() { return direction(20, 250); }
 
 ProbePoint viewFrom(double thetaDegrees, double phiDegrees) {
     ProbePoint point;

@@ -22,14 +22,22 @@ struct Frame {
     ProbePoint point(Vec3 const& localV) const;
     /// The same with a given local tangent (dPdu), e.g. zero for a degenerate frame.
     ProbePoint point(Vec3 const& localV, Vec3 const& localTangent) const;
+    /// The first with the geometric normal at bentGeometricNormal() (the
+    /// shading normal stays +z), as on a smooth-shaded mesh.
+    ProbePoint bentPoint(Vec3 const& localV) const;
 
 private:
+    ProbePoint point(Vec3 const& localV, Vec3 const& localNg, Vec3 const& localTangent) const;
+    static Vec3 defaultTangent() { return Vec3(2.5f, 0.0f, 0.8f); }
     Mat3 m_R;
 };
 Frame const& frame();
 
 /// The local unit direction at polar angle theta and azimuth phi (degrees).
 Vec3 direction(double thetaDegrees, double phiDegrees);
+/// A local geometric normal 20 degrees from the shading normal (+z), as the
+/// interpolated normals of a smooth-shaded mesh bend one from the other.
+Vec3 bentGeometricNormal();
 /// A shade point in the probe's default frame (N = +z, dPdu = +x) seen from (theta, phi).
 ProbePoint viewFrom(double thetaDegrees, double phiDegrees = 0.0);
 /// "theta 35 deg, phi 200 deg" for a local direction.

@@ -18,10 +18,12 @@ namespace {
 
 struct View {
     double theta, phi;
+    bool bentNormal = false;  ///< the geometric normal bent away from the shading normal
 };
 
 std::vector<View> viewsFor(Exercise const& e) {
-    std::vector<View> views = {{0, 20}, {45, 20}, {80, 20}};
+    // The bent view: samples must gather about the shading normal, not the geometric one.
+    std::vector<View> views = {{0, 20}, {45, 20}, {80, 20}, {45, 20, true}};
     if (e.anisotropic) views.insert(views.end(), {{45, 110}, {80, 65}});
     if (e.transmits) views.insert(views.end(), {{130, 20}, {165, 20}});  // from inside: one beyond the critical angle
     return views;
@@ -46,7 +48,7 @@ CheckOutcome checkChiSquared(CheckContext& c) {
         for (View const& view : views) {
             ++testIndex;
             Vec3 localV = direction(view.theta, view.phi);
-            ProbePoint point = f.point(localV);
+            ProbePoint point = view.bentNormal ? f.bentPoint(localV) : f.point(localV);
             DirectionCounts counts(cells);
             long const batch = 1 << 17;
             for (long first = 0; first < samples; first += batch) {
@@ -70,8 +72,9 @@ CheckOutcome checkChiSquared(CheckContext& c) {
             integrateEmptyCellsFinely(cells, counts.observed, pdf, mass);
             DirectionTestResult t = testDirections(counts, mass);
 
-            std::string where = "with the viewer at " + describeDirection(localV) + " and sampling mode \"" +
-                                mode.name + "\"";
+            std::string where = "with the viewer at " + describeDirection(localV) +
+                                (view.bentNormal ? ", the shading normal bent 20 deg from the geometric normal," : "") +
+                                " and sampling mode \"" + mode.name + "\"";
             char line[320];
             std::snprintf(line, sizeof line,
                           "%s: %ld draws, %ld invalid; FPdf integrates to %.4f; chi-squared %.1f with %d degrees of "

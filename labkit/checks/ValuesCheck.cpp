@@ -1,5 +1,7 @@
 // values: W, FPdf, RPdf and emission equal the reference's at fixed
-// directions, for every parameter set and sampling mode, to 0.1%.
+// directions, for every parameter set and sampling mode, to 0.1%; again with
+// the parameters varying from point to point, and where the shading normal
+// is bent away from the geometric one.
 #include <cmath>
 
 #include "checks/CheckSupport.h"
@@ -32,63 +34,111 @@ CheckOutcome checkValues(CheckContext& c) {
 
     int compared = 0, differing = 0, oneSidedViews = 0;
     std::string first;
-    auto report = [&](std::string const& what, size_t i, std::string const& params, std::string const& mine,
-                      std::string const& theirs) {
+    auto reportAt = [&](std::string const& what, Vec3 const& v, Vec3 const& l, std::string const& params,
+                        std::string const& mine, std::string const& theirs, std::string const& where) {
         ++differing;
         if (!first.empty()) return;
-        first = "your " + what + " at V = " + describeDirection(localV[i]) + " and L = " +
-                describeDirection(localL[i % perView]) + ", " + withParams(params) + ", is " + mine +
-                "; the reference's is " + theirs + ".";
-        if (localV[i].z < 0) first += " This view is below the surface.";
-        if (localL[i % perView].z < 0) first += " This light direction is below the surface.";
+        first = "your " + what + " at V = " + describeDirection(v) + " and L = " + describeDirection(l) + where + ", " +
+                withParams(params) + ", is " + mine + "; the reference's is " + theirs + ".";
+        if (v.z < 0) first += " This view is below the surface.";
+        if (l.z < 0) first += " This light direction is below the surface.";
+    };
+    auto report = [&](std::string const& what, size_t i, std::string const& params, std::string const& mine,
+                      std::string const& theirs, std::string const& where) {
+        reportAt(what, localV[i], localL[i % perView], params, mine, theirs, where);
+    };
+    // W and both pdfs of one answer against the reference's.
+    auto compare = [&](ProbeResult const& m, ProbeResult const& t, Vec3 const& v, Vec3 const& l,
+                       std::string const& params, std::string const& modeName, std::string const& where) {
+        compared += 3;
+        bool sameW = true;
+        for (int k = 0; k < 3; ++k) sameW = sameW && close(m.W[k], t.W[k], tolerance);
+        if (!sameW) reportAt("W = f cos(theta_L)", v, l, params, describe(m.W), describe(t.W), where);
+        if (!close(m.FPdf, t.FPdf, tolerance))
+            reportAt("FPdf (sampling mode " + modeName + ")", v, l, params, number(m.FPdf), number(t.FPdf), where);
+        if (!close(m.RPdf, t.RPdf, tolerance))
+            reportAt("RPdf (sampling mode " + modeName + ")", v, l, params, number(m.RPdf), number(t.RPdf), where);
     };
 
-    for (std::string const& base : {e.params, e.colorParams}) {
-        bool firstMode = true;
-        for (SamplingMode const& mode : e.samplingModes) {
-            std::string const params = e.withMode(base, mode);
-            auto mine = c.plugin.evaluate(params, points, L), theirs = c.reference.evaluate(params, points, L);
-            if (firstMode) {
-                auto emitMine = c.plugin.emission(params, points), emitTheirs = c.reference.emission(params, points);
-                for (size_t i = 0; i < points.size(); i += perView) {
-                    ++compared;
-                    bool same = true;
-                    for (int k = 0; k < 3; ++k) same = same && close(emitMine[i][k], emitTheirs[i][k], tolerance);
-                    if (!same) report("emission (EmitLocal)", i, params, describe(emitMine[i]), describe(emitTheirs[i]));
-                }
-            }
-            firstMode = false;
-            for (size_t view = 0; view < viewThetas.size(); ++view) {
-                size_t begin = view * perView;
-                bool below = localV[begin].z < 0;
-                if (below && e.sides == Sidedness::Either) {
-                    // A one-sided model is black from below: accepted, like the reference's two-sided answer.
-                    bool black = true;
-                    for (size_t i = begin; i < begin + perView; ++i)
-                        black = black && mine[i].W.IsBlack() && mine[i].FPdf == 0.0f;
-                    if (black) {
-                        ++oneSidedViews;
-                        continue;
+    // Each parameter set as given, then differing from point to point as a
+    // texture makes it (where a Bxdf reads point 0's value for every point).
+    std::string const varyingNote = " (the parameters varying from point to point, as a texture makes them)";
+    for (bool varying : {false, true}) {
+        for (std::string const& base : {e.params, e.colorParams}) {
+            bool firstMode = true;
+            for (SamplingMode const& mode : e.samplingModes) {
+                std::string const params = e.withMode(base, mode);
+                std::string const asked = varying ? varyingParams(params) : params;
+                std::string const note = varying ? varyingNote : "";
+                auto mine = c.plugin.evaluate(asked, points, L), theirs = c.reference.evaluate(asked, points, L);
+                if (firstMode) {
+                    auto emitMine = c.plugin.emission(asked, points), emitTheirs = c.reference.emission(asked, points);
+                    for (size_t i = 0; i < points.size(); i += perView) {
+                        ++compared;
+                        bool same = true;
+                        for (int k = 0; k < 3; ++k) same = same && close(emitMine[i][k], emitTheirs[i][k], tolerance);
+                        if (!same)
+                            report("emission (EmitLocal)", i, params, describe(emitMine[i]), describe(emitTheirs[i]),
+                                   note);
                     }
                 }
-                for (size_t i = begin; i < begin + perView; ++i) {
-                    compared += 3;
-                    bool sameW = true;
-                    for (int k = 0; k < 3; ++k) sameW = sameW && close(mine[i].W[k], theirs[i].W[k], tolerance);
-                    if (!sameW) report("W = f cos(theta_L)", i, params, describe(mine[i].W), describe(theirs[i].W));
-                    if (!close(mine[i].FPdf, theirs[i].FPdf, tolerance))
-                        report("FPdf (sampling mode " + mode.name + ")", i, params, number(mine[i].FPdf),
-                               number(theirs[i].FPdf));
-                    if (!close(mine[i].RPdf, theirs[i].RPdf, tolerance))
-                        report("RPdf (sampling mode " + mode.name + ")", i, params, number(mine[i].RPdf),
-                               number(theirs[i].RPdf));
+                firstMode = false;
+                for (size_t view = 0; view < viewThetas.size(); ++view) {
+                    size_t begin = view * perView;
+                    bool below = localV[begin].z < 0;
+                    if (below && e.sides == Sidedness::Either) {
+                        // A one-sided model is black from below: accepted, like the reference's two-sided answer.
+                        bool black = true;
+                        for (size_t i = begin; i < begin + perView; ++i)
+                            black = black && mine[i].W.IsBlack() && mine[i].FPdf == 0.0f;
+                        if (black) {
+                            ++oneSidedViews;
+                            continue;
+                        }
+                    }
+                    for (size_t i = begin; i < begin + perView; ++i)
+                        compare(mine[i], theirs[i], localV[i], localL[i % perView], params, mode.name, note);
                 }
             }
         }
     }
+
+    // Interpolated normals on a smooth-shaded mesh bend the shading normal N
+    // away from the geometric normal Ng; the model's cosines and lobes follow N.
+    // Compared only where V and L are clearly on the same side of both: what
+    // to do between the two horizons is left to the writer.
+    Vec3 const localNg = bentGeometricNormal();
+    auto clearOfBoth = [&](Vec3 const& w) {
+        float const n = w.z, g = glm::dot(w, localNg);
+        return (n > 0.0f) == (g > 0.0f) && std::min(std::fabs(n), std::fabs(g)) > 0.1f;
+    };
+    std::vector<ProbePoint> bentPoints;
+    std::vector<Vec3> bentL, bentLocalV, bentLocalL;
+    for (double thetaV : {0.0, 30.0, 60.0}) {
+        Vec3 const V = direction(thetaV, 20);
+        if (!clearOfBoth(V)) continue;
+        for (Vec3 const& l : localL) {
+            if (!clearOfBoth(l)) continue;
+            bentPoints.push_back(f.bentPoint(V));
+            bentL.push_back(f.toWorld(l));
+            bentLocalV.push_back(V);
+            bentLocalL.push_back(l);
+        }
+    }
+    std::string const bent = " (the shading normal bent 20 deg from the geometric normal)";
+    for (std::string const& base : {e.params, e.colorParams})
+        for (SamplingMode const& mode : e.samplingModes) {
+            std::string const params = e.withMode(base, mode);
+            auto mine = c.plugin.evaluate(params, bentPoints, bentL);
+            auto theirs = c.reference.evaluate(params, bentPoints, bentL);
+            for (size_t i = 0; i < bentPoints.size(); ++i)
+                compare(mine[i], theirs[i], bentLocalV[i], bentLocalL[i], params, mode.name, bent);
+        }
     std::string details = std::to_string(compared) + " values compared at " + std::to_string(viewThetas.size()) +
-                          " views and " + std::to_string(perView) + " light directions, to " + number(100 * tolerance) +
-                          "%.";
+                          " views and " + std::to_string(perView) +
+                          " light directions (each parameter set as given and varying from point to point), and at " +
+                          std::to_string(bentPoints.size()) + " view and light pairs with a bent shading normal, to " +
+                          number(100 * tolerance) + "%.";
     if (oneSidedViews)
         details += " Your model is black seen from below (one-sided); the exercise accepts that.";
     if (differing)

@@ -2,6 +2,18 @@
 
 namespace bxdflab {
 
+namespace {
+char const kVaryingMark[] = "# each value varies from point to point\n";
+}
+
+std::string varyingParams(std::string const& params) { return kVaryingMark + params; }
+
+bool takeVaryingMark(std::string& params) {
+    if (params.rfind(kVaryingMark, 0) != 0) return false;
+    params.erase(0, sizeof kVaryingMark - 1);
+    return true;
+}
+
 std::vector<SampleSpec> stratifiedSamples(size_t count, uint32_t seed, uint32_t first) {
     std::vector<SampleSpec> samples(count);
     for (size_t i = 0; i < count; ++i)

@@ -24,6 +24,7 @@ public:
         Crashed,      ///< the process running the plugin died (signal or exit)
         Hung,         ///< no answer within the time allowed
         BadReply,     ///< an answer that does not have the promised form
+        Overran,      ///< the plugin wrote past the end of an array it was given (message says where)
     };
     MeasurementError(Kind kind, std::string call, std::string const& what)
         : std::runtime_error(what), m_kind(kind), m_call(std::move(call)) {}
@@ -52,7 +53,8 @@ public:
     virtual ~BxdfMeasurer() = default;
 
     /// `params` are written as on a RIB Bxdf line ("\"float gloss\" [30]");
-    /// every call may use a different set.
+    /// every call may use a different set, and varyingParams() makes a set
+    /// differ from point to point.
     virtual RixBXLobeTraits lobes(std::string const& params) = 0;
     virtual std::vector<ProbeResult> evaluate(std::string const& params, std::vector<ProbePoint> const& points,
                                               std::vector<Vec3> const& L) = 0;
@@ -67,6 +69,14 @@ public:
                                                           std::vector<RtFloat2> const& xi) = 0;
     virtual std::vector<float> directionPdfs(SamplingFunction f, float exponent, std::vector<Vec3> const& w) = 0;
 };
+
+/// `params` made to differ from point to point, as a texture connected to
+/// them would: every float and colour the Bxdf reads per point (EvalParam
+/// with promote) is scaled at point i by BxdfProbe::varyingShare(i). The
+/// mark is a RIB comment, so the set stays a valid parameter list.
+std::string varyingParams(std::string const& params);
+/// Removes varyingParams()'s mark from `params`; true when it was there.
+bool takeVaryingMark(std::string& params);
 
 // Common ways of drawing random numbers, built on generate().
 

@@ -6,6 +6,20 @@
 
 namespace bxdflab {
 
+namespace {
+
+/// Runs one probe call; a write past an array becomes the measurement error
+/// the checks report, naming the plugin function that made it.
+template <typename Call> auto guarded(Call&& call) {
+    try {
+        return call();
+    } catch (MemoryOverrun const& e) {
+        throw MeasurementError(MeasurementError::Kind::Overran, e.call(), e.what());
+    }
+}
+
+}  // namespace
+
 ProbeMeasurer::ProbeMeasurer(std::string plugin, std::vector<std::string> searchPath, Diagnostics& diagnostics,
                              BxdfProbe::CallObserver observer)
     : m_plugin(std::move(plugin)), m_searchPath(std::move(searchPath)), m_diagnostics(diagnostics), m_observer(observer) {}
@@ -16,7 +30,10 @@ BxdfProbe& ProbeMeasurer::probe(std::string const& params) {
     auto& slot = m_probes[params];
     if (!slot) {
         try {
-            slot = std::make_unique<BxdfProbe>(m_plugin, params, m_searchPath, m_diagnostics, false, m_observer);
+            std::string ribParams = params;
+            bool const varying = takeVaryingMark(ribParams);
+            slot = std::make_unique<BxdfProbe>(m_plugin, ribParams, m_searchPath, m_diagnostics, false, m_observer);
+            slot->setParamsVaryPerPoint(varying);
         } catch (std::exception const& e) {
             m_probes.erase(params);
             throw MeasurementError(MeasurementError::Kind::PluginError, "loading the plugin", e.what());
@@ -27,30 +44,30 @@ BxdfProbe& ProbeMeasurer::probe(std::string const& params) {
 
 RixBXLobeTraits ProbeMeasurer::lobes(std::string const& params) {
     std::lock_guard<std::mutex> guard(m_lock);
-    return probe(params).lobes();
+    return guarded([&] { return probe(params).lobes(); });
 }
 
 std::vector<ProbeResult> ProbeMeasurer::evaluate(std::string const& params, std::vector<ProbePoint> const& points,
                                                  std::vector<Vec3> const& L) {
     std::lock_guard<std::mutex> guard(m_lock);
-    return probe(params).evaluate(points, L);
+    return guarded([&] { return probe(params).evaluate(points, L); });
 }
 
 std::vector<ProbeResult> ProbeMeasurer::generate(std::string const& params, std::vector<ProbePoint> const& points,
                                                  std::vector<SampleSpec> const& samples) {
     std::lock_guard<std::mutex> guard(m_lock);
-    return probe(params).generate(points, samples);
+    return guarded([&] { return probe(params).generate(points, samples); });
 }
 
 std::vector<ProbeResult> ProbeMeasurer::evaluateAtIndex(std::string const& params, ProbePoint const& point,
                                                         std::vector<Vec3> const& L) {
     std::lock_guard<std::mutex> guard(m_lock);
-    return probe(params).evaluateAtIndex(point, L);
+    return guarded([&] { return probe(params).evaluateAtIndex(point, L); });
 }
 
 std::vector<RtColorRGB> ProbeMeasurer::emission(std::string const& params, std::vector<ProbePoint> const& points) {
     std::lock_guard<std::mutex> guard(m_lock);
-    return probe(params).emission(points);
+    return guarded([&] { return probe(params).emission(points); });
 }
 
 void ProbeMeasurer::loadSampling() {

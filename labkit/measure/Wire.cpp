@@ -122,9 +122,9 @@ bool writeAll(int fd, void const* buffer, size_t bytes) {
     return true;
 }
 
-void replyError(int out, Op op, std::string message) {
+void replyError(int out, Op op, std::string message, uint32_t error) {
     if (message.size() > kMaxMessageBytes) message.resize(kMaxMessageBytes);
-    ReplyHeader header{kReplyMagic, static_cast<uint32_t>(op), static_cast<uint32_t>(message.size()), 1u};
+    ReplyHeader header{kReplyMagic, static_cast<uint32_t>(op), static_cast<uint32_t>(message.size()), error};
     writeAll(out, &header, sizeof header);
     writeAll(out, message.data(), message.size());
 }
@@ -222,8 +222,12 @@ void serve(int in, int out, BxdfMeasurer& measurer) {
         std::vector<char> reply;
         try {
             reply = answer(op, params, header.count, payload, measurer);
+        } catch (MeasurementError const& e) {
+            bool const overran = e.kind() == MeasurementError::Kind::Overran;
+            replyError(out, op, e.what(), overran ? kErrorOverran : kErrorThrown);
+            continue;
         } catch (std::exception const& e) {
-            replyError(out, op, e.what());
+            replyError(out, op, e.what(), kErrorThrown);
             continue;
         }
         uint32_t replyCount = static_cast<uint32_t>(reply.size() / replyItemBytes(op));

@@ -44,6 +44,8 @@ struct RequestHeader {
 struct ReplyHeader {
     uint32_t magic, op, count, status;  ///< status 0: count items follow; else count message bytes
 };
+constexpr uint32_t kErrorThrown = 1u;   ///< status: the plugin or the probe threw (the message says what)
+constexpr uint32_t kErrorOverran = 2u;  ///< status: the plugin wrote past the end of an array it was given
 struct CallRecord {
     uint32_t magic, length;  ///< then `length` bytes naming the call
 };

@@ -1,5 +1,9 @@
 #include "probe/BxdfProbe.h"
 
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
 #include "RixBxdfScratch.h"
 #include "scene/SceneBuilder.h"
 #include "shade/BxdfInstance.h"
@@ -12,11 +16,15 @@ namespace bxdflab {
 namespace {
 
 /// A RixShadingContext whose builtins are the hand-made probe points.
+/// Every block it hands out (the arrays a Bxdf is given, its lobe weights,
+/// the Bxdf object itself) is followed by a guard band of known bytes, so that
+/// a write past the end of one -- a loop that runs to i <= numPts -- is seen
+/// instead of silently damaging the next array.
 class ProbeShadingContext final : public RixShadingContext {
 public:
     ProbeShadingContext(BxdfInstance const& material, std::vector<ProbePoint> const& points, MemoryArena& arena,
-                        RixInterface* messages)
-        : m_material(material), m_arena(arena), m_messages(messages) {
+                        RixInterface* messages, bool paramsVary)
+        : m_material(material), m_arena(arena), m_messages(messages), m_paramsVary(paramsVary) {
         numPts = static_cast<int>(points.size());
         auto n = static_cast<size_t>(numPts);
         auto* P = arena.allocArray<RtPoint3>(n);
@@ -65,16 +73,40 @@ protected:
     }
     RixSCDetail Param(int id, int arrayIndex, RixSCType wanted, size_t elementSize, void const** result,
                       void const* dflt, bool promote) const override {
-        return evalUniformParam(m_material.params(), {id, arrayIndex, wanted, elementSize, dflt, promote}, result,
-                                numPts, m_arena);
+        RixSCDetail detail = evalUniformParam(m_material.params(), {id, arrayIndex, wanted, elementSize, dflt, promote},
+                                              result, numPts, m_arena);
+        if (!m_paramsVary || !promote || !*result || (wanted != k_RixSCFloat && wanted != k_RixSCColor)) return detail;
+        size_t const floats = elementSize / sizeof(float), count = floats * static_cast<size_t>(numPts);
+        auto const* same = static_cast<float const*>(*result);
+        float* varied = m_arena.allocArray<float>(count);
+        for (size_t k = 0; k < count; ++k) varied[k] = same[k] * BxdfProbe::varyingShare(static_cast<int>(k / floats));
+        *result = varied;
+        return k_RixSCVarying;
     }
-    void* Allocate(size_t bytes, size_t alignment) const override { return m_arena.allocate(bytes, alignment); }
+    void* Allocate(size_t bytes, size_t alignment) const override {
+        auto* block = static_cast<unsigned char*>(m_arena.allocate(bytes + kGuardBytes, alignment));
+        std::memset(block + bytes, kGuardByte, kGuardBytes);
+        m_guards.push_back(block + bytes);
+        return block;
+    }
+
+public:
+    /// False once anything has written into a guard band.
+    bool guardsIntact() const {
+        return std::all_of(m_guards.begin(), m_guards.end(), [](unsigned char const* guard) {
+            return std::all_of(guard, guard + kGuardBytes, [](unsigned char b) { return b == kGuardByte; });
+        });
+    }
 
 private:
+    static constexpr size_t kGuardBytes = 64;  // a whole colour or vector and then some, past any array
+    static constexpr unsigned char kGuardByte = 0xA5;
     BxdfInstance const& m_material;
     MemoryArena& m_arena;
     RixInterface* m_messages;
+    bool m_paramsVary;
     void* m_builtins[k_numBuiltins] = {};
+    mutable std::vector<unsigned char*> m_guards;
 };
 
 }  // namespace
@@ -97,23 +129,35 @@ struct BxdfProbe::Impl {
         return pluginSearchPath({joined, {}, ""});
     }
 
-    /// Runs `body` with a Bxdf built for `points`, then releases it.
+    /// Runs `body` with a Bxdf built for `points`, then releases it. A call
+    /// that wrote past the end of memory the context gave out is an error
+    /// (after EndScatter, so that the Bxdf is released either way).
     template <typename Body>
     void withBxdf(std::vector<ProbePoint> const& points, Body&& body) {
         arena.reset();
-        ProbeShadingContext ctx(*instance, points, arena, &instance->plugin().messages());
+        ProbeShadingContext ctx(*instance, points, arena, &instance->plugin().messages(), paramsVary);
         RixBxdfFactory* factory = instance->plugin().factory();
         announce("BeginScatter");
         RixBxdf* bxdf = factory->BeginScatter(&ctx, RixBXLobeTraits::All(), k_RixSCScatterQuery, nullptr,
                                               instance->instanceData());
         if (!bxdf) throw RenderError("plugin \"" + instance->plugin().name() + "\": BeginScatter returned null");
+        char const* overran = ctx.guardsIntact() ? nullptr : "BeginScatter";
         body(ctx, *bxdf);
+        if (!overran && !ctx.guardsIntact()) overran = lastCall;
         announce("EndScatter");
         factory->EndScatter(bxdf);
+        if (!overran && !ctx.guardsIntact()) overran = "EndScatter";
+        if (overran)
+            throw MemoryOverrun(overran, std::string(overran) +
+                                             " wrote past the end of an array the shading context gave it (numPts is " +
+                                             std::to_string(ctx.numPts) + " here: does a loop run to i <= numPts?)");
     }
-    void announce(char const* call) const {
+    void announce(char const* call) {
+        lastCall = call;
         if (observer) observer(call);
     }
+    char const* lastCall = "";
+    bool paramsVary = false;
 };
 
 BxdfProbe::BxdfProbe(std::string const& plugin, std::string const& ribParams, std::vector<std::string> const& searchPath,
@@ -140,6 +184,14 @@ BxdfProbe::~BxdfProbe() {
 }
 
 void BxdfProbe::setCallObserver(CallObserver observer) { m_impl->observer = observer; }
+
+void BxdfProbe::setParamsVaryPerPoint(bool vary) { m_impl->paramsVary = vary; }
+
+float BxdfProbe::varyingShare(int i) {
+    float const golden = 0.618034f;  // consecutive points spread evenly over the range
+    float const phase = static_cast<float>(i) * golden;
+    return 0.85f + 0.15f * (phase - std::floor(phase));
+}
 
 std::vector<ProbeResult> BxdfProbe::generate(std::vector<ProbePoint> const& points,
                                              std::vector<RixRNG::SampleCtx> samples) {
@@ -216,9 +268,11 @@ std::vector<ProbeResult> BxdfProbe::evaluateAtIndex(ProbePoint const& point, std
 
 std::vector<RtColorRGB> BxdfProbe::emission(std::vector<ProbePoint> const& points) {
     std::vector<RtColorRGB> out(points.size(), RtColorRGB(0.0f));
-    m_impl->withBxdf(points, [&](RixShadingContext const&, RixBxdf& bxdf) {
+    m_impl->withBxdf(points, [&](RixShadingContext const& ctx, RixBxdf& bxdf) {
+        auto* emitted = RixShadingContext::Allocator(&ctx).AllocFor<RtColorRGB>(ctx.numPts);
+        for (int i = 0; i < ctx.numPts; ++i) emitted[i] = RtColorRGB(0.0f);
         m_impl->announce("EmitLocal");
-        if (!bxdf.EmitLocal(out.data())) std::fill(out.begin(), out.end(), RtColorRGB(0.0f));
+        if (bxdf.EmitLocal(emitted)) std::copy(emitted, emitted + ctx.numPts, out.begin());
     });
     return out;
 }

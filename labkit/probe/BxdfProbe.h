@@ -5,6 +5,7 @@
 #pragma once
 
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -13,6 +14,19 @@
 #include "core/Math.h"
 
 namespace bxdflab {
+
+/// A plugin function (call()) wrote past the end of memory the shading context
+/// gave it (an array of numPts entries, or a block it allocated itself);
+/// what() says so, naming the function, so that the message stands alone
+/// when it crosses to the grader.
+class MemoryOverrun : public std::runtime_error {
+public:
+    MemoryOverrun(std::string call, std::string const& what) : std::runtime_error(what), m_call(std::move(call)) {}
+    std::string const& call() const { return m_call; }
+
+private:
+    std::string m_call;
+};
 
 /// A shade point set up by hand.
 struct ProbePoint {
@@ -38,7 +52,8 @@ public:
     /// Loads `plugin` (searching `searchPath`, then, when searchBuiltins is
     /// set, the usual plugin search path with the built-in folders) and makes
     /// one instance with `ribParams`, written as in a RIB Bxdf line, e.g.
-    /// "\"color diffuseColor\" [1 1 1]". Throws RenderError/RibError.
+    /// "\"color diffuseColor\" [1 1 1]". Throws RenderError/RibError. Every
+    /// call below throws MemoryOverrun when the plugin wrote past an array.
     BxdfProbe(std::string const& plugin, std::string const& ribParams, std::vector<std::string> const& searchPath,
               Diagnostics& diagnostics, bool searchBuiltins = true, CallObserver observer = nullptr);
     ~BxdfProbe();
@@ -62,6 +77,12 @@ public:
     /// on the right one. The constructor's calls (loading, CreateInstanceData,
     /// Synchronize) are announced through the same hook when it is given there.
     void setCallObserver(CallObserver observer);
+    /// Makes every float and colour parameter the Bxdf reads per point (EvalParam
+    /// with promote) differ from point to point, as a connected texture makes it:
+    /// point i gets varyingShare(i) of the value.
+    void setParamsVaryPerPoint(bool vary);
+    /// A share in [0.85, 1], different for neighbouring points.
+    static float varyingShare(int i);
 
 private:
     struct Impl;
