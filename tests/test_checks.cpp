@@ -76,6 +76,45 @@ TEST_CASE("a cell whose samples the adaptive rule cannot explain is integrated f
     CHECK(untouched[target] == 0.0);  // no sample fell there: nothing to explain
 }
 
+TEST_CASE("a sliver thinner than the fine grid is judged by the pdf at the draw that fell in it", "[checks][stats]") {
+    // A horizon tilted across a cell can leave the pdf non-zero in a corner
+    // that no node of the 64 x 64 grid reaches: a draw there is legitimate
+    // exactly when the pdf at the draw itself is non-zero.
+    DirectionCells cells;
+    int const target = 100;
+    double z0, z1, phi0, phi1;
+    cells.bounds(target, z0, z1, phi0, phi1);
+    double const edge = phi0 + 1e-4 * (phi1 - phi0);  // far thinner than a grid column
+    BatchPdf pdf = [&](std::vector<Vec3> const& w) {
+        std::vector<double> p;
+        for (auto const& d : w) {
+            double phi = std::atan2(d.y, d.x);
+            if (phi < 0) phi += 2 * M_PI;
+            p.push_back(phi < edge && d.z > z0 && d.z < z1 ? 2.0 : 0.0);
+        }
+        return p;
+    };
+    std::vector<double> observed(static_cast<size_t>(cells.count()), 0.0);
+    observed[target] = 1.0;
+    std::vector<Vec3> examples(observed.size(), Vec3(0.0f));
+    double const zMid = 0.5 * (z0 + z1);
+    auto directionAtPhi = [&](double phi) { return directionAt(zMid, phi); };
+
+    std::vector<double> mass(observed.size(), 0.0);
+    integrateEmptyCellsFinely(cells, observed, pdf, mass);
+    CHECK(mass[target] == 0.0);  // without the draw the grid sees nothing
+
+    examples[static_cast<size_t>(target)] = directionAtPhi(phi0 + 0.5e-4 * (phi1 - phi0));  // inside the sliver
+    integrateEmptyCellsFinely(cells, observed, pdf, mass, 64, &examples);
+    CHECK(mass[target] > 0.0);
+    CHECK(mass[target] < 1e-5);  // a grid node's share: too little to weigh in the test
+
+    examples[static_cast<size_t>(target)] = directionAtPhi(0.5 * (phi0 + phi1));  // where the pdf is zero
+    std::vector<double> impossible(observed.size(), 0.0);
+    integrateEmptyCellsFinely(cells, observed, pdf, impossible, 64, &examples);
+    CHECK(impossible[target] == 0.0);
+}
+
 TEST_CASE("a transmitting exercise reads its refractive index from its own parameters", "[checks][exercise]") {
     Exercise e;
     e.transmits = true;

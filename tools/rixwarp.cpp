@@ -76,7 +76,7 @@ int main(int argc, char** argv) {
             return values;
         };
         auto mass = integrateCells(cells, pdf, toleranceForSamples(samples));
-        integrateEmptyCellsFinely(cells, counts.observed, pdf, mass);
+        integrateEmptyCellsFinely(cells, counts.observed, pdf, mass, 64, &counts.example);
         DirectionTestResult t = testDirections(counts, mass);
         ChiSquaredResult const& chi = t.chi;
         std::vector<double> observed = counts.observed, expected;

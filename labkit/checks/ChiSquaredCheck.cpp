@@ -69,7 +69,7 @@ CheckOutcome checkChiSquared(CheckContext& c) {
                 return out;
             };
             auto mass = integrateCells(cells, pdf, toleranceForSamples(static_cast<double>(samples)));
-            integrateEmptyCellsFinely(cells, counts.observed, pdf, mass);
+            integrateEmptyCellsFinely(cells, counts.observed, pdf, mass, 64, &counts.example);
             DirectionTestResult t = testDirections(counts, mass);
 
             std::string where = "with the viewer at " + describeDirection(localV) +

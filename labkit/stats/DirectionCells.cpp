@@ -118,7 +118,7 @@ std::vector<double> integrateCells(DirectionCells const& cells, BatchPdf const& 
 }
 
 void integrateEmptyCellsFinely(DirectionCells const& cells, std::vector<double> const& observed, BatchPdf const& pdf,
-                               std::vector<double>& mass, int resolution) {
+                               std::vector<double>& mass, int resolution, std::vector<Vec3> const* examples) {
     for (size_t cell = 0; cell < mass.size(); ++cell) {
         if (mass[cell] != 0.0 || !(observed[cell] > 0.0)) continue;
         double z0, z1, phi0, phi1;
@@ -130,7 +130,12 @@ void integrateEmptyCellsFinely(DirectionCells const& cells, std::vector<double> 
                                              phi0 + (phi1 - phi0) * (j + 0.5) / resolution));
         double sum = 0.0;
         for (double v : pdf(points)) sum += std::isfinite(v) ? v : 0.0;
-        mass[cell] = sum * (z1 - z0) * (phi1 - phi0) / (static_cast<double>(resolution) * resolution);
+        double const nodeShare = (z1 - z0) * (phi1 - phi0) / (static_cast<double>(resolution) * resolution);
+        mass[cell] = sum * nodeShare;
+        if (mass[cell] == 0.0 && examples) {
+            double const atDraw = pdf({(*examples)[cell]}).front();
+            if (std::isfinite(atDraw) && atDraw > 0.0) mass[cell] = atDraw * nodeShare;
+        }
     }
 }
 

@@ -40,9 +40,14 @@ std::vector<double> integrateCells(DirectionCells const& cells, BatchPdf const& 
 /// Cells whose adaptive integral came out zero although samples fell in them
 /// are integrated again by the midpoint rule on a fine grid (resolution^2
 /// points): the pdf may be non-zero only in a sliver of such a cell (the edge of
-/// the directions a refraction can reach) that every node of the rule missed.
+/// the directions a refraction can reach, a geometric horizon tilted across the
+/// cell) that every node of the rule missed. Where even the fine grid finds
+/// nothing and `examples` gives a draw that fell in the cell, the pdf at that
+/// draw decides: non-zero there, the cell gets one grid node's share of mass
+/// (a sliver thinner than the grid); zero, the draw is where the pdf says none can be.
 void integrateEmptyCellsFinely(DirectionCells const& cells, std::vector<double> const& observed, BatchPdf const& pdf,
-                               std::vector<double>& mass, int resolution = 64);
+                               std::vector<double>& mass, int resolution = 64,
+                               std::vector<Vec3> const* examples = nullptr);
 
 /// For a chi-squared test on `samples` draws: splitting stops when the cell's
 /// error is below a twentieth of the sampling noise of its count.

@@ -17,10 +17,13 @@ void DirectionCounts::add(bool valid, Vec3 const& local, float pdf) {
         return;
     }
     int cell = cells.cellOf(local / length);
-    if (cell < 0)
+    if (cell < 0) {
         ++outside;
-    else
-        observed[static_cast<size_t>(cell)] += 1.0;
+        return;
+    }
+    auto const index = static_cast<size_t>(cell);
+    if (observed[index] == 0.0) example[index] = local / length;
+    observed[index] += 1.0;
 }
 
 DirectionTestResult testDirections(DirectionCounts const& counts, std::vector<double> const& cellMass) {

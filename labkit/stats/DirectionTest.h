@@ -13,9 +13,11 @@
 namespace bxdflab {
 
 struct DirectionCounts {
-    explicit DirectionCounts(DirectionCells const& c) : cells(c), observed(static_cast<size_t>(c.count()), 0.0) {}
+    explicit DirectionCounts(DirectionCells const& c)
+        : cells(c), observed(static_cast<size_t>(c.count()), 0.0), example(observed.size(), Vec3(0.0f)) {}
     DirectionCells cells;
     std::vector<double> observed;  ///< valid samples per cell
+    std::vector<Vec3> example;     ///< per cell, the first valid draw that fell there (unit; zero if none)
     long total = 0;       ///< draws
     long invalid = 0;     ///< draws that came back invalid (no direction)
     long outside = 0;     ///< valid draws outside the cells (below the horizon of a reflection model)
