@@ -71,9 +71,10 @@ public:
 };
 
 /// `params` made to differ from point to point, as a texture connected to
-/// them would: every float and colour the Bxdf reads per point (EvalParam
-/// with promote) is scaled at point i by BxdfProbe::varyingShare(i). The
-/// mark is a RIB comment, so the set stays a valid parameter list.
+/// them would: every float, colour and vector the Bxdf reads per point
+/// (EvalParam with promote) changes with the point (BxdfProbe::
+/// setParamsVaryPerPoint). The mark is a RIB comment, so the set stays a
+/// valid parameter list.
 std::string varyingParams(std::string const& params);
 /// Removes varyingParams()'s mark from `params`; true when it was there.
 bool takeVaryingMark(std::string& params);

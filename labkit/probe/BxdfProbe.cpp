@@ -75,11 +75,19 @@ protected:
                       void const* dflt, bool promote) const override {
         RixSCDetail detail = evalUniformParam(m_material.params(), {id, arrayIndex, wanted, elementSize, dflt, promote},
                                               result, numPts, m_arena);
-        if (!m_paramsVary || !promote || !*result || (wanted != k_RixSCFloat && wanted != k_RixSCColor)) return detail;
+        bool const scaled = wanted == k_RixSCFloat || wanted == k_RixSCColor;
+        bool const turned = wanted == k_RixSCVector || wanted == k_RixSCNormal;
+        if (!m_paramsVary || !promote || !*result || !(scaled || turned)) return detail;
         size_t const floats = elementSize / sizeof(float), count = floats * static_cast<size_t>(numPts);
         auto const* same = static_cast<float const*>(*result);
         float* varied = m_arena.allocArray<float>(count);
-        for (size_t k = 0; k < count; ++k) varied[k] = same[k] * BxdfProbe::varyingShare(static_cast<int>(k / floats));
+        for (size_t k = 0; k < count; ++k) {
+            float const share = BxdfProbe::varyingShare(static_cast<int>(k / floats));
+            // A direction scaled is the same direction: a vector is turned instead,
+            // by adding a share of its own components taken in turn (x from y, ...).
+            size_t const next = k - k % floats + (k % floats + 1) % floats;
+            varied[k] = scaled ? same[k] * share : same[k] + (1.0f - share) * same[next];
+        }
         *result = varied;
         return k_RixSCVarying;
     }

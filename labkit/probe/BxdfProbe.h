@@ -77,9 +77,10 @@ public:
     /// on the right one. The constructor's calls (loading, CreateInstanceData,
     /// Synchronize) are announced through the same hook when it is given there.
     void setCallObserver(CallObserver observer);
-    /// Makes every float and colour parameter the Bxdf reads per point (EvalParam
-    /// with promote) differ from point to point, as a connected texture makes it:
-    /// point i gets varyingShare(i) of the value.
+    /// Makes every float, colour and vector parameter the Bxdf reads per point
+    /// (EvalParam with promote) differ from point to point, as a connected
+    /// texture makes it: point i gets varyingShare(i) of a float or colour, and
+    /// a vector turned by adding 1 - varyingShare(i) of its components in turn.
     void setParamsVaryPerPoint(bool vary);
     /// A share in [0.85, 1], different for neighbouring points.
     static float varyingShare(int i);
