@@ -341,3 +341,37 @@ TEST_CASE("chapter 7: the buggydiffuse starter's GenerateSample and EvaluateSamp
     CHECK(mismatches(buggy) > 200);
     CHECK(mismatches(fixed) == 0);
 }
+
+TEST_CASE("varying parameters follow a point moved one place later in its batch", "[solutions][checks]") {
+    // The mark that asks for parameters varying per point survives the trip
+    // (it crosses to the sandboxed measurer as text) and nothing else is
+    // taken for it.
+    std::string const params = "\"float gloss\" [40]";
+    for (int firstShare : {-1, 0, 7}) {
+        std::string marked = varyingParams(params, firstShare);
+        REQUIRE(takeVaryingMark(marked) == firstShare);
+        CHECK(marked == params);
+    }
+    std::string other = "# each value varies from point to point, starting at share x\n" + params;
+    CHECK_FALSE(takeVaryingMark(other).has_value());
+    CHECK(other.size() > params.size());
+
+    // Point i takes share i + firstShare: moved one place later with
+    // firstShare - 1, a point keeps its gloss, and the plastic solution its
+    // answer; moved without it, the point's gloss (and answer) changes.
+    static Diagnostics quiet(false);
+    ProbeMeasurer plastic("plastic", {SOLUTION_PLUGIN_DIR}, quiet);
+    std::vector<ProbePoint> points = {viewFrom(10, 0), viewFrom(30, 90), viewFrom(50, 200)};
+    std::vector<Vec3> L = {direction(12, 180), direction(30, 270), direction(50, 20)};  // near each mirror direction
+    std::vector<ProbePoint> moved = {viewFrom(70, 45), points[0], points[1]};
+    std::vector<Vec3> movedL = {direction(70, 225), L[0], L[1]};
+    std::string const full = "\"color specularColor\" [1 1 1] \"color diffuseColor\" [0 0 0] " + params;
+    auto before = plastic.evaluate(varyingParams(full, 0), points, L);
+    auto kept = plastic.evaluate(varyingParams(full, -1), moved, movedL);
+    auto shifted = plastic.evaluate(varyingParams(full, 0), moved, movedL);
+    for (size_t j = 0; j < 2; ++j) {
+        CAPTURE(j);
+        CHECK(kept[j + 1].W[0] == before[j].W[0]);
+        CHECK(std::fabs(shifted[j + 1].W[0] - before[j].W[0]) > 1e-3f * before[j].W[0]);
+    }
+}

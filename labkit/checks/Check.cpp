@@ -17,7 +17,8 @@ std::string const& checkHint(std::string const& check) {
         {"values", "Compare your W = f cos(theta_L) and pdfs with the chapter's formulas; rixlobe plots your lobe."},
         {"chi2", "Your samples do not go where your FPdf says: look at rixwarp's picture for this plugin and sampling mode."},
         {"jacobian", "At fixed random numbers, your FPdf is not the density your mapping produces: recheck its derivation."},
-        {"consistency", "GenerateSample and EvaluateSample disagree: render ch07/validate.rib with your plugin."},
+        {"consistency", "GenerateSample, EvaluateSample and EvaluateSamplesAtIndex should agree, and each point read "
+                        "only its own entries ([i] or [index], never [0]): render ch07/validate.rib with your plugin."},
         {"reciprocity", "f(V, L) should equal f(L, V), and RPdf should be the pdf of sampling V from L."},
         {"energy", "The surface reflects more (or less) light than the reference: check the normalisation constants."},
         {"hardcases", "Guard grazing angles, zero tangents, extreme parameters and xi = 0 against NaN, infinity and "

@@ -5,10 +5,9 @@
 
 namespace bxdflab::checks {
 
-Frame::Frame() {
-    // 40 degrees about a tilted axis: no world axis survives.
+Frame::Frame(float degrees) {
     Vec3 axis = glm::normalize(Vec3(1.0f, 2.0f, 3.0f));
-    float angle = glm::radians(40.0f), c = std::cos(angle), s = std::sin(angle);
+    float angle = glm::radians(degrees), c = std::cos(angle), s = std::sin(angle);
     Mat3 K(0.0f, axis.z, -axis.y, -axis.z, 0.0f, axis.x, axis.y, -axis.x, 0.0f);  // columns of [axis]x
     m_R = Mat3(1.0f) + s * K + (1.0f - c) * (K * K);
 }

@@ -15,7 +15,10 @@ namespace bxdflab::checks {
 /// dPdu neither unit length nor perpendicular to N (the tangent is dPdu made
 /// perpendicular to N and normalised, as the renderer's Tn).
 struct Frame {
-    Frame();
+    /// Turned `degrees` about an axis that leaves no world axis in place; the
+    /// checks' usual frame (frame()) is turned 40 degrees, others give the
+    /// points of one batch normals of their own.
+    explicit Frame(float degrees = 40.0f);
     Vec3 toWorld(Vec3 const& local) const { return m_R * local; }
     Vec3 toLocal(Vec3 const& world) const { return glm::transpose(m_R) * world; }
     /// A shade point with the viewer at local direction V (unit).

@@ -1,17 +1,26 @@
 #include "measure/BxdfMeasurer.h"
 
+#include <cstdlib>
+
 namespace bxdflab {
 
 namespace {
-char const kVaryingMark[] = "# each value varies from point to point\n";
+char const kVaryingMark[] = "# each value varies from point to point, starting at share ";
 }
 
-std::string varyingParams(std::string const& params) { return kVaryingMark + params; }
+std::string varyingParams(std::string const& params, int firstShare) {
+    return kVaryingMark + std::to_string(firstShare) + "\n" + params;
+}
 
-bool takeVaryingMark(std::string& params) {
-    if (params.rfind(kVaryingMark, 0) != 0) return false;
-    params.erase(0, sizeof kVaryingMark - 1);
-    return true;
+std::optional<int> takeVaryingMark(std::string& params) {
+    size_t const prefix = sizeof kVaryingMark - 1, end = params.find('\n');
+    if (params.rfind(kVaryingMark, 0) != 0 || end == std::string::npos) return std::nullopt;
+    char const* digits = params.c_str() + prefix;
+    char* stop = nullptr;
+    long const firstShare = std::strtol(digits, &stop, 10);
+    if (stop == digits || stop != params.c_str() + end) return std::nullopt;  // not our mark after all
+    params.erase(0, end + 1);
+    return static_cast<int>(firstShare);
 }
 
 std::vector<SampleSpec> stratifiedSamples(size_t count, uint32_t seed, uint32_t first) {

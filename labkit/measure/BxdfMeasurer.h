@@ -7,6 +7,7 @@
 // The checks (labkit/checks) judge the answers; a measurer only measures.
 #pragma once
 
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -73,11 +74,14 @@ public:
 /// `params` made to differ from point to point, as a texture connected to
 /// them would: every float, colour and vector the Bxdf reads per point
 /// (EvalParam with promote) changes with the point (BxdfProbe::
-/// setParamsVaryPerPoint). The mark is a RIB comment, so the set stays a
-/// valid parameter list.
-std::string varyingParams(std::string const& params);
-/// Removes varyingParams()'s mark from `params`; true when it was there.
-bool takeVaryingMark(std::string& params);
+/// setParamsVaryPerPoint). Point i takes varyingShare(i + firstShare): a
+/// batch shifted one place later with firstShare -1 gives every point the
+/// values it had before. The mark is a RIB comment, so the set stays a valid
+/// parameter list.
+std::string varyingParams(std::string const& params, int firstShare = 0);
+/// Removes varyingParams()'s mark from `params`; its firstShare when it was
+/// there.
+std::optional<int> takeVaryingMark(std::string& params);
 
 // Common ways of drawing random numbers, built on generate().
 

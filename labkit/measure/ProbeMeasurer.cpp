@@ -31,9 +31,9 @@ BxdfProbe& ProbeMeasurer::probe(std::string const& params) {
     if (!slot) {
         try {
             std::string ribParams = params;
-            bool const varying = takeVaryingMark(ribParams);
+            std::optional<int> const firstShare = takeVaryingMark(ribParams);
             slot = std::make_unique<BxdfProbe>(m_plugin, ribParams, m_searchPath, m_diagnostics, false, m_observer);
-            slot->setParamsVaryPerPoint(varying);
+            if (firstShare) slot->setParamsVaryPerPoint(true, *firstShare);
         } catch (std::exception const& e) {
             m_probes.erase(params);
             throw MeasurementError(MeasurementError::Kind::PluginError, "loading the plugin", e.what());

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <optional>
 
 #include "RixBxdfScratch.h"
 #include "scene/SceneBuilder.h"
@@ -23,8 +24,8 @@ namespace {
 class ProbeShadingContext final : public RixShadingContext {
 public:
     ProbeShadingContext(BxdfInstance const& material, std::vector<ProbePoint> const& points, MemoryArena& arena,
-                        RixInterface* messages, bool paramsVary)
-        : m_material(material), m_arena(arena), m_messages(messages), m_paramsVary(paramsVary) {
+                        RixInterface* messages, std::optional<int> firstShare)
+        : m_material(material), m_arena(arena), m_messages(messages), m_firstShare(firstShare) {
         numPts = static_cast<int>(points.size());
         auto n = static_cast<size_t>(numPts);
         auto* P = arena.allocArray<RtPoint3>(n);
@@ -77,12 +78,12 @@ protected:
                                               result, numPts, m_arena);
         bool const scaled = wanted == k_RixSCFloat || wanted == k_RixSCColor;
         bool const turned = wanted == k_RixSCVector || wanted == k_RixSCNormal;
-        if (!m_paramsVary || !promote || !*result || !(scaled || turned)) return detail;
+        if (!m_firstShare || !promote || !*result || !(scaled || turned)) return detail;
         size_t const floats = elementSize / sizeof(float), count = floats * static_cast<size_t>(numPts);
         auto const* same = static_cast<float const*>(*result);
         float* varied = m_arena.allocArray<float>(count);
         for (size_t k = 0; k < count; ++k) {
-            float const share = BxdfProbe::varyingShare(static_cast<int>(k / floats));
+            float const share = BxdfProbe::varyingShare(static_cast<int>(k / floats) + *m_firstShare);
             // A direction scaled is the same direction: a vector is turned instead,
             // by adding a share of its own components taken in turn (x from y, ...).
             size_t const next = k - k % floats + (k % floats + 1) % floats;
@@ -112,10 +113,23 @@ private:
     BxdfInstance const& m_material;
     MemoryArena& m_arena;
     RixInterface* m_messages;
-    bool m_paramsVary;
+    std::optional<int> m_firstShare;  ///< set: parameters vary per point, point 0 taking this share
     void* m_builtins[k_numBuiltins] = {};
     mutable std::vector<unsigned char*> m_guards;
 };
+
+/// A point facing another way than `point` (its normal along point's tangent,
+/// seen head-on), put before it in a batch: a Bxdf that reads the wrong index
+/// then answers with this point's normal, view and parameters.
+ProbePoint decoyBeside(ProbePoint const& point) {
+    Vec3 across = point.dPdu - point.N * glm::dot(point.N, point.dPdu);
+    if (glm::dot(across, across) < 1e-6f)  // a degenerate tangent: any direction across N
+        across = glm::cross(point.N, std::fabs(point.N.x) < 0.9f ? Vec3(1, 0, 0) : Vec3(0, 1, 0));
+    ProbePoint decoy;
+    decoy.N = decoy.Ng = decoy.V = glm::normalize(across);
+    decoy.dPdu = point.N;
+    return decoy;
+}
 
 }  // namespace
 
@@ -143,7 +157,7 @@ struct BxdfProbe::Impl {
     template <typename Body>
     void withBxdf(std::vector<ProbePoint> const& points, Body&& body) {
         arena.reset();
-        ProbeShadingContext ctx(*instance, points, arena, &instance->plugin().messages(), paramsVary);
+        ProbeShadingContext ctx(*instance, points, arena, &instance->plugin().messages(), firstShare);
         RixBxdfFactory* factory = instance->plugin().factory();
         announce("BeginScatter");
         RixBxdf* bxdf = factory->BeginScatter(&ctx, RixBXLobeTraits::All(), k_RixSCScatterQuery, nullptr,
@@ -165,7 +179,7 @@ struct BxdfProbe::Impl {
         if (observer) observer(call);
     }
     char const* lastCall = "";
-    bool paramsVary = false;
+    std::optional<int> firstShare;  ///< set while parameters vary per point
 };
 
 BxdfProbe::BxdfProbe(std::string const& plugin, std::string const& ribParams, std::vector<std::string> const& searchPath,
@@ -193,7 +207,9 @@ BxdfProbe::~BxdfProbe() {
 
 void BxdfProbe::setCallObserver(CallObserver observer) { m_impl->observer = observer; }
 
-void BxdfProbe::setParamsVaryPerPoint(bool vary) { m_impl->paramsVary = vary; }
+void BxdfProbe::setParamsVaryPerPoint(bool vary, int firstShare) {
+    m_impl->firstShare = vary ? std::optional<int>(firstShare) : std::nullopt;
+}
 
 float BxdfProbe::varyingShare(int i) {
     float const golden = 0.618034f;  // consecutive points spread evenly over the range
@@ -251,10 +267,10 @@ std::vector<ProbeResult> BxdfProbe::evaluate(std::vector<ProbePoint> const& poin
 std::vector<ProbeResult> BxdfProbe::evaluateAtIndex(ProbePoint const& point, std::vector<Vec3> const& L) {
     std::vector<ProbeResult> out(L.size());
     int n = static_cast<int>(L.size());
-    m_impl->withBxdf({point}, [&](RixShadingContext const& ctx, RixBxdf& bxdf) {
+    m_impl->withBxdf({decoyBeside(point), point}, [&](RixShadingContext const& ctx, RixBxdf& bxdf) {
         RixShadingContext::Allocator pool(&ctx);
-        RixRNG::SampleCtx sample{0u, 0u, 0u, -1.0f};
-        RixRNG rng(&sample, 1);
+        RixRNG::SampleCtx samples[2] = {{0u, 0u, 0u, -1.0f}, {0u, 1u, 0u, -1.0f}};
+        RixRNG rng(samples, 2);
         auto* evaluated = pool.AllocFor<RixBXLobeTraits>(n);
         auto* Ln = pool.AllocFor<RtVector3>(n);
         auto* FPdf = pool.AllocFor<float>(n);
@@ -266,7 +282,7 @@ std::vector<ProbeResult> BxdfProbe::evaluateAtIndex(ProbePoint const& point, std
         }
         RixBXLobeWeights W(n, &ctx);
         m_impl->announce("EvaluateSamplesAtIndex");
-        bxdf.EvaluateSamplesAtIndex(k_RixBXDirectLighting, RixBXLobeTraits::All(), &rng, 0, n, evaluated, Ln, W, FPdf, RPdf);
+        bxdf.EvaluateSamplesAtIndex(k_RixBXDirectLighting, RixBXLobeTraits::All(), &rng, 1, n, evaluated, Ln, W, FPdf, RPdf);
         for (int i = 0; i < n; ++i)
             out[static_cast<size_t>(i)] = {L[static_cast<size_t>(i)], W.SumAtPoint(i), FPdf[i], RPdf[i],
                                            evaluated[i].GetValid() || evaluated[i].HasAny()};

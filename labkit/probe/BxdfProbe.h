@@ -65,7 +65,9 @@ public:
     std::vector<ProbeResult> generate(std::vector<ProbePoint> const& points, std::vector<RixRNG::SampleCtx> samples);
     /// EvaluateSample for a batch: direction L[i] at points[i].
     std::vector<ProbeResult> evaluate(std::vector<ProbePoint> const& points, std::vector<Vec3> const& L);
-    /// EvaluateSamplesAtIndex: many directions at one point.
+    /// EvaluateSamplesAtIndex: many directions at one point. The point is
+    /// index 1 of a two-point batch whose point 0 faces another way, so that a
+    /// Bxdf reading index 0 where it should read `index` is seen.
     std::vector<ProbeResult> evaluateAtIndex(ProbePoint const& point, std::vector<Vec3> const& L);
     /// EmitLocal for a batch (zero where the Bxdf does not emit).
     std::vector<RtColorRGB> emission(std::vector<ProbePoint> const& points);
@@ -79,9 +81,11 @@ public:
     void setCallObserver(CallObserver observer);
     /// Makes every float, colour and vector parameter the Bxdf reads per point
     /// (EvalParam with promote) differ from point to point, as a connected
-    /// texture makes it: point i gets varyingShare(i) of a float or colour, and
-    /// a vector turned by adding 1 - varyingShare(i) of its components in turn.
-    void setParamsVaryPerPoint(bool vary);
+    /// texture makes it: point i gets share s = varyingShare(i + firstShare) of
+    /// a float or colour, and a vector turned by adding 1 - s of its components
+    /// in turn. (A batch moved one place later with firstShare - 1 keeps every
+    /// point's values.)
+    void setParamsVaryPerPoint(bool vary, int firstShare = 0);
     /// A share in [0.85, 1], different for neighbouring points.
     static float varyingShare(int i);
 
