@@ -66,7 +66,8 @@ std::string answersDependOnPlaceInBatch(CheckContext& c, std::string const& para
                describeDirection(localViews[j]) + ", moved to index " + std::to_string(j + 1) +
                " with the same normal, view, parameters and random numbers, and its answer went from " + told(before) +
                " to " + told(after) + ". Each point's answer may depend on that point alone: does a loop read " +
-               "index 0 (gloss[0], m_Nn[0]) or a neighbour's entry where it should read [i]?";
+               "index 0 (gloss[0], m_Nn[0]) or a neighbour's entry where it should read [i], or draw random " +
+               "numbers anywhere but from the RixRNG it is given?";
     };
 
     auto generated = c.plugin.generate(asked, points, samples);
