@@ -14,9 +14,10 @@ namespace {
 
 /// A batch of points that differ in normal, tangent, view, parameters (as a
 /// texture makes them) and random numbers is asked, then asked again moved one
-/// place later behind a new first point: every point keeps all it had, so its
-/// answers must not change. A Bxdf that reads index 0 (gloss[0], m_Nn[0]) or a
-/// neighbour's entry where it should read [i] answers differently. Returns
+/// place later behind a new first point (which wants no lobe): every point keeps
+/// all it had, so its answers must not change. A Bxdf that reads index 0
+/// (gloss[0], m_Nn[0], lobesWanted[0]) or a neighbour's entry where it should
+/// read [i] answers differently. Returns
 /// the failure, or nothing.
 std::string answersDependOnPlaceInBatch(CheckContext& c, std::string const& params, std::string const& modeName) {
     Exercise const& e = c.exercise;
@@ -34,9 +35,11 @@ std::string answersDependOnPlaceInBatch(CheckContext& c, std::string const& para
     }
     std::vector<SampleSpec> samples = stratifiedSamples(n, c.seed + 11u);
 
-    // The same points one place later, behind a point facing elsewhere.
+    // The same points one place later, behind a point facing elsewhere that
+    // wants no lobe at all.
     Frame const newcomerFrame(175.0f);
     std::vector<ProbePoint> moved = {newcomerFrame.point(direction(35, 250))};
+    moved[0].wantsLobes = false;
     moved.insert(moved.end(), points.begin(), points.end() - 1);
     std::vector<SampleSpec> movedSamples = stratifiedSamples(1, c.seed + 13u);
     movedSamples.insert(movedSamples.end(), samples.begin(), samples.end() - 1);
@@ -66,7 +69,8 @@ std::string answersDependOnPlaceInBatch(CheckContext& c, std::string const& para
                describeDirection(localViews[j]) + ", moved to index " + std::to_string(j + 1) +
                " with the same normal, view, parameters and random numbers, and its answer went from " + told(before) +
                " to " + told(after) + ". Each point's answer may depend on that point alone: does a loop read " +
-               "index 0 (gloss[0], m_Nn[0]) or a neighbour's entry where it should read [i], or draw random " +
+               "index 0 (gloss[0], m_Nn[0], lobesWanted[0]) or a neighbour's entry where it should read [i], or "
+               "draw random " +
                "numbers anywhere but from the RixRNG it is given?";
     };
 

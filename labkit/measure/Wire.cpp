@@ -45,6 +45,7 @@ PointItem toWire(ProbePoint const& p) {
         w.dPdu[k] = p.dPdu[k];
         w.V[k] = p.V[k];
     }
+    w.wantsLobes = p.wantsLobes ? 1u : 0u;
     return w;
 }
 
@@ -54,6 +55,7 @@ ProbePoint fromWire(PointItem const& w) {
     p.Ng = Vec3(w.Ng[0], w.Ng[1], w.Ng[2]);
     p.dPdu = Vec3(w.dPdu[0], w.dPdu[1], w.dPdu[2]);
     p.V = Vec3(w.V[0], w.V[1], w.V[2]);
+    p.wantsLobes = w.wantsLobes != 0;
     return p;
 }
 

@@ -52,6 +52,7 @@ struct CallRecord {
 
 struct PointItem {
     float N[3], Ng[3], dPdu[3], V[3];
+    uint32_t wantsLobes;
 };
 struct Vec3Item {
     float v[3];

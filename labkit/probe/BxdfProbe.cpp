@@ -227,6 +227,7 @@ std::vector<ProbeResult> BxdfProbe::generate(std::vector<ProbePoint> const& poin
         // probe hands back what the Bxdf wrote as it is (a bad pdf is for the checks to judge).
         RixBxdfScratch q(ctx);
         for (int i = 0; i < n; ++i) {
+            if (!points[static_cast<size_t>(i)].wantsLobes) q.lobesWanted[i] = RixBXLobeTraits();
             q.lobeSampled[i] = RixBXLobeSampled();
             q.Ln[i] = RtVector3(0.0f, 0.0f, 0.0f);
             q.FPdf[i] = q.RPdf[i] = 0.0f;
@@ -249,6 +250,7 @@ std::vector<ProbeResult> BxdfProbe::evaluate(std::vector<ProbePoint> const& poin
         auto* samples = RixShadingContext::Allocator(&ctx).AllocFor<RixRNG::SampleCtx>(n);
         RixBxdfScratch q(ctx);
         for (int i = 0; i < n; ++i) {
+            if (!points[static_cast<size_t>(i)].wantsLobes) q.lobesWanted[i] = RixBXLobeTraits();
             samples[i] = {0u, static_cast<uint32_t>(i), 0, -1.0f};
             q.lobesEvaluated[i] = RixBXLobeTraits();
             q.Ln[i] = toRt(L[static_cast<size_t>(i)]);

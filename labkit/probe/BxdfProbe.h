@@ -34,6 +34,7 @@ struct ProbePoint {
     Vec3 Ng{0.0f, 0.0f, 1.0f};    ///< unit geometric normal
     Vec3 dPdu{1.0f, 0.0f, 0.0f};  ///< tangent (any length; zero for a degenerate frame)
     Vec3 V{0.0f, 0.0f, 1.0f};     ///< unit direction toward the viewer
+    bool wantsLobes = true;       ///< lobesWanted: every lobe, or (false) none
 };
 
 /// One answer of the Bxdf: the sampled or given direction, W = f |cos|, pdfs.
