@@ -343,9 +343,9 @@ TEST_CASE("chapter 7: the buggydiffuse starter's GenerateSample and EvaluateSamp
 }
 
 TEST_CASE("varying parameters follow a point moved one place later in its batch", "[solutions][checks]") {
-    // The mark that asks for parameters varying per point survives the trip
-    // (it crosses to the sandboxed measurer as text) and nothing else is
-    // taken for it.
+    // The marks that ask for parameters varying per point, or for two threads
+    // at once, survive the trip (they cross to the sandboxed measurer as text)
+    // and nothing else is taken for them.
     std::string const params = "\"float gloss\" [40]";
     for (int firstShare : {-1, 0, 7}) {
         std::string marked = varyingParams(params, firstShare);
@@ -355,6 +355,10 @@ TEST_CASE("varying parameters follow a point moved one place later in its batch"
     std::string other = "# each value varies from point to point, starting at share x\n" + params;
     CHECK_FALSE(takeVaryingMark(other).has_value());
     CHECK(other.size() > params.size());
+    std::string together = askedTogether(params, 200);
+    CHECK_FALSE(takeVaryingMark(together).has_value());
+    REQUIRE(takeTogetherMark(together) == 200);
+    CHECK(together == params);
 
     // Point i takes share i + firstShare: moved one place later with
     // firstShare - 1, a point keeps its gloss, and the plastic solution its

@@ -1,7 +1,8 @@
 // consistency: at every direction GenerateSample returns, EvaluateSample and
 // EvaluateSamplesAtIndex give the same W, FPdf and RPdf (0.01%), and a valid
 // sample has FPdf > 0 -- what PxrValidateBxdf shows as a picture. And each
-// point's answers depend on that point alone, not on its place in the batch.
+// point's answers depend on that point alone: not on its place in the batch,
+// nor on another thread shading at the same time.
 #include <cmath>
 
 #include "checks/CheckSupport.h"
@@ -12,85 +13,138 @@ using namespace checks;
 
 namespace {
 
+double const kTolerance = 1e-4;
+
+/// Points that differ in normal, tangent and view, each in a frame of its own
+/// turned about the checks' axis, viewed from the exercise's sides.
+struct MixedBatch {
+    std::vector<Frame> frames;
+    std::vector<ProbePoint> points;
+    std::vector<Vec3> localViews;
+
+    MixedBatch(Exercise const& e, size_t count, double phiStep) {
+        std::vector<double> viewThetas = {10.0, 50.0, 85.0};
+        if (e.transmits) viewThetas.insert(viewThetas.end(), {120.0, 160.0});
+        for (float degrees : {40.0f, 130.0f, 220.0f, 310.0f}) frames.emplace_back(degrees);
+        for (size_t j = 0; j < count; ++j) {
+            localViews.push_back(direction(viewThetas[j % viewThetas.size()], 20.0 + phiStep * static_cast<double>(j)));
+            points.push_back(frameOf(j).point(localViews.back()));
+        }
+    }
+    Frame const& frameOf(size_t j) const { return frames[j % frames.size()]; }
+    /// Where to evaluate point j: where its sample went (where the lobes are),
+    /// else a fixed direction.
+    std::vector<Vec3> directions(std::vector<ProbeResult> const& generated) const {
+        std::vector<Vec3> L;
+        for (size_t j = 0; j < points.size(); ++j)
+            L.push_back(generated[j].valid ? generated[j].L
+                                           : frameOf(j).toWorld(direction(40, 110.0 + 31.0 * static_cast<double>(j))));
+        return L;
+    }
+    /// "L theta .., W (..), FPdf .., RPdf .." of point j's answer.
+    std::string told(size_t j, ProbeResult const& r) const {
+        if (!r.valid) return "nothing (no valid lobe)";
+        return "L " + describeDirection(frameOf(j).toLocal(r.L)) + ", W " + describe(r.W) + ", FPdf " + number(r.FPdf) +
+               ", RPdf " + number(r.RPdf);
+    }
+};
+
+/// The same answer, to kTolerance (and the same direction when compareL).
+bool sameAnswer(ProbeResult const& a, ProbeResult const& b, bool compareL) {
+    bool equal = a.valid == b.valid;
+    if (!equal || !a.valid) return equal;
+    equal = close(a.FPdf, b.FPdf, kTolerance, 1e-9) && close(a.RPdf, b.RPdf, kTolerance, 1e-9);
+    for (int k = 0; k < 3; ++k) {
+        equal = equal && close(a.W[k], b.W[k], kTolerance, 1e-9);
+        if (compareL) equal = equal && std::fabs(a.L[k] - b.L[k]) < 1e-5f;
+    }
+    return equal;
+}
+
 /// A batch of points that differ in normal, tangent, view, parameters (as a
 /// texture makes them) and random numbers is asked, then asked again moved one
 /// place later behind a new first point (which wants no lobe): every point keeps
 /// all it had, so its answers must not change. A Bxdf that reads index 0
 /// (gloss[0], m_Nn[0], lobesWanted[0]) or a neighbour's entry where it should
-/// read [i] answers differently. Returns
-/// the failure, or nothing.
+/// read [i] answers differently. Returns the failure, or nothing.
 std::string answersDependOnPlaceInBatch(CheckContext& c, std::string const& params, std::string const& modeName) {
-    Exercise const& e = c.exercise;
-    std::vector<double> viewThetas = {10.0, 50.0, 85.0};
-    if (e.transmits) viewThetas.insert(viewThetas.end(), {120.0, 160.0});
     size_t const n = 64;
-    std::vector<Frame> frames;
-    for (float degrees : {40.0f, 130.0f, 220.0f, 310.0f}) frames.emplace_back(degrees);
-    auto frameOf = [&](size_t j) -> Frame const& { return frames[j % frames.size()]; };
-    std::vector<ProbePoint> points;
-    std::vector<Vec3> localViews;
-    for (size_t j = 0; j < n; ++j) {
-        localViews.push_back(direction(viewThetas[j % viewThetas.size()], 20.0 + 47.0 * static_cast<double>(j)));
-        points.push_back(frameOf(j).point(localViews.back()));
-    }
+    MixedBatch const batch(c.exercise, n, 47.0);
     std::vector<SampleSpec> samples = stratifiedSamples(n, c.seed + 11u);
 
-    // The same points one place later, behind a point facing elsewhere that
-    // wants no lobe at all.
     Frame const newcomerFrame(175.0f);
     std::vector<ProbePoint> moved = {newcomerFrame.point(direction(35, 250))};
     moved[0].wantsLobes = false;
-    moved.insert(moved.end(), points.begin(), points.end() - 1);
+    moved.insert(moved.end(), batch.points.begin(), batch.points.end() - 1);
     std::vector<SampleSpec> movedSamples = stratifiedSamples(1, c.seed + 13u);
     movedSamples.insert(movedSamples.end(), samples.begin(), samples.end() - 1);
     std::string const asked = varyingParams(params, 0), askedMoved = varyingParams(params, -1);
 
-    double const tolerance = 1e-4;
-    auto same = [&](ProbeResult const& a, ProbeResult const& b, bool compareL) {
-        bool equal = a.valid == b.valid;
-        if (!equal || !a.valid) return equal;
-        equal = close(a.FPdf, b.FPdf, tolerance, 1e-9) && close(a.RPdf, b.RPdf, tolerance, 1e-9);
-        for (int k = 0; k < 3; ++k) {
-            equal = equal && close(a.W[k], b.W[k], tolerance, 1e-9);
-            if (compareL) equal = equal && std::fabs(a.L[k] - b.L[k]) < 1e-5f;
-        }
-        return equal;
-    };
     auto differs = [&](char const* call, size_t j, ProbeResult const& before, ProbeResult const& after) {
-        Frame const& f = frameOf(j);
-        auto told = [&](ProbeResult const& r) {
-            if (!r.valid) return std::string("nothing (no valid lobe)");
-            return "L " + describeDirection(f.toLocal(r.L)) + ", W " + describe(r.W) + ", FPdf " + number(r.FPdf) +
-                   ", RPdf " + number(r.RPdf);
-        };
         return std::string(call) + " answered differently for one point when only the other points of its batch " +
                "changed (sampling mode \"" + modeName + "\", " + withParams(params) +
                ", varying from point to point): the point at index " + std::to_string(j) + ", the viewer at " +
-               describeDirection(localViews[j]) + ", moved to index " + std::to_string(j + 1) +
-               " with the same normal, view, parameters and random numbers, and its answer went from " + told(before) +
-               " to " + told(after) + ". Each point's answer may depend on that point alone: does a loop read " +
-               "index 0 (gloss[0], m_Nn[0], lobesWanted[0]) or a neighbour's entry where it should read [i], or "
-               "draw random " +
-               "numbers anywhere but from the RixRNG it is given?";
+               describeDirection(batch.localViews[j]) + ", moved to index " + std::to_string(j + 1) +
+               " with the same normal, view, parameters and random numbers, and its answer went from " +
+               batch.told(j, before) + " to " + batch.told(j, after) +
+               ". Each point's answer may depend on that point alone: does a loop read index 0 (gloss[0], "
+               "m_Nn[0], lobesWanted[0]) or a neighbour's entry where it should read [i], or draw random numbers "
+               "anywhere but from the RixRNG it is given?";
     };
 
-    auto generated = c.plugin.generate(asked, points, samples);
+    auto generated = c.plugin.generate(asked, batch.points, samples);
     auto generatedMoved = c.plugin.generate(askedMoved, moved, movedSamples);
     for (size_t j = 0; j + 1 < n; ++j)
-        if (!same(generated[j], generatedMoved[j + 1], true))
+        if (!sameAnswer(generated[j], generatedMoved[j + 1], true))
             return differs("GenerateSample", j, generated[j], generatedMoved[j + 1]);
 
-    // Evaluated where the samples went (where the lobes are), else at a fixed direction.
-    std::vector<Vec3> L;
-    for (size_t j = 0; j < n; ++j)
-        L.push_back(generated[j].valid ? generated[j].L : frameOf(j).toWorld(direction(40, 110.0 + 31.0 * j)));
+    std::vector<Vec3> L = batch.directions(generated);
     std::vector<Vec3> movedL = {newcomerFrame.toWorld(direction(25, 80))};
     movedL.insert(movedL.end(), L.begin(), L.end() - 1);
-    auto evaluated = c.plugin.evaluate(asked, points, L);
+    auto evaluated = c.plugin.evaluate(asked, batch.points, L);
     auto evaluatedMoved = c.plugin.evaluate(askedMoved, moved, movedL);
     for (size_t j = 0; j + 1 < n; ++j)
-        if (!same(evaluated[j], evaluatedMoved[j + 1], false))
+        if (!sameAnswer(evaluated[j], evaluatedMoved[j + 1], false))
             return differs("EvaluateSample", j, evaluated[j], evaluatedMoved[j + 1]);
+    return {};
+}
+
+/// A renderer shades on several threads at once, each with its own batch. Two
+/// instances of the plugin ask for the two halves of a batch on two threads at
+/// once, round after round; every answer must be the one a single thread
+/// gets. A Bxdf that keeps per-call data in a static or global variable (a
+/// scratch array, the last pdf) mixes the two threads' data. Returns the
+/// failure, or nothing.
+std::string answersDependOnOtherThreads(CheckContext& c, std::string const& params, std::string const& modeName) {
+    // Long runs of rounds: on a busy or single core the two threads overlap
+    // only where one is interrupted in the middle of a call.
+    size_t const n = 1024;
+    int const rounds = 200;
+    MixedBatch const batch(c.exercise, n, 29.0);
+    std::vector<SampleSpec> samples = stratifiedSamples(n, c.seed + 17u);
+    std::string const together = askedTogether(params, rounds);
+
+    auto differs = [&](char const* call, size_t j, ProbeResult const& alone, ProbeResult const& shared) {
+        return std::string(call) + " answered differently when two threads asked at once (sampling mode \"" +
+               modeName + "\", " + withParams(params) + "): at the viewer " + describeDirection(batch.localViews[j]) +
+               " one thread gets " + batch.told(j, alone) + ", but with another thread shading other points at the "
+               "same time " + batch.told(j, shared) + ". A renderer shades on many threads: does the plugin keep "
+               "data of one call in a static or global variable? Take scratch memory from the shading context "
+               "(RixAlloca, or the Allocator) and keep per-point values in local variables.";
+    };
+
+    auto generated = c.plugin.generate(params, batch.points, samples);
+    auto generatedTogether = c.plugin.generate(together, batch.points, samples);
+    for (size_t j = 0; j < n; ++j)
+        if (!sameAnswer(generated[j], generatedTogether[j], true))
+            return differs("GenerateSample", j, generated[j], generatedTogether[j]);
+
+    std::vector<Vec3> L = batch.directions(generated);
+    auto evaluated = c.plugin.evaluate(params, batch.points, L);
+    auto evaluatedTogether = c.plugin.evaluate(together, batch.points, L);
+    for (size_t j = 0; j < n; ++j)
+        if (!sameAnswer(evaluated[j], evaluatedTogether[j], false))
+            return differs("EvaluateSample", j, evaluated[j], evaluatedTogether[j]);
     return {};
 }
 
@@ -100,7 +154,7 @@ CheckOutcome checkConsistency(CheckContext& c) {
     Exercise const& e = c.exercise;
     if (std::string why = notAttempted(c); !why.empty()) return CheckOutcome::fail(why);
     Frame const& f = frame();
-    double const tolerance = 1e-4;
+    double const tolerance = kTolerance;
     int compared = 0;
     for (SamplingMode const& mode : e.samplingModes) {
         std::string const params = e.withMode(e.params, mode);
@@ -146,13 +200,17 @@ CheckOutcome checkConsistency(CheckContext& c) {
                                           " samples was valid (lobeSampled[i].SetValid(true) never happened)");
         }
     }
-    for (SamplingMode const& mode : e.samplingModes)
-        if (std::string why = answersDependOnPlaceInBatch(c, e.withMode(e.params, mode), mode.name); !why.empty())
+    for (SamplingMode const& mode : e.samplingModes) {
+        std::string const params = e.withMode(e.params, mode);
+        if (std::string why = answersDependOnPlaceInBatch(c, params, mode.name); !why.empty())
             return CheckOutcome::fail(why);
+        if (std::string why = answersDependOnOtherThreads(c, params, mode.name); !why.empty())
+            return CheckOutcome::fail(why);
+    }
     return CheckOutcome::pass("GenerateSample, EvaluateSample and EvaluateSamplesAtIndex agree at " +
                               std::to_string(compared / 2) +
                               " sampled directions, and each point's answers stay the same wherever it sits in "
-                              "its batch");
+                              "its batch and with two threads asking at once");
 }
 
 }  // namespace bxdflab

@@ -5,23 +5,37 @@
 namespace bxdflab {
 
 namespace {
+
 char const kVaryingMark[] = "# each value varies from point to point, starting at share ";
+char const kTogetherMark[] = "# asked by two threads at once, rounds: ";
+
+std::string withMark(std::string const& mark, int number, std::string const& params) {
+    return mark + std::to_string(number) + "\n" + params;
 }
 
-std::string varyingParams(std::string const& params, int firstShare) {
-    return kVaryingMark + std::to_string(firstShare) + "\n" + params;
-}
-
-std::optional<int> takeVaryingMark(std::string& params) {
-    size_t const prefix = sizeof kVaryingMark - 1, end = params.find('\n');
-    if (params.rfind(kVaryingMark, 0) != 0 || end == std::string::npos) return std::nullopt;
-    char const* digits = params.c_str() + prefix;
+/// The number of `mark` on the first line of `params`, which loses that line.
+std::optional<int> takeMark(std::string const& mark, std::string& params) {
+    size_t const end = params.find('\n');
+    if (params.rfind(mark, 0) != 0 || end == std::string::npos) return std::nullopt;
+    char const* digits = params.c_str() + mark.size();
     char* stop = nullptr;
-    long const firstShare = std::strtol(digits, &stop, 10);
+    long const number = std::strtol(digits, &stop, 10);
     if (stop == digits || stop != params.c_str() + end) return std::nullopt;  // not our mark after all
     params.erase(0, end + 1);
-    return static_cast<int>(firstShare);
+    return static_cast<int>(number);
 }
+
+}  // namespace
+
+std::string varyingParams(std::string const& params, int firstShare) {
+    return withMark(kVaryingMark, firstShare, params);
+}
+
+std::optional<int> takeVaryingMark(std::string& params) { return takeMark(kVaryingMark, params); }
+
+std::string askedTogether(std::string const& params, int rounds) { return withMark(kTogetherMark, rounds, params); }
+
+std::optional<int> takeTogetherMark(std::string& params) { return takeMark(kTogetherMark, params); }
 
 std::vector<SampleSpec> stratifiedSamples(size_t count, uint32_t seed, uint32_t first) {
     std::vector<SampleSpec> samples(count);

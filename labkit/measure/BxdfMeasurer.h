@@ -83,6 +83,16 @@ std::string varyingParams(std::string const& params, int firstShare = 0);
 /// there.
 std::optional<int> takeVaryingMark(std::string& params);
 
+/// `params` asked of two instances of the plugin on two threads at once, for
+/// `rounds` rounds: evaluate() and generate() give the first half of the
+/// points to one thread and the rest to the other. A point's answer is the
+/// first round's, or the first answer that differed from it. A plugin that
+/// keeps per-call data in a static or global variable answers differently
+/// than from one thread. The mark is a RIB comment, like varyingParams()'s.
+std::string askedTogether(std::string const& params, int rounds);
+/// Removes askedTogether()'s mark from `params`; its rounds when it was there.
+std::optional<int> takeTogetherMark(std::string& params);
+
 // Common ways of drawing random numbers, built on generate().
 
 /// Point i takes sample `first + i` of one scrambled low-discrepancy sequence.

@@ -33,6 +33,11 @@ public:
 
 private:
     BxdfProbe& probe(std::string const& params);
+    /// askedTogether(): `ask(probe, begin, end)` answers points [begin, end)
+    /// on one probe; two probes of `params` (two instances of the plugin) ask
+    /// for the two halves of `count` points on two threads at once, `rounds` times.
+    template <typename Ask>
+    std::vector<ProbeResult> askTogether(std::string const& params, int rounds, size_t count, Ask&& ask);
     /// The sampling exercise's entry points (loaded on first use).
     void loadSampling();
 

@@ -5,6 +5,7 @@
 
 #include <cerrno>
 #include <cstdio>
+#include <mutex>
 #include <sstream>
 
 namespace bxdflab::wire {
@@ -202,6 +203,8 @@ std::vector<char> answer(Op op, std::string const& params, uint32_t count, std::
 
 void announceCall(char const* call) {
     if (g_replyFd < 0) return;
+    static std::mutex writing;  // two threads may ask at once (askedTogether): one record at a time
+    std::lock_guard<std::mutex> guard(writing);
     size_t length = std::min<size_t>(std::strlen(call), kMaxCallNameBytes);
     CallRecord record{kCallMagic, static_cast<uint32_t>(length)};
     writeAll(g_replyFd, &record, sizeof record);
