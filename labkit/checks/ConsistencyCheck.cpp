@@ -49,15 +49,20 @@ struct MixedBatch {
     }
 };
 
-/// The same answer, to kTolerance (and the same direction when compareL).
+/// The same W, FPdf and RPdf, to kTolerance.
+bool sameWeightAndPdfs(ProbeResult const& a, ProbeResult const& b) {
+    bool equal = close(a.FPdf, b.FPdf, kTolerance, 1e-9) && close(a.RPdf, b.RPdf, kTolerance, 1e-9);
+    for (int k = 0; k < 3; ++k) equal = equal && close(a.W[k], b.W[k], kTolerance, 1e-9);
+    return equal;
+}
+
+/// The same answer: both invalid, or both valid with the same W and pdfs (and
+/// the same direction when compareL).
 bool sameAnswer(ProbeResult const& a, ProbeResult const& b, bool compareL) {
-    bool equal = a.valid == b.valid;
-    if (!equal || !a.valid) return equal;
-    equal = close(a.FPdf, b.FPdf, kTolerance, 1e-9) && close(a.RPdf, b.RPdf, kTolerance, 1e-9);
-    for (int k = 0; k < 3; ++k) {
-        equal = equal && close(a.W[k], b.W[k], kTolerance, 1e-9);
-        if (compareL) equal = equal && std::fabs(a.L[k] - b.L[k]) < 1e-5f;
-    }
+    if (a.valid != b.valid) return false;
+    if (!a.valid) return true;
+    bool equal = sameWeightAndPdfs(a, b);
+    for (int k = 0; k < 3 && compareL; ++k) equal = equal && std::fabs(a.L[k] - b.L[k]) < 1e-5f;
     return equal;
 }
 
@@ -154,7 +159,6 @@ CheckOutcome checkConsistency(CheckContext& c) {
     Exercise const& e = c.exercise;
     if (std::string why = notAttempted(c); !why.empty()) return CheckOutcome::fail(why);
     Frame const& f = frame();
-    double const tolerance = kTolerance;
     int compared = 0;
     for (SamplingMode const& mode : e.samplingModes) {
         std::string const params = e.withMode(e.params, mode);
@@ -183,9 +187,7 @@ CheckOutcome checkConsistency(CheckContext& c) {
                 for (auto const& [name, other] : {std::pair<char const*, ProbeResult const*>{"EvaluateSample", &evaluated[i]},
                                                   {"EvaluateSamplesAtIndex", &atIndex[i]}}) {
                     ++compared;
-                    bool same = close(other->FPdf, g.FPdf, tolerance, 1e-9) && close(other->RPdf, g.RPdf, tolerance, 1e-9);
-                    for (int k = 0; k < 3; ++k) same = same && close(other->W[k], g.W[k], tolerance, 1e-9);
-                    if (!same)
+                    if (!sameWeightAndPdfs(*other, g))
                         return CheckOutcome::fail(
                             where + ": GenerateSample gave W " + describe(g.W) + ", FPdf " + number(g.FPdf) + ", RPdf " +
                             number(g.RPdf) + sample + ", but " + name + " gives W " + describe(other->W) + ", FPdf " +
