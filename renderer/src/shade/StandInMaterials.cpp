@@ -139,6 +139,8 @@ std::optional<StandIn> standInFor(MaterialDesc const& material, std::vector<Patt
         if (color && !connected) out.add(colorParam("diffuseColor", *color));
         s.note = color || connected ? "PxrDiffuse in its colour" : "PxrDiffuse";
     }
+    // A normal map or bump pattern stays on the surface (PxrDisney has bumpNormal; PxrDiffuse does not).
+    if (s.material.plugin == "PxrDisney") carryConnection(material, "bumpNormal", s.material, "bumpNormal", Vec3(0.0f));
     return s;
 }
 

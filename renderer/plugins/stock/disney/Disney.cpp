@@ -109,7 +109,9 @@ Disney::Disney(RixShadingContext const* sc, RixBxdfFactory* factory, DisneyParam
 
 Disney::Point Disney::point(int i) const {
     Point p;
-    p.N = RixGetForwardFacingNormal(m_Vn[i], m_Nn[i]);
+    RtNormal3 const* bent = m_params.bumpNormal;
+    bool const isBent = bent && bent[i].LengthSq() > 1e-12f;
+    p.N = RixGetForwardFacingNormal(m_Vn[i], isBent ? RtNormal3(Normalize(bent[i])) : m_Nn[i]);
     RixComputeShadingBasis(p.N, m_Tn ? m_Tn[i] : RtVector3(0.0f), p.u, p.v);
 
     RtColorRGB base = m_params.baseColor[i];

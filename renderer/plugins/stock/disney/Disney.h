@@ -7,7 +7,9 @@
 //     + D_s(H) F_s(L.H) G_s(L, V) / (4 cos_L cos_V)                       specular
 //     + clearcoat / 4 * D_c(H) F_c(L.H) G_c(L, V) / (4 cos_L cos_V)       clearcoat
 //
-// with H = normalize(L + V) and every cosine taken with the shading normal N.
+// with H = normalize(L + V) and every cosine taken with the shading normal N
+// (bumpNormal where a pattern gives one; light below the geometric surface
+// still gets nothing, so a bent normal cannot let light through a wall).
 //
 // Diffuse, with Burley's retro-reflection at grazing angles:
 //   F_d  = (1 + (F_D90 - 1)(1 - cos_L)^5) (1 + (F_D90 - 1)(1 - cos_V)^5),
@@ -57,6 +59,7 @@
 //   float sheenTint       [0.5]
 //   float clearcoat       [0]
 //   float clearcoatGloss  [1]
+//   normal bumpNormal     (connected only)  a bent shading normal, e.g. PxrNormalMap's resultN
 // RIB
 //   Bxdf "PxrDisney" "paint" "color baseColor" [0.8 0.1 0.1] "float clearcoat" [1] "float roughness" [0.4]
 #pragma once
@@ -84,6 +87,7 @@ struct DisneyParams {
     float const* sheenTint;
     float const* clearcoat;
     float const* clearcoatGloss;
+    RtNormal3 const* bumpNormal;  ///< the normal to shade with where a pattern bends it, else nullptr
     bool anyAnisotropic;  ///< only then is the tangent frame asked for
 };
 

@@ -11,7 +11,7 @@ class PxrDisneyFactory : public stockbxdfs::StockBxdfFactory {
 public:
     enum ParamId {
         k_baseColor, k_emitColor, k_subsurface, k_metallic, k_specular, k_specularTint, k_roughness,
-        k_anisotropic, k_sheen, k_sheenTint, k_clearcoat, k_clearcoatGloss
+        k_anisotropic, k_sheen, k_sheenTint, k_clearcoat, k_clearcoatGloss, k_bumpNormal
     };
 
     RixSCParamInfo const* GetParamTable() override {
@@ -28,6 +28,8 @@ public:
             RixSCParamInfo(RtUString("sheenTint"), k_RixSCFloat, k_RixSCScatterInput),
             RixSCParamInfo(RtUString("clearcoat"), k_RixSCFloat, k_RixSCScatterInput),
             RixSCParamInfo(RtUString("clearcoatGloss"), k_RixSCFloat, k_RixSCScatterInput),
+            // A bent normal to shade with (PxrNormalMap's resultN); used only when connected.
+            RixSCParamInfo(RtUString("bumpNormal"), k_RixSCNormal, k_RixSCScatterInput),
             RixSCParamInfo()};
         return table;
     }
@@ -55,6 +57,7 @@ public:
         sCtx->EvalParam(k_sheenTint, -1, &p.sheenTint, &m_half, true);
         sCtx->EvalParam(k_clearcoat, -1, &p.clearcoat, &m_zero, true);
         sCtx->EvalParam(k_clearcoatGloss, -1, &p.clearcoatGloss, &m_one, true);
+        if (sCtx->EvalParam(k_bumpNormal, -1, &p.bumpNormal) != k_RixSCVarying) p.bumpNormal = nullptr;
         p.anyAnisotropic = false;
         for (int i = 0; i < sCtx->numPts; ++i) p.anyAnisotropic = p.anyAnisotropic || p.anisotropic[i] != 0.0f;
         RixShadingContext::Allocator pool(sCtx);

@@ -61,6 +61,34 @@ inline RtPoint3* stManifold(RixShadingContext const* sCtx) {
     return q;
 }
 
+/// The manifold a texture pattern reads at: its connected one (`manifoldId`),
+/// else the surface's own s and t.
+inline RtPoint3 const* manifoldOf(RixShadingContext const* sCtx, int manifoldId) {
+    RtPoint3 const* manifold = nullptr;
+    if (sCtx->EvalParam(manifoldId, -1, &manifold) != k_RixSCVarying) manifold = stManifold(sCtx);
+    return manifold;
+}
+
+/// Reads 3 channels of `filename` into `rgb` at every point's manifold (s, t,
+/// footprint), footprints widened by `blur`; with invertT, t runs up the image
+/// (t = 0 is its bottom row). False when the file cannot be read: then every
+/// point has lookup.missingColor.
+inline bool readTexture(RixShadingContext const* sCtx, RtUString filename, RixTexture::TxParams const& lookup,
+                        RtPoint3 const* manifold, bool invertT, float blur, RtColorRGB* rgb) {
+    int const n = sCtx->numPts;
+    RixShadingContext::Allocator pool(sCtx);
+    RtFloat2* st = pool.AllocFor<RtFloat2>(n);
+    RtFloat* width = pool.AllocFor<RtFloat>(n);
+    for (int i = 0; i < n; ++i) {
+        st[i] = RtFloat2(manifold[i].x, invertT ? 1.0f - manifold[i].y : manifold[i].y);
+        width[i] = manifold[i].z + blur;
+    }
+    auto* textures = static_cast<RixTexture*>(sCtx->GetRixInterface(k_RixTexture));
+    if (textures) return textures->Texture(filename, lookup, n, st, width, 3, &rgb[0].r) == 0;
+    for (int i = 0; i < n; ++i) rgb[i] = lookup.missingColor;  // a program without textures (a probe)
+    return false;
+}
+
 }  // namespace stockpatterns
 
 namespace stockpatterns {

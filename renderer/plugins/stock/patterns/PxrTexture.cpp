@@ -62,18 +62,7 @@ public:
         sCtx->EvalParam(k_missingColor, -1, &missingColor, &magenta);
         sCtx->EvalParam(k_missingAlpha, -1, &missingAlpha, &opaque);
 
-        // Where to look: the connected manifold, or the surface's own s and t.
-        RtPoint3 const* manifold = nullptr;
-        if (sCtx->EvalParam(k_manifold, -1, &manifold) != k_RixSCVarying) manifold = stockpatterns::stManifold(sCtx);
-
         RixShadingContext::Allocator pool(sCtx);
-        RtFloat2* st = pool.AllocFor<RtFloat2>(n);
-        RtFloat* width = pool.AllocFor<RtFloat>(n);
-        for (int i = 0; i < n; ++i) {
-            st[i] = RtFloat2(manifold[i].x, *invertT ? 1.0f - manifold[i].y : manifold[i].y);
-            width[i] = manifold[i].z;
-        }
-
         OutputSpecification* out = pool.AllocForPattern<OutputSpecification>(5);
         int count = 0;
         RtColorRGB* rgb = stockpatterns::addVaryingOutput<RtColorRGB>(sCtx, out, count, k_resultRGB);
@@ -85,10 +74,8 @@ public:
         RixTexture::TxParams lookup;
         lookup.firstChannel = *firstChannel;
         lookup.missingColor = *missingColor;
-        auto* textures = static_cast<RixTexture*>(sCtx->GetRixInterface(k_RixTexture));
-        bool found = textures && textures->Texture(*filename, lookup, n, st, width, 3, &rgb[0].r) == 0;
-        if (!textures)
-            for (int i = 0; i < n; ++i) rgb[i] = *missingColor;  // a program without textures (a probe)
+        bool const found = stockpatterns::readTexture(sCtx, *filename, lookup, stockpatterns::manifoldOf(sCtx, k_manifold),
+                                                      *invertT != 0, 0.0f, rgb);
         for (int i = 0; i < n; ++i) {
             if (found && *linearize)
                 rgb[i] = RtColorRGB(srgbToLinear(rgb[i].r), srgbToLinear(rgb[i].g), srgbToLinear(rgb[i].b));

@@ -1,0 +1,198 @@
+// PxrNormalMap — bends the shading normal by a tangent-space normal map: a
+// colour per point whose red, green and blue encode a unit normal's x, y and
+// z as (c + 1) / 2. The colour comes from an image (filename) or from a
+// connected pattern (inputRGB); the bent normal goes to a Bxdf's bumpNormal:
+//
+//   Pattern "PxrNormalMap" "bumps" "string filename" ["oak_normal.tx"]
+//   Bxdf "PxrDisney" "desk" "reference normal bumpNormal" ["bumps:resultN"]
+//
+// Tangent space: z is the surface's normal (its outside, or the normal of a
+// connected bumpOverlay, so that maps stack), x runs along dP/ds and y along
+// dP/dt, taken here as dPdu and dPdv (s and t are u and v on quadrics and
+// patches, and a mesh's st primvar is its uv), each made orthogonal to z.
+// y points up the image as the texture shows it, so with invertT off
+// (t down the image) it runs along -dP/dt.
+//
+//   n = normalize(bumpScale (x T + y B) + z N)   (x, y, z) = 2 c - 1
+//
+// Conventions differ between painting tools; orientation chooses one:
+// 0 OpenGL (green up), 1 DirectX (green down), 2 (the default) the flips
+// flipX and flipY. invertBump turns bumps into dents (x and y negated).
+// surfaceNormalMix blends the result back toward the surface's normal,
+// disable returns the surface's normal, reverse negates the result. Where
+// the surface faces the viewer and the bent normal would not, it is turned
+// toward the viewer just enough to face it (adjustAmount 0 leaves it):
+// otherwise a Bxdf would shade that point from behind.
+//
+// Not done here: UDIM or other atlases (atlasStyle; a warning), and the
+// manifold's rotation or scale does not turn the tangent frame.
+#include <cmath>
+
+#include "PatternHelpers.h"
+#include "RixShadingUtils.h"
+
+namespace {
+
+enum Orientation { k_openGL = 0, k_directX = 1, k_manual = 2 };
+
+/// T and B made orthonormal to N (B kept on dPdv's side); false when the
+/// surface has no usable tangents, and then any frame around N is returned.
+bool tangentFrame(RtNormal3 const& N, RtVector3 const& dPdu, RtVector3 const& dPdv, RtVector3& T, RtVector3& B) {
+    RixComputeShadingBasis(N, dPdu, T, B);
+    RtVector3 along = dPdv - N * N.Dot(dPdv) - T * T.Dot(dPdv);
+    float const lenSq = along.LengthSq();
+    if (lenSq < 1e-12f || lenSq < 1e-8f * dPdv.LengthSq()) return false;
+    B = along / std::sqrt(lenSq);
+    return true;
+}
+
+/// n turned toward the viewer until n.V = `least` on the side the surface faces.
+RtNormal3 facingViewer(RtNormal3 n, RtNormal3 const& surface, RtVector3 const& V, float least) {
+    float const side = surface.Dot(V) >= 0.0f ? 1.0f : -1.0f;
+    if (side * surface.Dot(V) <= least) return n;  // the surface itself is seen edge-on
+    float const facing = side * n.Dot(V);
+    if (facing >= least) return n;
+    n = n + V * (side * (least - facing));
+    return Normalize(n);
+}
+
+class PxrNormalMap : public stockpatterns::StockPattern {
+public:
+    enum {
+        k_bumpScale, k_inputRGB, k_filename, k_bumpOverlay, k_invertBump, k_orientation, k_flipX, k_flipY,
+        k_firstChannel, k_atlasStyle, k_invertT, k_blur, k_lerp, k_filter, k_manifold, k_reverse, k_adjustAmount,
+        k_surfaceNormalMix, k_disable, k_resultN
+    };
+
+    RixSCParamInfo const* GetParamTable() override {
+        static RixSCParamInfo table[] = {
+            RixSCParamInfo(RtUString("bumpScale"), k_RixSCFloat),
+            RixSCParamInfo(RtUString("inputRGB"), k_RixSCColor),  // used when there is no filename
+            RixSCParamInfo(RtUString("filename"), k_RixSCString),
+            RixSCParamInfo(RtUString("bumpOverlay"), k_RixSCNormal),  // another bump pattern's resultN
+            RixSCParamInfo(RtUString("invertBump"), k_RixSCInteger),
+            RixSCParamInfo(RtUString("orientation"), k_RixSCInteger),
+            RixSCParamInfo(RtUString("flipX"), k_RixSCInteger),
+            RixSCParamInfo(RtUString("flipY"), k_RixSCInteger),
+            RixSCParamInfo(RtUString("firstChannel"), k_RixSCInteger),
+            RixSCParamInfo(RtUString("atlasStyle"), k_RixSCInteger),
+            RixSCParamInfo(RtUString("invertT"), k_RixSCInteger),
+            RixSCParamInfo(RtUString("blur"), k_RixSCFloat),    // widens the filter, in texture units
+            RixSCParamInfo(RtUString("lerp"), k_RixSCInteger),  // lerp and filter: the texture system's own choice
+            RixSCParamInfo(RtUString("filter"), k_RixSCInteger),
+            RixSCParamInfo(RtUString("manifold"), k_RixSCPoint),
+            RixSCParamInfo(RtUString("reverse"), k_RixSCInteger),
+            RixSCParamInfo(RtUString("adjustAmount"), k_RixSCFloat),
+            RixSCParamInfo(RtUString("surfaceNormalMix"), k_RixSCFloat),
+            RixSCParamInfo(RtUString("disable"), k_RixSCInteger),
+            RixSCParamInfo(RtUString("resultN"), k_RixSCNormal, k_RixSCOutput),
+            RixSCParamInfo()};
+        return table;
+    }
+
+    int ComputeOutputParams(RixShadingContext const* sCtx, RtInt* numOutputs, OutputSpecification** outputs,
+                            RtPointer, RixSCParamInfo const*) override {
+        int const n = sCtx->numPts;
+        RixShadingContext::Allocator pool(sCtx);
+        OutputSpecification* out = pool.AllocForPattern<OutputSpecification>(1);
+        int count = 0;
+        RtNormal3* result = stockpatterns::addVaryingOutput<RtNormal3>(sCtx, out, count, k_resultN);
+        *numOutputs = count;
+        *outputs = out;
+
+        RtNormal3 const* Nn;
+        sCtx->GetBuiltinVar(RixShadingContext::k_Nn, &Nn);
+        RtNormal3 const* base = Nn;
+        RtNormal3 const* overlay = nullptr;
+        if (sCtx->EvalParam(k_bumpOverlay, -1, &overlay) == k_RixSCVarying) base = overlay;
+        RtInt const zero = 0, one = 1, manual = k_manual;
+        RtInt const* disable;
+        sCtx->EvalParam(k_disable, -1, &disable, &zero);
+        if (*disable) {
+            for (int i = 0; i < n; ++i) result[i] = base[i];
+            return 0;
+        }
+
+        RtColorRGB const* colors = encodedNormals(sCtx);
+        RtFloat const fullScale = 1.0f, none = 0.0f, adjust = 1.0f;
+        RtFloat const *bumpScale, *adjustAmount, *surfaceNormalMix;
+        RtInt const *invertBump, *orientation, *flipX, *flipY, *invertT, *reverse;
+        sCtx->EvalParam(k_bumpScale, -1, &bumpScale, &fullScale, true);
+        sCtx->EvalParam(k_surfaceNormalMix, -1, &surfaceNormalMix, &none, true);
+        sCtx->EvalParam(k_adjustAmount, -1, &adjustAmount, &adjust);
+        sCtx->EvalParam(k_invertBump, -1, &invertBump, &zero);
+        sCtx->EvalParam(k_orientation, -1, &orientation, &manual);
+        sCtx->EvalParam(k_flipX, -1, &flipX, &zero);
+        sCtx->EvalParam(k_flipY, -1, &flipY, &zero);
+        sCtx->EvalParam(k_invertT, -1, &invertT, &one);
+        sCtx->EvalParam(k_reverse, -1, &reverse, &zero);
+
+        // The signs of the map's x and y, from the convention and the flips.
+        bool const manualFlips = *orientation == k_manual;
+        float signX = manualFlips && *flipX ? -1.0f : 1.0f;
+        float signY = (manualFlips && *flipY) || *orientation == k_directX ? -1.0f : 1.0f;
+        if (*invertBump) signX = -signX, signY = -signY;
+        if (!*invertT) signY = -signY;  // the image's up is then -t
+
+        RtVector3 const *dPdu, *dPdv, *Vn;
+        sCtx->GetBuiltinVar(RixShadingContext::k_dPdu, &dPdu);
+        sCtx->GetBuiltinVar(RixShadingContext::k_dPdv, &dPdv);
+        sCtx->GetBuiltinVar(RixShadingContext::k_Vn, &Vn);
+        for (int i = 0; i < n; ++i) {
+            RtNormal3 const N = base[i].LengthSq() > 0.0f ? RtNormal3(Normalize(base[i])) : Nn[i];
+            RtVector3 T, B;
+            tangentFrame(N, dPdu[i], dPdv[i], T, B);
+            float const x = signX * (2.0f * colors[i].r - 1.0f), y = signY * (2.0f * colors[i].g - 1.0f);
+            float const z = 2.0f * colors[i].b - 1.0f;
+            RtVector3 bent = (T * x + B * y) * bumpScale[i] + N * z;
+            RtNormal3 normal = bent.LengthSq() > 1e-12f ? RtNormal3(Normalize(bent)) : N;
+            float const mix = RixClamp(surfaceNormalMix[i], 0.0f, 1.0f);
+            if (mix > 0.0f) {
+                RtVector3 blended = normal * (1.0f - mix) + N * mix;
+                normal = blended.LengthSq() > 1e-12f ? RtNormal3(Normalize(blended)) : N;
+            }
+            if (*adjustAmount > 0.0f) normal = facingViewer(normal, N, Vn[i], 0.01f);
+            result[i] = *reverse ? RtNormal3(-normal) : normal;
+        }
+        return 0;
+    }
+
+private:
+    /// Each point's encoded normal: the image's colour at its texture
+    /// coordinates, or inputRGB when there is no image.
+    RtColorRGB const* encodedNormals(RixShadingContext const* sCtx) {
+        RtUString const noFile;
+        RtColorRGB const flat(0.5f, 0.5f, 1.0f);  // (0, 0, 1): the surface's own normal
+        RtUString const* filename;
+        RtColorRGB const* inputRGB;
+        sCtx->EvalParam(k_filename, -1, &filename, &noFile);
+        sCtx->EvalParam(k_inputRGB, -1, &inputRGB, &flat, true);
+        if (filename->Empty()) return inputRGB;
+
+        RtInt const zero = 0, one = 1;
+        RtFloat const sharp = 0.0f;
+        RtInt const *firstChannel, *atlasStyle, *invertT;
+        RtFloat const* blur;
+        sCtx->EvalParam(k_firstChannel, -1, &firstChannel, &zero);
+        sCtx->EvalParam(k_atlasStyle, -1, &atlasStyle, &zero);
+        sCtx->EvalParam(k_invertT, -1, &invertT, &one);
+        sCtx->EvalParam(k_blur, -1, &blur, &sharp);
+        if (*atlasStyle != 0)
+            if (auto* messages = static_cast<RixMessages*>(sCtx->GetRixInterface(k_RixMessages)))
+                messages->Warning("PxrNormalMap: texture atlases (atlasStyle %d) are not read here; \"%s\" is read as "
+                                  "one image",
+                                  *atlasStyle, filename->CStr());
+
+        RtColorRGB* colors = RixShadingContext::Allocator(sCtx).AllocFor<RtColorRGB>(sCtx->numPts);
+        RixTexture::TxParams lookup;
+        lookup.firstChannel = *firstChannel;
+        lookup.missingColor = flat;  // a map that cannot be read leaves the normal as it is
+        stockpatterns::readTexture(sCtx, *filename, lookup, stockpatterns::manifoldOf(sCtx, k_manifold), *invertT != 0,
+                                   RixMax(*blur, 0.0f), colors);
+        return colors;
+    }
+};
+
+}  // namespace
+
+STOCK_PATTERN_PLUGIN(PxrNormalMap)
