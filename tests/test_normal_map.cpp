@@ -138,6 +138,16 @@ TEST_CASE("a normal map read from an image, and a bumped PxrSurface", "[patterns
         CHECK(missing.anyMessageContains("texture \"no/such/normals.tx\" does not exist"));
         CHECK(missing.channel(8, 8, 0) == Approx(flat.channel(8, 8, 0)).epsilon(1e-5));
     }
+    SECTION("a reference declared a colour where the plugin has a normal: connected as a normal, with a warning") {
+        // As public scenes write it: the declaration's type is only how the link is spelled.
+        auto spelled = test::renderRib(kHead + kHeadlight +
+                                           "Pattern \"PxrNormalMap\" \"bumps\" \"color inputRGB\" [0.75 0.5 0.93]\n" +
+                                           bxdf(" \"reference color bumpNormal\" [\"bumps:resultN\"]") + kSquare,
+                                       samples(4));
+        CHECK(spelled.anyMessageContains("parameter \"bumpNormal\" is a normal, and the RIB declares its reference a "
+                                         "color; connected as a normal (write \"reference normal bumpNormal\")"));
+        CHECK(spelled.channel(8, 8, 0) == fromColor.channel(8, 8, 0));
+    }
     SECTION("PxrSurface's stand-in keeps its bumpNormal") {
         std::string const surface = "Pattern \"PxrNormalMap\" \"bumps\" \"color inputRGB\" [0.75 0.5 0.93]\n"
                                     "Bxdf \"PxrSurface\" \"s\" \"color diffuseColor\" [1 1 1] "

@@ -79,7 +79,15 @@ NodeParams::NodeParams(std::string const& kind, ShadingPlugin const& plugin, Par
         Param const& p = needsType ? typed : written;
         // RenderMan's structs (a manifold) travel as a point here: see RixPattern.h.
         bool structOk = p.decl.reference && p.decl.type == ParamType::Unknown && info.type == k_RixSCPoint;
-        if (!structOk && !ribValueSets(info.type, p.decl.type))
+        // A reference only names its pattern: where the declaration's type and the plugin's are both
+        // three floats, the connection's own types decide (below), as they do for any connection.
+        bool const tripleReference = p.decl.reference && connectable(rixTypeFor(p.decl.type), info.type);
+        if (tripleReference && !ribValueSets(info.type, p.decl.type))
+            diagnostics.warn(p.location, owner + " parameter \"" + p.name() + "\" is a " + ribTypeFor(info.type) +
+                                             ", and the RIB declares its reference a " + paramTypeName(p.decl.type) +
+                                             "; connected as a " + ribTypeFor(info.type) + " (write \"reference " +
+                                             ribTypeFor(info.type) + " " + p.name() + "\")");
+        else if (!structOk && !ribValueSets(info.type, p.decl.type))
             throw RibError(p.location, owner + " parameter \"" + p.name() + "\" is a " + ribTypeFor(info.type) +
                                            ", but the RIB gives a " +
                                            (p.decl.type == ParamType::Unknown ? "struct" : paramTypeName(p.decl.type)) +
