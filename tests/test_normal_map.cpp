@@ -1,6 +1,7 @@
-// PxrNormalMap bends PxrDisney's shading normal: by the angle the map
-// encodes, toward +dPdu for red and +dPdv for green, with RenderMan's flips,
-// from an image or a connected colour, and through the PxrSurface stand-in.
+// PxrNormalMap and PxrBump bend PxrDisney's shading normal: by the angle the
+// map encodes (or the height map's slope), toward +dPdu for red and +dPdv for
+// green, with RenderMan's flips, from an image or a connected colour, and
+// through the PxrSurface stand-in.
 #include <catch2/catch.hpp>
 #include <cmath>
 
@@ -156,5 +157,46 @@ TEST_CASE("a normal map read from an image, and a bumped PxrSurface", "[patterns
         auto standIn = test::renderRib(kHead + kHeadlight + surface + kSquare, samples(4));
         CHECK_FALSE(standIn.anyMessageContains("bumpNormal"));
         CHECK(standIn.channel(8, 8, 0) == Approx(fromColor.channel(8, 8, 0)).epsilon(1e-4));
+    }
+}
+
+TEST_CASE("PxrBump tilts the normal against its height map's slope", "[patterns][normalmap][textures]") {
+    // A 64-pixel ramp across s: h = (64 s - 0.5) / 63 between pixel centres, a slope of 64/63 per
+    // unit of s; s spans the square's 2 units along x, so h rises 32/63 per unit of x.
+    int const size = 64;
+    std::vector<float> pixels;
+    for (int y = 0; y < size; ++y)
+        for (int x = 0; x < size; ++x) pixels.insert(pixels.end(), 3, static_cast<float>(x) / (size - 1));
+    std::string const file = test::outputDir() + "/height-ramp.exr";
+    writeImage(file, pixels, size, size, 3);
+    auto bump = [&](std::string const& light, std::string const& scale) {
+        return test::renderRib(kHead + light + "Pattern \"PxrBump\" \"b\" \"string filename\" [\"" + file +
+                                   "\"] \"float scale\" [" + scale + "]\n" +
+                                   bxdf(" \"reference normal bumpNormal\" [\"b:resultN\"]") + kSquare,
+                               samples(4));
+    };
+    auto flat = test::renderRib(kHead + kHeadlight + bxdf() + kSquare, samples(4));
+    for (double scale : {0.5, 2.0}) {
+        CAPTURE(scale);
+        auto r = bump(kHeadlight, std::to_string(scale));
+        double const c = std::cos(std::atan(scale * 32.0 / 63.0));  // the tilt of N - scale grad h
+        double const fd = std::pow(1.0 + 0.5 * std::pow(1.0 - c, 5.0), 2.0);
+        for (int x : {4, 8, 11})
+            for (int y : {3, 12}) CHECK(r.channel(x, y, 0) / flat.channel(x, y, 0) == Approx(c * fd).epsilon(1e-3));
+    }
+    SECTION("a slope rising toward +x leans the normal toward -x") {
+        std::string const leftLight = "AttributeBegin\nTranslate -3 0 4\nScale 0.2 0.2 0.2\n"
+                                      "Light \"PxrSphereLight\" \"bulb\" \"float intensity\" [400]\nAttributeEnd\n";
+        auto level = bump(leftLight, "0");
+        CHECK(bump(leftLight, "1").channel(8, 8, 0) > 1.2f * level.channel(8, 8, 0));
+        CHECK(bump(leftLight, "-1").channel(8, 8, 0) < 0.8f * level.channel(8, 8, 0));
+    }
+    SECTION("a connected inputBump is not differentiated: a warning, and the normal is the surface's") {
+        auto r = test::renderRib(kHead + kHeadlight + "Pattern \"PxrVariable\" \"u\" \"string variable\" [\"u\"]\n" +
+                                     "Pattern \"PxrBump\" \"b\" \"reference float inputBump\" [\"u:resultF\"]\n" +
+                                     bxdf(" \"reference normal bumpNormal\" [\"b:resultN\"]") + kSquare,
+                                 samples(4));
+        CHECK(r.anyMessageContains("PxrBump: a connected inputBump is not differentiated here"));
+        CHECK(r.channel(8, 8, 0) == Approx(flat.channel(8, 8, 0)).epsilon(1e-5));
     }
 }

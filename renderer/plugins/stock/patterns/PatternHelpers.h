@@ -69,13 +69,12 @@ inline RtPoint3 const* manifoldOf(RixShadingContext const* sCtx, int manifoldId)
     return manifold;
 }
 
-/// Reads 3 channels of `filename` into `rgb` at every point's manifold (s, t,
+/// Reads 3 channels of `filename` into `rgb` at `n` manifold points (s, t,
 /// footprint), footprints widened by `blur`; with invertT, t runs up the image
 /// (t = 0 is its bottom row). False when the file cannot be read: then every
 /// point has lookup.missingColor.
 inline bool readTexture(RixShadingContext const* sCtx, RtUString filename, RixTexture::TxParams const& lookup,
-                        RtPoint3 const* manifold, bool invertT, float blur, RtColorRGB* rgb) {
-    int const n = sCtx->numPts;
+                        RtPoint3 const* manifold, int n, bool invertT, float blur, RtColorRGB* rgb) {
     RixShadingContext::Allocator pool(sCtx);
     RtFloat2* st = pool.AllocFor<RtFloat2>(n);
     RtFloat* width = pool.AllocFor<RtFloat>(n);

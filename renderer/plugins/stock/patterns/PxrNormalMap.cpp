@@ -28,7 +28,7 @@
 // manifold's rotation or scale does not turn the tangent frame.
 #include <cmath>
 
-#include "PatternHelpers.h"
+#include "BentNormals.h"
 #include "RixShadingUtils.h"
 
 namespace {
@@ -44,16 +44,6 @@ bool tangentFrame(RtNormal3 const& N, RtVector3 const& dPdu, RtVector3 const& dP
     if (lenSq < 1e-12f || lenSq < 1e-8f * dPdv.LengthSq()) return false;
     B = along / std::sqrt(lenSq);
     return true;
-}
-
-/// n turned toward the viewer until n.V = `least` on the side the surface faces.
-RtNormal3 facingViewer(RtNormal3 n, RtNormal3 const& surface, RtVector3 const& V, float least) {
-    float const side = surface.Dot(V) >= 0.0f ? 1.0f : -1.0f;
-    if (side * surface.Dot(V) <= least) return n;  // the surface itself is seen edge-on
-    float const facing = side * n.Dot(V);
-    if (facing >= least) return n;
-    n = n + V * (side * (least - facing));
-    return Normalize(n);
 }
 
 class PxrNormalMap : public stockpatterns::StockPattern {
@@ -74,12 +64,7 @@ public:
             RixSCParamInfo(RtUString("orientation"), k_RixSCInteger),
             RixSCParamInfo(RtUString("flipX"), k_RixSCInteger),
             RixSCParamInfo(RtUString("flipY"), k_RixSCInteger),
-            RixSCParamInfo(RtUString("firstChannel"), k_RixSCInteger),
-            RixSCParamInfo(RtUString("atlasStyle"), k_RixSCInteger),
-            RixSCParamInfo(RtUString("invertT"), k_RixSCInteger),
-            RixSCParamInfo(RtUString("blur"), k_RixSCFloat),    // widens the filter, in texture units
-            RixSCParamInfo(RtUString("lerp"), k_RixSCInteger),  // lerp and filter: the texture system's own choice
-            RixSCParamInfo(RtUString("filter"), k_RixSCInteger),
+            STOCK_PATTERN_IMAGE_READING_PARAMS,
             RixSCParamInfo(RtUString("manifold"), k_RixSCPoint),
             RixSCParamInfo(RtUString("reverse"), k_RixSCInteger),
             RixSCParamInfo(RtUString("adjustAmount"), k_RixSCFloat),
@@ -93,12 +78,7 @@ public:
     int ComputeOutputParams(RixShadingContext const* sCtx, RtInt* numOutputs, OutputSpecification** outputs,
                             RtPointer, RixSCParamInfo const*) override {
         int const n = sCtx->numPts;
-        RixShadingContext::Allocator pool(sCtx);
-        OutputSpecification* out = pool.AllocForPattern<OutputSpecification>(1);
-        int count = 0;
-        RtNormal3* result = stockpatterns::addVaryingOutput<RtNormal3>(sCtx, out, count, k_resultN);
-        *numOutputs = count;
-        *outputs = out;
+        RtNormal3* result = stockpatterns::normalOutput(sCtx, k_resultN, numOutputs, outputs);
 
         RtNormal3 const* Nn;
         sCtx->GetBuiltinVar(RixShadingContext::k_Nn, &Nn);
@@ -151,7 +131,7 @@ public:
                 RtVector3 blended = normal * (1.0f - mix) + N * mix;
                 normal = blended.LengthSq() > 1e-12f ? RtNormal3(Normalize(blended)) : N;
             }
-            if (*adjustAmount > 0.0f) normal = facingViewer(normal, N, Vn[i], 0.01f);
+            if (*adjustAmount > 0.0f) normal = stockpatterns::facingViewer(normal, N, Vn[i]);
             result[i] = *reverse ? RtNormal3(-normal) : normal;
         }
         return 0;
@@ -169,26 +149,12 @@ private:
         sCtx->EvalParam(k_inputRGB, -1, &inputRGB, &flat, true);
         if (filename->Empty()) return inputRGB;
 
-        RtInt const zero = 0, one = 1;
-        RtFloat const sharp = 0.0f;
-        RtInt const *firstChannel, *atlasStyle, *invertT;
-        RtFloat const* blur;
-        sCtx->EvalParam(k_firstChannel, -1, &firstChannel, &zero);
-        sCtx->EvalParam(k_atlasStyle, -1, &atlasStyle, &zero);
-        sCtx->EvalParam(k_invertT, -1, &invertT, &one);
-        sCtx->EvalParam(k_blur, -1, &blur, &sharp);
-        if (*atlasStyle != 0)
-            if (auto* messages = static_cast<RixMessages*>(sCtx->GetRixInterface(k_RixMessages)))
-                messages->Warning("PxrNormalMap: texture atlases (atlasStyle %d) are not read here; \"%s\" is read as "
-                                  "one image",
-                                  *atlasStyle, filename->CStr());
-
+        stockpatterns::ImageReading reading =
+            stockpatterns::imageReading(sCtx, k_firstChannel, "PxrNormalMap", *filename);
+        reading.lookup.missingColor = flat;  // a map that cannot be read leaves the normal as it is
         RtColorRGB* colors = RixShadingContext::Allocator(sCtx).AllocFor<RtColorRGB>(sCtx->numPts);
-        RixTexture::TxParams lookup;
-        lookup.firstChannel = *firstChannel;
-        lookup.missingColor = flat;  // a map that cannot be read leaves the normal as it is
-        stockpatterns::readTexture(sCtx, *filename, lookup, stockpatterns::manifoldOf(sCtx, k_manifold), *invertT != 0,
-                                   RixMax(*blur, 0.0f), colors);
+        stockpatterns::readTexture(sCtx, *filename, reading.lookup, stockpatterns::manifoldOf(sCtx, k_manifold),
+                                   sCtx->numPts, reading.invertT, reading.blur, colors);
         return colors;
     }
 };

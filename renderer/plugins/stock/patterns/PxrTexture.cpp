@@ -75,7 +75,7 @@ public:
         lookup.firstChannel = *firstChannel;
         lookup.missingColor = *missingColor;
         bool const found = stockpatterns::readTexture(sCtx, *filename, lookup, stockpatterns::manifoldOf(sCtx, k_manifold),
-                                                      *invertT != 0, 0.0f, rgb);
+                                                      n, *invertT != 0, 0.0f, rgb);
         for (int i = 0; i < n; ++i) {
             if (found && *linearize)
                 rgb[i] = RtColorRGB(srgbToLinear(rgb[i].r), srgbToLinear(rgb[i].g), srgbToLinear(rgb[i].b));
