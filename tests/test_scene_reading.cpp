@@ -629,6 +629,30 @@ TEST_CASE("RenderMan's own materials and integrators that are not here get a sta
                       Catch::Matchers::Contains("not found"));
 }
 
+TEST_CASE("RenderMan's glass materials stand in as chapter 10's refracting glass", "[rib][plugins]") {
+    // A clear, lossless glass ball under a uniform sky of radiance 1 shows the sky through it: the
+    // centre pixel is about 1 (a reflecting-only stand-in would be near 0.04).
+    auto centre = [](std::string const& bxdf) {
+        std::string rib = "Format 8 8 1\nProjection \"perspective\" \"fov\" [20]\n"
+                          "Integrator \"PxrPathTracer\" \"p\" \"int maxPathLength\" [12]\nWorldBegin\n"
+                          "Light \"PxrDomeLight\" \"sky\"\nTranslate 0 0 5\n" +
+                          bxdf + "\nSphere 1 -1 1 360\nWorldEnd\n";
+        auto r = test::renderRib(rib, test::withSpp(64));
+        CHECK(r.anyMessageContains("rendered as a refracting glass"));
+        return Vec3(r.channel(4, 4, 0), r.channel(4, 4, 1), r.channel(4, 4, 2));
+    };
+    Vec3 clear = centre("Bxdf \"PxrGlass\" \"g\" \"float ior\" [1.5]");
+    CHECK(clear.x == Approx(1.0f).epsilon(0.05));
+    CHECK(clear.z == Approx(1.0f).epsilon(0.05));
+    // PxrSurface's glass lobe (refractionGain > 0) is the same glass; its refraction colour tints
+    // each crossing (two, through a ball), its reflections stay white.
+    CHECK(centre("Bxdf \"PxrSurface\" \"s\" \"float diffuseGain\" [0] \"float refractionGain\" [1] "
+                 "\"float glassIor\" [1.5] \"float glassRoughness\" [0]") == clear);
+    Vec3 green = centre("Bxdf \"PxrLMGlass\" \"g\" \"float eta\" [1.5] \"color refractionColor\" [0.5 1 0.5]");
+    CHECK(green.y == Approx(clear.y).epsilon(0.05));
+    CHECK(green.x < 0.4f * green.y);
+}
+
 TEST_CASE("a stand-in whose textured colour cannot be loaded keeps the original's untextured colour", "[rib][plugins]") {
     // PxrSurface's diffuse colour from an absent pattern: the surface is PxrSurface's grey 0.18 (times
     // its gain), not the stand-in PxrDisney's own default base colour (0.2, 0.5, 0.8).

@@ -99,7 +99,22 @@ std::optional<StandIn> standInFor(MaterialDesc const& material, std::vector<Patt
     s.material.plugin = "PxrDisney";
     ParamList& out = s.material.params;
 
-    if (name == "PxrSurface" || name == "PxrLayerSurface") {
+    float const refractionGain = floatOf(in, "refractionGain").value_or(0.0f);
+    bool const surface = name == "PxrSurface" || name == "PxrLayerSurface";
+    if (name == "PxrGlass" || name == "PxrLMGlass" || (surface && refractionGain > 0.0f)) {
+        // A refracting dielectric: chapter 10's glass, with the index, roughness (GGX alpha, as
+        // RenderMan's roughness is here) and refraction tint of the material's glass.
+        s.material.plugin = "StockGlass";
+        char const* const iorName = surface ? "glassIor" : name == "PxrLMGlass" ? "eta" : "ior";
+        float const roughness = floatOf(in, surface ? "glassRoughness" : "roughness").value_or(surface ? 0.1f : 0.0f);
+        float const gain = surface ? refractionGain : floatOf(in, "refractionGain").value_or(1.0f);
+        out.add(floatParam("ior", floatOf(in, iorName).value_or(1.5f)));
+        out.add(floatParam("roughness", std::clamp(roughness, 0.0f, 1.0f)));
+        out.add(colorParam("transmissionColor",
+                           colorOf(in, {"refractionColor"}).value_or(Vec3(1.0f)) * std::clamp(gain, 0.0f, 1.0f)));
+        s.note = std::string("a refracting glass of its index, roughness and refraction colour (") +
+                 (surface ? "its other lobes, " : "") + "absorption and thin glass are not rendered)";
+    } else if (surface) {
         // Diffuse colour times gain; the artistic specular's face colour as a dielectric's reflectance.
         float const gain = floatOf(in, "diffuseGain").value_or(1.0f);
         Vec3 const colour = colorOf(in, {"diffuseColor"}).value_or(Vec3(0.18f));
@@ -123,12 +138,6 @@ std::optional<StandIn> standInFor(MaterialDesc const& material, std::vector<Patt
         out.add(floatParam("metallic", 1.0f));
         out.add(floatParam("roughness", std::sqrt(std::clamp(floatOf(in, "roughness").value_or(0.01f), 0.0f, 1.0f))));
         s.note = "a PxrDisney metal (its eta and kappa are not used)";
-    } else if (name == "PxrGlass" || name == "PxrLMGlass") {
-        // No refraction here: a clear coat over black keeps the reflections of glass, not what is behind it.
-        out.add(colorParam("baseColor", Vec3(0.0f)));
-        out.add(floatParam("specular", 0.5f));
-        out.add(floatParam("roughness", std::sqrt(std::clamp(floatOf(in, "roughness").value_or(0.0f), 0.0f, 1.0f))));
-        s.note = "the reflections of glass over black: transmission and refraction are not rendered";
     } else {
         // PxrLMDiffuse, PxrDiffuse-likes and anything else: a diffuse surface in its colour.
         s.material.plugin = "PxrDiffuse";

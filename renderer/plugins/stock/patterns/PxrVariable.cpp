@@ -28,10 +28,12 @@ NamedBuiltin const kBuiltins[] = {
 
 class PxrVariable : public stockpatterns::StockPattern {
 public:
-    enum { k_variable, k_resultF, k_resultRGB, k_resultP };
+    enum { k_variable, k_type, k_resultF, k_resultRGB, k_resultP };
 
     RixSCParamInfo const* GetParamTable() override {
         static RixSCParamInfo table[] = {RixSCParamInfo(RtUString("variable"), k_RixSCString),
+                                         // RenderMan's output type; here every output is given whatever it is.
+                                         RixSCParamInfo(RtUString("type"), k_RixSCString),
                                          STOCK_PATTERN_OUTPUTS_OF_EVERY_TYPE,
                                          RixSCParamInfo()};
         return table;
