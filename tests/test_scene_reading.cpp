@@ -487,6 +487,16 @@ TEST_CASE("free-form shapes: subdivision surface, NURBS patch, curves, points an
         CHECK(hitDistance("Curves \"linear\" [2] \"nonperiodic\" \"P\" [-1 0 5  1 0 5] \"constantwidth\" [0.2]\n") ==
               Approx(4.9f).epsilon(1e-3));
         CHECK(hitDistance("Points \"P\" [0 0 5] \"constantwidth\" [1]\n") == Approx(4.5f).epsilon(1e-4));
+        // "width" in each storage class: one value in all, one per curve, one per vertex.
+        CHECK(hitDistance("Curves \"linear\" [2] \"nonperiodic\" \"P\" [-1 0 5  1 0 5] \"constant float width\" [0.2]\n") ==
+              Approx(4.9f).epsilon(1e-3));
+        std::string const twoCurves = "Curves \"linear\" [2 2] \"nonperiodic\" \"P\" [-1 0 5  1 0 5  -1 2 5  1 2 5] ";
+        CHECK(hitDistance(twoCurves + "\"uniform float width\" [0.2 0.6]\n") == Approx(4.9f).epsilon(1e-3));
+        CHECK(hitDistance(twoCurves + "\"uniform float width\" [0.6 0.2]\n") == Approx(4.7f).epsilon(1e-3));
+        CHECK(hitDistance("Curves \"linear\" [3] \"nonperiodic\" \"P\" [-2 0 5  0 0 5  2 0 5] "
+                          "\"vertex float width\" [0.1 0.4 0.1]\n") == Approx(4.8f).epsilon(1e-3));
+        CHECK_THROWS_WITH(hitDistance(twoCurves + "\"uniform float width\" [0.2]\n"),
+                          Catch::Matchers::Contains("\"width\" has too few values for the curves (uniform: 1 given)"));
         // A cubic curve (b-spline basis) through points on x = 0: hit from the side.
         CHECK(hitDistance("Basis \"b-spline\" 1 \"b-spline\" 1\nCurves \"cubic\" [4] \"nonperiodic\" "
                           "\"P\" [0 -3 5  0 -1 5  0 1 5  0 3 5] \"constantwidth\" [0.5]\n") == Approx(4.75f).epsilon(1e-2));

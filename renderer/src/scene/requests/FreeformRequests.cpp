@@ -246,6 +246,10 @@ void SceneBuilder::curves(RequestReader& in) {
     if (wrap != "periodic" && wrap != "nonperiodic") in.fail(in.where(), "wrap must be \"periodic\" or \"nonperiodic\"");
     bool const cubic = type == "cubic", periodic = wrap == "periodic";
     std::vector<Vec3> P = worldPoints(params, state().transform, in);
+    // "width" is varying unless declared otherwise: one value in all (constant), one per curve
+    // (uniform), one per control vertex (vertex, interpolated like P) or one per segment end.
+    Param const* widthParam = params.find("width");
+    std::string const widthClass = widthParam ? widthParam->decl.storageClass : "varying";
     std::vector<float> const* widths = params.getFloats("width", ParamType::Float);
     float constantWidth = params.getFloat("constantwidth", 1.0f);
     params.ignore("N");  // ribbons facing N are drawn as round tubes
@@ -257,34 +261,56 @@ void SceneBuilder::curves(RequestReader& in) {
 
     CurveData data;
     data.cubic = cubic;
+    bool const perVertex = widthClass == "vertex";
     size_t first = 0, widthIndex = 0;
-    for (int n : nverts) {
+    for (size_t curve = 0; curve < nverts.size(); ++curve) {
+        int const n = nverts[curve];
         int const minimum = cubic ? 4 : 2;
         if (n < minimum) in.fail(in.where(), "a " + type + " curve needs at least " + std::to_string(minimum) + " vertices");
         if (first + static_cast<size_t>(n) > P.size()) in.fail(in.where(), "the curves' vertex counts exceed \"P\"");
         int segments = cubic ? (periodic ? n / step : (n - 4) / step + 1) : (periodic ? n : n - 1);
-        int varying = periodic ? segments : segments + 1;  // widths per curve
-        auto width = [&](int k) {
-            if (!widths) return constantWidth;
-            size_t at = widthIndex + static_cast<size_t>(periodic ? k % varying : k);
-            if (at >= widths->size()) in.fail(in.where(), "\"width\" has too few values for the curves");
-            return (*widths)[at];
+        int varying = periodic ? segments : segments + 1;  // varying widths per curve
+        auto widthValue = [&](size_t at) {
+            if (at >= widths->size())
+                in.fail(in.where(), "\"width\" has too few values for the curves (" + widthClass + ": " +
+                                        std::to_string(widths->size()) + " given)");
+            return 0.5f * scale * std::fabs((*widths)[at]);
         };
+        // The radius at the start of segment k (k = segments: the end of the last one).
+        auto radius = [&](int k) {
+            if (!widths) return 0.5f * scale * std::fabs(constantWidth);
+            if (widthClass == "constant") return widthValue(0);
+            if (widthClass == "uniform") return widthValue(curve);
+            if (perVertex) return widthValue(first + static_cast<size_t>(periodic ? (k * step) % n : k * step));
+            return widthValue(widthIndex + static_cast<size_t>(periodic ? k % varying : k));
+        };
+        auto vertexRadius = [&](int k) { return widthValue(first + static_cast<size_t>(periodic ? k % n : k)); };
         auto point = [&](int k) { return P[first + static_cast<size_t>(periodic ? k % n : k)]; };
         for (int s = 0; s < segments; ++s) {
-            float r0 = 0.5f * scale * std::fabs(width(s)), r1 = 0.5f * scale * std::fabs(width(s + 1));
             data.segments.push_back(static_cast<unsigned>(data.points.size()));
             if (!cubic) {
-                data.points.emplace_back(point(s), r0);
-                data.points.emplace_back(point(s + 1), r1);
+                data.points.emplace_back(point(s), radius(s));
+                data.points.emplace_back(point(s + 1), radius(s + 1));
                 continue;
             }
+            // Per-vertex widths go through the basis as P does; the others run linearly along the segment.
+            float const r0 = perVertex ? 0.0f : radius(s), r1 = perVertex ? 0.0f : radius(s + 1);
             Vec3 G[4];
-            for (int m = 0; m < 4; ++m) G[m] = point(s * step + m);
+            float Gr[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+            for (int m = 0; m < 4; ++m) {
+                G[m] = point(s * step + m);
+                if (perVertex) Gr[m] = vertexRadius(s * step + m);
+            }
             for (int i = 0; i < 4; ++i) {
                 Vec3 c(0.0f);
-                for (int m = 0; m < 4; ++m) c += convert[static_cast<size_t>(i)][static_cast<size_t>(m)] * G[m];
-                data.points.emplace_back(c, r0 + (r1 - r0) * static_cast<float>(i) / 3.0f);
+                float r = 0.0f;
+                for (int m = 0; m < 4; ++m) {
+                    float const weight = convert[static_cast<size_t>(i)][static_cast<size_t>(m)];
+                    c += weight * G[m];
+                    r += weight * Gr[m];
+                }
+                if (!perVertex) r = r0 + (r1 - r0) * static_cast<float>(i) / 3.0f;
+                data.points.emplace_back(c, std::fabs(r));
             }
         }
         first += static_cast<size_t>(n);
