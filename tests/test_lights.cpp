@@ -54,6 +54,17 @@ TEST_CASE("area and distant lights shine along their local +z: a surface on that
     }
 }
 
+TEST_CASE("a portal light with no dome light is an opening onto a uniform sky: a rect light of its own colour",
+          "[lights]") {
+    std::string const portal = "  Translate 0 0 3\n  Light \"PxrPortalLight\" \"p\" \"float intensity\" [2]\n";
+    std::string const rect = "  Translate 0 0 3\n  Light \"PxrRectLight\" \"r\" \"float intensity\" [2]\n";
+    CHECK(litSquare(portal) > 0.02);
+    CHECK(litSquare(portal) == litSquare(rect));
+    // With a dome light the portal only guides its sampling here: the dome alone lights the square.
+    std::string const dome = "  Light \"PxrDomeLight\" \"sky\" \"float intensity\" [0.5]\n";
+    CHECK(litSquare(dome + portal) == litSquare(dome));
+}
+
 TEST_CASE("a rect light under a ceiling turned with Rotate 90 1 0 0 lights the floor below it", "[lights]") {
     // The light at y = 1, above the floor at y = -2.
     CHECK(litFloor("  Translate 0 1 0\n  Rotate 90 1 0 0\n  Scale 2 2 1\n"

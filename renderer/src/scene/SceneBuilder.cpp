@@ -293,6 +293,7 @@ void SceneBuilder::finishFrame() {
     for (MaterialDesc& material : m_scene.materials)
         if (material.plugin == "ClassicSurface")
             material.params.add(colorParam("ambient", m_ambient));
+    resolvePortals();
     // Illuminate: a light off for every shape lights nothing and is dropped. A
     // light on for some shapes and off for others lights them all: lights are
     // not linked to shapes here.

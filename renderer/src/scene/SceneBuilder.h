@@ -193,6 +193,7 @@ private:
     int emissiveMaterial(SourceLocation const& where);
     /// The warning for a Light type this renderer does not make.
     static std::string unsupportedLightMessage(std::string const& type);
+    void resolvePortals();
     /// Warns when an area light closed with its block never met a shape.
     void warnIfUnshaped(std::shared_ptr<AreaLightDesc> const& closing, std::shared_ptr<AreaLightDesc> const& outer);
     /// Makes a light of either request (Light or LightSource) at lightToWorld.
@@ -308,6 +309,16 @@ private:
     /// The standard light shaders' ambientlight: light the classic shaders add as Ka * ambient.
     Vec3 m_ambient{0.0f};
     std::vector<CameraLight> m_cameraLights;
+    /// A PxrPortalLight of the world: what it is depends on whether the world has a sky, known only
+    /// at its end (resolvePortals).
+    struct PortalLight {
+        std::string handle;
+        ParamList params;
+        Mat4 toWorld;
+        SourceLocation where;
+        Visibility visibility;
+    };
+    std::vector<PortalLight> m_portals;
     std::map<std::string, size_t> m_lightHandles;  ///< handle -> index in the scene's lights
     /// For each light handle named by Illuminate: how many shapes it is on and off for.
     struct LightUse {

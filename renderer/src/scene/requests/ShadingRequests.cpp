@@ -249,6 +249,10 @@ int SceneBuilder::defaultMaterial() {
 void SceneBuilder::makeLightFrom(std::string const& request, std::string const& type, std::string const& handle,
                                  ParamList const& params, Mat4 const& lightToWorld, SourceLocation const& where) {
     std::unique_ptr<Light> light;
+    if (request == "Light" && type == "PxrPortalLight") {
+        m_portals.push_back({handle, params, lightToWorld, where, state().visibility});
+        return;
+    }
     if (request == "Light") {
         light = makeLight(type, params, lightToWorld, textures(), where, m_diagnostics,
                           [this](SourceLocation const& at, std::string const& message) { missingFile(at, message); });
@@ -282,12 +286,34 @@ void SceneBuilder::makeLightFrom(std::string const& request, std::string const& 
     m_scene.lights.push_back(std::move(light));
 }
 
+void SceneBuilder::resolvePortals() {
+    // With a sky, a portal only guides the sampling of the sky through an opening, and the sky lights
+    // the scene through it all the same (with more noise). Without one, the portal is the only way
+    // light comes in: an opening onto a uniform sky of its own intensity, exposure and colour, which is
+    // a rect light of those.
+    bool const sky = std::any_of(m_scene.lights.begin(), m_scene.lights.end(), [](auto const& light) {
+        return std::string(light->kind()) == "PxrDomeLight" || std::string(light->kind()) == "PxrEnvDayLight";
+    });
+    for (PortalLight const& portal : m_portals) {
+        if (sky) {
+            warnOnce("light PxrPortalLight", portal.where,
+                     "PxrPortalLight skipped: it only guides the sampling of the dome light through an opening, and "
+                     "the dome light lights the scene through it all the same (with more noise)");
+            continue;
+        }
+        warnOnce("light PxrPortalLight", portal.where,
+                 "PxrPortalLight with no dome light in the world: rendered as a rect light of its intensity, exposure "
+                 "and colour (the opening onto a uniform sky)");
+        size_t const before = m_scene.lights.size();
+        makeLightFrom("Light", "PxrRectLight", portal.handle, portal.params, portal.toWorld, portal.where);
+        if (m_scene.lights.size() > before) m_scene.lights.back()->visibility = portal.visibility;
+    }
+    m_portals.clear();
+}
+
 std::string SceneBuilder::unsupportedLightMessage(std::string const& type) {
-    // Two of RenderMan's lights change nothing a render here would show: say so, rather than
+    // One of RenderMan's lights changes nothing a render here would show: say so, rather than
     // leave the reader to wonder what is missing from the image.
-    if (type == "PxrPortalLight")
-        return "PxrPortalLight skipped: it only guides the sampling of its dome light through an opening, and the "
-               "dome light lights the scene through it all the same (with more noise)";
     if (type == "PxrAovLight") return "PxrAovLight skipped: it lights nothing (RenderMan uses it to draw masks into AOVs)";
     return "unsupported light type \"" + type + "\" skipped";
 }
