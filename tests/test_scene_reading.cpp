@@ -634,6 +634,13 @@ TEST_CASE("RenderMan's own materials and integrators that are not here get a sta
     CHECK(r.stats.integrator == "PxrPathTracer");
     // The stand-in keeps the colour: the centre pixel is red-dominated (0.8 x 0.5 against 0.1 x 0.5).
     CHECK(r.channel(4, 4, 0) > 3.0f * r.channel(4, 4, 2));
+    // A Lama conductor is a metal of its reflectivity: gold reflects the white sky gold.
+    auto gold = test::renderRib("Format 8 8 1\nProjection \"perspective\" \"fov\" [30]\nWorldBegin\n"
+                                "Light \"PxrDomeLight\" \"sky\"\nTranslate 0 0 5\nBxdf \"LamaConductor\" \"g\" "
+                                "\"color reflectivity\" [0.95 0.78 0.37]\nSphere 1 -1 1 360\nWorldEnd\n",
+                                test::withSpp(16));
+    CHECK(gold.anyMessageContains("rendered as a PxrDisney metal of its reflectivity"));
+    CHECK(gold.channel(4, 4, 0) > 2.0f * gold.channel(4, 4, 2));
     // A misspelt integrator of no known kind stays an error.
     CHECK_THROWS_WITH(test::renderRib("Integrator \"PxrNoSuch\" \"x\"\nWorldBegin\nWorldEnd\n"),
                       Catch::Matchers::Contains("not found"));
@@ -658,6 +665,7 @@ TEST_CASE("RenderMan's glass materials stand in as chapter 10's refracting glass
     // each crossing (two, through a ball), its reflections stay white.
     CHECK(centre("Bxdf \"PxrSurface\" \"s\" \"float diffuseGain\" [0] \"float refractionGain\" [1] "
                  "\"float glassIor\" [1.5] \"float glassRoughness\" [0]") == clear);
+    CHECK(centre("Bxdf \"LamaDielectric\" \"l\" \"float IOR\" [1.5]") == clear);
     Vec3 green = centre("Bxdf \"PxrLMGlass\" \"g\" \"float eta\" [1.5] \"color refractionColor\" [0.5 1 0.5]");
     CHECK(green.y == Approx(clear.y).epsilon(0.05));
     CHECK(green.x < 0.4f * green.y);

@@ -101,17 +101,18 @@ std::optional<StandIn> standInFor(MaterialDesc const& material, std::vector<Patt
 
     float const refractionGain = floatOf(in, "refractionGain").value_or(0.0f);
     bool const surface = name == "PxrSurface" || name == "PxrLayerSurface";
-    if (name == "PxrGlass" || name == "PxrLMGlass" || (surface && refractionGain > 0.0f)) {
+    bool const lama = name == "LamaDielectric";
+    if (name == "PxrGlass" || name == "PxrLMGlass" || lama || (surface && refractionGain > 0.0f)) {
         // A refracting dielectric: chapter 10's glass, with the index, roughness (GGX alpha, as
         // RenderMan's roughness is here) and refraction tint of the material's glass.
         s.material.plugin = "StockGlass";
-        char const* const iorName = surface ? "glassIor" : name == "PxrLMGlass" ? "eta" : "ior";
+        char const* const iorName = surface ? "glassIor" : name == "PxrLMGlass" ? "eta" : lama ? "IOR" : "ior";
         float const roughness = floatOf(in, surface ? "glassRoughness" : "roughness").value_or(surface ? 0.1f : 0.0f);
         float const gain = surface ? refractionGain : floatOf(in, "refractionGain").value_or(1.0f);
+        Vec3 const tint = colorOf(in, {"refractionColor", "transmissionTint"}).value_or(Vec3(1.0f));
         out.add(floatParam("ior", floatOf(in, iorName).value_or(1.5f)));
         out.add(floatParam("roughness", std::clamp(roughness, 0.0f, 1.0f)));
-        out.add(colorParam("transmissionColor",
-                           colorOf(in, {"refractionColor"}).value_or(Vec3(1.0f)) * std::clamp(gain, 0.0f, 1.0f)));
+        out.add(colorParam("transmissionColor", tint * std::clamp(gain, 0.0f, 1.0f)));
         s.note = std::string("a refracting glass of its index, roughness and refraction colour (") +
                  (surface ? "its other lobes, " : "") + "absorption and thin glass are not rendered)";
     } else if (surface) {
@@ -133,6 +134,13 @@ std::optional<StandIn> standInFor(MaterialDesc const& material, std::vector<Patt
             out.add(colorParam("baseColor", diffuse));
         out.add(floatParam("roughness", std::sqrt(std::clamp(floatOf(in, "specularRoughness").value_or(0.01f), 0.0f, 1.0f))));
         s.note = "PxrDisney with its diffuse colour";
+    } else if (name == "LamaConductor") {
+        // The artist's conductor: its colour at normal incidence (times tint) as a metal's base colour.
+        Vec3 const tint = colorOf(in, {"tint"}).value_or(Vec3(1.0f));
+        out.add(colorParam("baseColor", colorOf(in, {"reflectivity"}).value_or(Vec3(0.9f)) * tint));
+        out.add(floatParam("metallic", 1.0f));
+        out.add(floatParam("roughness", std::sqrt(std::clamp(floatOf(in, "roughness").value_or(0.1f), 0.0f, 1.0f))));
+        s.note = "a PxrDisney metal of its reflectivity (its edge colour and complex index are not used)";
     } else if (name == "PxrLMMetal") {
         out.add(colorParam("baseColor", colorOf(in, {"specularColor"}).value_or(Vec3(0.9f))));
         out.add(floatParam("metallic", 1.0f));
