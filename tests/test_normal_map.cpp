@@ -95,24 +95,33 @@ TEST_CASE("a normal map's red bends toward +dPdu, its green toward +dPdv, with R
     };
     std::string const towardU = "\"color inputRGB\" [0.75 0.5 0.93]", awayFromU = "\"color inputRGB\" [0.25 0.5 0.93]";
     std::string const towardV = "\"color inputRGB\" [0.5 0.75 0.93]", awayFromV = "\"color inputRGB\" [0.5 0.25 0.93]";
-    SECTION("red: toward +u (+x here), where the light is") {
+    std::string const openGL = " \"int orientation\" [0]", directX = " \"int orientation\" [1]";
+    SECTION("OpenGL: red toward +u (+x here), where the light is") {
         auto flat = render("3 0 4", "");
-        CHECK(render("3 0 4", towardU).channel(8, 8, 0) > 1.2f * flat.channel(8, 8, 0));
-        CHECK(render("3 0 4", awayFromU).channel(8, 8, 0) < 0.8f * flat.channel(8, 8, 0));
+        CHECK(render("3 0 4", towardU + openGL).channel(8, 8, 0) > 1.2f * flat.channel(8, 8, 0));
+        CHECK(render("3 0 4", awayFromU + openGL).channel(8, 8, 0) < 0.8f * flat.channel(8, 8, 0));
     }
-    SECTION("green: toward +v (-y here) with invertT (the default), toward -v without") {
+    SECTION("OpenGL: green toward +v (-y here) with invertT (the default), toward -v without") {
         auto flat = render("0 -3 4", "");
-        CHECK(render("0 -3 4", towardV).channel(8, 8, 0) > 1.2f * flat.channel(8, 8, 0));
-        CHECK(render("0 -3 4", towardV + " \"int invertT\" [0]").channel(8, 8, 0) < 0.8f * flat.channel(8, 8, 0));
+        CHECK(render("0 -3 4", towardV + openGL).channel(8, 8, 0) > 1.2f * flat.channel(8, 8, 0));
+        CHECK(render("0 -3 4", towardV + openGL + " \"int invertT\" [0]").channel(8, 8, 0) <
+              0.8f * flat.channel(8, 8, 0));
     }
-    SECTION("flipX, flipY, invertBump and the DirectX orientation mirror the map exactly") {
+    SECTION("DirectX's green runs the other way; RenderMan's own frame (the default) is OpenGL's with red reversed") {
+        CHECK(sameImage(render("0 -3 4", towardV + directX), render("0 -3 4", awayFromV + openGL)));
+        CHECK(sameImage(render("3 0 4", towardU + directX), render("3 0 4", towardU + openGL)));
+        CHECK(sameImage(render("3 0 4", towardU), render("3 0 4", awayFromU + openGL)));
+        CHECK(sameImage(render("0 -3 4", towardV), render("0 -3 4", towardV + openGL)));
+        // As RenderMan documents its orientations: OpenGL is invertBump with flipY, DirectX invertBump.
+        CHECK(sameImage(render("3 0 4", "\"color inputRGB\" [0.75 0.625 0.9]" + openGL),
+                        render("3 0 4", "\"color inputRGB\" [0.75 0.625 0.9] \"int invertBump\" [1] \"int flipY\" [1]")));
+        CHECK(sameImage(render("3 0 4", "\"color inputRGB\" [0.75 0.625 0.9]" + directX),
+                        render("3 0 4", "\"color inputRGB\" [0.75 0.625 0.9] \"int invertBump\" [1]")));
+    }
+    SECTION("flipX, flipY and invertBump mirror the map exactly; only the default orientation reads the flips") {
         CHECK(sameImage(render("3 0 4", towardU + " \"int flipX\" [1]"), render("3 0 4", awayFromU)));
         CHECK(sameImage(render("0 -3 4", towardV + " \"int flipY\" [1]"), render("0 -3 4", awayFromV)));
-        CHECK(sameImage(render("0 -3 4", towardV + " \"int orientation\" [1]"), render("0 -3 4", awayFromV)));
-        CHECK(sameImage(render("0 -3 4", towardV + " \"int orientation\" [0]"), render("0 -3 4", towardV)));
-        // The flips are the manual orientation's (2, the default): OpenGL's ignores them.
-        CHECK(sameImage(render("0 -3 4", towardV + " \"int orientation\" [0] \"int flipY\" [1]"),
-                        render("0 -3 4", towardV)));
+        CHECK(sameImage(render("0 -3 4", towardV + openGL + " \"int flipY\" [1]"), render("0 -3 4", towardV + openGL)));
         CHECK(sameImage(render("3 0 4", "\"color inputRGB\" [0.75 0.625 0.9] \"int invertBump\" [1]"),
                         render("3 0 4", "\"color inputRGB\" [0.25 0.375 0.9]")));
     }

@@ -16,8 +16,11 @@
 //   n = normalize(bumpScale (x T + y B) + z N)   (x, y, z) = 2 c - 1
 //
 // Conventions differ between painting tools; orientation chooses one:
-// 0 OpenGL (green up), 1 DirectX (green down), 2 (the default) the flips
-// flipX and flipY. invertBump turns bumps into dents (x and y negated).
+// 0 OpenGL (red along +T, green along +B), 1 DirectX (green along -B), or 2,
+// the default, RenderMan's own frame with the flips flipX and flipY: there
+// red runs along -T, so that (as RenderMan documents it) an OpenGL map needs
+// invertBump and flipY, a DirectX map invertBump. invertBump turns bumps
+// into dents (x and y negated).
 // surfaceNormalMix blends the result back toward the surface's normal,
 // disable returns the surface's normal, reverse negates the result. Where
 // the surface faces the viewer and the bent normal would not, it is turned
@@ -85,7 +88,7 @@ public:
         RtNormal3 const* base = Nn;
         RtNormal3 const* overlay = nullptr;
         if (sCtx->EvalParam(k_bumpOverlay, -1, &overlay) == k_RixSCVarying) base = overlay;
-        RtInt const zero = 0, one = 1, manual = k_manual;
+        RtInt const zero = 0, one = 1, custom = k_manual;
         RtInt const* disable;
         sCtx->EvalParam(k_disable, -1, &disable, &zero);
         if (*disable) {
@@ -101,16 +104,17 @@ public:
         sCtx->EvalParam(k_surfaceNormalMix, -1, &surfaceNormalMix, &none, true);
         sCtx->EvalParam(k_adjustAmount, -1, &adjustAmount, &adjust);
         sCtx->EvalParam(k_invertBump, -1, &invertBump, &zero);
-        sCtx->EvalParam(k_orientation, -1, &orientation, &manual);
+        sCtx->EvalParam(k_orientation, -1, &orientation, &custom);
         sCtx->EvalParam(k_flipX, -1, &flipX, &zero);
         sCtx->EvalParam(k_flipY, -1, &flipY, &zero);
         sCtx->EvalParam(k_invertT, -1, &invertT, &one);
         sCtx->EvalParam(k_reverse, -1, &reverse, &zero);
 
-        // The signs of the map's x and y, from the convention and the flips.
-        bool const manualFlips = *orientation == k_manual;
-        float signX = manualFlips && *flipX ? -1.0f : 1.0f;
-        float signY = (manualFlips && *flipY) || *orientation == k_directX ? -1.0f : 1.0f;
+        // The signs of the map's x and y, from the convention and the flips (which only the manual
+        // orientation reads).
+        bool const manual = *orientation != k_openGL && *orientation != k_directX;
+        float signX = manual ? (*flipX ? 1.0f : -1.0f) : 1.0f;
+        float signY = (manual && *flipY) || *orientation == k_directX ? -1.0f : 1.0f;
         if (*invertBump) signX = -signX, signY = -signY;
         if (!*invertT) signY = -signY;  // the image's up is then -t
 
