@@ -45,17 +45,32 @@ inline ImageReading imageReading(RixShadingContext const* sCtx, int firstRow, ch
     return reading;
 }
 
-/// A pattern's one output, resultN (row `row`), one normal per point.
-inline RtNormal3* normalOutput(RixShadingContext const* sCtx, int row, RtInt* numOutputs,
-                               RixPattern::OutputSpecification** outputs) {
-    RixShadingContext::Allocator pool(sCtx);
-    RixPattern::OutputSpecification* out = pool.AllocForPattern<RixPattern::OutputSpecification>(1);
-    int count = 0;
-    RtNormal3* result = addVaryingOutput<RtNormal3>(sCtx, out, count, row);
-    *numOutputs = count;
-    *outputs = out;
-    return result;
-}
+/// A pattern whose one output, resultN, is a bent normal per point. Its
+/// ComputeOutputParams starts every point at the surface's own normal and
+/// hands the points to bend(), which bends the ones it can.
+class BentNormalPattern : public StockPattern {
+public:
+    int ComputeOutputParams(RixShadingContext const* sCtx, RtInt* numOutputs, RixPattern::OutputSpecification** outputs,
+                            RtPointer, RixSCParamInfo const*) final {
+        RixShadingContext::Allocator pool(sCtx);
+        RixPattern::OutputSpecification* out = pool.AllocForPattern<RixPattern::OutputSpecification>(1);
+        int count = 0;
+        RtNormal3* result = addVaryingOutput<RtNormal3>(sCtx, out, count, resultRow());
+        *numOutputs = count;
+        *outputs = out;
+        RtNormal3 const* Nn;
+        sCtx->GetBuiltinVar(RixShadingContext::k_Nn, &Nn);
+        for (int i = 0; i < sCtx->numPts; ++i) result[i] = Nn[i];
+        bend(sCtx, Nn, result);
+        return 0;
+    }
+
+protected:
+    /// The row of resultN in the parameter table.
+    virtual int resultRow() const = 0;
+    /// Bends result (the surface's normals Nn on entry) where the pattern's parameters say.
+    virtual void bend(RixShadingContext const* sCtx, RtNormal3 const* Nn, RtNormal3* result) = 0;
+};
 
 /// A bent normal n of a surface whose own normal is `surface`, turned toward
 /// the viewer (V) just enough to face them (n.V = `least` on the side the

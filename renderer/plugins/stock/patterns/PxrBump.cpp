@@ -28,7 +28,7 @@
 
 namespace {
 
-class PxrBump : public stockpatterns::StockPattern {
+class PxrBump : public stockpatterns::BentNormalPattern {
 public:
     enum {
         k_scale, k_disable, k_inputBump, k_filename, k_firstChannel, k_atlasStyle, k_invertT, k_blur, k_lerp,
@@ -47,14 +47,10 @@ public:
         return table;
     }
 
-    int ComputeOutputParams(RixShadingContext const* sCtx, RtInt* numOutputs, OutputSpecification** outputs,
-                            RtPointer, RixSCParamInfo const*) override {
-        int const n = sCtx->numPts;
-        RtNormal3* result = stockpatterns::normalOutput(sCtx, k_resultN, numOutputs, outputs);
-        RtNormal3 const* Nn;
-        sCtx->GetBuiltinVar(RixShadingContext::k_Nn, &Nn);
-        for (int i = 0; i < n; ++i) result[i] = Nn[i];
+    int resultRow() const override { return k_resultN; }
 
+    void bend(RixShadingContext const* sCtx, RtNormal3 const* Nn, RtNormal3* result) override {
+        int const n = sCtx->numPts;
         RtInt const zero = 0;
         RtFloat const unit = 1.0f;
         RtUString const noFile;
@@ -64,14 +60,14 @@ public:
         sCtx->EvalParam(k_disable, -1, &disable, &zero);
         sCtx->EvalParam(k_filename, -1, &filename, &noFile);
         sCtx->EvalParam(k_scale, -1, &scale, &unit, true);
-        if (*disable) return 0;
+        if (*disable) return;
         if (filename->Empty()) {
             RtFloat const* inputBump = nullptr;
             if (sCtx->EvalParam(k_inputBump, -1, &inputBump) == k_RixSCVarying)
                 if (auto* messages = static_cast<RixMessages*>(sCtx->GetRixInterface(k_RixMessages)))
                     messages->Warning("PxrBump: a connected inputBump is not differentiated here (only a filename's "
                                       "heights are); the normal is left as it is");
-            return 0;
+            return;
         }
         stockpatterns::ImageReading reading = stockpatterns::imageReading(sCtx, k_firstChannel, "PxrBump", *filename);
         reading.lookup.missingColor = RtColorRGB(0.0f);  // a map that cannot be read is flat
@@ -91,7 +87,7 @@ public:
         RtColorRGB* heights = pool.AllocFor<RtColorRGB>(4 * n);
         if (!stockpatterns::readTexture(sCtx, *filename, reading.lookup, around, 4 * n, reading.invertT, reading.blur,
                                         heights))
-            return 0;
+            return;
 
         RtVector3 const *dPdu, *dPdv, *Vn;
         sCtx->GetBuiltinVar(RixShadingContext::k_dPdu, &dPdu);
@@ -108,7 +104,6 @@ public:
             if (bent.LengthSq() < 1e-12f) continue;
             result[i] = stockpatterns::facingViewer(RtNormal3(Normalize(bent)), N, Vn[i]);
         }
-        return 0;
     }
 };
 

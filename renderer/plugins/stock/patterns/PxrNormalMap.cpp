@@ -38,18 +38,16 @@ namespace {
 
 enum Orientation { k_openGL = 0, k_directX = 1, k_manual = 2 };
 
-/// T and B made orthonormal to N (B kept on dPdv's side); false when the
-/// surface has no usable tangents, and then any frame around N is returned.
-bool tangentFrame(RtNormal3 const& N, RtVector3 const& dPdu, RtVector3 const& dPdv, RtVector3& T, RtVector3& B) {
+/// T and B made orthonormal to N, T along dPdu and B on dPdv's side (any
+/// frame around N where the surface has no usable tangents).
+void tangentFrame(RtNormal3 const& N, RtVector3 const& dPdu, RtVector3 const& dPdv, RtVector3& T, RtVector3& B) {
     RixComputeShadingBasis(N, dPdu, T, B);
     RtVector3 along = dPdv - N * N.Dot(dPdv) - T * T.Dot(dPdv);
     float const lenSq = along.LengthSq();
-    if (lenSq < 1e-12f || lenSq < 1e-8f * dPdv.LengthSq()) return false;
-    B = along / std::sqrt(lenSq);
-    return true;
+    if (lenSq > 1e-12f && lenSq > 1e-8f * dPdv.LengthSq()) B = along / std::sqrt(lenSq);
 }
 
-class PxrNormalMap : public stockpatterns::StockPattern {
+class PxrNormalMap : public stockpatterns::BentNormalPattern {
 public:
     enum {
         k_bumpScale, k_inputRGB, k_filename, k_bumpOverlay, k_invertBump, k_orientation, k_flipX, k_flipY,
@@ -78,13 +76,10 @@ public:
         return table;
     }
 
-    int ComputeOutputParams(RixShadingContext const* sCtx, RtInt* numOutputs, OutputSpecification** outputs,
-                            RtPointer, RixSCParamInfo const*) override {
-        int const n = sCtx->numPts;
-        RtNormal3* result = stockpatterns::normalOutput(sCtx, k_resultN, numOutputs, outputs);
+    int resultRow() const override { return k_resultN; }
 
-        RtNormal3 const* Nn;
-        sCtx->GetBuiltinVar(RixShadingContext::k_Nn, &Nn);
+    void bend(RixShadingContext const* sCtx, RtNormal3 const* Nn, RtNormal3* result) override {
+        int const n = sCtx->numPts;
         RtNormal3 const* base = Nn;
         RtNormal3 const* overlay = nullptr;
         if (sCtx->EvalParam(k_bumpOverlay, -1, &overlay) == k_RixSCVarying) base = overlay;
@@ -93,7 +88,7 @@ public:
         sCtx->EvalParam(k_disable, -1, &disable, &zero);
         if (*disable) {
             for (int i = 0; i < n; ++i) result[i] = base[i];
-            return 0;
+            return;
         }
 
         RtColorRGB const* colors = encodedNormals(sCtx);
@@ -138,7 +133,6 @@ public:
             if (*adjustAmount > 0.0f) normal = stockpatterns::facingViewer(normal, N, Vn[i]);
             result[i] = *reverse ? RtNormal3(-normal) : normal;
         }
-        return 0;
     }
 
 private:
