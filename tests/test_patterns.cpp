@@ -213,10 +213,23 @@ TEST_CASE("bad networks: located errors for wrong handles, outputs and types, wa
     auto fails = [](std::string const& body, std::string const& text) {
         CHECK_THROWS_WITH(test::renderRib(kHead + body + kSquare), Catch::Matchers::Contains(text));
     };
-    SECTION("a handle not declared before (which is also how a cycle would have to be written)") {
-        fails("Bxdf \"PxrConstant\" \"c\" \"reference color emitColor\" [\"later:resultRGB\"]\n",
-              "test.rib:7:");
-        fails("Pattern \"PxrMix\" \"m\" \"reference color color1\" [\"m:resultRGB\"]\n", "not declared before it");
+    SECTION("a handle not declared before: a located warning, and the parameter keeps the plugin's default") {
+        // As RenderMan does, the render goes on without the connection (a public student scene
+        // connects a PxrBump to a pattern it never declares).
+        auto r = test::renderRib(kHead + "Bxdf \"PxrConstant\" \"c\" \"reference color emitColor\" [\"later:resultRGB\"]\n" +
+                                     kSquare,
+                                 fewSamples());
+        CHECK(r.anyMessageContains("test.rib:7:24: Bxdf \"c\" parameter \"emitColor\" refers to pattern \"later\", "
+                                   "which is not declared before it"));
+        CHECK(r.anyMessageContains("left unconnected, at the plugin's default"));
+        CHECK(r.channel(8, 8, 0) == Approx(1.0f).margin(1e-5));  // PxrConstant's default emitColor: white
+        // A node naming itself (how a cycle would have to be written) is the same case: no cycle forms.
+        auto cycle = test::renderRib(kHead + "Pattern \"PxrMix\" \"m\" \"reference color color1\" [\"m:resultRGB\"]\n"
+                                             "Bxdf \"PxrConstant\" \"c\" \"reference color emitColor\" [\"m:resultRGB\"]\n" +
+                                         kSquare,
+                                     fewSamples());
+        CHECK(cycle.anyMessageContains("Pattern \"m\" parameter \"color1\" refers to pattern \"m\", which is not declared before it"));
+        CHECK(cycle.channel(8, 8, 0) == Approx(0.5f).margin(1e-5));  // PxrMix's defaults: black and white, mixed half and half
     }
     SECTION("an output the pattern does not have") {
         fails("Pattern \"PxrMix\" \"m\"\nBxdf \"PxrConstant\" \"c\" \"reference color emitColor\" [\"m:resultColour\"]\n",

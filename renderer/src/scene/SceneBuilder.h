@@ -157,7 +157,7 @@ private:
     void bxdf(RequestReader& in);
     void pattern(RequestReader& in);
     /// The connections of a parameter list's "reference" parameters, to the
-    /// patterns declared so far (a located error for a handle not declared before).
+    /// patterns declared so far (a located warning, and no connection, for a handle not declared before).
     std::map<std::string, Connection> connectionsOf(ParamList const& params, std::string const& owner);
     /// Gives a classic shader's texture map to `shader` through a pattern node that reads it.
     void classicTexture(std::string const& file, SourceLocation const& where, MaterialDesc& shader);

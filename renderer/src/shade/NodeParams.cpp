@@ -94,16 +94,18 @@ NodeParams::NodeParams(std::string const& kind, ShadingPlugin const& plugin, Par
                                            " (write \"" + (p.decl.reference ? "reference " : "") + ribTypeFor(info.type) +
                                            " " + p.name() + "\")");
         if (p.decl.reference) {
-            Connection const& link = connections.at(p.name());
-            PatternInstance const* source = patternOf(link.pattern);
+            auto const linked = connections.find(p.name());
+            PatternInstance const* source = linked == connections.end() ? nullptr : patternOf(linked->second.pattern);
             if (!source) {
-                // Not loaded (already warned): the reference's fallback, or else the plugin's default.
+                // Never declared or not loaded (both already warned): the reference's fallback, or else the
+                // plugin's default.
                 if (!p.fallback.empty()) {
                     m_values[static_cast<size_t>(id)].set = true;
                     m_values[static_cast<size_t>(id)].floats = p.fallback;
                 }
                 continue;
             }
+            Connection const& link = linked->second;
             ShadingPlugin const& from = source->plugin();
             int output = from.paramId(link.output);
             if (output < 0 || from.paramTable()[static_cast<size_t>(output)].access != k_RixSCOutput)

@@ -82,9 +82,13 @@ std::map<std::string, Connection> SceneBuilder::connectionsOf(ParamList const& p
                                            target + "\"");
         std::string handle = target.substr(0, colon);
         auto found = m_patternHandles.find(handle);
-        if (found == m_patternHandles.end())
-            throw RibError(p.location, owner + " parameter \"" + p.name() + "\" refers to pattern \"" + handle +
-                                           "\", which is not declared before it (patterns come before what uses them)");
+        if (found == m_patternHandles.end()) {
+            // RenderMan renders on without the connection; so does this renderer, saying where.
+            m_diagnostics.warn(p.location, owner + " parameter \"" + p.name() + "\" refers to pattern \"" + handle +
+                                               "\", which is not declared before it (patterns come before what uses "
+                                               "them); the parameter is left unconnected, at the plugin's default");
+            continue;
+        }
         connections[p.name()] = {found->second, target.substr(colon + 1), p.location};
     }
     return connections;
