@@ -352,3 +352,70 @@ TEST_CASE("PxrEnvDayLight: the sun's place by date, time and place, a bluer zeni
     CHECK(sunIrradiance(Vec3(0.0f, -0.1f, 1.0f), 2.0f) == Vec3(0.0f));
     CHECK(skyRadiance(Vec3(0.0f, -0.5f, 0.866f), high, 2.0f) == Vec3(0.0f));  // no ground: black below the horizon
 }
+
+TEST_CASE("a rect or disk light's shaping: coneAngle cuts it off, coneSoftness fades its edge, emissionFocus "
+          "narrows it and emissionFocusTint gives back what focus takes",
+          "[lights][shaping]") {
+    // A row of pixels across a white plane 1 unit in front of a tiny light that faces it: a point
+    // at x sees the light at theta = atan(|x|), so shaped / unshaped at a pixel is a weighted mean
+    // of the shaping factor over the pixel's span of theta (the same samples in both images).
+    int const width = 256;
+    auto row = [&](std::string const& light, std::string const& shaping) {
+        std::string rib = "Format " + std::to_string(width) + " 1 1\nProjection \"orthographic\"\n"
+                          "ScreenWindow -4 4 -0.015625 0.015625\nIntegrator \"PxrDirectLighting\" \"d\"\nWorldBegin\n"
+                          "  AttributeBegin\n  Attribute \"visibility\" \"int camera\" [0]\n  Translate 0 0 4\n"
+                          "  Scale 0.002 0.002 0.002\n  Light \"" + light + "\" \"l\" \"float intensity\" [1e6] " +
+                          shaping + "\n  AttributeEnd\n  Bxdf \"PxrDiffuse\" \"white\" \"color diffuseColor\" [1 1 1]\n"
+                          "  Polygon \"P\" [-10 -10 5  10 -10 5  10 10 5  -10 10 5]\nWorldEnd\n";
+        return test::renderRib(rib, test::withSpp(4));
+    };
+    auto thetaAt = [](double x) { return std::atan(std::fabs(x)); };
+    double const degree = 3.14159265358979 / 180.0;
+    // The factors as RenderMan's shaping (UsdLux's cone) defines them, written out here.
+    auto cone = [&](double t, double angle, double softness) {
+        double cut = angle * degree, start = cut * (1.0 - softness);
+        if (t >= cut) return 0.0;
+        if (t <= start) return 1.0;
+        double x = (t - start) / (cut - start);
+        return 1.0 - x * x * (3.0 - 2.0 * x);
+    };
+    for (char const* light : {"PxrRectLight", "PxrDiskLight"}) {
+        INFO(light);
+        auto plain = row(light, "");
+        auto compare = [&](std::string const& shaping, auto factor, int channel) {
+            INFO(shaping);
+            auto shaped = row(light, shaping);
+            int narrow = 0;
+            for (int i = 0; i < width; ++i) {
+                double x0 = -4.0 + 8.0 * i / width, x1 = -4.0 + 8.0 * (i + 1) / width;
+                // Each factor is monotone in theta, and theta in |x| on either side of 0.
+                double lo = 1e9, hi = -1e9;
+                for (double x : {x0, 0.5 * (x0 + x1), x1}) {
+                    lo = std::min(lo, factor(thetaAt(x)));
+                    hi = std::max(hi, factor(thetaAt(x)));
+                }
+                if (x0 < 0.0 && x1 > 0.0) hi = std::max(hi, factor(0.0));
+                INFO("pixel " << i << ", theta " << thetaAt(0.5 * (x0 + x1)) / degree << " degrees");
+                REQUIRE(plain.channel(i, 0, channel) > 0.0f);
+                double ratio = shaped.channel(i, 0, channel) / plain.channel(i, 0, channel);
+                CHECK(ratio >= lo - 2e-3);
+                CHECK(ratio <= hi + 2e-3);
+                if (hi - lo < 0.02) ++narrow;
+            }
+            CHECK(narrow > width * 3 / 4);  // most pixels pin the factor down to 0.02
+        };
+        compare("\"float coneAngle\" [40]", [&](double t) { return cone(t, 40, 0); }, 0);
+        compare("\"float coneAngle\" [50] \"float coneSoftness\" [0.6]", [&](double t) { return cone(t, 50, 0.6); }, 0);
+        compare("\"float emissionFocus\" [3]", [](double t) { return std::pow(std::cos(t), 3.0); }, 0);
+        // A tint fills in what focus takes away, channel by channel: red 0.5, blue 0.
+        compare("\"float emissionFocus\" [3] \"color emissionFocusTint\" [0.5 0 0]",
+                [](double t) { return 0.5 + 0.5 * std::pow(std::cos(t), 3.0); }, 0);
+        compare("\"float emissionFocus\" [3] \"color emissionFocusTint\" [0.5 0 0]",
+                [](double t) { return std::pow(std::cos(t), 3.0); }, 2);
+        // Written without a type, as RenderMan types them from the light.
+        compare("\"coneAngle\" [40]", [&](double t) { return cone(t, 40, 0); }, 0);
+        // Out of range: an angle over 90 degrees is the whole hemisphere, softness is clamped to 1.
+        compare("\"float coneAngle\" [120]", [](double) { return 1.0; }, 0);
+        compare("\"float coneAngle\" [60] \"float coneSoftness\" [3]", [&](double t) { return cone(t, 60, 1); }, 0);
+    }
+}

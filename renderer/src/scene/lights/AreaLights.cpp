@@ -20,6 +20,12 @@ float PlanarLight::solidAnglePdf(Vec3 const& towardLight, float distance) const 
     return distance * distance / (cosLight * m_area);
 }
 
+RtColorRGB PlanarLight::emitted(float cosTheta) const {
+    if (!m_shaping.shapes()) return color;
+    Vec3 const f = m_shaping.factor(cosTheta);
+    return RtColorRGB(color.r * f.x, color.g * f.y, color.b * f.z);
+}
+
 LightSample PlanarLight::sample(Vec3 const& P, Vec2 const& xi) const {
     Vec2 local = m_shape == Shape::Disk ? concentricDisk(xi) : 2.0f * xi - Vec2(1.0f);
     Vec3 onLight = m_center + local.x * m_axisX + local.y * m_axisY;
@@ -29,7 +35,7 @@ LightSample PlanarLight::sample(Vec3 const& P, Vec2 const& xi) const {
     if (!(s.distance > 0.0f)) return s;
     s.wi = toLight / s.distance;
     s.pdf = solidAnglePdf(s.wi, s.distance);
-    if (s.pdf > 0.0f) s.radiance = color;
+    if (s.pdf > 0.0f) s.radiance = emitted(-glm::dot(s.wi, m_emitNormal));
     return s;
 }
 
@@ -46,20 +52,20 @@ bool PlanarLight::intersect(Vec3 const& org, Vec3 const& dir, float& distance, R
     if (!inside) return false;
     distance = t;
     pdf = solidAnglePdf(dir, t);
-    radiance = pdf > 0.0f ? color : RtColorRGB(0.0f);
+    radiance = pdf > 0.0f ? emitted(-glm::dot(dir, m_emitNormal)) : RtColorRGB(0.0f);
     return true;
 }
 
 // Light subpaths leave a point chosen uniformly over the light, in a
-// cosine-weighted direction about its emitting normal (the emitted radiance
-// is the same in every direction, so this follows the emitted power).
+// cosine-weighted direction about its emitting normal (unshaped, the emitted
+// radiance is the same in every direction, so this follows the emitted power).
 bool PlanarLight::sampleEmission(Vec2 const& xiPosition, Vec2 const& xiDirection, LightEmission& out) const {
     if (color.IsBlack() || !(m_area > 0.0f)) return false;
     Vec2 local = m_shape == Shape::Disk ? concentricDisk(xiPosition) : 2.0f * xiPosition - Vec2(1.0f);
     out.origin = m_center + local.x * m_axisX + local.y * m_axisY;
     out.normal = m_emitNormal;
     out.dir = cosineDirection(m_emitNormal, xiDirection);
-    out.radiance = color;
+    out.radiance = emitted(glm::dot(out.dir, m_emitNormal));
     out.pdfArea = 1.0f / m_area;
     out.pdfDir = std::max(0.0f, glm::dot(out.dir, m_emitNormal)) / kPi;
     return out.pdfDir > 0.0f;

@@ -5,6 +5,7 @@
 // lights (unit diameter) emit outward everywhere.
 #pragma once
 
+#include "scene/lights/EmissionShaping.h"
 #include "scene/lights/Light.h"
 
 namespace bxdflab {
@@ -27,10 +28,15 @@ public:
         return true;
     }
     float area() const { return m_area; }
+    /// coneAngle, coneSoftness, emissionFocus (see EmissionShaping.h).
+    void setShaping(EmissionShaping const& shaping) { m_shaping = shaping; }
 
 private:
     float solidAnglePdf(Vec3 const& towardLight, float distance) const;
+    /// The radiance sent at cos(theta) to the emitting normal (> 0).
+    RtColorRGB emitted(float cosTheta) const;
     Shape m_shape;
+    EmissionShaping m_shaping;
     Vec3 m_center, m_axisX, m_axisY, m_emitNormal, m_planeNormal;
     float m_area;
 };

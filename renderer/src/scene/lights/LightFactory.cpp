@@ -14,14 +14,30 @@
 
 namespace bxdflab {
 
+namespace {
+
+/// A flat light's coneAngle, coneSoftness, emissionFocus and emissionFocusTint.
+EmissionShaping emissionShapingOf(ParamList const& params) {
+    EmissionShaping shaping;
+    // Out-of-range values are clamped, as UsdLux says of its cone; a negative focus is ignored.
+    shaping.coneAngle = std::clamp(params.getFloat("coneAngle", 90.0f), 0.0f, 90.0f) * kPi / 180.0f;
+    shaping.coneSoftness = std::clamp(params.getFloat("coneSoftness", 0.0f), 0.0f, 1.0f);
+    shaping.focus = std::max(params.getFloat("emissionFocus", 0.0f), 0.0f);
+    shaping.focusTint = glm::max(params.getColor("emissionFocusTint", Vec3(0.0f)), Vec3(0.0f));
+    return shaping;
+}
+
+}  // namespace
+
 std::unique_ptr<Light> makeLight(std::string const& type, ParamList const& params, Mat4 const& lightToWorld,
                                  TextureLocator const& textures, SourceLocation const& where, Diagnostics& diagnostics,
                                  MissingFileReport const& missing) {
     std::unique_ptr<Light> light;
-    if (type == "PxrDiskLight") {
-        light = std::make_unique<PlanarLight>(PlanarLight::Shape::Disk, lightToWorld);
-    } else if (type == "PxrRectLight") {
-        light = std::make_unique<PlanarLight>(PlanarLight::Shape::Rect, lightToWorld);
+    if (type == "PxrDiskLight" || type == "PxrRectLight") {
+        auto planar = std::make_unique<PlanarLight>(
+            type == "PxrDiskLight" ? PlanarLight::Shape::Disk : PlanarLight::Shape::Rect, lightToWorld);
+        planar->setShaping(emissionShapingOf(params));
+        light = std::move(planar);
     } else if (type == "PxrSphereLight") {
         light = std::make_unique<SphereLight>(lightToWorld);
     } else if (type == "PxrCylinderLight") {
@@ -81,6 +97,9 @@ std::map<std::string, ParamType> const& lightParameterTypes() {
         // Every RIS light.
         {"intensity", ParamType::Float}, {"exposure", ParamType::Float}, {"lightColor", ParamType::Color},
         {"enableTemperature", ParamType::Int}, {"temperature", ParamType::Float}, {"areaNormalize", ParamType::Int},
+        // PxrRectLight and PxrDiskLight's shaping.
+        {"coneAngle", ParamType::Float}, {"coneSoftness", ParamType::Float}, {"emissionFocus", ParamType::Float},
+        {"emissionFocusTint", ParamType::Color},
         // PxrDistantLight and PxrDomeLight.
         {"angleExtent", ParamType::Float}, {"lightColorMap", ParamType::String},
         // PxrEnvDayLight.
