@@ -141,12 +141,28 @@ TEST_CASE("a normal map read from an image, and a bumped PxrSurface", "[patterns
     CHECK(fromImage.stats.textureLookups > 0u);
     CHECK(fromImage.channel(8, 8, 0) == Approx(fromColor.channel(8, 8, 0)).epsilon(1e-4));
 
-    SECTION("a map that cannot be read: one warning, and the normal stays the surface's") {
+    SECTION("a map that is not there: one warning at its RIB line, and the normal stays the surface's") {
         auto flat = test::renderRib(kHead + kHeadlight + bxdf() + kSquare, samples(4));
         auto missing = test::renderRib(
             kHead + kHeadlight + bumped("\"string filename\" [\"no/such/normals.tx\"]") + kSquare, samples(4));
-        CHECK(missing.anyMessageContains("texture \"no/such/normals.tx\" does not exist"));
+        int said = 0, located = 0;
+        for (auto const& m : missing.messages)
+            if (m.text.find("no/such/normals.tx") != std::string::npos) {
+                ++said;
+                located += m.text.rfind("test.rib:", 0) == 0;
+            }
+        CHECK(said == 1);
+        CHECK(located == 1);
+        CHECK(missing.anyMessageContains("Pattern \"PxrNormalMap\" \"bumps\": texture \"no/such/normals.tx\" does not "
+                                         "exist (looked for from"));
+        CHECK(missing.anyMessageContains("the normal is left as it is"));
         CHECK(missing.channel(8, 8, 0) == Approx(flat.channel(8, 8, 0)).epsilon(1e-5));
+        // PxrBump's height map is said the same way.
+        auto noHeights = test::renderRib(kHead + kHeadlight + "Pattern \"PxrBump\" \"b\" \"string filename\" [\"heights.tx\"]\n" +
+                                             bxdf(" \"reference normal bumpNormal\" [\"b:resultN\"]") + kSquare,
+                                         samples(4));
+        CHECK(noHeights.anyMessageContains("Pattern \"PxrBump\" \"b\": texture \"heights.tx\" does not exist"));
+        CHECK(noHeights.channel(8, 8, 0) == Approx(flat.channel(8, 8, 0)).epsilon(1e-5));
     }
     SECTION("a reference declared a colour where the plugin has a normal: connected as a normal, with a warning") {
         // As public scenes write it: the declaration's type is only how the link is spelled.

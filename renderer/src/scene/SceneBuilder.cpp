@@ -279,15 +279,22 @@ void SceneBuilder::finishFrame() {
     ++m_framesDone;
     if (m_skipWorld) return;  // read, not built
     m_scene.frame = m_frameNumber;
-    // A texture a used PxrTexture names and that is not there, said with its RIB line.
+    // A texture a used stock image pattern names and that is not there, said with its RIB line
+    // (the texture service, which does not know the line, then stays quiet about it).
+    static std::map<std::string, std::string> const imagePatterns = {
+        {"PxrTexture", "its lookups return missingColor"},
+        {"PxrNormalMap", "the normal is left as it is"},
+        {"PxrBump", "the normal is left as it is"},
+    };
     std::vector<char> const reached = patternsReached(m_scene.materials, m_scene.patterns);
     for (size_t i = 0; i < reached.size(); ++i) {
         PatternDesc const& node = m_scene.patterns[i];
-        if (!reached[i] || node.plugin != "PxrTexture") continue;
+        auto const image = imagePatterns.find(node.plugin);
+        if (!reached[i] || image == imagePatterns.end()) continue;
         for (Param const& p : node.params.all())
             if (p.name() == "filename" && !p.decl.reference && !p.strings.empty())
-                checkTexture(p.strings[0], p.location, "Pattern \"PxrTexture\" \"" + node.handle + "\"",
-                             "its lookups return missingColor");
+                checkTexture(p.strings[0], p.location, "Pattern \"" + node.plugin + "\" \"" + node.handle + "\"",
+                             image->second);
     }
     // The classic shaders' ambient term sums every ambientlight of the world, wherever it was given.
     for (MaterialDesc& material : m_scene.materials)
