@@ -163,19 +163,48 @@ TEST_CASE("classic light shaders: pointlight, spotlight and distantlight light w
     auto shadowed = test::renderRib(head + "LightSource \"shadowdistant\" 1 \"intensity\" [0.7] \"shadowname\" [\"l.shd\"]\n" +
                                         matte, settings);
     CHECK(test::meanChannel(shadowed, 0, [](int, int) { return true; }) == Approx(0.7).epsilon(1e-3));
+    auto mean = [](test::RenderOutcome const& r) { return test::meanChannel(r, 0, [](int, int) { return true; }); };
     // Barzel's uberlight: a spotlight from its origin along +z (here 5 units from the surface); its
-    // shaping parameters come untyped in old files.
+    // shaping parameters come untyped in old files. Its falloff is 0 by default: no distance falloff.
     auto uber = test::renderRib(head + "LightSource \"uberlight\" 1 \"intensity\" [25] \"height\" [2] \"wedge\" [0.2]\n" + matte,
                                 settings);
-    CHECK(test::meanChannel(uber, 0, [](int, int) { return true; }) == Approx(1.0).epsilon(1e-3));
+    CHECK(mean(uber) == Approx(25.0).epsilon(1e-3));
+    // falloff 2 is the inverse square, measured from falloffdist: (1 / 5)^2, (2 / 5)^2.
+    auto uberSquare = test::renderRib(head + "LightSource \"uberlight\" 1 \"intensity\" [25] \"falloff\" [2]\n" + matte, settings);
+    CHECK(mean(uberSquare) == Approx(1.0).epsilon(1e-3));
+    auto uberFar = test::renderRib(
+        head + "LightSource \"uberlight\" 1 \"intensity\" [25] \"falloff\" [1] \"falloffdist\" [2]\n" + matte, settings);
+    CHECK(mean(uberFar) == Approx(10.0).epsilon(1e-3));
     auto uberAway = test::renderRib(head + "AttributeBegin\nRotate 180 1 0 0\nLightSource \"uberlight\" 1 \"intensity\" [25]\nAttributeEnd\n" + matte,
                                     settings);
-    CHECK(test::meanChannel(uberAway, 0, [](int, int) { return true; }) == 0.0);
+    CHECK(mean(uberAway) == 0.0);
     // MTOR's l_uber numbers its light types: 1 is omni, a point light lighting every way.
     auto omni = test::renderRib(head + "AttributeBegin\nRotate 180 1 0 0\nLightSource \"l_uber\" 1 \"intensity\" [25] "
                                        "\"float lighttype\" [1]\nAttributeEnd\n" + matte,
                                 settings);
-    CHECK(test::meanChannel(omni, 0, [](int, int) { return true; }) == Approx(1.0).epsilon(1e-3));
+    CHECK(mean(omni) == Approx(25.0).epsilon(1e-3));
+    // 3 is directional, and parallelrays makes any of them one: light along +z wherever the surface is
+    // (here from 45 degrees, so the surface facing -z gets cos 45).
+    for (std::string const kind : {"\"float lighttype\" [3]", "\"float parallelrays\" [1]"}) {
+        auto parallel = test::renderRib(head + "AttributeBegin\nTranslate 30 0 0\nRotate 45 0 1 0\nLightSource \"l_uber\" 1 "
+                                               "\"intensity\" [2] " + kind + "\nAttributeEnd\n" + matte,
+                                        settings);
+        CHECK(mean(parallel) == Approx(2.0 * std::cos(3.14159265 / 4)).epsilon(1e-3));
+    }
+    // l_uber's Maya cone: coneAngle is the full angle in degrees (10: 5 degrees off the axis), a
+    // surface 4 degrees off the axis is lit, one 6 degrees off is not.
+    auto tilted = [&](double degrees) {
+        return mean(test::renderRib(head + "AttributeBegin\nRotate " + std::to_string(degrees) +
+                                        " 1 0 0\nLightSource \"l_uber\" 1 \"intensity\" [25] \"float coneAngle\" [10] "
+                                        "\"float penumbraAngle\" [0]\nAttributeEnd\n" + matte,
+                                    settings));
+    };
+    CHECK(tilted(4.0) == Approx(25.0).epsilon(1e-3));
+    CHECK(tilted(6.0) == 0.0);
+    // A point light whose name says it has no falloff has none.
+    auto noFalloff = test::renderRib(head + "LightSource \"pointnofalloff\" 1 \"intensity\" [0.5] \"from\" [0 0 -20]\n" + matte,
+                                     settings);
+    CHECK(mean(noFalloff) == Approx(0.5).epsilon(1e-3));
     // A distantlight whose "to" is its "from" has no direction: left out with a warning (a lecture
     // scene has one beside two good lights), the others still light the surface.
     Diagnostics diagnostics(false);
@@ -418,4 +447,77 @@ TEST_CASE("a rect or disk light's shaping: coneAngle cuts it off, coneSoftness f
         compare("\"float coneAngle\" [120]", [](double) { return 1.0; }, 0);
         compare("\"float coneAngle\" [60] \"float coneSoftness\" [3]", [&](double t) { return cone(t, 60, 1); }, 0);
     }
+}
+
+TEST_CASE("a file lit by classic light shaders and naming no integrator renders with its lights as RenderMan "
+          "before RIS did and a RIS file without one keeps PxrDefault's headlight",
+          "[lights][classic]") {
+    std::string const head = "Format 8 8 1\nProjection \"orthographic\"\nScreenWindow -0.01 0.01 -0.01 0.01\nWorldBegin\n";
+    std::string const matte = "Surface \"matte\"\nPolygon \"P\" [-10 -10 5  10 -10 5  10 10 5  -10 10 5]\nWorldEnd\n";
+    auto mean = [](test::RenderOutcome const& r) { return test::meanChannel(r, 0, [](int, int) { return true; }); };
+    RenderSettings settings;
+    settings.spp = 4;
+    auto toward = test::renderRib(head + "LightSource \"distantlight\" 1 \"intensity\" [0.7]\n" + matte, settings);
+    CHECK(toward.stats.integrator == "PxrDirectLighting");
+    CHECK(mean(toward) == Approx(0.7).epsilon(1e-3));
+    CHECK(toward.anyMessageContains("test.rib:5:1: the scene names no Integrator and is lit by classic light shaders, so "
+                                    "it renders with PxrDirectLighting and its lights"));
+    // Its light aimed away: black, as then (the headlight would have lit it).
+    auto away = test::renderRib(head + "LightSource \"distantlight\" 1 \"intensity\" [0.7] \"to\" [0 0 -1]\n" + matte, settings);
+    CHECK(mean(away) == 0.0);
+    // Named, the integrator is the file's.
+    auto named = test::renderRib("Integrator \"PxrDefault\" \"d\"\n" + head +
+                                     "LightSource \"distantlight\" 1 \"intensity\" [0.7] \"to\" [0 0 -1]\n" + matte,
+                                 settings);
+    CHECK(named.stats.integrator == "PxrDefault");
+    CHECK(mean(named) > 0.5);
+    // Only an ambientlight (no light to sample): the headlight, as before.
+    auto ambientOnly = test::renderRib(head + "LightSource \"ambientlight\" 1 \"intensity\" [0.2]\n" + matte, settings);
+    CHECK(ambientOnly.stats.integrator == "PxrDefault");
+    // RIS lights: RenderMan's RIS default.
+    auto ris = test::renderRib(head + "Light \"PxrDistantLight\" \"l\"\n" + matte, settings);
+    CHECK(ris.stats.integrator == "PxrDefault");
+}
+
+TEST_CASE("a classic arealight gives what a point light of its intensity would, whatever its size", "[lights][classic]") {
+    // BMRT's arealight sends intensity / d^2 from each point it samples: a small square 5 units from a
+    // matte surface gives it intensity / 25 at any size.
+    auto litBy = [](double side) {
+        std::string const half = std::to_string(side / 2);
+        std::string rib = "Format 8 8 1\nProjection \"orthographic\"\nScreenWindow -0.01 0.01 -0.01 0.01\n"
+                          "Integrator \"PxrDirectLighting\" \"d\"\nWorldBegin\nAttributeBegin\n"
+                          "Attribute \"visibility\" \"int camera\" [0]\n"
+                          "AreaLightSource \"arealight\" 1 \"intensity\" [50]\n"
+                          "Polygon \"P\" [-" + half + " -" + half + " 0  " + half + " -" + half + " 0  " + half + " " +
+                          half + " 0  -" + half + " " + half + " 0]\nAttributeEnd\n"
+                          "Surface \"matte\"\nPolygon \"P\" [-10 -10 5  10 -10 5  10 10 5  -10 10 5]\nWorldEnd\n";
+        auto r = test::renderRib(rib, test::withSpp(64));
+        return test::meanChannel(r, 0, [](int, int) { return true; });
+    };
+    CHECK(litBy(0.1) == Approx(2.0).epsilon(0.01));
+    CHECK(litBy(0.4) == Approx(2.0).epsilon(0.01));
+}
+
+TEST_CASE("classic lights cast shadows only when asked: a shadow map, a traced shadow or BMRT's shadows attribute",
+          "[lights][classic]") {
+    // A square between a distant light and a matte surface.
+    auto behindBlocker = [](std::string const& before, std::string const& light) {
+        std::string rib = "Format 8 8 1\nProjection \"orthographic\"\nScreenWindow -0.01 0.01 -0.01 0.01\nWorldBegin\n" +
+                          before + "LightSource " + light + "\nSurface \"matte\"\n"
+                          "AttributeBegin\nAttribute \"visibility\" \"int camera\" [0]\n"
+                          "Polygon \"P\" [-1 -1 3  1 -1 3  1 1 3  -1 1 3]\nAttributeEnd\n"
+                          "Polygon \"P\" [-10 -10 5  10 -10 5  10 10 5  -10 10 5]\nWorldEnd\n";
+        auto r = test::renderRib(rib, test::withSpp(4));
+        return test::meanChannel(r, 0, [](int, int) { return true; });
+    };
+    std::string const distant = "\"distantlight\" 1 \"intensity\" [0.7]";
+    CHECK(behindBlocker("", distant) == Approx(0.7).epsilon(1e-3));
+    CHECK(behindBlocker("", "\"shadowdistant\" 1 \"intensity\" [0.7] \"string shadowname\" [\"\"]") ==
+          Approx(0.7).epsilon(1e-3));
+    CHECK(behindBlocker("", "\"shadowdistant\" 1 \"intensity\" [0.7] \"string shadowname\" [\"raytrace\"]") == 0.0);
+    CHECK(behindBlocker("", "\"shadowspot\" 1 \"intensity\" [8] \"from\" [0 0 1] \"to\" [0 0 5] \"shadowname\" [\"key.shd\"]") ==
+          0.0);
+    CHECK(behindBlocker("", "\"uberlight\" 1 \"intensity\" [1] \"raytraceshadow\" [1]") == 0.0);
+    CHECK(behindBlocker("Attribute \"light\" \"shadows\" \"on\"\n", distant) == 0.0);
+    CHECK(behindBlocker("Attribute \"light\" \"string shadows\" [\"off\"]\n", distant) == Approx(0.7).epsilon(1e-3));
 }

@@ -100,6 +100,35 @@ TEST_CASE("named coordinate systems: CoordinateSystem, ScopedCoordinateSystem an
     CHECK(test::warningsContaining(diagnostics, "no coordinate system \"aside\"") == 1);
 }
 
+TEST_CASE("a surface shader of the scene's own is rendered as the standard one its name or its Ks suggests",
+          "[rib][classic]") {
+    Diagnostics diagnostics(false);
+    Scene scene = test::parseRib("WorldBegin\nColor [0 1 0]\n"
+                                 "Surface \"RCPlastic\" \"Ks\" [.5] \"Kd\" [.4] \"roughness\" [.2] \"Kr\" [1]\nSphere 1 -1 1 360\n"
+                                 "Surface \"LGRustyMetal\" \"metalKa\" [1]\nSphere 1 -1 1 360\n"
+                                 "Surface \"wood2\" \"Ks\" [.3] \"ringscale\" [10]\nSphere 1 -1 1 360\n"
+                                 "Surface \"TLconstantMap\" \"mapname\" [\"\"]\nSphere 1 -1 1 360\n"
+                                 "Surface \"GNember\"\nSphere 1 -1 1 360\n",
+                                 diagnostics);
+    REQUIRE(scene.shapes.size() == 5u);
+    auto materialOf = [&](size_t i) -> MaterialDesc const& {
+        return scene.materials[static_cast<size_t>(scene.shapes[i]->material)];
+    };
+    CHECK(materialOf(0).params.getString("shader", "") == "plastic");
+    CHECK(materialOf(0).params.getFloat("Kd", 0.0f) == 0.4f);
+    CHECK(materialOf(0).params.getFloat("roughness", 0.0f) == 0.2f);
+    CHECK_FALSE(materialOf(0).params.has("Kr"));  // its own parameters stay behind, without a warning each
+    CHECK(materialOf(1).params.getString("shader", "") == "metal");
+    CHECK(materialOf(2).params.getString("shader", "") == "plastic");
+    CHECK(materialOf(3).params.getString("shader", "") == "constant");
+    CHECK(materialOf(4).plugin == "PxrDiffuse");
+    CHECK(test::warningsContaining(diagnostics, "test.rib:3:1: Surface \"RCPlastic\" is a shader this renderer does not "
+                                                "have: rendered as the standard \"plastic\" its name suggests") == 1);
+    CHECK(test::warningsContaining(diagnostics, "Surface \"wood2\" is a shader this renderer does not have: rendered as the "
+                                                "standard \"plastic\" its specular weight Ks suggests") == 1);
+    CHECK(test::warningsContaining(diagnostics, "has no parameter") == 0);
+}
+
 TEST_CASE("classic Surface shaders become the ClassicSurface Bxdf with the Color in effect, a Bxdf wins", "[rib]") {
     // A scene's own copy of a standard shader ("shaders/plastic") is read as the standard one, with a warning.
     for (std::string const folder : {"", "shaders/"}) {
@@ -548,7 +577,7 @@ TEST_CASE("area lights from geometry: AreaLightSource and PxrMeshLight shapes be
     CHECK(std::string(scene.lights[2]->kind()) == "PxrMeshLight");
     CHECK(scene.lights[0]->color.r == Approx(4.0f));  // 2^exposure
     CHECK(scene.lights[2]->color.r == Approx(3.0f));
-    CHECK(static_cast<MeshLight const&>(*scene.lights[2]).area() == Approx(1.0f));
+    CHECK(static_cast<MeshLight const&>(*scene.lights[2]).surfaceArea() == Approx(1.0f));
     REQUIRE(scene.shapes.size() == 2u);
     CHECK(std::string(scene.shapes[0]->kind()) == "Torus");
     MaterialDesc const& glow = scene.materials[static_cast<size_t>(scene.shapes[0]->material)];

@@ -264,7 +264,7 @@ private:
                 RixLightSample const& ls = sample[i];
                 if (!(ls.pdf > 0.0f) || ls.radiance.IsBlack()) continue;
                 RtColorRGB f = q.W.SumAtPoint(i);
-                if (!f.IsBlack()) shadow.add(i, ls.wi, ls.distance, f);
+                if (!f.IsBlack()) shadow.add(i, ls.wi, ls.shadows ? ls.distance : 0.0f, f);
             }
             ictx.Unoccluded(ctx, shadow.count, shadow.point, shadow.dir, shadow.distance, shadow.clear);
             for (int k = 0; k < shadow.count; ++k) {

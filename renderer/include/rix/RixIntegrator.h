@@ -21,6 +21,8 @@ struct RixLightSample {
     RtColorRGB radiance;       ///< arriving along -wi (black when the light faces away)
     float pdf = 0.0f;          ///< per unit solid angle; 1 for delta lights
     bool delta = false;        ///< no Bxdf sample can ever find this direction
+    bool shadows = true;       ///< false: the light casts no shadows (a classic light without a shadow map);
+                               ///< ask Unoccluded with distance 0, which is always clear
 };
 
 /// The light a ray reaches (before any surface), if any.
@@ -84,7 +86,8 @@ public:
     virtual RixLightSample SampleLight(int light, RtPoint3 const& P, RtFloat2 const& xi) const = 0;
 
     /// A shadow ray: is the way from point i of ctx toward dir, up to distance, clear? A light
-    /// whose lit face lies in the way blocks it, as it ends a path that meets it.
+    /// whose lit face lies in the way blocks it, as it ends a path that meets it. A distance of 0
+    /// (or less) holds nothing: it is clear, and no ray is traced.
     virtual bool Unoccluded(RixShadingContext const& ctx, int i, RtVector3 const& dir, float distance) = 0;
     /// A shadow ray toward whichever light lies along dir from point i (hit = false if none, or blocked).
     virtual RixLightHit VisibleLight(RixShadingContext const& ctx, int i, RtVector3 const& dir) = 0;

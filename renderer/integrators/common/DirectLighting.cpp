@@ -74,7 +74,7 @@ void addLightSamples(RixShadingContext const& ctx, RixBxdf& bxdf, RixRNG& rng, R
                 if (!(ls.pdf > 0.0f) || ls.radiance.IsBlack()) continue;
                 RtColorRGB const f = q.W.SumAtPoint(i);
                 if (f.IsBlack()) continue;
-                shadow.add(i, ls.wi, ls.distance, f);
+                shadow.add(i, ls.wi, ls.shadows ? ls.distance : 0.0f, f);
             }
             ictx.Unoccluded(ctx, shadow.count, shadow.point, shadow.dir, shadow.distance, shadow.clear);
             for (int k = 0; k < shadow.count; ++k) {

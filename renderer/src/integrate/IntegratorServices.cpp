@@ -72,10 +72,12 @@ RixLightSample IntegratorServices::SampleLight(int light, RtPoint3 const& P, RtF
     out.radiance = s.radiance;
     out.pdf = s.pdf;
     out.delta = s.delta;
+    out.shadows = m_lights[static_cast<size_t>(light)]->castsShadows;
     return out;
 }
 
 bool IntegratorServices::Unoccluded(RixShadingContext const& ctx, int i, RtVector3 const& dir, float distance) {
+    if (!(distance > 0.0f)) return true;  // nothing can lie on an empty segment
     RayStarts starts(ctx);
     Vec3 const d = toVec3(dir), from = starts.at(i, d);
     return !m_tracer.occluded(from, d, 0.0f, shadowReach(distance), m_counts) &&
@@ -88,17 +90,26 @@ void IntegratorServices::Unoccluded(RixShadingContext const& ctx, int count, int
     MemoryArena::Mark mark = m_arena.mark();
     ShadowStream stream(m_arena, static_cast<size_t>(count));
     RayStarts starts(ctx);
+    // Rays of no length (lights without shadows) are clear and not traced: ray[k] is ray k's place in
+    // the stream, or -1.
+    int* ray = m_arena.allocArray<int>(static_cast<size_t>(count));
     for (int k = 0; k < count; ++k) {
+        ray[k] = distances[k] > 0.0f ? stream.count() : -1;
+        if (ray[k] < 0) continue;
         Vec3 const d = toVec3(dirs[k]);
         stream.add(starts.at(indices[k], d), d, distances[k]);
     }
-    bool* blocked = m_arena.allocArray<bool>(static_cast<size_t>(count));
+    bool* blocked = m_arena.allocArray<bool>(static_cast<size_t>(std::max(1, stream.count())));
     stream.trace(m_tracer, blocked, m_counts);
     for (int k = 0; k < count; ++k) {
+        if (ray[k] < 0) {
+            clear[k] = true;
+            continue;
+        }
         // A light whose lit face the ray meets stops it, as it stops the Bxdf's rays.
-        clear[k] = !blocked[k];
+        clear[k] = !blocked[ray[k]];
         if (!clear[k] || !m_finiteLights) continue;
-        Vec3 const d = toVec3(dirs[k]), from = stream.from(k);
+        Vec3 const d = toVec3(dirs[k]), from = stream.from(ray[k]);
         clear[k] = !lightEmitsAcross(from, d, starts.lightReach(indices[k], from, distances[k]), -d);
     }
     m_arena.release(mark);

@@ -301,6 +301,17 @@ void SceneBuilder::finishFrame() {
         if (material.plugin == "ClassicSurface")
             material.params.add(colorParam("ambient", m_ambient));
     resolvePortals();
+    // A file lit by classic light shaders and naming no integrator was written for RenderMan before
+    // RIS, whose surface shaders gathered those lights: PxrDirectLighting renders it that way, where
+    // RIS's PxrDefault would light it from the camera and leave its lights unused.
+    if (!m_scene.integrator.given && m_firstClassicLight && !m_scene.lights.empty()) {
+        m_scene.integrator.name = "PxrDirectLighting";
+        m_scene.integrator.where = *m_firstClassicLight;
+        m_diagnostics.info(m_firstClassicLight->str() +
+                           ": the scene names no Integrator and is lit by classic light shaders, so it renders with "
+                           "PxrDirectLighting and its lights, as RenderMan before RIS did (Integrator \"PxrDefault\" "
+                           "\"d\" before WorldBegin lights it from the camera, as RIS does)");
+    }
     // Illuminate: a light off for every shape lights nothing and is dropped. A
     // light on for some shapes and off for others lights them all: lights are
     // not linked to shapes here.

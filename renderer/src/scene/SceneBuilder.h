@@ -9,6 +9,7 @@
 #include <array>
 #include <functional>
 #include <map>
+#include <optional>
 #include <memory>
 #include <set>
 #include <string>
@@ -55,6 +56,9 @@ private:
         Vec3 opacity{1.0f};
         bool reverseOrientation = false;
         bool twoSided = true;  ///< Sides 2 (RIB's default); only a mesh light reads it
+        /// BMRT's Attribute "light" "shadows" "on": classic lights given from here on cast
+        /// ray-traced shadows (without it, or a shadow map, they cast none).
+        bool classicLightShadows = false;
         bool colorSet = false;
         bool volume = false;  ///< the Bxdf in effect is a volume's (PxrVolume): its shapes are not rendered
         std::set<std::string> lightsOff;  ///< handles turned off with Illuminate for the shapes that follow
@@ -188,7 +192,7 @@ private:
     /// triangles becomes a mesh light: true when it did.
     bool meshAsLight(Shape const& shape);
     /// Adds a light made for the area light in effect, with its radiance, handle and visibility.
-    void addAreaLight(std::unique_ptr<Light> light, AreaLightDesc const& area, Vec3 const& radiance);
+    void addAreaLight(std::unique_ptr<Light> light, AreaLightDesc const& area, Vec3 radiance);
     /// The emissive material of the area light in effect (for shapes with no light of their own kind).
     int emissiveMaterial(SourceLocation const& where);
     /// The warning for a Light type this renderer does not make.
@@ -308,6 +312,9 @@ private:
     int m_motionSeen = 0;
     /// The standard light shaders' ambientlight: light the classic shaders add as Ka * ambient.
     Vec3 m_ambient{0.0f};
+    /// Where the world's first light made from a classic light shader (LightSource, or an
+    /// AreaLightSource that is not RenderMan's own) was given, if it has one.
+    std::optional<SourceLocation> m_firstClassicLight;
     std::vector<CameraLight> m_cameraLights;
     /// A PxrPortalLight of the world: what it is depends on whether the world has a sky, known only
     /// at its end (resolvePortals).

@@ -27,7 +27,7 @@ public:
         radius = glm::length(m_axisX) + glm::length(m_axisY);
         return true;
     }
-    float area() const { return m_area; }
+    float surfaceArea() const override { return m_area; }
     /// coneAngle, coneSoftness, emissionFocus (see EmissionShaping.h).
     void setShaping(EmissionShaping const& shaping) { m_shaping = shaping; }
 
@@ -58,6 +58,7 @@ public:
         return true;
     }
     float radius() const { return m_radius; }
+    float surfaceArea() const override { return 4.0f * kPi * m_radius * m_radius; }
 
 private:
     /// 1 - cos(theta_max) of the cone seen from P, or 0 inside the sphere.
@@ -85,7 +86,7 @@ public:
         radius = std::sqrt(0.25f * m_length * m_length + m_radius * m_radius);
         return true;
     }
-    float area() const { return m_area; }
+    float surfaceArea() const override { return m_area; }
 
 private:
     /// The point of the side at axial fraction s (-0.5 to 0.5) and angle phi, and its outward normal.

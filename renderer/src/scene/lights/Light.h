@@ -69,6 +69,8 @@ public:
         (void)dir;
         return {};
     }
+    /// The area of the surface that emits (0 for lights that have none: points, directions, skies).
+    virtual float surfaceArea() const { return 0.0f; }
     /// Delta lights (a distant light with no angular extent) cannot be hit.
     virtual bool isDelta() const { return false; }
     /// Lights at infinity are seen by rays that miss all geometry.
@@ -82,6 +84,7 @@ public:
     }
 
     RtColorRGB color;  ///< intensity * 2^exposure * lightColor
+    bool castsShadows = true;  ///< false for classic lights given no shadow map or ray-traced shadows
     Visibility visibility;
     std::string handle;
 };

@@ -80,12 +80,7 @@ std::unique_ptr<Light> makeLight(std::string const& type, ParamList const& param
     Vec3 radiance = risLightRadiance(type, params, where);
     // areaNormalize: the light's power stays the same whatever its size (radiance / area).
     bool const areaNormalize = params.getFloat("areaNormalize", 0.0f) != 0.0f;
-    if (auto const* planar = dynamic_cast<PlanarLight const*>(light.get()); planar && areaNormalize)
-        radiance /= std::max(planar->area(), 1e-12f);
-    if (auto const* sphere = dynamic_cast<SphereLight const*>(light.get()); sphere && areaNormalize)
-        radiance /= std::max(4.0f * kPi * sphere->radius() * sphere->radius(), 1e-12f);
-    if (auto const* tube = dynamic_cast<CylinderLight const*>(light.get()); tube && areaNormalize)
-        radiance /= std::max(tube->area(), 1e-12f);
+    if (areaNormalize && light->surfaceArea() > 0.0f) radiance /= std::max(light->surfaceArea(), 1e-12f);
     if (type == "PxrDistantLight")
         radiance *= distantLightIrradianceScale(params.getFloat("angleExtent", kSunAngleExtent), areaNormalize);
     light->color = RtColorRGB(radiance.x, radiance.y, radiance.z);
@@ -144,24 +139,46 @@ std::unique_ptr<Light> makeClassicLight(std::string const& shader, ParamList con
     // A spotlight's cone, soft edge and falloff (radians, radians, cosine exponent).
     float cone = 0.0f, coneDelta = 0.0f, beam = 0.0f;
     bool coneGiven = false;
+    bool uber = false;
+    float falloffPower = 0.0f, falloffReference = 1.0f;
     if (kind == "uberlight" || kind == "l_uber") {
-        // Barzel's uberlight shines from its space's origin along +z (the defaults of
-        // "from" and "to"); its superellipse "width" (a tangent) and "wedge" become a
-        // spotlight's cone and soft edge. Shaping, blockers and falloff are not modelled.
+        // Barzel's uberlight (and MTOR's l_uber, made from it) shines from its space's
+        // origin along +z (the defaults of "from" and "to"), or along +z everywhere with
+        // "parallelrays". A spot's superellipse "width" (a tangent) and "wedge" become a
+        // spotlight's cone and soft edge; l_uber's Maya "coneAngle" and "penumbraAngle"
+        // (full angles in degrees) take their place when given. Its distance falloff is
+        // (falloffdist / d)^falloff, none by default. Blockers, cuton/cutoff, shear and
+        // the superellipse's roundness are not modelled.
         guessed = true;
+        uber = true;
         // Old files often give these without a type: whatever number or string is there is read.
         auto number = [&params](char const* name, float fallback) {
             Param const* p = params.find(name);
             return p && !p->floats.empty() ? p->floats.front() : fallback;
         };
-        // "lighttype": "spot" or "omni" in Barzel's shader, a number (1: omni) in MTOR's l_uber.
+        // "lighttype": "spot", "omni" or "arealight" in Barzel's shader; 0 spot, 1 omni, 2 area
+        // and 3 directional in MTOR's l_uber.
         Param const* type = params.find("lighttype");
-        bool const omni = type && (type->strings.empty() ? number("lighttype", 0.0f) == 1.0f : type->strings.front() == "omni");
-        kind = omni ? "pointlight" : "spotlight";
-        float const width = std::max(number("width", 1.0f), number("height", 1.0f));
-        cone = std::atan(std::max(width + number("wedge", 0.1f), 1e-3f));
-        coneDelta = cone - std::atan(std::max(width, 0.0f));
+        std::string const named = type && !type->strings.empty() ? type->strings.front() : "";
+        float const numbered = named.empty() ? number("lighttype", 0.0f) : -1.0f;
+        bool const omni = named == "omni" || numbered == 1.0f;
+        bool const parallel = numbered == 3.0f || number("parallelrays", 0.0f) != 0.0f;
+        kind = parallel ? "distantlight" : omni ? "pointlight" : "spotlight";
+        float const mayaCone = number("coneAngle", 0.0f), penumbra = number("penumbraAngle", 0.0f);
+        if (kind == "spotlight" && mayaCone > 0.006f) {  // 0.006 degrees: Maya's least, "no cone"
+            float const inner = glm::radians(0.5f * std::min(mayaCone, mayaCone + penumbra));
+            float const outer = glm::radians(0.5f * std::max(mayaCone, mayaCone + penumbra));
+            cone = std::min(outer, 0.5f * kPi);
+            coneDelta = cone - std::max(inner, 0.0f);
+        } else {
+            float const width = std::max(number("width", 1.0f), number("height", 1.0f));
+            cone = std::atan(std::max(width + number("wedge", 0.1f), 1e-3f));
+            coneDelta = cone - std::atan(std::max(width, 0.0f));
+        }
+        beam = std::max(number("beamdistribution", 0.0f), 0.0f);
         coneGiven = true;
+        falloffPower = std::max(number("falloff", 0.0f), 0.0f);
+        falloffReference = std::max(number("falloffdist", 1.0f), 1e-6f);
     }
     if (kind != "pointlight" && kind != "spotlight" && kind != "distantlight") {
         guessed = true;
@@ -210,8 +227,28 @@ std::unique_ptr<Light> makeClassicLight(std::string const& shader, ParamList con
         Mat4 frame(Vec4(x, 0.0f), Vec4(y, 0.0f), Vec4(travel, 0.0f), Vec4(0.0f, 0.0f, 0.0f, 1.0f));
         light = std::make_unique<DistantLight>(frame, 0.0f);
     }
+    // "pointnofalloff" and its kin say so in their name: the light does not weaken with distance.
+    std::string lower = shader;
+    std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return std::tolower(c); });
+    if (lower.find("nofall") != std::string::npos) {
+        uber = true;
+        falloffPower = 0.0f;
+    }
+    if (auto* point = dynamic_cast<PointLight*>(light.get()); point && uber)
+        point->setDistanceFalloff(falloffPower, falloffReference);
     Vec3 c = kPi * intensity * lightColor;
     light->color = RtColorRGB(c.x, c.y, c.z);
+    // A classic light casts shadows only when its shader is given a shadow map or told to trace them
+    // ("shadowname" "raytrace", uberlight's "raytraceshadow" 1); BMRT's Attribute "light" "shadows"
+    // "on" is the caller's to add.
+    light->castsShadows = false;
+    for (auto const& p : params.all()) {
+        std::string name = p.name();
+        std::transform(name.begin(), name.end(), name.begin(), [](unsigned char ch) { return std::tolower(ch); });
+        bool const map = name.find("shadow") != std::string::npos && !p.strings.empty() && !p.strings[0].empty();
+        bool const traced = name.find("raytrace") != std::string::npos && !p.floats.empty() && p.floats[0] != 0.0f;
+        if (map || traced) light->castsShadows = true;
+    }
     for (auto const& p : params.all()) p.used = true;  // shadow maps, samples and other shader options: not modelled
     return light;
 }

@@ -43,7 +43,9 @@ Vec3 risLightRadiance(std::string const& type, ParamList const& params, SourceLo
 /// has no direction) is also nullptr, with the reason in `leftOut`: the file
 /// still renders, as it does in RenderMan, where such a light adds nothing.
 /// Intensities are scaled by pi: the classic shaders' diffuse() has no 1/pi,
-/// the physically based Bxdfs do, so this keeps their images as bright.
+/// the physically based Bxdfs do, so this keeps their images as bright. As
+/// then, the light casts shadows only when given a shadow map or told to trace
+/// them (a non-empty "shadowname", a "raytraceshadow" of 1).
 std::unique_ptr<Light> makeClassicLight(std::string const& shader, ParamList const& params, Mat4 const& lightToWorld,
                                         SourceLocation const& where, Vec3& ambient, bool& guessed,
                                         std::string& leftOut);

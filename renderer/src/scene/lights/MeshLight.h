@@ -33,7 +33,7 @@ public:
     bool sampleEmission(Vec2 const& xiPosition, Vec2 const& xiDirection, LightEmission& out) const override;
     EmissionDensity emissionDensity(Vec3 const& point, Vec3 const& dir) const override;
     bool boundingSphere(Vec3& center, float& radius) const override;
-    float area() const { return m_area; }
+    float surfaceArea() const override { return m_area; }
 
 private:
     struct Triangle {

@@ -30,7 +30,10 @@ LightSample PointLight::sample(Vec3 const& P, Vec2 const&) const {
     s.wi = toLight / s.distance;
     s.pdf = 1.0f;
     s.delta = true;
-    s.radiance = color * ((1.0f / distSq) * falloff(-s.wi));
+    float const distance = m_inverseSquare ? 1.0f / distSq
+                           : s.distance > m_falloffReference ? std::pow(m_falloffReference / s.distance, m_falloffPower)
+                                                              : 1.0f;
+    s.radiance = color * (distance * falloff(-s.wi));
     return s;
 }
 

@@ -435,6 +435,7 @@ void SceneBuilder::worldBegin(RequestReader& in) {
     // Worlds that are not wanted are read (for their errors and state) but not built.
     m_skipWorld = (!m_sink && m_keptFrame) || (m_options.frame >= 0 && m_frameNumber != m_options.frame);
     m_ambient = Vec3(0.0f);
+    m_firstClassicLight.reset();
     m_lightHandles.clear();
     m_lightUse.clear();
     // Lights given before WorldBegin were placed in camera space; the world now knows where that is.

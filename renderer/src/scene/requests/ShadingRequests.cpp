@@ -2,6 +2,7 @@
 // shaders of older RIB files (Surface, LightSource, Illuminate), and the
 // material a surface gets when it names none.
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 
 #include <filesystem>
@@ -31,6 +32,18 @@ std::vector<std::string> const* classicSurfaceParameters(std::string const& shad
     };
     auto found = parameters.find(shader);
     return found == parameters.end() ? nullptr : &found->second;
+}
+
+/// The standard shader an unknown one most likely is: the one its name holds
+/// ("RCPlastic", "TLFresnelPlastic", "rsmetal", "RCMatte"), else plastic when
+/// it has a specular weight Ks; else "" (the default material).
+std::string lookalikeSurface(std::string const& name, ParamList const& params) {
+    std::string lower = name;
+    std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return std::tolower(c); });
+    for (char const* standard : {"plastic", "matte", "metal", "constant"})
+        if (lower.find(standard) != std::string::npos) return standard;
+    if (params.has("Ks")) return "plastic";
+    return "";
 }
 
 }  // namespace
@@ -107,6 +120,22 @@ void SceneBuilder::surface(RequestReader& in) {
                  "rendered as the standard \"" + base + "\"");
         name = base;
     }
+    // A shader of the scene's own that says which standard one it resembles is rendered as that one,
+    // with the standard parameters it shares (most were written from the standard shaders).
+    bool lookalike = false;
+    if (!known) {
+        std::string const like = lookalikeSurface(base, params);
+        if (!like.empty()) {
+            bool const byName = lookalikeSurface(base, ParamList()) == like;
+            warnOnce("surface " + name, in.where(),
+                     "Surface \"" + name + "\" is a shader this renderer does not have: rendered as the standard \"" +
+                         like + "\" its " + (byName ? "name" : "specular weight Ks") +
+                         " suggests, with the parameters of it that it gives (its others are ignored)");
+            name = like;
+            known = classicSurfaceParameters(like);
+            lookalike = true;
+        }
+    }
     if (!known) {
         warnOnce("surface " + name, in.where(),
                  "Surface \"" + name + "\" is a shader this renderer does not have: its surfaces get the default "
@@ -122,7 +151,10 @@ void SceneBuilder::surface(RequestReader& in) {
     std::string const owner = "Surface \"" + name + "\"";
     for (Param const& p : params.all()) {
         if (isRendererMetadata(p.name())) continue;
-        if (std::find(known->begin(), known->end(), p.name()) == known->end()) {
+        bool const standard = std::find(known->begin(), known->end(), p.name()) != known->end();
+        if (lookalike && (!standard || p.name() == "texturename")) {
+            p.used = true;  // said once above
+        } else if (!standard) {
             std::string list;
             for (std::string const& k : *known) list += (list.empty() ? "" : ", ") + k;
             std::string const meant = closestSpelling(p.name(), *known);
@@ -279,6 +311,7 @@ void SceneBuilder::makeLightFrom(std::string const& request, std::string const& 
                          (light ? std::string("it is rendered as the ") + light->kind() + " its parameters describe"
                                 : std::string("skipped")));
         if (!light) return;
+        if (state().classicLightShadows) light->castsShadows = true;
     }
     light->handle = handle;
     light->visibility = state().visibility;
@@ -288,6 +321,7 @@ void SceneBuilder::makeLightFrom(std::string const& request, std::string const& 
     }
     m_lightHandles[handle] = m_scene.lights.size();
     m_scene.lights.push_back(std::move(light));
+    if (request == "LightSource" && type.rfind("Pxr", 0) != 0 && !m_firstClassicLight) m_firstClassicLight = where;
 }
 
 void SceneBuilder::resolvePortals() {
@@ -426,7 +460,13 @@ bool SceneBuilder::meshAsLight(Shape const& shape) {
     return true;
 }
 
-void SceneBuilder::addAreaLight(std::unique_ptr<Light> light, AreaLightDesc const& area, Vec3 const& radiance) {
+void SceneBuilder::addAreaLight(std::unique_ptr<Light> light, AreaLightDesc const& area, Vec3 radiance) {
+    bool const renderMans = std::filesystem::path(area.shader).filename().string().rfind("Pxr", 0) == 0;
+    // A classic area light shader (BMRT's arealight) sends intensity / d^2 from each point it
+    // samples and averages them: the whole light gives what a point light of that intensity
+    // would, whatever its size. A uniform emitter of radiance pi intensity / area does the same
+    // facing it (the pi as for every classic light: the classic diffuse() has no 1/pi).
+    if (!renderMans && light->surfaceArea() > 0.0f) radiance *= kPi / light->surfaceArea();
     light->color = RtColorRGB(radiance.x, radiance.y, radiance.z);
     light->handle = area.handle;
     light->visibility = state().visibility;
@@ -436,6 +476,7 @@ void SceneBuilder::addAreaLight(std::unique_ptr<Light> light, AreaLightDesc cons
     }
     m_lightHandles[area.handle] = m_scene.lights.size();
     m_scene.lights.push_back(std::move(light));
+    if (!renderMans && !m_firstClassicLight) m_firstClassicLight = area.where;
 }
 
 int SceneBuilder::emissiveMaterial(SourceLocation const& where) {

@@ -175,6 +175,12 @@ void SceneBuilder::attribute(RequestReader& in) {
         if (olderKinds) vis.indirect = params.getInt("diffuse", 0) != 0 || params.getInt("specular", 0) != 0;
     } else if (category == "Ri") {
         riAttributes(params);
+    } else if (category == "light" && params.has("shadows")) {
+        Param const* shadows = params.take("shadows");
+        if (!shadows->strings.empty()) state().classicLightShadows = shadows->strings[0] == "on";
+        else if (!shadows->floats.empty()) state().classicLightShadows = shadows->floats[0] != 0.0f;
+        for (auto const& p : params.all())  // BMRT's "nsamples": shadows are sampled as the integrator samples
+            if (p.name() == "nsamples") p.used = true;
     } else if (category == "identifier") {
         if (Param const* name = params.take("name")) state().name = name->strings.empty() ? state().name : name->strings[0];
         for (auto const& p : params.all()) p.used = true;  // shadinggroup, id: labels only
