@@ -802,3 +802,36 @@ TEST_CASE("PxrLightEmission glows with a light's intensity * 2^exposure * lightC
     CHECK(r.channel(2, 2, 0) == Approx(6.0f));
     CHECK(r.channel(2, 2, 2) == Approx(1.5f));
 }
+
+TEST_CASE("a bilinear patch's N shades it: the blend of its corners' normals, as RenderMan interpolates them",
+          "[scene][patches]") {
+    // A flat square facing the camera, lit straight on by a distant light (PxrDistantLight shines along
+    // +z, the way the camera looks): a diffuse surface shows cos of its shading normal's tilt.
+    auto render = [](std::string const& patch) {
+        std::string rib = "Format 16 16 1\nProjection \"orthographic\"\nScreenWindow -1 1 -1 1\n"
+                          "Integrator \"PxrDirectLighting\" \"d\"\nWorldBegin\n"
+                          "Light \"PxrDistantLight\" \"sun\" \"float angleExtent\" [0]\n"
+                          "Bxdf \"PxrDiffuse\" \"d\" \"color diffuseColor\" [1 1 1]\nTranslate 0 0 5\n" +
+                          patch + "\nWorldEnd\n";
+        return test::renderRib(rib, test::withSpp(4));
+    };
+    std::string const corners = "\"P\" [-1 -1 0  1 -1 0  -1 1 0  1 1 0]";
+    auto flat = render("Patch \"bilinear\" " + corners);
+    double const s = std::sin(3.14159265 / 6), c = std::cos(3.14159265 / 6);
+    std::string const tilted = std::to_string(s) + " 0 " + std::to_string(-c);
+    auto even = render("Patch \"bilinear\" " + corners + " \"N\" [" + tilted + " " + tilted + " " + tilted + " " + tilted + "]");
+    CHECK(even.channel(8, 8, 0) / flat.channel(8, 8, 0) == Approx(c).epsilon(1e-3));
+    CHECK(even.channel(1, 14, 0) / flat.channel(1, 14, 0) == Approx(c).epsilon(1e-3));
+    // A PatchMesh whose left corners lean one way and right corners the other: upright at the middle,
+    // leaning (and darker) toward the sides, and the same on both.
+    std::string const left = std::to_string(-s) + " 0 " + std::to_string(-c) + " ";
+    std::string const right = std::to_string(s) + " 0 " + std::to_string(-c) + " ";
+    auto mesh = render("PatchMesh \"bilinear\" 2 \"nonperiodic\" 2 \"nonperiodic\" " + corners + " \"varying normal N\" [" +
+                       left + right + left + right + "]");
+    CHECK(mesh.channel(8, 8, 0) / flat.channel(8, 8, 0) > 0.99);
+    CHECK(mesh.channel(0, 8, 0) / flat.channel(0, 8, 0) < 0.93);
+    CHECK(mesh.channel(0, 8, 0) == Approx(mesh.channel(15, 8, 0)).epsilon(1e-3));
+    // A count that does not fit is a located error.
+    CHECK_THROWS_WITH(render("PatchMesh \"bilinear\" 2 \"nonperiodic\" 2 \"nonperiodic\" " + corners + " \"N\" [0 0 -1]"),
+                      Catch::Matchers::Contains("\"N\" needs one normal per control point (4), got 3 numbers"));
+}

@@ -1,7 +1,9 @@
 // Shapes: the quadrics (intersected exactly), polygons and meshes, patches,
 // and the Geometry request. Each becomes a Shape in world space with the
 // material and visibility in effect.
+#include <array>
 #include <cmath>
+#include <optional>
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "scene/SceneBuilder.h"
@@ -38,6 +40,21 @@ std::vector<Vec3> patchPoints(ParamList const& params, RequestReader& in, int nu
     }
     if (points.empty()) in.fail(in.where(), "needs control points: a \"P\", \"Pw\" or \"Pz\" parameter");
     return points;
+}
+
+/// A bilinear patch's "N": one normal per control point (vertex and varying
+/// are the same there), or nothing when the patch has none.
+std::optional<std::vector<Vec3>> bilinearNormals(ParamList const& params, RequestReader& in, size_t points) {
+    Param const* declared = params.find("N");
+    if (!declared || declared->decl.reference) return std::nullopt;
+    std::vector<float> const* n = params.getFloats("N", declared->decl.type == ParamType::Vector ? ParamType::Vector
+                                                                                              : ParamType::Normal);
+    if (n->size() != 3 * points)
+        in.fail(declared->location, "\"N\" needs one normal per control point (" + std::to_string(points) + "), got " +
+                                        std::to_string(n->size()) + " numbers");
+    std::vector<Vec3> normals;
+    for (size_t i = 0; i < points; ++i) normals.emplace_back((*n)[3 * i], (*n)[3 * i + 1], (*n)[3 * i + 2]);
+    return normals;
 }
 
 /// A quadric's radius may be negative: the RI specification turns the surface
@@ -262,13 +279,18 @@ void SceneBuilder::patch(RequestReader& in) {
     ParamList params = in.params();
     int const side = type == "bicubic" ? 4 : 2;
     std::vector<Vec3> points = patchPoints(params, in, side, side);
+    std::optional<std::vector<Vec3>> normals;
+    if (type == "bilinear") normals = bilinearNormals(params, in, 4);
     PrimvarSet vars = shapePrimvars(params, 4);
     params.warnUnused(m_diagnostics, "Patch");
     bool flip = state().reverseOrientation != mirrors(state().transform);
     MeshData mesh;
     if (type == "bilinear") {
         if (points.size() != 4) in.fail(in.where(), "a bilinear patch needs \"P\" with exactly 4 points");
-        mesh = buildBilinearPatch({points[0], points[1], points[2], points[3]}, state().transform, flip);
+        std::array<Vec3, 4> cornerNormals;
+        if (normals) std::copy(normals->begin(), normals->end(), cornerNormals.begin());
+        mesh = buildBilinearPatch({points[0], points[1], points[2], points[3]}, state().transform, flip,
+                                  normals ? &cornerNormals : nullptr);
     } else if (type == "bicubic") {
         if (points.size() != 16) in.fail(in.where(), "a bicubic patch needs \"P\" with exactly 16 points");
         mesh = buildBicubicPatchMesh(points, 4, false, 4, false, state().uBasis, state().vBasis, state().transform, flip,
@@ -287,6 +309,8 @@ void SceneBuilder::patchMesh(RequestReader& in) {
     std::string vwrap = in.string("vwrap");
     ParamList params = in.params();
     std::vector<Vec3> points = patchPoints(params, in, nu, nv);
+    std::optional<std::vector<Vec3>> normals;
+    if (type == "bilinear") normals = bilinearNormals(params, in, points.size());
     PrimvarSet vars = shapePrimvars(params);
     params.warnUnused(m_diagnostics, "PatchMesh");
     bool flip = state().reverseOrientation != mirrors(state().transform);
@@ -296,7 +320,7 @@ void SceneBuilder::patchMesh(RequestReader& in) {
                                      state().vBasis, state().transform, flip, in.where());
     else if (type == "bilinear")
         mesh = buildBilinearPatchMesh(points, nu, uwrap == "periodic", nv, vwrap == "periodic", state().transform, flip,
-                                      in.where());
+                                      in.where(), normals ? &*normals : nullptr);
     else
         in.fail(in.where(), "unknown patch type \"" + type + "\" (bilinear or bicubic)");
     addShape(std::make_unique<TriangleMesh>(std::move(mesh), "PatchMesh", false), in.where(), std::move(vars));

@@ -222,7 +222,8 @@ namespace {
 constexpr float kPatchBendToResolution = 250.0f;
 }  // namespace
 
-MeshData buildBilinearPatch(std::array<Vec3, 4> const& c, Mat4 const& toWorld, bool flip) {
+MeshData buildBilinearPatch(std::array<Vec3, 4> const& c, Mat4 const& toWorld, bool flip,
+                            std::array<Vec3, 4> const* normals) {
     MeshData mesh;
     // Planar patches need one quad; twisted ones are sampled finely enough to look smooth:
     // the more the fourth corner leaves the plane of the other three (relative to the
@@ -243,6 +244,17 @@ MeshData buildBilinearPatch(std::array<Vec3, 4> const& c, Mat4 const& toWorld, b
         },
         toWorld, flip);
     mesh.st = mesh.uv;
+    if (normals) {
+        // The given normals are used as written, as a polygon mesh's are: orientation does not turn them.
+        std::array<Vec3, 4> const& n = *normals;
+        Mat4 const normalMatrix = glm::inverse(toWorld);
+        for (size_t k = 0; k < mesh.P.size(); ++k) {
+            float const u = mesh.uv[k].x, v = mesh.uv[k].y;
+            Vec3 const blend = (1 - u) * (1 - v) * n[0] + u * (1 - v) * n[1] + (1 - u) * v * n[2] + u * v * n[3];
+            Vec3 const world = transformNormal(normalMatrix, blend);
+            if (glm::length(world) > 1e-12f) mesh.N[k] = glm::normalize(world);  // else the surface's own
+        }
+    }
     return mesh;
 }
 
@@ -341,15 +353,25 @@ MeshData buildBicubicPatchMesh(std::vector<Vec3> const& points, int nu, bool uPe
 }
 
 MeshData buildBilinearPatchMesh(std::vector<Vec3> const& points, int nu, bool uPeriodic, int nv, bool vPeriodic,
-                                Mat4 const& toWorld, bool flip, SourceLocation const& where) {
+                                Mat4 const& toWorld, bool flip, SourceLocation const& where,
+                                std::vector<Vec3> const* normals) {
     if (nu < 2 || nv < 2 || points.size() != static_cast<size_t>(nu) * static_cast<size_t>(nv))
         throw RibError(where, "PatchMesh \"bilinear\": \"P\" must have nu x nv points with nu, nv >= 2");
+    if (normals && normals->size() != points.size())
+        throw RibError(where, "PatchMesh \"bilinear\": \"N\" must have one normal per point (" +
+                                  std::to_string(points.size()) + "), got " + std::to_string(normals->size()));
     MeshData mesh;
     int patchesU = uPeriodic ? nu : nu - 1, patchesV = vPeriodic ? nv : nv - 1;
-    auto at = [&](int i, int j) { return points[static_cast<size_t>(j % nv) * static_cast<size_t>(nu) + static_cast<size_t>(i % nu)]; };
+    auto index = [&](int i, int j) { return static_cast<size_t>(j % nv) * static_cast<size_t>(nu) + static_cast<size_t>(i % nu); };
     for (int j = 0; j < patchesV; ++j)
-        for (int i = 0; i < patchesU; ++i)
-            mesh.append(buildBilinearPatch({at(i, j), at(i + 1, j), at(i, j + 1), at(i + 1, j + 1)}, toWorld, flip));
+        for (int i = 0; i < patchesU; ++i) {
+            std::array<size_t, 4> const c = {index(i, j), index(i + 1, j), index(i, j + 1), index(i + 1, j + 1)};
+            std::array<Vec3, 4> cornerNormals;
+            if (normals)
+                for (size_t k = 0; k < 4; ++k) cornerNormals[k] = (*normals)[c[k]];
+            mesh.append(buildBilinearPatch({points[c[0]], points[c[1]], points[c[2]], points[c[3]]}, toWorld, flip,
+                                           normals ? &cornerNormals : nullptr));
+        }
     return mesh;
 }
 

@@ -20,8 +20,11 @@ MeshData buildPolygonMesh(std::vector<int> const& loopsPerFace, std::vector<int>
                           std::vector<int> const& vertexIndices, ParamList const& params, Mat4 const& toWorld,
                           SourceLocation const& where);
 
-/// Patch "bilinear": four corners in the order (0,0) (1,0) (0,1) (1,1).
-MeshData buildBilinearPatch(std::array<Vec3, 4> const& corners, Mat4 const& toWorld, bool flip);
+/// Patch "bilinear": four corners in the order (0,0) (1,0) (0,1) (1,1). With
+/// `normals` (the corners' "N", in object space) the shading normal is their
+/// bilinear blend, as RenderMan interpolates a varying N; without, the surface's.
+MeshData buildBilinearPatch(std::array<Vec3, 4> const& corners, Mat4 const& toWorld, bool flip,
+                            std::array<Vec3, 4> const* normals = nullptr);
 
 /// A RenderMan spline basis (Basis request): a 4x4 matrix and the step
 /// between successive patches of a patch mesh.
@@ -40,9 +43,10 @@ MeshData buildBicubicPatchMesh(std::vector<Vec3> const& points, int nu, bool uPe
                                SplineBasis const& uBasis, SplineBasis const& vBasis, Mat4 const& toWorld, bool flip,
                                SourceLocation const& where);
 
-/// PatchMesh "bilinear": a grid of nu x nv points.
+/// PatchMesh "bilinear": a grid of nu x nv points, and optionally a normal at each.
 MeshData buildBilinearPatchMesh(std::vector<Vec3> const& points, int nu, bool uPeriodic, int nv, bool vPeriodic,
-                                Mat4 const& toWorld, bool flip, SourceLocation const& where);
+                                Mat4 const& toWorld, bool flip, SourceLocation const& where,
+                                std::vector<Vec3> const* normals = nullptr);
 
 /// Torus majorrad minorrad phimin phimax thetamax, tessellated finely with
 /// exact derivatives of the RenderMan parameterisation.
