@@ -835,3 +835,23 @@ TEST_CASE("a bilinear patch's N shades it: the blend of its corners' normals, as
     CHECK_THROWS_WITH(render("PatchMesh \"bilinear\" 2 \"nonperiodic\" 2 \"nonperiodic\" " + corners + " \"N\" [0 0 -1]"),
                       Catch::Matchers::Contains("\"N\" needs one normal per control point (4), got 3 numbers"));
 }
+
+TEST_CASE("Surface \"defaultsurface\" shades by the angle it is seen at: Cs (Ka + Kd (I.N)^2), whatever the lights",
+          "[rib][classic]") {
+    // A unit sphere seen straight on: at a pixel centred (x, 0) the normal's z is sqrt(1 - x^2).
+    auto render = [](std::string const& light) {
+        return test::renderRib("Format 16 16 1\nProjection \"orthographic\"\nScreenWindow -1 1 -1 1\n"
+                               "Integrator \"PxrDirectLighting\" \"d\"\nWorldBegin\n" + light +
+                                   "Color [1 0.5 0.25]\nSurface \"defaultsurface\"\nTranslate 0 0 5\nSphere 1 -1 1 360\nWorldEnd\n",
+                               test::withSpp(16));
+    };
+    auto dark = render("");
+    auto lit = render("LightSource \"distantlight\" 1 \"intensity\" [3] \"from\" [0 5 0] \"to\" [0 0 5]\n");
+    for (int x : {8, 11, 13}) {
+        double const u = -1.0 + (x + 0.5) / 8.0, facingSq = 1.0 - u * u;
+        INFO("pixel " << x);
+        CHECK(dark.channel(x, 7, 0) == Approx(0.2 + 0.8 * facingSq).epsilon(0.03));
+        CHECK(dark.channel(x, 7, 2) == Approx(0.25 * (0.2 + 0.8 * facingSq)).epsilon(0.03));
+        CHECK(lit.channel(x, 7, 0) == Approx(dark.channel(x, 7, 0)).epsilon(1e-5));
+    }
+}

@@ -4,6 +4,8 @@
 // the Color, Opacity and ambient light in effect.
 //
 //   constant        Cs, unlit (an emitter with no reflection)
+//   defaultsurface  Cs (Ka + Kd (I.N)^2), unlit: PRMan's default shader, which
+//                   shades by the angle a surface is seen at, whatever the lights
 //   matte           Kd Cs / pi
 //   plastic         Kd Cs / pi  +  Ks specularcolor * glossy lobe
 //   paintedplastic  as plastic, Cs times the texture map at (s, t)
@@ -38,7 +40,7 @@
 
 namespace {
 
-enum class Shader { Constant, Matte, Plastic, Metal };
+enum class Shader { Constant, Default, Matte, Plastic, Metal };
 
 /// The plastic Bxdf with the classic ambient term as emission.
 class ClassicBxdf : public Plastic {
@@ -105,10 +107,12 @@ public:
         RtColorRGB const* textureColor;
         sCtx->EvalParam(k_textureColor, -1, &textureColor, &white, true);
         Shader shader = shaderNamed(name->CStr());
-        // The shaders' own defaults: matte Ka 1 Kd 1; plastic Ka 1 Kd .5 Ks .5; metal Ka 1 Ks 1; roughness .1.
-        float const kdDefault = shader == Shader::Matte ? 1.0f : 0.5f;
+        // The shaders' own defaults: matte Ka 1 Kd 1; plastic Ka 1 Kd .5 Ks .5; metal Ka 1 Ks 1; roughness .1;
+        // defaultsurface Ka .2 Kd .8.
+        float const kdDefault = shader == Shader::Matte ? 1.0f : shader == Shader::Default ? 0.8f : 0.5f;
         float const ksDefault = shader == Shader::Metal ? 1.0f : 0.5f;
-        sCtx->EvalParam(k_Ka, -1, &Ka, &one, false);
+        float const kaDefault = shader == Shader::Default ? 0.2f : one;
+        sCtx->EvalParam(k_Ka, -1, &Ka, &kaDefault, false);
         sCtx->EvalParam(k_Kd, -1, &Kd, &kdDefault, false);
         sCtx->EvalParam(k_Ks, -1, &Ks, &ksDefault, false);
         sCtx->EvalParam(k_roughness, -1, &roughness, &tenth, false);
@@ -122,7 +126,18 @@ public:
         RtColorRGB* color = pool.AllocForBxdf<RtColorRGB>(n);
         for (int i = 0; i < n; ++i)
             color[i] = (CsVarying ? CsVarying[i] : *Cs) * (OsVarying ? OsVarying[i] : *Os) * textureColor[i];
-        if (shader == Shader::Constant) return new (pool.AllocForBxdf<Emissive>(1)) Emissive(sCtx, this, color);
+        if (shader == Shader::Default) {
+            RtVector3 const* Vn;
+            RtNormal3 const* Nn;
+            sCtx->GetBuiltinVar(RixShadingContext::k_Vn, &Vn);
+            sCtx->GetBuiltinVar(RixShadingContext::k_Nn, &Nn);
+            for (int i = 0; i < n; ++i) {
+                float const facing = Dot(Vn[i], Nn[i]);
+                color[i] = color[i] * (*Ka + *Kd * facing * facing);
+            }
+        }
+        if (shader == Shader::Constant || shader == Shader::Default)
+            return new (pool.AllocForBxdf<Emissive>(1)) Emissive(sCtx, this, color);
         PlasticParams params;
         RtColorRGB* diffuseColors = pool.AllocForBxdf<RtColorRGB>(n);
         RtColorRGB* specularColors = pool.AllocForBxdf<RtColorRGB>(n);
@@ -145,6 +160,7 @@ public:
 private:
     static Shader shaderNamed(char const* name) {
         if (!std::strcmp(name, "constant")) return Shader::Constant;
+        if (!std::strcmp(name, "defaultsurface")) return Shader::Default;
         if (!std::strcmp(name, "matte")) return Shader::Matte;
         if (!std::strcmp(name, "metal") || !std::strcmp(name, "shinymetal")) return Shader::Metal;
         return Shader::Plastic;

@@ -24,6 +24,7 @@ namespace fs = std::filesystem;
 std::vector<std::string> const* classicSurfaceParameters(std::string const& shader) {
     static const std::map<std::string, std::vector<std::string>> parameters = {
         {"constant", {}},
+        {"defaultsurface", {"Ka", "Kd"}},
         {"matte", {"Ka", "Kd"}},
         {"metal", {"Ka", "Ks", "roughness"}},
         {"shinymetal", {"Ka", "Ks", "Kr", "roughness", "texturename"}},
