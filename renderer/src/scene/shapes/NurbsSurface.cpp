@@ -96,29 +96,44 @@ MeshData buildNurbsPatch(NurbsDesc const& d, Mat4 const& toWorld, bool flip, Sou
                                   " vertices)");
     MeshData mesh;
     std::vector<float> Nu, dNu, Nv, dNv;
-    for (float v : vs) {
+    // The point at (u, v) and its derivatives, in the patch's own space.
+    auto evaluate = [&](float u, float v, Vec3& P, Vec3& dPdu, Vec3& dPdv) {
         basis(d.vknot, d.nv, d.vorder, v, Nv, dNv);
-        for (float u : us) {
-            basis(d.uknot, d.nu, d.uorder, u, Nu, dNu);
-            // H = sum N_i(u) N_j(v) Pw_ij, and its u and v derivatives.
-            Vec4 H(0.0f), Hu(0.0f), Hv(0.0f);
-            for (int j = 0; j < d.nv; ++j) {
-                if (Nv[static_cast<size_t>(j)] == 0.0f && dNv[static_cast<size_t>(j)] == 0.0f) continue;
-                for (int i = 0; i < d.nu; ++i) {
-                    Vec4 const& p = d.Pw[static_cast<size_t>(j * d.nu + i)];
-                    float nu = Nu[static_cast<size_t>(i)], nv = Nv[static_cast<size_t>(j)];
-                    H += nu * nv * p;
-                    Hu += dNu[static_cast<size_t>(i)] * nv * p;
-                    Hv += nu * dNv[static_cast<size_t>(j)] * p;
-                }
+        basis(d.uknot, d.nu, d.uorder, u, Nu, dNu);
+        // H = sum N_i(u) N_j(v) Pw_ij, and its u and v derivatives.
+        Vec4 H(0.0f), Hu(0.0f), Hv(0.0f);
+        for (int j = 0; j < d.nv; ++j) {
+            if (Nv[static_cast<size_t>(j)] == 0.0f && dNv[static_cast<size_t>(j)] == 0.0f) continue;
+            for (int i = 0; i < d.nu; ++i) {
+                Vec4 const& p = d.Pw[static_cast<size_t>(j * d.nu + i)];
+                float nu = Nu[static_cast<size_t>(i)], nv = Nv[static_cast<size_t>(j)];
+                H += nu * nv * p;
+                Hu += dNu[static_cast<size_t>(i)] * nv * p;
+                Hv += nu * dNv[static_cast<size_t>(j)] * p;
             }
-            float w = std::fabs(H.w) > 1e-12f ? H.w : 1e-12f;
-            Vec3 P = Vec3(H) / w;
-            // The quotient rule: d(H.xyz / H.w) = (dH.xyz - P dH.w) / H.w.
-            Vec3 dPdu = (Vec3(Hu) - P * Hu.w) / w, dPdv = (Vec3(Hv) - P * Hv.w) / w;
+        }
+        float w = std::fabs(H.w) > 1e-12f ? H.w : 1e-12f;
+        P = Vec3(H) / w;
+        // The quotient rule: d(H.xyz / H.w) = (dH.xyz - P dH.w) / H.w.
+        dPdu = (Vec3(Hu) - P * Hu.w) / w;
+        dPdv = (Vec3(Hv) - P * Hv.w) / w;
+    };
+    for (float v : vs) {
+        for (float u : us) {
+            Vec3 P, dPdu, dPdv;
+            evaluate(u, v, P, dPdu, dPdv);
             // As the other patches: the normal is dPdu x dPdv in world space, reversed by `flip`.
             Vec3 worldDu = transformVector(toWorld, dPdu), worldDv = transformVector(toWorld, dPdv);
             Vec3 n = safeNormalize(glm::cross(worldDu, worldDv));
+            if (n == Vec3(0.0f)) {
+                // Where the surface degenerates (a sphere's pole, where a whole edge meets in a point) the
+                // normal is taken a small step inside, so the shading stays smooth up to it.
+                float const du = 1e-3f * (d.umax - d.umin), dv = 1e-3f * (d.vmax - d.vmin);
+                Vec3 insideP, insideDu, insideDv;
+                evaluate(u + (u < 0.5f * (d.umin + d.umax) ? du : -du), v + (v < 0.5f * (d.vmin + d.vmax) ? dv : -dv),
+                         insideP, insideDu, insideDv);
+                n = safeNormalize(glm::cross(transformVector(toWorld, insideDu), transformVector(toWorld, insideDv)));
+            }
             mesh.P.push_back(transformPoint(toWorld, P));
             mesh.dPdu.push_back(worldDu);
             mesh.dPdv.push_back(worldDv);
@@ -132,7 +147,7 @@ MeshData buildNurbsPatch(NurbsDesc const& d, Mat4 const& toWorld, bool flip, Sou
             unsigned a = r * columns + c, b = a + 1, e = a + columns, f = e + 1;
             mesh.indices.insert(mesh.indices.end(), {a, b, f, a, f, e});
         }
-    // A zero normal where the surface degenerates (a pole): the facet normal is used there.
+    // A normal still zero (a patch collapsed to a line or a point): the facet normals are used.
     for (auto& n : mesh.N)
         if (n == Vec3(0.0f)) {
             mesh.N.clear();
