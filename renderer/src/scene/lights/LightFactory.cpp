@@ -139,7 +139,7 @@ std::unique_ptr<Light> makeClassicLight(std::string const& shader, ParamList con
     // A spotlight's cone, soft edge and falloff (radians, radians, cosine exponent).
     float cone = 0.0f, coneDelta = 0.0f, beam = 0.0f;
     bool coneGiven = false;
-    bool uber = false;
+    bool ownFalloff = false;  // the shader's own distance falloff, not the inverse square
     float falloffPower = 0.0f, falloffReference = 1.0f;
     if (kind == "uberlight" || kind == "l_uber") {
         // Barzel's uberlight (and MTOR's l_uber, made from it) shines from its space's
@@ -150,7 +150,7 @@ std::unique_ptr<Light> makeClassicLight(std::string const& shader, ParamList con
         // (falloffdist / d)^falloff, none by default. Blockers, cuton/cutoff, shear and
         // the superellipse's roundness are not modelled.
         guessed = true;
-        uber = true;
+        ownFalloff = true;
         // Old files often give these without a type: whatever number or string is there is read.
         auto number = [&params](char const* name, float fallback) {
             Param const* p = params.find(name);
@@ -231,10 +231,10 @@ std::unique_ptr<Light> makeClassicLight(std::string const& shader, ParamList con
     std::string lower = shader;
     std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return std::tolower(c); });
     if (lower.find("nofall") != std::string::npos) {
-        uber = true;
+        ownFalloff = true;
         falloffPower = 0.0f;
     }
-    if (auto* point = dynamic_cast<PointLight*>(light.get()); point && uber)
+    if (auto* point = dynamic_cast<PointLight*>(light.get()); point && ownFalloff)
         point->setDistanceFalloff(falloffPower, falloffReference);
     Vec3 c = kPi * intensity * lightColor;
     light->color = RtColorRGB(c.x, c.y, c.z);
