@@ -4,12 +4,13 @@
 #include <cctype>
 
 namespace bxdflab {
-namespace {
 
 std::string lowered(std::string text) {
     std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return std::tolower(c); });
     return text;
 }
+
+namespace {
 
 /// Levenshtein distance, one row at a time.
 size_t editDistance(std::string const& a, std::string const& b) {

@@ -13,4 +13,7 @@ namespace bxdflab {
 /// Ties go to the earlier candidate.
 std::string closestSpelling(std::string const& name, std::vector<std::string> const& candidates);
 
+/// `text` in lower case (ASCII): for names compared without regard to case.
+std::string lowered(std::string text);
+
 }  // namespace bxdflab

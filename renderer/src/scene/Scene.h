@@ -89,6 +89,7 @@ struct AreaLightDesc {
     bool environment = false;  ///< PxrStdEnvMapLight or PxrStdEnvDayLight: the light at infinity
     bool daylight = false;     ///< PxrStdEnvDayLight: a sky and sun rather than an image
     bool shaped = false;       ///< a shape in its block has become the light or glows with it
+    bool classic = false;      ///< a classic shader (BMRT's arealight), not one of RenderMan's own
 };
 
 /// What a frame's options say: image, camera, display, integrator.

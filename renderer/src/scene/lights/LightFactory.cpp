@@ -1,11 +1,11 @@
 #include "scene/lights/LightFactory.h"
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <map>
 
+#include "core/Spelling.h"
 #include "scene/lights/AreaLights.h"
 #include "scene/lights/Blackbody.h"
 #include "scene/lights/DayLight.h"
@@ -123,6 +123,7 @@ std::unique_ptr<Light> makeClassicLight(std::string const& shader, ParamList con
                                         std::string& leftOut) {
     guessed = false;
     leftOut.clear();
+    std::string const lowerName = lowered(shader);  // names say what a shader is, in any case
     float intensity = params.getFloat("intensity", 1.0f);
     Vec3 lightColor = params.getColor("lightcolor", Vec3(1.0f));
     if (intensity < 0.0f) throw RibError(where, "LightSource \"" + shader + "\": intensity must not be negative");
@@ -191,9 +192,7 @@ std::unique_ptr<Light> makeClassicLight(std::string const& shader, ParamList con
         }
         // The shader's name says what it is more often than its parameters do
         // (MayaMan's "RMsoftDistant" has "from" and "to", as a spotlight would).
-        std::string name = shader;
-        std::transform(name.begin(), name.end(), name.begin(), [](unsigned char c) { return std::tolower(c); });
-        auto named = [&name](char const* word) { return name.find(word) != std::string::npos; };
+        auto named = [&lowerName](char const* word) { return lowerName.find(word) != std::string::npos; };
         if (hasCone || named("spot"))
             kind = "spotlight";
         else if (named("distant") || named("direction") || named("sun"))
@@ -228,9 +227,7 @@ std::unique_ptr<Light> makeClassicLight(std::string const& shader, ParamList con
         light = std::make_unique<DistantLight>(frame, 0.0f);
     }
     // "pointnofalloff" and its kin say so in their name: the light does not weaken with distance.
-    std::string lower = shader;
-    std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return std::tolower(c); });
-    if (lower.find("nofall") != std::string::npos) {
+    if (lowerName.find("nofall") != std::string::npos) {
         ownFalloff = true;
         falloffPower = 0.0f;
     }
@@ -243,10 +240,9 @@ std::unique_ptr<Light> makeClassicLight(std::string const& shader, ParamList con
     // "on" is the caller's to add.
     light->castsShadows = false;
     for (auto const& p : params.all()) {
-        std::string name = p.name();
-        std::transform(name.begin(), name.end(), name.begin(), [](unsigned char ch) { return std::tolower(ch); });
-        bool const map = name.find("shadow") != std::string::npos && !p.strings.empty() && !p.strings[0].empty();
-        bool const traced = name.find("raytrace") != std::string::npos && !p.floats.empty() && p.floats[0] != 0.0f;
+        std::string const option = lowered(p.name());
+        bool const map = option.find("shadow") != std::string::npos && !p.strings.empty() && !p.strings[0].empty();
+        bool const traced = option.find("raytrace") != std::string::npos && !p.floats.empty() && p.floats[0] != 0.0f;
         if (map || traced) light->castsShadows = true;
     }
     for (auto const& p : params.all()) p.used = true;  // shadow maps, samples and other shader options: not modelled

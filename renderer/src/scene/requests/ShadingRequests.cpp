@@ -2,7 +2,6 @@
 // shaders of older RIB files (Surface, LightSource, Illuminate), and the
 // material a surface gets when it names none.
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 
 #include <filesystem>
@@ -39,8 +38,7 @@ std::vector<std::string> const* classicSurfaceParameters(std::string const& shad
 /// ("RCPlastic", "TLFresnelPlastic", "rsmetal", "RCMatte"), else plastic when
 /// it has a specular weight Ks; else "" (the default material).
 std::string lookalikeSurface(std::string const& name, ParamList const& params) {
-    std::string lower = name;
-    std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return std::tolower(c); });
+    std::string const lower = lowered(name);
     for (char const* standard : {"plastic", "matte", "metal", "constant"})
         if (lower.find(standard) != std::string::npos) return standard;
     if (params.has("Ks")) return "plastic";
@@ -403,7 +401,8 @@ void SceneBuilder::startAreaLight(std::string const& shader, std::string const& 
     // RenderMan for Maya 20 writes each light as its own shader, named by its node:
     // "<project>/shaders/PxrStdEnvMapLightShape1_rfm"; the node's name tells the kind.
     std::string const base = std::filesystem::path(shader).filename().string();
-    if (base.rfind("Pxr", 0) == 0) {
+    area->classic = base.rfind("Pxr", 0) != 0;
+    if (!area->classic) {
         area->radiance = risLightRadiance(shader, params, where);
         area->daylight = base.rfind("PxrStdEnvDayLight", 0) == 0;
         area->environment = area->daylight || base.rfind("PxrStdEnvMapLight", 0) == 0;
@@ -462,12 +461,11 @@ bool SceneBuilder::meshAsLight(Shape const& shape) {
 }
 
 void SceneBuilder::addAreaLight(std::unique_ptr<Light> light, AreaLightDesc const& area, Vec3 radiance) {
-    bool const renderMans = std::filesystem::path(area.shader).filename().string().rfind("Pxr", 0) == 0;
     // A classic area light shader (BMRT's arealight) sends intensity / d^2 from each point it
     // samples and averages them: the whole light gives what a point light of that intensity
     // would, whatever its size. A uniform emitter of radiance pi intensity / area does the same
     // facing it (the pi as for every classic light: the classic diffuse() has no 1/pi).
-    if (!renderMans && light->surfaceArea() > 0.0f) radiance *= kPi / light->surfaceArea();
+    if (area.classic && light->surfaceArea() > 0.0f) radiance *= kPi / light->surfaceArea();
     light->color = RtColorRGB(radiance.x, radiance.y, radiance.z);
     light->handle = area.handle;
     light->visibility = state().visibility;
@@ -477,7 +475,7 @@ void SceneBuilder::addAreaLight(std::unique_ptr<Light> light, AreaLightDesc cons
     }
     m_lightHandles[area.handle] = m_scene.lights.size();
     m_scene.lights.push_back(std::move(light));
-    if (!renderMans && !m_firstClassicLight) m_firstClassicLight = area.where;
+    if (area.classic && !m_firstClassicLight) m_firstClassicLight = area.where;
 }
 
 int SceneBuilder::emissiveMaterial(SourceLocation const& where) {
