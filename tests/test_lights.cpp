@@ -521,3 +521,42 @@ TEST_CASE("classic lights cast shadows only when asked: a shadow map, a traced s
     CHECK(behindBlocker("Attribute \"light\" \"shadows\" \"on\"\n", distant) == 0.0);
     CHECK(behindBlocker("Attribute \"light\" \"string shadows\" [\"off\"]\n", distant) == Approx(0.7).epsilon(1e-3));
 }
+
+TEST_CASE("an area light shader without geometry (plausibleArealight) is a light of its shape, radiance intensity x "
+          "lightcolor, unseen by the camera",
+          "[lights][classic]") {
+    // A matte surface at z = 5 under a small light at the origin: a source of area A and radiance L
+    // gives the surface about L A / (pi d^2) (1e-3 for a 0.1 square at 5 units). The orthographic
+    // camera looks straight through the light, so the pixels would show L were the light visible.
+    auto litBy = [](std::string const& placement, std::string const& parameters, std::string const& blocker = "") {
+        std::string rib = "Format 8 8 1\nProjection \"orthographic\"\nScreenWindow -0.01 0.01 -0.01 0.01\nWorldBegin\n"
+                          "AttributeBegin\n" + placement + "LightSource \"plausibleArealight\" \"key\" " + parameters +
+                          "\nAttributeEnd\nSurface \"matte\"\n" + blocker +
+                          "Polygon \"P\" [-10 -10 5  10 -10 5  10 10 5  -10 10 5]\nWorldEnd\n";
+        auto r = test::renderRib(rib, test::withSpp(64));
+        CHECK(r.anyMessageContains("plausibleArealight\" is a shader this renderer does not have; it is rendered as a"));
+        return test::meanChannel(r, 0, [](int, int) { return true; });
+    };
+    double const pi = 3.14159265358979;
+    double const square = 1000.0 * 0.01 / (pi * 25.0);
+    std::string const small = "Scale 0.1 0.1 0.1\n";
+    // One-sided ("sides" 1, its default): it sends light along its +z only.
+    CHECK(litBy(small, "\"intensity\" [1000]") == Approx(square).epsilon(2e-3));
+    CHECK(litBy("Rotate 180 1 0 0\n" + small, "\"intensity\" [1000]") == 0.0);
+    // Two-sided: turned away, it lights the surface all the same.
+    CHECK(litBy("Rotate 180 1 0 0\n" + small, "\"intensity\" [1000] \"float sides\" [2]") ==
+          Approx(square).epsilon(2e-3));
+    // lightcolor tints it; areanormalize divides by the area (0.01 here).
+    CHECK(litBy(small, "\"intensity\" [500] \"lightcolor\" [2 2 2]") == Approx(square).epsilon(2e-3));
+    CHECK(litBy(small, "\"intensity\" [10] \"float areanormalize\" [1]") == Approx(square).epsilon(2e-3));
+    // A disk of diameter 0.1 (area pi 0.05^2) and a sphere of that diameter (seen as a disk that size).
+    double const disk = 1000.0 * 0.0025 / 25.0;
+    CHECK(litBy(small, "\"intensity\" [1000] \"string shape\" [\"disk\"]") == Approx(disk).epsilon(2e-3));
+    CHECK(litBy(small, "\"intensity\" [1000] \"string shape\" [\"disk\"] \"float sides\" [2]") ==
+          Approx(disk).epsilon(5e-3));  // the two-sided disk is a polygon of 64 sides
+    CHECK(litBy(small, "\"intensity\" [1000] \"string shape\" [\"sphere\"]") == Approx(disk).epsilon(2e-3));
+    // It traces its shadows: a square between it and the surface blocks it.
+    CHECK(litBy(small, "\"intensity\" [1000]",
+                "AttributeBegin\nAttribute \"visibility\" \"int camera\" [0]\n"
+                "Polygon \"P\" [-1 -1 3  1 -1 3  1 1 3  -1 1 3]\nAttributeEnd\n") == 0.0);
+}

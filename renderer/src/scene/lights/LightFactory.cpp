@@ -10,6 +10,7 @@
 #include "scene/lights/Blackbody.h"
 #include "scene/lights/DayLight.h"
 #include "scene/lights/InfiniteLights.h"
+#include "scene/lights/MeshLight.h"
 #include "scene/lights/PointLights.h"
 
 namespace bxdflab {
@@ -25,6 +26,48 @@ EmissionShaping emissionShapingOf(ParamList const& params) {
     shaping.focus = std::max(params.getFloat("emissionFocus", 0.0f), 0.0f);
     shaping.focusTint = glm::max(params.getColor("emissionFocusTint", Vec3(0.0f)), Vec3(0.0f));
     return shaping;
+}
+
+/// The unit square, or the disk of unit diameter (as a fan of triangles), in the xy plane of a
+/// light's space, placed in the world.
+MeshData flatLightOutline(bool disk, Mat4 const& lightToWorld) {
+    MeshData outline;
+    outline.P.push_back(transformPoint(lightToWorld, Vec3(0.0f)));
+    int const corners = disk ? 64 : 4;
+    for (int k = 0; k < corners; ++k) {
+        float const angle = 2.0f * kPi * (k + (disk ? 0.0f : 0.5f)) / corners;
+        // A square's corners lie at 45 degrees, sqrt(2)/2 from its centre.
+        float const reach = disk ? 0.5f : 0.5f * std::sqrt(2.0f);
+        outline.P.push_back(transformPoint(lightToWorld, Vec3(reach * std::cos(angle), reach * std::sin(angle), 0.0f)));
+        outline.indices.insert(outline.indices.end(), {0u, 1u + k, 1u + (k + 1) % corners});
+    }
+    return outline;
+}
+
+/// A classic light shader that is an area light without geometry, as RenderMan 16's
+/// "physically plausible" plausibleArealight is: its "shape" ("rect", the default, "disk" or
+/// "sphere", the size of RenderMan's rect, disk and sphere lights) in the light's space sends
+/// radiance intensity * lightcolor (per unit area under "areanormalize" 1), from its +z face
+/// under "sides" 1 and from both faces otherwise. Such shaders trace their shadows.
+std::unique_ptr<Light> classicAreaLight(ParamList const& params, Mat4 const& lightToWorld, Vec3 radiance,
+                                        std::string& guess) {
+    std::string shape = lowered(params.getString("shape", "rect"));
+    if (shape != "disk" && shape != "sphere") shape = "rect";
+    bool const twoSided = params.getFloat("sides", 1.0f) != 1.0f && shape != "sphere";
+    std::unique_ptr<Light> light;
+    if (shape == "sphere")
+        light = std::make_unique<SphereLight>(lightToWorld);
+    else if (twoSided)
+        light = std::make_unique<MeshLight>(flatLightOutline(shape == "disk", lightToWorld), 1.0f, true);
+    else
+        light = std::make_unique<PlanarLight>(shape == "disk" ? PlanarLight::Shape::Disk : PlanarLight::Shape::Rect,
+                                              lightToWorld);
+    if (params.getFloat("areanormalize", 0.0f) != 0.0f && light->surfaceArea() > 0.0f)
+        radiance /= light->surfaceArea();
+    light->color = RtColorRGB(radiance.x, radiance.y, radiance.z);
+    light->castsShadows = true;
+    guess = std::string("a ") + (twoSided ? "two-sided " : "") + shape + " light of radiance intensity x lightcolor";
+    return light;
 }
 
 }  // namespace
@@ -119,9 +162,9 @@ Vec3 risLightRadiance(std::string const& type, ParamList const& params, SourceLo
 }
 
 std::unique_ptr<Light> makeClassicLight(std::string const& shader, ParamList const& params, Mat4 const& lightToWorld,
-                                        SourceLocation const& where, Vec3& ambient, bool& guessed,
+                                        SourceLocation const& where, Vec3& ambient, std::string& guess,
                                         std::string& leftOut) {
-    guessed = false;
+    guess.clear();
     leftOut.clear();
     std::string const lowerName = lowered(shader);  // names say what a shader is, in any case
     float intensity = params.getFloat("intensity", 1.0f);
@@ -130,6 +173,10 @@ std::unique_ptr<Light> makeClassicLight(std::string const& shader, ParamList con
     if (shader == "ambientlight") {
         ambient += intensity * lightColor;
         return nullptr;
+    }
+    if (lowerName.find("arealight") != std::string::npos) {
+        for (auto const& p : params.all()) p.used = true;  // samples, shadow bias, maps: not modelled
+        return classicAreaLight(params, lightToWorld, intensity * lightColor, guess);
     }
     Vec3 from = params.getVector("from", Vec3(0.0f)), to = params.getVector("to", Vec3(0.0f, 0.0f, 1.0f));
     // The shadowed versions in the RenderMan Companion and BMRT take the same
@@ -150,7 +197,7 @@ std::unique_ptr<Light> makeClassicLight(std::string const& shader, ParamList con
         // (full angles in degrees) take their place when given. Its distance falloff is
         // (falloffdist / d)^falloff, none by default. Blockers, cuton/cutoff, shear and
         // the superellipse's roundness are not modelled.
-        guessed = true;
+        guess = "skipped";  // until it is placed
         ownFalloff = true;
         // Old files often give these without a type: whatever number or string is there is read.
         auto number = [&params](char const* name, float fallback) {
@@ -182,7 +229,7 @@ std::unique_ptr<Light> makeClassicLight(std::string const& shader, ParamList con
         falloffReference = std::max(number("falloffdist", 1.0f), 1e-6f);
     }
     if (kind != "pointlight" && kind != "spotlight" && kind != "distantlight") {
-        guessed = true;
+        guess = "skipped";  // until it is placed
         if (params.all().empty()) return nullptr;
         bool hasFrom = false, hasTo = false, hasCone = false;
         for (auto const& p : params.all()) {
@@ -246,6 +293,7 @@ std::unique_ptr<Light> makeClassicLight(std::string const& shader, ParamList con
         if (map || traced) light->castsShadows = true;
     }
     for (auto const& p : params.all()) p.used = true;  // shadow maps, samples and other shader options: not modelled
+    if (!guess.empty()) guess = std::string("the ") + light->kind() + " its parameters describe";
     return light;
 }
 

@@ -38,16 +38,20 @@ Vec3 risLightRadiance(std::string const& type, ParamList const& params, SourceLo
 /// light. Another shader is placed by its name when it says spot, distant
 /// (direction, sun) or point (omni), else by its parameters when they say
 /// enough (a cone: a spot; "to": a distant light; "from" alone: a point);
-/// else nullptr. `guessed` tells the caller that it was placed that way. A light
+/// else nullptr. A shader whose name says it is an area light ("arealight")
+/// becomes a light of the shape its "shape" names, without geometry. `guess`
+/// says what a shader placed in one of these ways was taken for ("skipped"
+/// when nothing), and is empty for the standard ones. A light
 /// that cannot shine (a distant light whose "from" and "to" coincide, so it
 /// has no direction) is also nullptr, with the reason in `leftOut`: the file
 /// still renders, as it does in RenderMan, where such a light adds nothing.
 /// Intensities are scaled by pi: the classic shaders' diffuse() has no 1/pi,
-/// the physically based Bxdfs do, so this keeps their images as bright. As
+/// the physically based Bxdfs do, so this keeps their images as bright (an
+/// area light's intensity is a radiance already, as in physically based shaders). As
 /// then, the light casts shadows only when given a shadow map or told to trace
 /// them (a non-empty "shadowname", a "raytraceshadow" of 1).
 std::unique_ptr<Light> makeClassicLight(std::string const& shader, ParamList const& params, Mat4 const& lightToWorld,
-                                        SourceLocation const& where, Vec3& ambient, bool& guessed,
+                                        SourceLocation const& where, Vec3& ambient, std::string& guess,
                                         std::string& leftOut);
 
 }  // namespace bxdflab

@@ -30,10 +30,12 @@ LightSample PointLight::sample(Vec3 const& P, Vec2 const&) const {
     s.wi = toLight / s.distance;
     s.pdf = 1.0f;
     s.delta = true;
-    float const distance = m_inverseSquare ? 1.0f / distSq
-                           : s.distance > m_falloffReference ? std::pow(m_falloffReference / s.distance, m_falloffPower)
-                                                              : 1.0f;
-    s.radiance = color * (distance * falloff(-s.wi));
+    // How much of the light's intensity arrives over this distance.
+    float const distanceAttenuation = m_inverseSquare ? 1.0f / distSq
+                                      : s.distance > m_falloffReference
+                                          ? std::pow(m_falloffReference / s.distance, m_falloffPower)
+                                          : 1.0f;
+    s.radiance = color * (distanceAttenuation * falloff(-s.wi));
     return s;
 }
 

@@ -300,20 +300,20 @@ void SceneBuilder::makeLightFrom(std::string const& request, std::string const& 
             return firstOfKind("light " + type + " parameter " + name);
         });
     } else {
-        bool guessed = false;
-        std::string leftOut;
-        light = makeClassicLight(type, params, lightToWorld, where, m_ambient, guessed, leftOut);
+        std::string guess, leftOut;
+        light = makeClassicLight(type, params, lightToWorld, where, m_ambient, guess, leftOut);
         if (!leftOut.empty()) warnOnce("light without direction", where, leftOut);
-        if (guessed)
+        if (!guess.empty())
             warnOnce("light shader " + type, where,
                      "LightSource \"" + type + "\" is a shader this renderer does not have; " +
-                         (light ? std::string("it is rendered as the ") + light->kind() + " its parameters describe"
-                                : std::string("skipped")));
+                         (light ? "it is rendered as " + guess : std::string("skipped")));
         if (!light) return;
         if (state().classicLightShadows) light->castsShadows = true;
     }
     light->handle = handle;
     light->visibility = state().visibility;
+    // A classic light shader was never geometry: the camera did not see even an area light's shape.
+    if (request == "LightSource") light->visibility.camera = false;
     if (light->color.IsBlack()) {
         m_scene.dropped.push_back("light \"" + handle + "\" (" + type + ") has zero intensity");
         return;
