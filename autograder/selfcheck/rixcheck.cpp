@@ -10,6 +10,10 @@
 // one check asked for is one rixgrade runs by rendering (it says how to run
 // it). The grader runs the same checks, with your plugin in a sandbox
 // (rixgrade), plus the renders.
+#include <unistd.h>
+
+#include <csignal>
+#include <cstring>
 #include <filesystem>
 #include <iostream>
 
@@ -22,6 +26,52 @@ using namespace bxdflab;
 namespace {
 /// The exit status ctest reports as "skipped" (SKIP_RETURN_CODE in starter/CMakeLists.txt).
 constexpr int kSkipped = 77;
+
+// What rixcheck is doing, for the report of a plugin that crashes: the plugin runs
+// inside rixcheck, so a crash in it ends rixcheck too.
+char const* g_plugin = "";
+char g_check[64] = "(loading)";
+char const* volatile g_call = "loading the plugin";
+
+void noteCall(char const* call) { g_call = call; }
+
+void say(char const* text) {
+    ssize_t written = write(STDOUT_FILENO, text, std::strlen(text));
+    (void)written;  // nothing more can be done in a crash
+}
+
+/// Reports the crash as the failure of the check that was running and exits
+/// (async-signal-safe calls only).
+extern "C" void onCrash(int signal) {
+    char const* name = signal == SIGSEGV ? "SIGSEGV" : signal == SIGBUS ? "SIGBUS" : signal == SIGFPE ? "SIGFPE"
+                       : signal == SIGILL ? "SIGILL" : "SIGABRT";
+    say("FAIL ");
+    say(g_plugin);
+    say(" ");
+    say(g_check);
+    say(": the plugin crashed (");
+    say(name);
+    say(") in ");
+    say(g_call);
+    say("\n  hint: memory read or written that the plugin does not own. While checking, every array and object "
+        "the shading context gives out, and the stack, hold 0xFF bytes until written, so a member or local read "
+        "before it is set (a GetBuiltinVar or EvalParam that fills another variable than the one read) crashes "
+        "here; so does an index past numPts.\n");
+    _exit(1);
+}
+
+void reportCrashes() {
+    // On a stack of its own, so that a plugin that overflows its stack is reported too.
+    static char alternate[64 * 1024];
+    stack_t stack{};
+    stack.ss_sp = alternate;
+    stack.ss_size = sizeof alternate;
+    sigaltstack(&stack, nullptr);
+    struct sigaction action {};
+    action.sa_handler = onCrash;
+    action.sa_flags = SA_ONSTACK;
+    for (int signal : {SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT}) sigaction(signal, &action, nullptr);
+}
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -54,14 +104,18 @@ int main(int argc, char** argv) {
                       << "\n";
             return 0;
         }
+        g_plugin = plugin.c_str();
+        reportCrashes();
+        std::cout << std::unitbuf;  // each verdict out at once: a crash ends the process without flushing
         Diagnostics diagnostics;
-        ProbeMeasurer mine(plugin, {pluginDir}, diagnostics);
+        ProbeMeasurer mine(plugin, {pluginDir}, diagnostics, noteCall);
         Diagnostics quiet(false);
         ProbeMeasurer reference(plugin, {BXDFLAB_SOLUTION_PLUGINS}, quiet);
         CheckContext context{*exercise, mine, reference, seed};
         bool allPassed = true;
         for (auto const& [check, points] : exercise->checks) {
             if (Exercise::isRenderCheck(check) || (!only.empty() && check != only)) continue;
+            std::strncpy(g_check, check.c_str(), sizeof g_check - 1);
             CheckOutcome outcome;
             try {
                 outcome = runCheck(check, context);

@@ -653,6 +653,22 @@ def test_starter(ctx):
                 expect(t["status"] == "failed", f"the untouched starter passes {name}")
 
 
+def test_rixcheck_crash(ctx):
+    """A plugin runs inside rixcheck: when it crashes, rixcheck says which check and plugin call, then exits 1."""
+    rixcheck = os.path.join(os.path.dirname(ctx.rixgrade), "rixcheck")
+    for folder, call in (("hostile/segfault", "GenerateSample"),
+                         ("variants/diffuse_shading_normal_never_fetched", "EvaluateSample")):
+        run = subprocess.run([rixcheck, "--plugin", "diffuse", "--plugin-dir", os.path.join(ctx.build, "plugins", folder)],
+                             stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, timeout=300)
+        print(run.stdout[-2000:])
+        expect(run.returncode == 1, f"rixcheck on {folder} exited with {run.returncode}, not 1")
+        expect("PASS diffuse loads" in run.stdout, f"{folder}: the verdicts before the crash are lost")
+        crashed = [line for line in run.stdout.splitlines() if "the plugin crashed (SIGSEGV) in " + call in line]
+        expect(len(crashed) == 1 and crashed[0].startswith("FAIL diffuse "),
+               f"{folder}: no FAIL line names the crash in {call}")
+        expect("hint: memory read or written that the plugin does not own" in run.stdout, f"{folder}: no hint")
+
+
 def nobody_can_enter(path):
     """Whether the user nobody may pass through every folder down to path (others' x bit)."""
     folder = os.path.realpath(path)
@@ -803,7 +819,8 @@ def main():
              "attack": lambda: test_attack(ctx, args.name), "solutions": lambda: test_solutions(ctx),
              "starter": lambda: test_starter(ctx), "repeat": lambda: test_repeat(ctx),
              "gradescope": lambda: test_gradescope(ctx), "unsafe": lambda: test_unsafe(ctx),
-             "private_folders": lambda: test_private_folders(ctx)}
+             "private_folders": lambda: test_private_folders(ctx),
+             "rixcheck_crash": lambda: test_rixcheck_crash(ctx)}
     tests[args.kind]()
     if problems:
         return 1

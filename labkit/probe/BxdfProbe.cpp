@@ -16,11 +16,28 @@
 namespace bxdflab {
 namespace {
 
+/// What memory a plugin has not written holds while the probe runs it: 0xFF bytes
+/// make a NaN of every float and a pointer no process can read.
+constexpr unsigned char kPoisonByte = 0xFF;
+
+/// Fills the stack below the caller with kPoisonByte. Called just before a plugin
+/// function, at the same depth, it leaves the poison where that function's
+/// locals will be: a local it reads before setting (a parameter EvalParam never
+/// filled) then holds NaN or a pointer that crashes, not the value a call before
+/// it happened to leave there, which is often the right one.
+[[gnu::noinline]] void poisonStack() {
+    unsigned char area[16 * 1024];
+    std::memset(area, kPoisonByte, sizeof area);
+    asm volatile("" : : "r"(area) : "memory");  // the writes are kept although nothing reads them
+}
+
 /// A RixShadingContext whose builtins are the hand-made probe points.
 /// Every block it hands out (the arrays a Bxdf is given, its lobe weights,
-/// the Bxdf object itself) is followed by a guard band of known bytes, so that
-/// a write past the end of one -- a loop that runs to i <= numPts -- is seen
-/// instead of silently damaging the next array.
+/// the Bxdf object itself) holds kPoisonByte until written, so that a member
+/// or an array read before it is set fails the checks instead of finding what
+/// the last batch left, and is followed by a guard band of known bytes, so
+/// that a write past the end of one -- a loop that runs to i <= numPts -- is
+/// seen instead of silently damaging the next array.
 class ProbeShadingContext final : public RixShadingContext {
 public:
     ProbeShadingContext(BxdfInstance const& material, std::vector<ProbePoint> const& points, MemoryArena& arena,
@@ -94,6 +111,7 @@ protected:
     }
     void* Allocate(size_t bytes, size_t alignment) const override {
         auto* block = static_cast<unsigned char*>(m_arena.allocate(bytes + kGuardBytes, alignment));
+        std::memset(block, kPoisonByte, bytes);
         std::memset(block + bytes, kGuardByte, kGuardBytes);
         m_guards.push_back(block + bytes);
         return block;
@@ -174,9 +192,12 @@ struct BxdfProbe::Impl {
                                              " wrote past the end of an array the shading context gave it (numPts is " +
                                              std::to_string(ctx.numPts) + " here: does a loop run to i <= numPts?)");
     }
-    void announce(char const* call) {
+    /// Says which plugin function is called next, and poisons the stack it will use
+    /// (inlined, so that the poison lies at the depth of the call that follows).
+    [[gnu::always_inline]] inline void announce(char const* call) {
         lastCall = call;
         if (observer) observer(call);
+        poisonStack();
     }
     char const* lastCall = "";
     std::optional<int> firstShare;  ///< set while parameters vary per point
