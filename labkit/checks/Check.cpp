@@ -21,8 +21,9 @@ std::string const& checkHint(std::string const& check) {
                         "only its own entries ([i] or [index], never [0]): render ch07/validate.rib with your plugin."},
         {"reciprocity", "f(V, L) should equal f(L, V), and RPdf should be the pdf of sampling V from L."},
         {"energy", "The surface reflects more (or less) light than the reference: check the normalisation constants."},
-        {"hardcases", "Guard grazing angles, zero tangents, extreme parameters and xi = 0 against NaN, infinity and "
-                      "negative pdfs; mark a sample invalid instead of returning garbage."},
+        {"hardcases", "Guard grazing angles, directions between the shading and the geometric normal's horizons, "
+                      "zero tangents, extreme parameters and xi = 0 against NaN, infinity, a negative W and negative "
+                      "pdfs; mark a sample invalid instead of returning garbage."},
         {"smooth", "With roughness 0 a sample must be exactly the mirror or the refracted direction (Snell's law), from a "
                    "discrete lobe, weighted by Fresnel and by (eta_V / eta_L)^2 for the light that crosses."},
         {"renders", "Diff your render with the solution's (rixdiff --heatmap); the heatmap shows where they disagree."},
