@@ -559,4 +559,16 @@ TEST_CASE("an area light shader without geometry (plausibleArealight) is a light
     CHECK(litBy(small, "\"intensity\" [1000]",
                 "AttributeBegin\nAttribute \"visibility\" \"int camera\" [0]\n"
                 "Polygon \"P\" [-1 -1 3  1 -1 3  1 1 3  -1 1 3]\nAttributeEnd\n") == 0.0);
+    // Given a shape as an AreaLightSource, its intensity is a radiance all the same (where BMRT's
+    // arealight gives what a point light would).
+    auto shaped = [](std::string const& parameters) {
+        std::string rib = "Format 8 8 1\nProjection \"orthographic\"\nScreenWindow -0.01 0.01 -0.01 0.01\nWorldBegin\n"
+                          "AttributeBegin\nAttribute \"visibility\" \"int camera\" [0]\n"
+                          "AreaLightSource \"plausibleArealight\" \"key\" " + parameters +
+                          "\nPolygon \"P\" [-0.05 -0.05 0  0.05 -0.05 0  0.05 0.05 0  -0.05 0.05 0]\nAttributeEnd\n"
+                          "Surface \"matte\"\nPolygon \"P\" [-10 -10 5  10 -10 5  10 10 5  -10 10 5]\nWorldEnd\n";
+        return test::meanChannel(test::renderRib(rib, test::withSpp(64)), 0, [](int, int) { return true; });
+    };
+    CHECK(shaped("\"intensity\" [1000]") == Approx(square).epsilon(2e-3));
+    CHECK(shaped("\"intensity\" [10] \"float areanormalize\" [1]") == Approx(square).epsilon(2e-3));
 }
