@@ -23,29 +23,25 @@ struct Named {
 bool isFiniteColor(RtColorRGB const& c) { return std::isfinite(c.r) && std::isfinite(c.g) && std::isfinite(c.b); }
 bool isNegative(RtColorRGB const& c) { return c.r < 0 || c.g < 0 || c.b < 0; }
 
+/// What is wrong with the W and pdfs a Bxdf's `call` gave, or "" when nothing is.
+std::string valueProblem(ProbeResult const& r, std::string const& call) {
+    if (!isFiniteColor(r.W) || !std::isfinite(r.FPdf) || !std::isfinite(r.RPdf))
+        return call + " gave W " + describe(r.W) + ", FPdf " + number(r.FPdf) + ", RPdf " + number(r.RPdf);
+    if (isNegative(r.W)) return call + " gave a negative W " + describe(r.W);
+    if (r.FPdf < 0 || r.RPdf < 0)
+        return call + " gave a negative pdf (FPdf " + number(r.FPdf) + ", RPdf " + number(r.RPdf) + ")";
+    return "";
+}
+
 /// What is wrong with what GenerateSample gave, or "" when nothing is.
 std::string generatedProblem(ProbeResult const& g) {
-    if (!isFiniteColor(g.W) || !std::isfinite(g.FPdf) || !std::isfinite(g.RPdf))
-        return "GenerateSample gave W " + describe(g.W) + ", FPdf " + number(g.FPdf) + ", RPdf " + number(g.RPdf);
-    if (isNegative(g.W)) return "GenerateSample gave a negative W " + describe(g.W);
-    if (g.FPdf < 0 || g.RPdf < 0)
-        return "GenerateSample gave a negative pdf (FPdf " + number(g.FPdf) + ", RPdf " + number(g.RPdf) + ")";
+    if (std::string problem = valueProblem(g, "GenerateSample"); !problem.empty()) return problem;
     if (!g.valid) return "";
     if (!(g.FPdf > 0)) return "a sample marked valid has FPdf 0; mark it invalid instead";
     float length = glm::length(g.L);
     if (!isFinite(g.L) || !(std::fabs(length - 1.0f) < 1e-3f))
         return "a sample marked valid has the direction (" + number(g.L.x) + ", " + number(g.L.y) + ", " +
                number(g.L.z) + "), which is not a finite unit vector";
-    return "";
-}
-
-/// What is wrong with what EvaluateSample gave, or "" when nothing is.
-std::string evaluatedProblem(ProbeResult const& r) {
-    if (!isFiniteColor(r.W) || !std::isfinite(r.FPdf) || !std::isfinite(r.RPdf))
-        return "EvaluateSample gave W " + describe(r.W) + ", FPdf " + number(r.FPdf) + ", RPdf " + number(r.RPdf);
-    if (isNegative(r.W)) return "EvaluateSample gave a negative W " + describe(r.W);
-    if (r.FPdf < 0 || r.RPdf < 0)
-        return "EvaluateSample gave a negative pdf (FPdf " + number(r.FPdf) + ", RPdf " + number(r.RPdf) + ")";
     return "";
 }
 
@@ -99,7 +95,7 @@ CheckOutcome checkHardCases(CheckContext& c) {
         auto evaluated = c.plugin.evaluate(params, std::vector<ProbePoint>(L.size(), point), L);
         for (size_t k = 0; k < evaluated.size(); ++k) {
             ++cases;
-            if (std::string problem = evaluatedProblem(evaluated[k]); !problem.empty())
+            if (std::string problem = valueProblem(evaluated[k], "EvaluateSample"); !problem.empty())
                 return where + ", the light " + toward[k].name + ": " + problem;
         }
         for (auto const& emitted : c.plugin.emission(params, {point}))
