@@ -3,6 +3,7 @@
 # of the renderer; the RIB fuzzer (tests/fuzz) builds exactly this slice with
 # clang and libFuzzer.
 set(RIX_SCENE_SOURCES
+  core/CrashReport.cpp
   core/Diagnostics.cpp
   core/GitLfs.cpp
   core/ImageFiles.cpp

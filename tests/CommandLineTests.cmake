@@ -27,6 +27,16 @@ add_cli_failure(stats_is_a_folder "cannot write \".*bad-input\": it is a folder"
 add_cli_failure(zero_size_image "zero-size.rib:3:1: Format: resolution must be whole numbers of at least 1 pixel" ${BAD}/zero-size.rib -o out.exr)
 add_cli_failure(nan_transform "nan-transform.rib:5:3: Scale: .*finite" ${BAD}/nan-transform.rib -o out.exr)
 add_cli_failure(missing_scene "cannot open RIB file" ${BAD}/does-not-exist.rib -o out.exr)
+# A plugin that crashes takes rixrender with it, but first rixrender names the plugin and the
+# offset of the crash in it, and still dies of the signal (status 139: 128 + SIGSEGV). Not in
+# the sanitizer build, whose own handler reports crashes there.
+add_test(NAME cli.crashing_plugin
+         COMMAND env EXPECT_STATUS=139 sh ${CMAKE_CURRENT_SOURCE_DIR}/expect-failure.sh
+                 "rixrender: crashed \\(SIGSEGV\\) in the plugin .*/plugins/tests/probe_segfault.so at offsets? 0x[0-9a-f]+"
+                 $<TARGET_FILE:rixrender> --quiet --spp 1 --plugin-path ${CMAKE_BINARY_DIR}/plugins/tests
+                 ${BAD}/crashing-plugin.rib -o crashing-plugin.exr
+         WORKING_DIRECTORY ${CLI_OUT})
+set_tests_properties(cli.crashing_plugin PROPERTIES LABELS cli)
 add_cli_failure(unknown_format "unknown image format \".bmpx\"" ${PROJECT_SOURCE_DIR}/scenes/ch06/diffuse.rib --spp 1 -o out.bmpx)
 add_cli_failure(corrupt_image_strict "corrupt-image.rib:4:5: PxrDomeLight: cannot read lightColorMap .*corrupt-sky.exr" ${BAD}/corrupt-image.rib --strict -o out.exr)
 # An image that cannot be decoded is a missing one (a warning without --strict); a Git LFS

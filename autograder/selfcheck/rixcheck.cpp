@@ -10,15 +10,13 @@
 // one check asked for is one rixgrade runs by rendering (it says how to run
 // it). The grader runs the same checks, with your plugin in a sandbox
 // (rixgrade), plus the renders.
-#include <unistd.h>
-
-#include <csignal>
 #include <cstring>
 #include <filesystem>
 #include <iostream>
 
 #include "CommandLine.h"
 #include "checks/Check.h"
+#include "core/CrashReport.h"
 #include "measure/ProbeMeasurer.h"
 
 using namespace bxdflab;
@@ -35,42 +33,30 @@ char const* volatile g_call = "loading the plugin";
 
 void noteCall(char const* call) { g_call = call; }
 
-void say(char const* text) {
-    ssize_t written = write(STDOUT_FILENO, text, std::strlen(text));
-    (void)written;  // nothing more can be done in a crash
-}
-
-/// Reports the crash as the failure of the check that was running and exits
-/// (async-signal-safe calls only).
-extern "C" void onCrash(int signal) {
-    char const* name = signal == SIGSEGV ? "SIGSEGV" : signal == SIGBUS ? "SIGBUS" : signal == SIGFPE ? "SIGFPE"
-                       : signal == SIGILL ? "SIGILL" : "SIGABRT";
-    say("FAIL ");
-    say(g_plugin);
-    say(" ");
-    say(g_check);
-    say(": the plugin crashed (");
-    say(name);
-    say(") in ");
-    say(g_call);
+/// Reports the crash as the failure of the check that was running (on stdout,
+/// with the verdicts); rixcheck then exits with status 1.
+void reportFailedCheck(crashreport::Crash const& crash) {
+    using crashreport::say;
+    say("FAIL ", true);
+    say(g_plugin, true);
+    say(" ", true);
+    say(g_check, true);
+    say(": the plugin crashed (", true);
+    say(crash.signal, true);
+    say(") in ", true);
+    say(g_call, true);
+    if (crash.plugin) {
+        say(", at ", true);
+        crashreport::sayOffsets(crash, true);
+        say(" of ", true);
+        say(crash.plugin, true);
+    }
     say("\n  hint: memory read or written that the plugin does not own. While checking, every array and object "
         "the shading context gives out, and the stack, hold 0xFF bytes until written, so a member or local read "
         "before it is set (a GetBuiltinVar or EvalParam that fills another variable than the one read) crashes "
-        "here; so does an index past numPts.\n");
-    _exit(1);
-}
-
-void reportCrashes() {
-    // On a stack of its own, so that a plugin that overflows its stack is reported too.
-    static char alternate[64 * 1024];
-    stack_t stack{};
-    stack.ss_sp = alternate;
-    stack.ss_size = sizeof alternate;
-    sigaltstack(&stack, nullptr);
-    struct sigaction action {};
-    action.sa_handler = onCrash;
-    action.sa_flags = SA_ONSTACK;
-    for (int signal : {SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT}) sigaction(signal, &action, nullptr);
+        "here; so does an index past numPts. `addr2line -f -C -e <plugin> <offsets>` names the functions and "
+        "lines of a plugin built with -g.\n",
+        true);
 }
 }  // namespace
 
@@ -105,7 +91,7 @@ int main(int argc, char** argv) {
             return 0;
         }
         g_plugin = plugin.c_str();
-        reportCrashes();
+        crashreport::install("rixcheck", reportFailedCheck, 1);
         std::cout << std::unitbuf;  // each verdict out at once: a crash ends the process without flushing
         Diagnostics diagnostics;
         ProbeMeasurer mine(plugin, {pluginDir}, diagnostics, noteCall);

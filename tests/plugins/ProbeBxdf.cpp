@@ -8,6 +8,7 @@
 //   PROBE_UNTERMINATED_TABLE  GetParamTable's table has lost its end marker
 //   PROBE_BAD_TABLE_ENTRY     GetParamTable's table has an entry with no name
 //   PROBE_THROWS     GenerateSample throws a std::runtime_error
+//   PROBE_SEGFAULT   GenerateSample writes through a null pointer
 //   PROBE_FORWARD_RPDF  RPdf is the density of L (the forward one) instead of V's
 //                    (bidirectional integrators then weigh their strategies wrongly)
 #include <cmath>
@@ -42,6 +43,9 @@ public:
                         RtVector3* Ln, RixBXLobeWeights& W, float* FPdf, float* RPdf, RtColorRGB*) override {
 #ifdef PROBE_THROWS
         throw std::runtime_error("probe: GenerateSample gave up");
+#endif
+#ifdef PROBE_SEGFAULT
+        *static_cast<int volatile*>(nullptr) = 1;
 #endif
         RtColorRGB* w = W.AddActiveLobe(g_lobe);
         for (int i = 0; i < shadingCtx->numPts; ++i) {

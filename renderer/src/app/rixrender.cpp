@@ -12,6 +12,7 @@
 #include "CommandLine.h"
 #include "app/ImageModule.h"
 #include "film/OiioImageFiles.h"
+#include "core/CrashReport.h"
 #include "core/Diagnostics.h"
 #include "film/RawImage.h"
 #include "render/Renderer.h"
@@ -67,6 +68,7 @@ void checkWritable(std::string const& path) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    bxdflab::crashreport::install("rixrender");
 #ifdef BXDFLAB_LINK_OPENIMAGEIO
     bxdflab::useOpenImageIO();  // the sanitizer build (see renderer/CMakeLists.txt)
 #else

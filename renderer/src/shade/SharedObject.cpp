@@ -5,6 +5,7 @@
 
 #include <cstring>
 
+#include "core/CrashReport.h"
 #include "core/Error.h"
 
 namespace bxdflab {
@@ -16,6 +17,9 @@ SharedObject::SharedObject(std::string const& path, std::string const& descripti
         const char* why = dlerror();
         throw RenderError("cannot load " + description + ": " + (why ? why : "unknown dlopen error"));
     }
+    link_map* loaded = nullptr;
+    if (dlinfo(m_handle, RTLD_DI_LINKMAP, &loaded) == 0 && loaded && loaded->l_name)
+        crashreport::notePlugin(loaded->l_name);  // a crash in its code will be put on it
 }
 
 SharedObject::~SharedObject() {
