@@ -496,6 +496,13 @@ TEST_CASE("a classic arealight gives what a point light of its intensity would, 
     };
     CHECK(litBy(0.1) == Approx(2.0).epsilon(0.01));
     CHECK(litBy(0.4) == Approx(2.0).epsilon(0.01));
+    // Given as a LightSource, with no shape, it is its unit square (here scaled to 0.1), and gives the same.
+    std::string const unshaped = "Format 8 8 1\nProjection \"orthographic\"\nScreenWindow -0.01 0.01 -0.01 0.01\n"
+                                 "WorldBegin\nAttributeBegin\nScale 0.1 0.1 0.1\n"
+                                 "LightSource \"arealight\" 1 \"intensity\" [50]\nAttributeEnd\n"
+                                 "Surface \"matte\"\nPolygon \"P\" [-10 -10 5  10 -10 5  10 10 5  -10 10 5]\nWorldEnd\n";
+    auto r = test::renderRib(unshaped, test::withSpp(64));
+    CHECK(test::meanChannel(r, 0, [](int, int) { return true; }) == Approx(2.0).epsilon(0.01));
 }
 
 TEST_CASE("classic lights cast shadows only when asked: a shadow map, a traced shadow or BMRT's shadows attribute",

@@ -90,7 +90,6 @@ struct AreaLightDesc {
     bool daylight = false;     ///< PxrStdEnvDayLight: a sky and sun rather than an image
     bool shaped = false;       ///< a shape in its block has become the light or glows with it
     bool classic = false;      ///< a classic shader (BMRT's arealight), not one of RenderMan's own
-    bool plausible = false;    ///< RenderMan 16's plausibleArealight: a classic shader whose intensity is a radiance
 };
 
 /// What a frame's options say: image, camera, display, integrator.

@@ -44,12 +44,18 @@ MeshData flatLightOutline(bool disk, Mat4 const& lightToWorld) {
     return outline;
 }
 
+/// RenderMan 16's physically plausible light shaders ("plausibleArealight") give their
+/// intensity as a radiance; the older classic ones do not.
+bool isPlausible(std::string const& shader) {
+    return lowered(std::filesystem::path(shader).filename().string()).rfind("plausible", 0) == 0;
+}
+
 /// A classic light shader that is an area light without geometry, as RenderMan 16's
-/// "physically plausible" plausibleArealight is: its "shape" ("rect", the default, "disk" or
-/// "sphere", the size of RenderMan's rect, disk and sphere lights) in the light's space sends
-/// radiance intensity * lightcolor (per unit area under "areanormalize" 1), from its +z face
-/// under "sides" 1 and from both faces otherwise. Such shaders trace their shadows.
-std::unique_ptr<Light> classicAreaLight(ParamList const& params, Mat4 const& lightToWorld, Vec3 radiance,
+/// plausibleArealight is: its "shape" ("rect", the default, "disk" or "sphere", the size
+/// of RenderMan's rect, disk and sphere lights) in the light's space, emitting what
+/// classicAreaLightRadiance says from its +z face under "sides" 1 and from both faces
+/// otherwise. Such shaders trace their shadows.
+std::unique_ptr<Light> classicAreaLight(std::string const& shader, ParamList const& params, Mat4 const& lightToWorld,
                                         std::string& guess) {
     std::string shape = lowered(params.getString("shape", "rect"));
     if (shape != "disk" && shape != "sphere") shape = "rect";
@@ -62,11 +68,11 @@ std::unique_ptr<Light> classicAreaLight(ParamList const& params, Mat4 const& lig
     else
         light = std::make_unique<PlanarLight>(shape == "disk" ? PlanarLight::Shape::Disk : PlanarLight::Shape::Rect,
                                               lightToWorld);
-    if (params.getFloat("areanormalize", 0.0f) != 0.0f && light->surfaceArea() > 0.0f)
-        radiance /= light->surfaceArea();
+    Vec3 const radiance = classicAreaLightRadiance(shader, params, light->surfaceArea());
     light->color = RtColorRGB(radiance.x, radiance.y, radiance.z);
     light->castsShadows = true;
-    guess = std::string("a ") + (twoSided ? "two-sided " : "") + shape + " light of radiance intensity x lightcolor";
+    guess = std::string("a ") + (twoSided ? "two-sided " : "") + shape + " light " +
+            (isPlausible(shader) ? "of radiance intensity x lightcolor" : "giving what a point light of its intensity would");
     return light;
 }
 
@@ -161,6 +167,13 @@ Vec3 risLightRadiance(std::string const& type, ParamList const& params, SourceLo
     return intensity * std::exp2(exposure) * color;
 }
 
+Vec3 classicAreaLightRadiance(std::string const& shader, ParamList const& params, float area) {
+    Vec3 radiance = params.getFloat("intensity", 1.0f) * params.getColor("lightcolor", Vec3(1.0f));
+    if (!(area > 0.0f)) return radiance;
+    if (!isPlausible(shader)) return radiance * (kPi / area);
+    return params.getFloat("areanormalize", 0.0f) != 0.0f ? radiance / area : radiance;
+}
+
 std::unique_ptr<Light> makeClassicLight(std::string const& shader, ParamList const& params, Mat4 const& lightToWorld,
                                         SourceLocation const& where, Vec3& ambient, std::string& guess,
                                         std::string& leftOut) {
@@ -176,7 +189,7 @@ std::unique_ptr<Light> makeClassicLight(std::string const& shader, ParamList con
     }
     if (lowerName.find("arealight") != std::string::npos) {
         for (auto const& p : params.all()) p.used = true;  // samples, shadow bias, maps: not modelled
-        return classicAreaLight(params, lightToWorld, intensity * lightColor, guess);
+        return classicAreaLight(shader, params, lightToWorld, guess);
     }
     Vec3 from = params.getVector("from", Vec3(0.0f)), to = params.getVector("to", Vec3(0.0f, 0.0f, 1.0f));
     // The shadowed versions in the RenderMan Companion and BMRT take the same

@@ -32,6 +32,14 @@ std::map<std::string, ParamType> const& lightParameterTypes();
 /// enableTemperature is on.
 Vec3 risLightRadiance(std::string const& type, ParamList const& params, SourceLocation const& where);
 
+/// What the shape of a classic area light shader emits, its area given: for
+/// RenderMan 16's physically plausible plausibleArealight the radiance
+/// intensity * lightcolor (per unit area under "areanormalize"); for the older
+/// ones (BMRT's arealight) pi intensity * lightcolor / area, which gives what a
+/// point light of that intensity would whatever the size (the pi as for every
+/// classic light: the classic diffuse() has no 1/pi).
+Vec3 classicAreaLightRadiance(std::string const& shader, ParamList const& params, float area);
+
 /// The classic light shaders of a LightSource request: "pointlight",
 /// "spotlight" and "distantlight" become lights; "ambientlight" adds its
 /// colour to `ambient` (the classic surface shaders' Ka term) and makes no
@@ -39,15 +47,15 @@ Vec3 risLightRadiance(std::string const& type, ParamList const& params, SourceLo
 /// (direction, sun) or point (omni), else by its parameters when they say
 /// enough (a cone: a spot; "to": a distant light; "from" alone: a point);
 /// else nullptr. A shader whose name says it is an area light ("arealight")
-/// becomes a light of the shape its "shape" names, without geometry. `guess`
+/// becomes a light of the shape its "shape" names, without geometry, emitting
+/// what classicAreaLightRadiance says. `guess`
 /// says what a shader placed in one of these ways was taken for ("skipped"
 /// when nothing), and is empty for the standard ones. A light
 /// that cannot shine (a distant light whose "from" and "to" coincide, so it
 /// has no direction) is also nullptr, with the reason in `leftOut`: the file
 /// still renders, as it does in RenderMan, where such a light adds nothing.
 /// Intensities are scaled by pi: the classic shaders' diffuse() has no 1/pi,
-/// the physically based Bxdfs do, so this keeps their images as bright (an
-/// area light's intensity is a radiance already, as in physically based shaders). As
+/// the physically based Bxdfs do, so this keeps their images as bright. As
 /// then, the light casts shadows only when given a shadow map or told to trace
 /// them (a non-empty "shadowname", a "raytraceshadow" of 1).
 std::unique_ptr<Light> makeClassicLight(std::string const& shader, ParamList const& params, Mat4 const& lightToWorld,

@@ -402,7 +402,6 @@ void SceneBuilder::startAreaLight(std::string const& shader, std::string const& 
     // "<project>/shaders/PxrStdEnvMapLightShape1_rfm"; the node's name tells the kind.
     std::string const base = std::filesystem::path(shader).filename().string();
     area->classic = base.rfind("Pxr", 0) != 0;
-    area->plausible = area->classic && lowered(base).rfind("plausible", 0) == 0;
     if (!area->classic) {
         area->radiance = risLightRadiance(shader, params, where);
         area->daylight = base.rfind("PxrStdEnvDayLight", 0) == 0;
@@ -462,19 +461,9 @@ bool SceneBuilder::meshAsLight(Shape const& shape) {
 }
 
 void SceneBuilder::addAreaLight(std::unique_ptr<Light> light, AreaLightDesc const& area, Vec3 radiance) {
-    // A classic area light shader (BMRT's arealight) sends intensity / d^2 from each point it
-    // samples and averages them: the whole light gives what a point light of that intensity
-    // would, whatever its size. A uniform emitter of radiance pi intensity / area does the same
-    // facing it (the pi as for every classic light: the classic diffuse() has no 1/pi). The
-    // physically plausible plausibleArealight emits its intensity as a radiance, per unit
-    // area under "areanormalize".
-    float const emittingArea = light->surfaceArea();
-    if (area.classic && emittingArea > 0.0f) {
-        if (!area.plausible)
-            radiance *= kPi / emittingArea;
-        else if (area.params.getFloat("areanormalize", 0.0f) != 0.0f)
-            radiance /= emittingArea;
-    }
+    // A classic shader's intensity is not the radiance of its shape (see classicAreaLightRadiance).
+    if (area.classic && light->surfaceArea() > 0.0f)
+        radiance = classicAreaLightRadiance(area.shader, area.params, light->surfaceArea());
     light->color = RtColorRGB(radiance.x, radiance.y, radiance.z);
     light->handle = area.handle;
     light->visibility = state().visibility;
