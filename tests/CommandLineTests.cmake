@@ -36,7 +36,15 @@ add_test(NAME cli.crashing_plugin
                  $<TARGET_FILE:rixrender> --quiet --spp 1 --plugin-path ${CMAKE_BINARY_DIR}/plugins/tests
                  ${BAD}/crashing-plugin.rib -o crashing-plugin.exr
          WORKING_DIRECTORY ${CLI_OUT})
-set_tests_properties(cli.crashing_plugin PROPERTIES LABELS cli)
+# A plugin that jumps to an address in no loaded file (its return address written over) is
+# not on the stack any more: rixrender says what such a jump most often means.
+add_test(NAME cli.plugin_jumps_out_of_code
+         COMMAND env EXPECT_STATUS=139 sh ${CMAKE_CURRENT_SOURCE_DIR}/expect-failure.sh
+                 "rixrender: crashed \\(SIGSEGV\\) in the plugin .*/probe_wild_jump.so at offsets? 0x[0-9a-f]+, jumping to an address that is no code: a return address or function pointer was written over"
+                 $<TARGET_FILE:rixrender> --quiet --spp 1 --plugin-path ${CMAKE_BINARY_DIR}/plugins/tests
+                 ${BAD}/wild-jump-plugin.rib -o wild-jump-plugin.exr
+         WORKING_DIRECTORY ${CLI_OUT})
+set_tests_properties(cli.crashing_plugin cli.plugin_jumps_out_of_code PROPERTIES LABELS cli)
 add_cli_failure(unknown_format "unknown image format \".bmpx\"" ${PROJECT_SOURCE_DIR}/scenes/ch06/diffuse.rib --spp 1 -o out.bmpx)
 add_cli_failure(corrupt_image_strict "corrupt-image.rib:4:5: PxrDomeLight: cannot read lightColorMap .*corrupt-sky.exr" ${BAD}/corrupt-image.rib --strict -o out.exr)
 # An image that cannot be decoded is a missing one (a warning without --strict); a Git LFS

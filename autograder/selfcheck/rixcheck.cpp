@@ -26,8 +26,9 @@ namespace {
 constexpr int kSkipped = 77;
 
 // What rixcheck is doing, for the report of a plugin that crashes: the plugin runs
-// inside rixcheck, so a crash in it ends rixcheck too.
-char const* g_plugin = "";
+// inside rixcheck, so a crash in it ends rixcheck too. Copies, not pointers into
+// the stack, which a crashing plugin may have written over.
+char g_plugin[64] = "";
 char g_check[64] = "(loading)";
 char const* volatile g_call = "loading the plugin";
 
@@ -54,8 +55,8 @@ void reportFailedCheck(crashreport::Crash const& crash) {
     say("\n  hint: memory read or written that the plugin does not own. While checking, every array and object "
         "the shading context gives out, and the stack, hold 0xFF bytes until written, so a member or local read "
         "before it is set (a GetBuiltinVar or EvalParam that fills another variable than the one read) crashes "
-        "here; so does an index past numPts. `addr2line -f -C -e <plugin> <offsets>` names the functions and "
-        "lines of a plugin built with -g.\n",
+        "here; so does an index past numPts, or past the end of an array RixAlloca made too small. "
+        "`addr2line -f -C -e <plugin> <offsets>` names the functions and lines of a plugin built with -g.\n",
         true);
 }
 }  // namespace
@@ -90,7 +91,7 @@ int main(int argc, char** argv) {
                       << "\n";
             return 0;
         }
-        g_plugin = plugin.c_str();
+        std::strncpy(g_plugin, plugin.c_str(), sizeof g_plugin - 1);
         crashreport::install("rixcheck", reportFailedCheck, 1);
         std::cout << std::unitbuf;  // each verdict out at once: a crash ends the process without flushing
         Diagnostics diagnostics;

@@ -9,9 +9,12 @@
 //   PROBE_BAD_TABLE_ENTRY     GetParamTable's table has an entry with no name
 //   PROBE_THROWS     GenerateSample throws a std::runtime_error
 //   PROBE_SEGFAULT   GenerateSample writes through a null pointer
+//   PROBE_WILD_JUMP  GenerateSample calls a function pointer that points at no code (as a
+//                    return address written over sends a function back to)
 //   PROBE_FORWARD_RPDF  RPdf is the density of L (the forward one) instead of V's
 //                    (bidirectional integrators then weigh their strategies wrongly)
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <stdexcept>
 #include <new>
@@ -46,6 +49,10 @@ public:
 #endif
 #ifdef PROBE_SEGFAULT
         *static_cast<int volatile*>(nullptr) = 1;
+#endif
+#ifdef PROBE_WILD_JUMP
+        void (*volatile nowhere)() = reinterpret_cast<void (*)()>(uintptr_t{0x40});
+        nowhere();
 #endif
         RtColorRGB* w = W.AddActiveLobe(g_lobe);
         for (int i = 0; i < shadingCtx->numPts; ++i) {

@@ -2,8 +2,12 @@
 
 #include <dlfcn.h>
 #include <execinfo.h>
+#include <sys/syscall.h>
+#include <ucontext.h>
 #include <unistd.h>
 
+#include <atomic>
+#include <csetjmp>
 #include <csignal>
 #include <cstring>
 #include <mutex>
@@ -43,42 +47,122 @@ void reportOnStderr(Crash const& crash) {
     say(g_program);
     say(": crashed (");
     say(crash.signal);
+    say(")");
     if (crash.plugin) {
-        say(") in the plugin ");
+        say(" in the plugin ");
         say(crash.plugin);
         say(" at ");
         sayOffsets(crash);
-        say(".\n  Most often a pointer never set or an index past numPts. `addr2line -f -C -e <plugin> <offsets>` "
-            "names the functions and lines of a plugin built with -g; a plugin built with AddressSanitizer stops "
-            "at the first bad access (chapter 7).\n");
+    }
+    if (crash.jumpedOutOfCode) {
+        say(crash.plugin ? ", " : " ");
+        say("jumping to an address that is no code: a return address or function pointer was written over, "
+            "most often by a plugin writing past the end of an array on its stack (RixAlloca too small, an index "
+            "past numPts).");
+    } else if (crash.plugin) {
+        say(".\n  Most often a pointer never set or an index past numPts.");
     } else {
-        say("), and no plugin's code is on the stack: this is a bug in ");
+        say(", and no plugin's code is on the stack: this is a bug in ");
         say(g_program);
         say(" itself; please report it with the scene and command that show it.\n");
+        return;
     }
+    say(crash.plugin ? " `addr2line -f -C -e <plugin> <offsets>` names the functions and lines of a plugin built "
+                       "with -g; a plugin"
+                     : " A plugin");
+    say(" built with AddressSanitizer stops at the first bad access (chapter 7).\n");
+}
+
+/// Where the crash happened: the instruction that faulted, as the kernel saw it.
+uintptr_t faultingAddress(void* context) {
+#if defined(__x86_64__)
+    return static_cast<uintptr_t>(static_cast<ucontext_t*>(context)->uc_mcontext.gregs[REG_RIP]);
+#elif defined(__aarch64__)
+    return static_cast<uintptr_t>(static_cast<ucontext_t*>(context)->uc_mcontext.pc);
+#else
+    (void)context;
+    return 0;
+#endif
+}
+
+/// What a call to an address that is no code left on top of the stack: the
+/// address it would have returned to, inside the code that called.
+uintptr_t returnAddressOfCall(void* context) {
+#if defined(__x86_64__)
+    return *reinterpret_cast<uintptr_t const*>(static_cast<ucontext_t*>(context)->uc_mcontext.gregs[REG_RSP]);
+#elif defined(__aarch64__)
+    return static_cast<uintptr_t>(static_cast<ucontext_t*>(context)->uc_mcontext.regs[30]);  // the link register
+#else
+    (void)context;
+    return 0;
+#endif
+}
+
+/// Adds `address` of `plugin` to the crash's offsets (the first names the plugin).
+void addOffset(Crash& crash, char const* plugin, Dl_info const& where, uintptr_t address) {
+    crash.plugin = plugin;
+    crash.offsets[crash.offsetCount++] = address - reinterpret_cast<uintptr_t>(where.dli_fbase);
+}
+
+// Walking the stack reads it, and a plugin that wrote past a stack array has
+// overwritten what the walk reads: it may crash again. The handler runs with
+// the signal unblocked, so that second crash comes back here and jumps out of
+// the walk, and the report is made from the faulting instruction alone.
+sigjmp_buf g_walkFailed;
+enum : int { kIdle, kWalking, kReporting };
+volatile sig_atomic_t g_stage = kIdle;
+
+/// Dies of `signal`, as the program would have without a report.
+void dieOf(int signal) {
+    std::signal(signal, SIG_DFL);
+    std::raise(signal);
 }
 
 // Only async-signal-safe calls from here on, as in every reporter.
-void onCrash(int signal) {
-    void* frames[64];
-    int const depth = backtrace(frames, 64);
-    // The innermost frame in a plugin: a plugin that hands the C library a bad pointer
-    // crashes there, and it is still the plugin's doing.
-    Crash crash{signalName(signal), nullptr, {}, 0};
+void onCrash(int signal, siginfo_t*, void* context) {
+    // One report, by the first thread to crash; another that crashes meanwhile
+    // waits for the process to end.
+    static std::atomic<long> reportingThread{0};
+    long const me = syscall(SYS_gettid);
+    long expected = 0;
+    if (!reportingThread.compare_exchange_strong(expected, me) && expected != me)
+        for (;;) pause();
+    if (g_stage == kWalking) siglongjmp(g_walkFailed, 1);
+    if (g_stage == kReporting) dieOf(signal);  // the report itself crashed
+    g_stage = kWalking;
+    Crash crash{signalName(signal), nullptr, {}, 0, false};
     Dl_info where{};
-    for (int frame = 0; frame < depth && crash.offsetCount < Crash::kMaxOffsets; ++frame) {
+    uintptr_t const faulted = faultingAddress(context);
+    crash.jumpedOutOfCode = faulted && signal == SIGSEGV && !dladdr(reinterpret_cast<void*>(faulted), &where);
+    if (char const* plugin = faulted ? pluginAt(reinterpret_cast<void*>(faulted), where) : nullptr)
+        addOffset(crash, plugin, where, faulted);
+    // A call to no code stops the walk below at once; the call's return address says who called.
+    uintptr_t const caller = crash.jumpedOutOfCode ? returnAddressOfCall(context) : 0;
+    if (char const* plugin = caller ? pluginAt(reinterpret_cast<void*>(caller), where) : nullptr)
+        addOffset(crash, plugin, where, caller - 1);
+
+    static void* frames[64];
+    static int depth = 0;
+    if (sigsetjmp(g_walkFailed, 1) == 0) depth = backtrace(frames, 64);
+    g_stage = kReporting;
+    // The frames of the walk that lie past the faulting instruction are its callers
+    // (the ones before are this handler's); without it among them (a pointer called
+    // that is no code, a walk that failed) they are all taken.
+    int first = 0;
+    for (int frame = 0; frame < depth; ++frame)
+        if (reinterpret_cast<uintptr_t>(frames[frame]) == faulted) first = frame + 1;
+    // The innermost frames in a plugin: a plugin that hands the C library a bad
+    // pointer crashes there, and it is still the plugin's doing.
+    for (int frame = first; frame < depth && crash.offsetCount < Crash::kMaxOffsets; ++frame) {
         char const* plugin = pluginAt(frames[frame], where);
         if (crash.plugin && plugin != crash.plugin) break;  // out of the plugin again
         if (!plugin) continue;
-        crash.plugin = plugin;
         // A return address points after its call: one byte back lies inside the call.
-        crash.offsets[crash.offsetCount++] = reinterpret_cast<uintptr_t>(frames[frame]) -
-                                             reinterpret_cast<uintptr_t>(where.dli_fbase) - (frame > 0 ? 1 : 0);
+        addOffset(crash, plugin, where, reinterpret_cast<uintptr_t>(frames[frame]) - 1);
     }
     (g_reporter ? g_reporter : reportOnStderr)(crash);
     if (g_exitStatus >= 0) _exit(g_exitStatus);
-    std::signal(signal, SIG_DFL);  // and die of it, as without this report
-    std::raise(signal);
+    dieOf(signal);
 }
 
 }  // namespace
@@ -125,8 +209,8 @@ void install(char const* program, Reporter reporter, int exitStatus) {
         struct sigaction current {};
         if (sigaction(signal, nullptr, &current) != 0 || current.sa_handler != SIG_DFL) continue;
         struct sigaction action {};
-        action.sa_handler = onCrash;
-        action.sa_flags = SA_ONSTACK;
+        action.sa_sigaction = onCrash;
+        action.sa_flags = SA_ONSTACK | SA_SIGINFO | SA_NODEFER;
         sigaction(signal, &action, nullptr);
     }
 }

@@ -17,6 +17,9 @@ struct Crash {
     /// where the functions it was in were called from, as long as they are the plugin's.
     uintptr_t offsets[kMaxOffsets];
     int offsetCount;
+    /// The crash was a jump to an address in no loaded file: a return address or
+    /// function pointer written over (most often by a write past a stack array).
+    bool jumpedOutOfCode;
 };
 
 /// Writes the offsets of a crash ("0x1a2b 0x1c3d ..."), for reporters.
