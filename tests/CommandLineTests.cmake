@@ -44,7 +44,16 @@ add_test(NAME cli.plugin_jumps_out_of_code
                  $<TARGET_FILE:rixrender> --quiet --spp 1 --plugin-path ${CMAKE_BINARY_DIR}/plugins/tests
                  ${BAD}/wild-jump-plugin.rib -o wild-jump-plugin.exr
          WORKING_DIRECTORY ${CLI_OUT})
-set_tests_properties(cli.crashing_plugin cli.plugin_jumps_out_of_code PROPERTIES LABELS cli)
+# A plugin that overflows the stack of a rendering thread (each thread has a stack of its own
+# for the report).
+add_test(NAME cli.plugin_overflows_its_stack
+         COMMAND env EXPECT_STATUS=139 sh ${CMAKE_CURRENT_SOURCE_DIR}/expect-failure.sh
+                 "rixrender: crashed \\(SIGSEGV\\) in the plugin .*/probe_recurses.so at offsets 0x[0-9a-f]+ 0x[0-9a-f]+"
+                 $<TARGET_FILE:rixrender> --quiet --spp 16 --threads 2 --plugin-path ${CMAKE_BINARY_DIR}/plugins/tests
+                 ${BAD}/recursing-plugin.rib -o recursing-plugin.exr
+         WORKING_DIRECTORY ${CLI_OUT})
+set_tests_properties(cli.crashing_plugin cli.plugin_jumps_out_of_code cli.plugin_overflows_its_stack
+                     PROPERTIES LABELS cli)
 add_cli_failure(unknown_format "unknown image format \".bmpx\"" ${PROJECT_SOURCE_DIR}/scenes/ch06/diffuse.rib --spp 1 -o out.bmpx)
 add_cli_failure(corrupt_image_strict "corrupt-image.rib:4:5: PxrDomeLight: cannot read lightColorMap .*corrupt-sky.exr" ${BAD}/corrupt-image.rib --strict -o out.exr)
 # An image that cannot be decoded is a missing one (a warning without --strict); a Git LFS

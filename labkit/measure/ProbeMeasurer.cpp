@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <thread>
 
+#include "core/CrashReport.h"
 #include "core/Error.h"
 
 namespace bxdflab {
@@ -66,7 +67,10 @@ std::vector<ProbeResult> ProbeMeasurer::askTogether(std::string const& params, i
             ready.store(2);
         }
     };
-    std::thread second(run, 1);
+    std::thread second([&] {
+        crashreport::prepareThread();  // a crash on this thread is reported too
+        run(1);
+    });
     run(0);
     second.join();
     for (auto const& f : failure)

@@ -11,10 +11,14 @@
 //   PROBE_SEGFAULT   GenerateSample writes through a null pointer
 //   PROBE_WILD_JUMP  GenerateSample calls a function pointer that points at no code (as a
 //                    return address written over sends a function back to)
+//   PROBE_RECURSES   GenerateSample calls itself without end on the renderer's worker threads
+//                    (one of their stacks overflows)
 //   PROBE_FORWARD_RPDF  RPdf is the density of L (the forward one) instead of V's
 //                    (bidirectional integrators then weigh their strategies wrongly)
 #include <cmath>
 #include <cstdint>
+#include <sys/syscall.h>
+#include <unistd.h>
 #include <limits>
 #include <stdexcept>
 #include <new>
@@ -53,6 +57,13 @@ public:
 #ifdef PROBE_WILD_JUMP
         void (*volatile nowhere)() = reinterpret_cast<void (*)()>(uintptr_t{0x40});
         nowhere();
+#endif
+#ifdef PROBE_RECURSES
+        // Only on a thread the renderer started (not the one main() runs on), each call
+        // taking stack the optimiser cannot fold away.
+        volatile char frame[256];
+        frame[0] = 1;
+        if (frame[0] && syscall(SYS_gettid) != getpid()) GenerateSample(k_RixBXDirectLighting, nullptr, rng, sampled, Ln, W, FPdf, RPdf, nullptr);
 #endif
         RtColorRGB* w = W.AddActiveLobe(g_lobe);
         for (int i = 0; i < shadingCtx->numPts; ++i) {

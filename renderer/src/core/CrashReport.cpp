@@ -10,6 +10,7 @@
 #include <csetjmp>
 #include <csignal>
 #include <cstring>
+#include <memory>
 #include <mutex>
 #include <vector>
 
@@ -19,6 +20,7 @@ namespace {
 char const* g_program = "";
 Reporter g_reporter = nullptr;
 int g_exitStatus = -1;
+std::atomic<bool> g_installed{false};
 std::mutex g_pluginsLock;
 // Written while plugins load, read by the handler; reserved up front so that
 // loading a plugin never moves what the handler may be reading.
@@ -105,7 +107,10 @@ void addOffset(Crash& crash, char const* plugin, Dl_info const& where, uintptr_t
 }
 
 // Walking the stack reads it, and a plugin that wrote past a stack array has
-// overwritten what the walk reads: it may crash again. The handler runs with
+// overwritten what the walk reads: it may crash again. (One that wrote on past
+// the top of a thread's stack, into the thread's control block, leaves the
+// kernel unable to run any handler on that thread: the process then dies of
+// the signal without a report.) The handler runs with
 // the signal unblocked, so that second crash comes back here and jumps out of
 // the walk, and the report is made from the faulting instruction alone.
 sigjmp_buf g_walkFailed;
@@ -200,11 +205,8 @@ void install(char const* program, Reporter reporter, int exitStatus) {
     g_plugins.reserve(kMaxPlugins);
     void* warmUp[1];
     backtrace(warmUp, 1);  // loads what backtrace needs now, not inside the handler
-    static char alternate[64 * 1024];  // so that a plugin that overflows its stack is reported too
-    stack_t stack{};
-    stack.ss_sp = alternate;
-    stack.ss_size = sizeof alternate;
-    sigaltstack(&stack, nullptr);
+    g_installed = true;
+    prepareThread();
     for (int signal : {SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT}) {
         struct sigaction current {};
         if (sigaction(signal, nullptr, &current) != 0 || current.sa_handler != SIG_DFL) continue;
@@ -213,6 +215,27 @@ void install(char const* program, Reporter reporter, int exitStatus) {
         action.sa_flags = SA_ONSTACK | SA_SIGINFO | SA_NODEFER;
         sigaction(signal, &action, nullptr);
     }
+}
+
+void prepareThread() {
+    /// A thread's own stack for the handler, handed back to the kernel before it is freed.
+    struct AlternateStack {
+        std::unique_ptr<char[]> memory;
+        ~AlternateStack() {
+            if (!memory) return;
+            stack_t off{};
+            off.ss_flags = SS_DISABLE;
+            sigaltstack(&off, nullptr);
+        }
+    };
+    thread_local AlternateStack alternate;
+    if (!g_installed || alternate.memory) return;
+    size_t const size = 64 * 1024;
+    alternate.memory = std::make_unique<char[]>(size);
+    stack_t stack{};
+    stack.ss_sp = alternate.memory.get();
+    stack.ss_size = size;
+    sigaltstack(&stack, nullptr);
 }
 
 void notePlugin(std::string const& loadedName) {

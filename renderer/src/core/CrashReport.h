@@ -42,6 +42,13 @@ void sayHex(uintptr_t value, bool toStdout = false);
 /// place (a sanitizer's) is left alone.
 void install(char const* program, Reporter reporter = nullptr, int exitStatus = -1);
 
+/// Gives the calling thread a stack of its own for the report (install() gives
+/// one to the thread that calls it): a crash that leaves no room on the
+/// thread's own stack, as a plugin writing past a stack array can, is reported
+/// too. Call it on every thread that runs plugin code; after the first call on
+/// a thread, or without install(), it does nothing.
+void prepareThread();
+
 /// Remembers a loaded plugin's file, by the name the dynamic loader gives it.
 void notePlugin(std::string const& loadedName);
 

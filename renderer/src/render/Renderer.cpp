@@ -17,6 +17,7 @@
 #include <thread>
 
 #include "accel/RayTracer.h"
+#include "core/CrashReport.h"
 #include "core/ImageFiles.h"
 #include "shade/BatchShader.h"
 #include "scene/Camera.h"
@@ -56,6 +57,7 @@ int tileSizeFor(int baseSize, int spp) {
 
 /// Per-worker state: memory, ray counts, shading-time counters.
 struct Worker {
+    Worker() { crashreport::prepareThread(); }  // made on the thread that uses it, which runs plugin code
     MemoryArena arena;
     std::vector<HitRecord> hits;
     std::vector<Vec3> rayOrigins, rayDirections;
