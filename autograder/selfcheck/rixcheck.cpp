@@ -31,6 +31,7 @@ constexpr int kSkipped = 77;
 char g_plugin[64] = "";
 char g_check[64] = "(loading)";
 char const* volatile g_call = "loading the plugin";
+char const* g_crashHint = "";  // set before the handler is installed: it may not build strings
 
 void noteCall(char const* call) { g_call = call; }
 
@@ -52,12 +53,9 @@ void reportFailedCheck(crashreport::Crash const& crash) {
         say(" of ", true);
         say(crash.plugin, true);
     }
-    say("\n  hint: memory read or written that the plugin does not own. While checking, every array and object "
-        "the shading context gives out, and the stack, hold 0xFF bytes until written, so a member or local read "
-        "before it is set (a GetBuiltinVar or EvalParam that fills another variable than the one read) crashes "
-        "here; so does an index past numPts, or past the end of an array RixAlloca made too small. "
-        "`addr2line -f -C -e <plugin> <offsets>` names the functions and lines of a plugin built with -g.\n",
-        true);
+    say("\n  hint: ", true);
+    say(g_crashHint, true);
+    say("\n", true);
 }
 }  // namespace
 
@@ -92,6 +90,7 @@ int main(int argc, char** argv) {
             return 0;
         }
         std::strncpy(g_plugin, plugin.c_str(), sizeof g_plugin - 1);
+        g_crashHint = crashHint().c_str();
         crashreport::install("rixcheck", reportFailedCheck, 1);
         std::cout << std::unitbuf;  // each verdict out at once: a crash ends the process without flushing
         Diagnostics diagnostics;

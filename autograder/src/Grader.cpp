@@ -643,6 +643,7 @@ Grade grade(GradeOptions const& options, Course& course, OutputFolder const& out
                                   " check, so its remaining checks are skipped";
                     } else if (m.kind() == Kind::Crashed) {
                         r.summary = "your plugin " + std::string(m.what()) + ", in " + m.call();
+                        r.hint = bxdflab::crashHint();
                     } else if (m.kind() == Kind::PluginError && m.call().rfind("loading", 0) == 0) {
                         r.summary = "your plugin could not be loaded: " + std::string(m.what());
                     } else if (m.kind() == Kind::PluginError) {

@@ -25,6 +25,7 @@ struct CheckResult {
     bxdflab::CheckOutcome::Status status = bxdflab::CheckOutcome::Status::Failed;
     std::string summary;  ///< the verdict in one sentence, with its numbers
     std::string details;  ///< every number it rests on
+    std::string hint;     ///< what to look at, when not the check's own hint (a crash)
     double seconds = 0.0;
     bool hasImages = false;  ///< a render check that wrote renders/<plugin>/*.png
     bool passed() const { return status != bxdflab::CheckOutcome::Status::Failed; }

@@ -19,6 +19,9 @@ char const* verdict(CheckResult const& c) {
     }
 }
 
+/// What to look at when c failed: its own hint (a crash's), else its check's.
+std::string const& hintOf(CheckResult const& c) { return c.hint.empty() ? bxdflab::checkHint(c.check) : c.hint; }
+
 std::string points(double v) {
     std::ostringstream s;
     s << v;
@@ -67,7 +70,7 @@ void printSummary(Grade const& grade, std::ostream& out) {
         if (c.status != CheckOutcome::Status::Passed) {
             std::string first = c.summary.substr(0, c.summary.find('\n'));
             out << "   " << printable(first, 600);
-            if (!c.passed() && !bxdflab::checkHint(c.check).empty()) out << "\n          hint: " << bxdflab::checkHint(c.check);
+            if (!c.passed() && !hintOf(c).empty()) out << "\n          hint: " << hintOf(c);
         }
         out << "\n";
     }
@@ -80,7 +83,7 @@ std::string resultsJson(Grade const& grade) {
     nlohmann::json tests = nlohmann::json::array();
     for (auto const& c : grade.checks) {
         std::string output = c.summary;
-        if (!c.passed() && !bxdflab::checkHint(c.check).empty()) output += "\nHint: " + bxdflab::checkHint(c.check);
+        if (!c.passed() && !hintOf(c).empty()) output += "\nHint: " + hintOf(c);
         tests.push_back({{"name", "ch" + c.chapter + " " + c.plugin + ": " + c.check},
                          {"score", c.score},
                          {"max_score", c.maxScore},
@@ -121,7 +124,7 @@ std::string htmlReport(Grade const& grade) {
              << escapeHtml(c.check) << "</td><td>" << points(c.score) << " / " << points(c.maxScore) << "</td><td class=\""
              << cls << "\">" << escapeHtml(c.summary, 3000);
         if (!c.details.empty()) html << "<details><summary>numbers</summary><pre>" << escapeHtml(c.details, 8000) << "</pre></details>";
-        if (!c.passed()) html << "<br><i>" << escapeHtml(bxdflab::checkHint(c.check)) << "</i>";
+        if (!c.passed()) html << "<br><i>" << escapeHtml(hintOf(c)) << "</i>";
         html << "</td></tr>\n";
     }
     html << "</table>\n";

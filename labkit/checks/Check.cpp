@@ -35,6 +35,16 @@ std::string const& checkHint(std::string const& check) {
     return found == hints.end() ? none : found->second;
 }
 
+std::string const& crashHint() {
+    static std::string const hint =
+        "Memory read or written that the plugin does not own. While checking, every array and object the shading "
+        "context gives out, and the stack, hold 0xFF bytes until written, so a member or local read before it is set "
+        "(a GetBuiltinVar or EvalParam that fills another variable than the one read) crashes here; so does an index "
+        "past numPts, or past the end of an array RixAlloca made too small. `addr2line -f -C -e <plugin> <offsets>` "
+        "names the functions and lines of a plugin built with -g.";
+    return hint;
+}
+
 CheckOutcome runCheck(std::string const& check, CheckContext& context) {
     std::string const reason = context.exercise.notApplicableReason(check);
     if (!reason.empty()) return CheckOutcome::notApplicable("not applicable: " + reason);

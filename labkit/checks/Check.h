@@ -46,6 +46,8 @@ struct CheckContext {
 std::vector<std::string> const& checkNames();
 /// What to look at when `check` fails.
 std::string const& checkHint(std::string const& check);
+/// What to look at when the plugin crashed during a check (in place of the check's hint).
+std::string const& crashHint();
 
 /// Runs one check. Throws MeasurementError when the plugin crashes or hangs,
 /// std::invalid_argument for an unknown check name.
