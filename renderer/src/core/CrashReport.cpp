@@ -107,14 +107,14 @@ void addOffset(Crash& crash, char const* plugin, Dl_info const& where, uintptr_t
 }
 
 // Walking the stack reads it, and a plugin that wrote past a stack array has
-// overwritten what the walk reads: it may crash again. (One that wrote on past
-// the top of a thread's stack, into the thread's control block, leaves the
-// kernel unable to run any handler on that thread: the process then dies of
-// the signal without a report.) The handler runs with
+// overwritten what the walk reads: it may crash again. The handler runs with
 // the signal unblocked, so that second crash comes back here and jumps out of
-// the walk, and the report is made from the faulting instruction alone.
+// the walk, and the report is made from the faulting instruction alone. (A
+// plugin that wrote on past the top of a thread's stack, into the thread's
+// control block, leaves the kernel unable to run any handler on that thread:
+// the process then dies of the signal without a report.)
 sigjmp_buf g_walkFailed;
-enum : int { kIdle, kWalking, kReporting };
+enum : int { kIdle, kStarting, kWalking, kReporting };
 volatile sig_atomic_t g_stage = kIdle;
 
 /// Dies of `signal`, as the program would have without a report.
@@ -133,16 +133,22 @@ void onCrash(int signal, siginfo_t*, void* context) {
     if (!reportingThread.compare_exchange_strong(expected, me) && expected != me)
         for (;;) pause();
     if (g_stage == kWalking) siglongjmp(g_walkFailed, 1);
-    if (g_stage == kReporting) dieOf(signal);  // the report itself crashed
-    g_stage = kWalking;
+    if (g_stage != kIdle) dieOf(signal);  // making the report crashed
+    g_stage = kStarting;
     Crash crash{signalName(signal), nullptr, {}, 0, false};
     Dl_info where{};
     uintptr_t const faulted = faultingAddress(context);
     crash.jumpedOutOfCode = faulted && signal == SIGSEGV && !dladdr(reinterpret_cast<void*>(faulted), &where);
     if (char const* plugin = faulted ? pluginAt(reinterpret_cast<void*>(faulted), where) : nullptr)
         addOffset(crash, plugin, where, faulted);
-    // A call to no code stops the walk below at once; the call's return address says who called.
-    uintptr_t const caller = crash.jumpedOutOfCode ? returnAddressOfCall(context) : 0;
+    // A call to no code stops the walk below at once; the call's return address
+    // (read from a stack that may be gone) says who called. What is set between
+    // a sigsetjmp and a jump back to it is static, so that it keeps its value.
+    static uintptr_t caller = 0;
+    if (sigsetjmp(g_walkFailed, 1) == 0) {
+        g_stage = kWalking;
+        if (crash.jumpedOutOfCode) caller = returnAddressOfCall(context);
+    }
     if (char const* plugin = caller ? pluginAt(reinterpret_cast<void*>(caller), where) : nullptr)
         addOffset(crash, plugin, where, caller - 1);
 
