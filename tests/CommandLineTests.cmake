@@ -48,7 +48,7 @@ add_test(NAME cli.plugin_jumps_out_of_code
 # for the report).
 add_test(NAME cli.plugin_overflows_its_stack
          COMMAND env EXPECT_STATUS=139 sh ${CMAKE_CURRENT_SOURCE_DIR}/expect-failure.sh
-                 "rixrender: crashed \\(SIGSEGV\\) in the plugin .*/probe_recurses.so at offsets 0x[0-9a-f]+ 0x[0-9a-f]+"
+                 "rixrender: crashed \\(SIGSEGV\\) in the plugin .*/probe_recurses.so at offsets 0x[0-9a-f]+ [0-9a-fx ]+, having run out of stack"
                  $<TARGET_FILE:rixrender> --quiet --spp 16 --threads 2 --plugin-path ${CMAKE_BINARY_DIR}/plugins/tests
                  ${BAD}/recursing-plugin.rib -o recursing-plugin.exr
          WORKING_DIRECTORY ${CLI_OUT})

@@ -61,6 +61,8 @@ void reportOnStderr(Crash const& crash) {
         say("jumping to an address that is no code: a return address or function pointer was written over, "
             "most often by a plugin writing past the end of an array on its stack (RixAlloca too small, an index "
             "past numPts).");
+    } else if (crash.plugin && crash.ranOutOfStack) {
+        say(", having run out of stack: a function that calls itself without end, or a very large local array.");
     } else if (crash.plugin) {
         say(".\n  Most often a pointer never set or an index past numPts.");
     } else {
@@ -87,11 +89,31 @@ uintptr_t faultingAddress(void* context) {
 #endif
 }
 
+/// The thread's stack pointer when it crashed.
+uintptr_t stackPointer(void* context) {
+#if defined(__x86_64__)
+    return static_cast<uintptr_t>(static_cast<ucontext_t*>(context)->uc_mcontext.gregs[REG_RSP]);
+#elif defined(__aarch64__)
+    return static_cast<uintptr_t>(static_cast<ucontext_t*>(context)->uc_mcontext.sp);
+#else
+    (void)context;
+    return 0;
+#endif
+}
+
+/// Whether the memory a SIGSEGV was about lies within reach of the stack
+/// pointer: a page the stack would have grown into (its guard page).
+bool besideStackPointer(siginfo_t const* info, void* context) {
+    uintptr_t const address = reinterpret_cast<uintptr_t>(info->si_addr), sp = stackPointer(context);
+    uintptr_t const reach = 64 * 1024;  // a frame's worth either side
+    return sp && address && address + reach > sp && address < sp + reach;
+}
+
 /// What a call to an address that is no code left on top of the stack: the
 /// address it would have returned to, inside the code that called.
 uintptr_t returnAddressOfCall(void* context) {
 #if defined(__x86_64__)
-    return *reinterpret_cast<uintptr_t const*>(static_cast<ucontext_t*>(context)->uc_mcontext.gregs[REG_RSP]);
+    return *reinterpret_cast<uintptr_t const*>(stackPointer(context));
 #elif defined(__aarch64__)
     return static_cast<uintptr_t>(static_cast<ucontext_t*>(context)->uc_mcontext.regs[30]);  // the link register
 #else
@@ -124,7 +146,7 @@ void dieOf(int signal) {
 }
 
 // Only async-signal-safe calls from here on, as in every reporter.
-void onCrash(int signal, siginfo_t*, void* context) {
+void onCrash(int signal, siginfo_t* info, void* context) {
     // One report, by the first thread to crash; another that crashes meanwhile
     // waits for the process to end.
     static std::atomic<long> reportingThread{0};
@@ -135,7 +157,8 @@ void onCrash(int signal, siginfo_t*, void* context) {
     if (g_stage == kWalking) siglongjmp(g_walkFailed, 1);
     if (g_stage != kIdle) dieOf(signal);  // making the report crashed
     g_stage = kStarting;
-    Crash crash{signalName(signal), nullptr, {}, 0, false};
+    Crash crash{signalName(signal), nullptr, {}, 0, false, false};
+    crash.ranOutOfStack = signal == SIGSEGV && info && besideStackPointer(info, context);
     Dl_info where{};
     uintptr_t const faulted = faultingAddress(context);
     crash.jumpedOutOfCode = faulted && signal == SIGSEGV && !dladdr(reinterpret_cast<void*>(faulted), &where);

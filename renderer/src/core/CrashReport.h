@@ -20,6 +20,9 @@ struct Crash {
     /// The crash was a jump to an address in no loaded file: a return address or
     /// function pointer written over (most often by a write past a stack array).
     bool jumpedOutOfCode;
+    /// The crash touched memory right beside the stack pointer: the thread ran out
+    /// of stack (a function calling itself without end, or a very large local array).
+    bool ranOutOfStack;
 };
 
 /// Writes the offsets of a crash ("0x1a2b 0x1c3d ..."), for reporters.
