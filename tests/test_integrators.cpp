@@ -387,3 +387,32 @@ TEST_CASE("PxrVCM renders a caustic as a path tracer does, and finds it from a s
     CHECK(test::meanChannel(a, 0, kAll) == Approx(test::meanChannel(a2, 0, kAll)).epsilon(0.03));
     CHECK(noise(a, a2) < 0.75 * noise(b, b2));  // measured: 0.089 against 0.158
 }
+
+TEST_CASE("a Bxdf's evaluation domain is kept: no light through a reflecting surface where its shading normal bends",
+          "[integrators][domain]") {
+    // A square faces the camera, its shading normals bent 30 degrees toward +x; a
+    // point light behind it, off to +x, is above the shading normal's horizon
+    // and below the geometric one's. A Bxdf that declares reflection only
+    // (k_RixBXReflect) gets no light from it, whether or not it tests the
+    // geometric normal itself (bookdiffuse, written as the course text writes
+    // it, does not). The same light in front of the square lights it.
+    auto scene = [](std::string const& bxdf, std::string const& integrator, float lightZ) {
+        return "Format 8 8 1\nProjection \"perspective\" \"fov\" [20]\n" + integrator +
+               "\nWorldBegin\n  Translate 0 0 5\n"
+               "  LightSource \"pointlight\" 1 \"from\" [3 0 " + std::to_string(lightZ) + "] \"intensity\" [20]\n"
+               "  Bxdf \"" + bxdf + "\" \"m\"\n"
+               "  Polygon \"P\" [-1 -1 0  1 -1 0  1 1 0  -1 1 0]\n"
+               "          \"N\" [0.5 0 -0.866  0.5 0 -0.866  0.5 0 -0.866  0.5 0 -0.866]\n"
+               "WorldEnd\n";
+    };
+    for (std::string integrator : {"Integrator \"PxrDirectLighting\" \"d\"", "Integrator \"PxrPathTracer\" \"p\""})
+        for (std::string bxdf : {"bookdiffuse", "diffuse"}) {
+            INFO(integrator << ", " << bxdf);
+            RenderSettings settings;
+            settings.spp = 16;
+            auto behind = test::renderRib(scene(bxdf, integrator, 0.6f), settings);
+            auto inFront = test::renderRib(scene(bxdf, integrator, -0.6f), settings);
+            CHECK(test::meanChannel(behind, 0, kAll) == 0.0);
+            CHECK(test::meanChannel(inFront, 0, kAll) > 0.05);
+        }
+}

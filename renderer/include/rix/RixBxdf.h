@@ -35,19 +35,24 @@
 #include "RixRNG.h"
 #include "RixShading.h"
 
-/// Which side(s) of the surface a Bxdf scatters on, relative to the geometric
-/// normal: "outside" is the side Ngn points to.
+/// Where a Bxdf's EvaluateSample can return something other than zero: which
+/// sides of the surface V and L lie on, told by the geometric normal ("outside"
+/// is the side Ngn points to). The renderer's integrators take it at its word:
+/// a direction outside the domain gets no light, whatever EvaluateSample says,
+/// and a (non-discrete) sample GenerateSample makes there is dropped. The
+/// values are RenderMan's (bits to combine with |).
 enum RixBXEvaluateDomain {
-    k_RixBXEmptyDomain = 0,
-    k_RixBXOutsideReflect = 1,   ///< V and L both outside
-    k_RixBXInsideReflect = 2,    ///< V and L both inside
-    k_RixBXReflect = 3,          ///< reflection on either side (two-sided surfaces)
-    k_RixBXOutsideTransmit = 4,  ///< V outside, L inside
+    k_RixBXEmptyDomain = 0,      ///< scatters nothing (emits, or makes only discrete samples)
+    k_RixBXOutsideReflect = 1,   ///< V and L both outside (a closed opaque object)
+    k_RixBXOutsideTransmit = 2,  ///< V outside, L inside
+    k_RixBXInsideReflect = 4,    ///< V and L both inside
     k_RixBXInsideTransmit = 8,   ///< V inside, L outside
-    k_RixBXTransmit = 12,
-    k_RixBXOutside = 5,
-    k_RixBXInside = 10,
-    k_RixBXBoth = 15,            ///< everything
+    k_RixBXVolume = 16,          ///< a volume: no side, no surface cosine
+    k_RixBXReflect = k_RixBXOutsideReflect | k_RixBXInsideReflect,     ///< reflection on either side (two-sided)
+    k_RixBXTransmit = k_RixBXOutsideTransmit | k_RixBXInsideTransmit,
+    k_RixBXOutside = k_RixBXOutsideReflect | k_RixBXOutsideTransmit,   ///< light from the outside only
+    k_RixBXInside = k_RixBXInsideReflect | k_RixBXInsideTransmit,
+    k_RixBXBoth = k_RixBXReflect | k_RixBXTransmit,                    ///< every pair of sides
 };
 
 /// Which light transport the integrator is computing (direct from lights,

@@ -168,6 +168,10 @@ public:
         return sum;
     }
     void ClearActiveLobes() { m_activeMask = 0; m_numActive = 0; }
+    /// Renderer side: zeroes point i's weight in every active lobe.
+    void ZeroAtPoint(int i) {
+        for (int k = 0; k < m_numActive; ++k) m_slots[SlotOf(m_active[k])][i].Zero();
+    }
 
     static constexpr int k_numSlots =
         k_RixBXMaxNumDiffuseLobes + k_RixBXMaxNumSpecularLobes + k_RixBXMaxNumUserLobes;
