@@ -77,26 +77,18 @@ void reportOnStderr(Crash const& crash) {
     say(" built with AddressSanitizer stops at the first bad access (chapter 7).\n");
 }
 
-/// Where the crash happened: the instruction that faulted, as the kernel saw it.
-uintptr_t faultingAddress(void* context) {
+/// Two registers of the crashed thread, as the kernel saved them.
+enum class Register { ProgramCounter, StackPointer };
+uintptr_t registerAt(void* context, Register which) {
 #if defined(__x86_64__)
-    return static_cast<uintptr_t>(static_cast<ucontext_t*>(context)->uc_mcontext.gregs[REG_RIP]);
+    auto const& saved = static_cast<ucontext_t*>(context)->uc_mcontext.gregs;
+    return static_cast<uintptr_t>(which == Register::ProgramCounter ? saved[REG_RIP] : saved[REG_RSP]);
 #elif defined(__aarch64__)
-    return static_cast<uintptr_t>(static_cast<ucontext_t*>(context)->uc_mcontext.pc);
+    auto const& saved = static_cast<ucontext_t*>(context)->uc_mcontext;
+    return static_cast<uintptr_t>(which == Register::ProgramCounter ? saved.pc : saved.sp);
 #else
     (void)context;
-    return 0;
-#endif
-}
-
-/// The thread's stack pointer when it crashed.
-uintptr_t stackPointer(void* context) {
-#if defined(__x86_64__)
-    return static_cast<uintptr_t>(static_cast<ucontext_t*>(context)->uc_mcontext.gregs[REG_RSP]);
-#elif defined(__aarch64__)
-    return static_cast<uintptr_t>(static_cast<ucontext_t*>(context)->uc_mcontext.sp);
-#else
-    (void)context;
+    (void)which;
     return 0;
 #endif
 }
@@ -104,7 +96,8 @@ uintptr_t stackPointer(void* context) {
 /// Whether the memory a SIGSEGV was about lies within reach of the stack
 /// pointer: a page the stack would have grown into (its guard page).
 bool besideStackPointer(siginfo_t const* info, void* context) {
-    uintptr_t const address = reinterpret_cast<uintptr_t>(info->si_addr), sp = stackPointer(context);
+    uintptr_t const address = reinterpret_cast<uintptr_t>(info->si_addr);
+    uintptr_t const sp = registerAt(context, Register::StackPointer);
     uintptr_t const reach = 64 * 1024;  // a frame's worth either side
     return sp && address && address + reach > sp && address < sp + reach;
 }
@@ -113,7 +106,7 @@ bool besideStackPointer(siginfo_t const* info, void* context) {
 /// address it would have returned to, inside the code that called.
 uintptr_t returnAddressOfCall(void* context) {
 #if defined(__x86_64__)
-    return *reinterpret_cast<uintptr_t const*>(stackPointer(context));
+    return *reinterpret_cast<uintptr_t const*>(registerAt(context, Register::StackPointer));
 #elif defined(__aarch64__)
     return static_cast<uintptr_t>(static_cast<ucontext_t*>(context)->uc_mcontext.regs[30]);  // the link register
 #else
@@ -160,7 +153,7 @@ void onCrash(int signal, siginfo_t* info, void* context) {
     Crash crash{signalName(signal), nullptr, {}, 0, false, false};
     crash.ranOutOfStack = signal == SIGSEGV && info && besideStackPointer(info, context);
     Dl_info where{};
-    uintptr_t const faulted = faultingAddress(context);
+    uintptr_t const faulted = registerAt(context, Register::ProgramCounter);  // the instruction that faulted
     crash.jumpedOutOfCode = faulted && signal == SIGSEGV && !dladdr(reinterpret_cast<void*>(faulted), &where);
     if (char const* plugin = faulted ? pluginAt(reinterpret_cast<void*>(faulted), where) : nullptr)
         addOffset(crash, plugin, where, faulted);
