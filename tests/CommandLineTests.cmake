@@ -36,8 +36,8 @@ add_test(NAME cli.crashing_plugin
                  $<TARGET_FILE:rixrender> --quiet --spp 1 --plugin-path ${CMAKE_BINARY_DIR}/plugins/tests
                  ${BAD}/crashing-plugin.rib -o crashing-plugin.exr
          WORKING_DIRECTORY ${CLI_OUT})
-# A plugin that jumps to an address in no loaded file (its return address written over) is
-# not on the stack any more: rixrender says what such a jump most often means.
+# A plugin that jumps to an address in no loaded file (a function pointer or a return address
+# written over): rixrender names the plugin that made the jump and says what it most often means.
 add_test(NAME cli.plugin_jumps_out_of_code
          COMMAND env EXPECT_STATUS=139 sh ${CMAKE_CURRENT_SOURCE_DIR}/expect-failure.sh
                  "rixrender: crashed \\(SIGSEGV\\) in the plugin .*/probe_wild_jump.so at offsets? 0x[0-9a-f]+, jumping to an address that is no code: a return address or function pointer was written over"

@@ -47,7 +47,10 @@ void reportFailedCheck(crashreport::Crash const& crash) {
     say(crash.signal, true);
     say(") in ", true);
     say(g_call, true);
-    if (crash.ranOutOfStack) say(", having run out of stack (a function that calls itself without end?)", true);
+    if (char const* cause = crashreport::causeOf(crash)) {
+        say(", ", true);
+        say(cause, true);
+    }
     if (crash.plugin) {
         say(", at ", true);
         crashreport::sayOffsets(crash, true);

@@ -56,13 +56,11 @@ void reportOnStderr(Crash const& crash) {
         say(" at ");
         sayOffsets(crash);
     }
-    if (crash.jumpedOutOfCode) {
+    char const* cause = causeOf(crash);
+    if (cause && (crash.plugin || crash.jumpedOutOfCode)) {
         say(crash.plugin ? ", " : " ");
-        say("jumping to an address that is no code: a return address or function pointer was written over, "
-            "most often by a plugin writing past the end of an array on its stack (RixAlloca too small, an index "
-            "past numPts).");
-    } else if (crash.plugin && crash.ranOutOfStack) {
-        say(", having run out of stack: a function that calls itself without end, or a very large local array.");
+        say(cause);
+        say(".");
     } else if (crash.plugin) {
         say(".\n  Most often a pointer never set or an index past numPts.");
     } else {
@@ -193,6 +191,16 @@ void onCrash(int signal, siginfo_t* info, void* context) {
 }
 
 }  // namespace
+
+char const* causeOf(Crash const& crash) {
+    if (crash.jumpedOutOfCode)
+        return "jumping to an address that is no code: a return address or function pointer was written over, "
+               "most often by a plugin writing past the end of an array on its stack (RixAlloca too small, an "
+               "index past numPts)";
+    if (crash.ranOutOfStack)
+        return "having run out of stack: a function that calls itself without end, or a very large local array";
+    return nullptr;
+}
 
 void say(char const* text, bool toStdout) {
     ssize_t written = write(toStdout ? STDOUT_FILENO : STDERR_FILENO, text, std::strlen(text));

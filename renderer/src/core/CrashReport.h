@@ -25,6 +25,11 @@ struct Crash {
     bool ranOutOfStack;
 };
 
+/// What the circumstances of a crash say of its cause ("jumping to an address
+/// that is no code: ...", "having run out of stack: ..."), or null when they
+/// say nothing; for reporters.
+char const* causeOf(Crash const& crash);
+
 /// Writes the offsets of a crash ("0x1a2b 0x1c3d ..."), for reporters.
 void sayOffsets(Crash const& crash, bool toStdout = false);
 
