@@ -60,10 +60,13 @@ public:
 #endif
 #ifdef PROBE_RECURSES
         // Only on a thread the renderer started (not the one main() runs on), each call
-        // taking stack the optimiser cannot fold away.
+        // taking stack the optimiser cannot fold away. The main thread dawdles, so that
+        // on a busy machine it cannot finish every tile before a worker takes one.
         volatile char frame[256];
         frame[0] = 1;
-        if (frame[0] && syscall(SYS_gettid) != getpid()) GenerateSample(k_RixBXDirectLighting, nullptr, rng, sampled, Ln, W, FPdf, RPdf, nullptr);
+        bool const onMainThread = syscall(SYS_gettid) == getpid();
+        if (onMainThread) usleep(2000);
+        if (frame[0] && !onMainThread) GenerateSample(k_RixBXDirectLighting, nullptr, rng, sampled, Ln, W, FPdf, RPdf, nullptr);
 #endif
         RtColorRGB* w = W.AddActiveLobe(g_lobe);
         for (int i = 0; i < shadingCtx->numPts; ++i) {
