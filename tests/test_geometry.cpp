@@ -298,3 +298,58 @@ TEST_CASE("a shadow ray's answer for a sphere is the nearest-hit answer, for who
     CHECK(hits > 1000);  // both answers occur (1799 of 8000)
     CHECK(hits < 7000);
 }
+
+TEST_CASE("a whole sphere can be Embree's own sphere primitive: only when it is one, and with the same hits", "[geometry]") {
+    auto placed = [](std::string const& rib) {
+        Scene scene = sceneWith(rib);
+        return dynamic_cast<Quadric const&>(*scene.shapes[0]).placedSphere();
+    };
+    std::optional<Vec4> ball = placed("Translate 1 2 3\nRotate 30 1 1 0\nScale 1.5 1.5 1.5\nSphere 2 -2 2 360");
+    REQUIRE(ball.has_value());
+    CHECK(ball->x == Approx(1.0f));
+    CHECK(ball->z == Approx(3.0f));
+    CHECK(ball->w == Approx(3.0f));                                      // radius 2, scaled 1.5
+    CHECK(placed("Scale -1 1 1\nSphere 1 -1 1 360").has_value());        // a mirror is still a ball
+    CHECK_FALSE(placed("Sphere 1 -0.5 1 360").has_value());              // cut below
+    CHECK_FALSE(placed("Sphere 1 -1 1 300").has_value());                // swept short
+    CHECK_FALSE(placed("Scale 1 1 1.01\nSphere 1 -1 1 360").has_value());  // an ellipsoid
+    CHECK_FALSE(placed("ConcatTransform [1 0 0 0  0.2 1 0 0  0 0 1 0  0 0 0 1]\nSphere 1 -1 1 360").has_value());  // sheared
+    CHECK_FALSE(placed("Cylinder 1 -1 1 360").has_value());
+
+    // Both ways of intersecting find the same surface: distance, point,
+    // normal and (u, v), which the primitive's hits do not carry and the
+    // sphere works out from the hit point (checked here against the angles).
+    Scene scene = sceneWith("Translate 0.3 -0.2 5\nRotate 40 0.2 1 0.5\nScale 0.8 0.8 0.8\nSphere 1 -1 1 360");
+    RayTracer exact(scene, WholeSpheres::Exact), embree(scene, WholeSpheres::EmbreePrimitive);
+    auto const& sphere = dynamic_cast<Quadric const&>(*scene.shapes[0]);
+    uint32_t state = 99u;
+    auto uniform = [&] {
+        state = state * 1664525u + 1013904223u;
+        return static_cast<float>(state >> 8) / 16777216.0f;
+    };
+    int hits = 0;
+    for (int k = 0; k < 3000; ++k) {
+        Vec3 org = k % 2 ? Vec3(0.0f) : Vec3(0.3f, -0.2f, 5.0f) + 0.5f * Vec3(uniform() - 0.5f, uniform() - 0.5f, uniform() - 0.5f);
+        Vec3 target = Vec3(0.3f, -0.2f, 5.0f) + 2.0f * Vec3(uniform() - 0.5f, uniform() - 0.5f, uniform() - 0.5f);
+        Vec3 dir = glm::normalize(target - org);
+        HitRecord a = trace(exact, org, dir), b = trace(embree, org, dir);
+        float miss = glm::length(glm::cross(Vec3(0.3f, -0.2f, 5.0f) - org, dir)) - 0.8f;  // distance past the silhouette
+        if (std::abs(miss) < 1e-4f) continue;                                             // grazing: either answer
+        REQUIRE(a.hit() == b.hit());
+        if (!a.hit()) continue;
+        ++hits;
+        CHECK(b.t == Approx(a.t).epsilon(1e-5).margin(1e-5));
+        SurfaceBasics sa = sphere.basics(a), sb = sphere.basics(b);
+        CHECK(glm::length(sa.P - sb.P) < 1e-4f);
+        CHECK(glm::dot(sa.Ng, sb.Ng) > 1.0f - 1e-6f);
+        Vec3 local = transformPoint(sphere.worldToObject(), sa.P);  // on the unit sphere about the origin
+        float phi = std::atan2(local.y, local.x);
+        float u = (phi < 0.0f ? phi + 2.0f * kPi : phi) / (2.0f * kPi);
+        float v = 1.0f - std::acos(std::clamp(local.z, -1.0f, 1.0f)) / kPi;
+        for (SurfaceBasics const& s : {sa, sb}) {
+            CHECK(std::min(std::abs(s.u - u), 1.0f - std::abs(s.u - u)) < 1e-4f);  // (u wraps at the seam)
+            CHECK(s.v == Approx(v).margin(1e-4));
+        }
+    }
+    CHECK(hits > 1000);  // inside and outside, near and far
+}

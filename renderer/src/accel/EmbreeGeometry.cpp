@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <optional>
 #include <vector>
 
 #include "scene/shapes/Curves.h"
@@ -132,7 +133,7 @@ private:
 
 class GeometryBuilder final : public ShapeVisitor {
 public:
-    explicit GeometryBuilder(RTCDevice device) : m_device(device) {}
+    GeometryBuilder(RTCDevice device, bool embreeSpheres) : m_device(device), m_embreeSpheres(embreeSpheres) {}
     RTCGeometry geometry() const { return m_geometry; }
 
     void visit(TriangleMesh const& mesh) override {
@@ -149,6 +150,12 @@ public:
     }
 
     void visit(Quadric const& quadric) override {
+        std::optional<Vec4> ball = m_embreeSpheres ? quadric.placedSphere() : std::nullopt;
+        if (ball) {
+            m_geometry = pointGeometry(m_device, RTC_GEOMETRY_TYPE_SPHERE_POINT, {*ball});
+            rtcCommitGeometry(m_geometry);
+            return;
+        }
         m_geometry = rtcNewGeometry(m_device, RTC_GEOMETRY_TYPE_USER);
         rtcSetGeometryUserPrimitiveCount(m_geometry, 1);
         rtcSetGeometryUserData(m_geometry, const_cast<Quadric*>(&quadric));
@@ -207,13 +214,14 @@ public:
 
 private:
     RTCDevice m_device;
+    bool m_embreeSpheres;
     RTCGeometry m_geometry = nullptr;
 };
 
 }  // namespace
 
-RTCGeometry buildEmbreeGeometry(RTCDevice device, Shape const& shape) {
-    GeometryBuilder builder(device);
+RTCGeometry buildEmbreeGeometry(RTCDevice device, Shape const& shape, bool embreeSpheres) {
+    GeometryBuilder builder(device, embreeSpheres);
     shape.accept(builder);
     return builder.geometry();
 }

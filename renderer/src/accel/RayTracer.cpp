@@ -50,7 +50,7 @@ RTCRay makeRay(Vec3 const& org, Vec3 const& dir, float tnear, float tfar) {
 
 }  // namespace
 
-RayTracer::RayTracer(Scene const& scene) {
+RayTracer::RayTracer(Scene const& scene, WholeSpheres wholeSpheres) {
     m_device = rtcNewDevice(nullptr);
     if (!m_device) throw RenderError("cannot create the Embree device (error " + std::to_string(rtcGetDeviceError(nullptr)) + ")");
     rtcSetDeviceErrorFunction(m_device, reportEmbreeError, &g_lastEmbreeError);
@@ -66,7 +66,7 @@ RayTracer::RayTracer(Scene const& scene) {
 
     for (size_t id = 0; id < scene.shapes.size(); ++id) {
         Shape const& shape = *scene.shapes[id];
-        RTCGeometry geometry = buildEmbreeGeometry(m_device, shape);
+        RTCGeometry geometry = buildEmbreeGeometry(m_device, shape, wholeSpheres == WholeSpheres::EmbreePrimitive);
         check(m_device, "build a geometry");
         unsigned geomID = static_cast<unsigned>(id);
         if (allVisible) {

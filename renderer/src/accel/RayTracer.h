@@ -41,10 +41,16 @@ struct RayCounters {
     }
 };
 
+/// How whole spheres (see Quadric::placedSphere) are intersected: by the
+/// quadric's own exact code in double precision, as every other quadric is
+/// (the default, and the faster on the course scenes), or by Embree's own
+/// sphere primitive in single precision; rixbench times the two.
+enum class WholeSpheres { Exact, EmbreePrimitive };
+
 class RayTracer {
 public:
     /// Builds the acceleration structures; throws RenderError on Embree failure.
-    explicit RayTracer(Scene const& scene);
+    explicit RayTracer(Scene const& scene, WholeSpheres wholeSpheres = WholeSpheres::Exact);
     ~RayTracer();
     RayTracer(RayTracer const&) = delete;
     RayTracer& operator=(RayTracer const&) = delete;

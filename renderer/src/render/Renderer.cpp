@@ -314,7 +314,7 @@ Renderer::Renderer(Scene& scene, RenderSettings settings, Diagnostics& diagnosti
         if (!r.camera->hasLens() && light->boundingSphere(center, radius) && !r.camera->mightSee(center, radius)) continue;
         r.cameraLights.push_back(light.get());
     }
-    r.tracer = std::make_unique<RayTracer>(scene);
+    r.tracer = std::make_unique<RayTracer>(scene, settings.wholeSpheres);
     warnIfNothingInFront(*r.tracer, scene, diagnostics);
     r.shader = std::make_unique<BatchShader>(scene, r.materials, r.camera->pixelSpread(), r.counters, diagnostics,
                                              r.textures.get());

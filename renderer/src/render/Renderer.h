@@ -26,6 +26,7 @@ struct RenderSettings {
     bool progress = false;
     std::string pluginPath;  ///< --plugin-path
     int tileSize = 16;
+    WholeSpheres wholeSpheres = WholeSpheres::Exact;  ///< see RayTracer
 };
 
 struct RenderStats {

@@ -33,11 +33,15 @@ SurfaceBasics Quadric::basics(HitRecord const& hit) const {
     // magnitudes involved in the transform. Bound it generously.
     Vec3 magnitude = m_absoluteLinear * glm::abs(local.P) + glm::abs(Vec3(m_objectToWorld[3]));
     out.pError = 4e-6f * magnitude + Vec3(1e-7f);
-    out.u = hit.u;
-    out.v = hit.v;
-    out.s = hit.u;
-    out.t = hit.v;
+    Uv uv = parametersAtHit(hit);
+    out.u = out.s = uv.u;
+    out.v = out.t = uv.v;
     return out;
+}
+
+void Quadric::primvar(Primvar const& var, HitRecord const& hit, float* out) const {
+    Uv uv = parametersAtHit(hit);
+    primvarAtCorners(var, uv.u, uv.v, out);
 }
 
 SurfaceTangents Quadric::tangents(HitRecord const& hit) const {

@@ -9,6 +9,30 @@ namespace bxdflab {
 
 using quadric::solveQuadratic;
 
+namespace {
+
+/// The ball a whole sphere of this radius becomes under `toWorld`, when its
+/// linear part is a rotation (or a mirror) times a uniform scale. The
+/// tolerance keeps the ball within a millionth of the radius of the exact
+/// surface, well inside the offset at which a ray leaving the surface starts
+/// (four millionths, Quadric::basics' error bound), so that such a ray does
+/// not find the sphere it leaves.
+std::optional<Vec4> ballOf(Mat4 const& toWorld, float radius) {
+    constexpr float kTolerance = 1e-6f;
+    Mat3 linear(toWorld);
+    float const lengths[3] = {glm::length(linear[0]), glm::length(linear[1]), glm::length(linear[2])};
+    float const scale = (lengths[0] + lengths[1] + lengths[2]) / 3.0f;
+    Vec3 const centre(toWorld[3]);
+    if (!(scale > 0.0f) || !std::isfinite(scale) || !std::isfinite(centre.x + centre.y + centre.z)) return std::nullopt;
+    for (int i = 0; i < 3; ++i) {
+        if (std::abs(lengths[i] - scale) > kTolerance * scale) return std::nullopt;
+        if (std::abs(glm::dot(linear[i], linear[(i + 1) % 3])) > kTolerance * scale * scale) return std::nullopt;
+    }
+    return Vec4(centre, radius * scale);
+}
+
+}  // namespace
+
 Sphere::Sphere(float radius, float zmin, float zmax, float thetaMaxDegrees, Mat4 const& toWorld, bool reverse)
     : Quadric(toWorld, reverse, thetaMaxDegrees), m_radius(radius) {
     m_zMin = std::clamp(static_cast<double>(std::min(zmin, zmax)), -m_radius, m_radius);
@@ -16,6 +40,7 @@ Sphere::Sphere(float radius, float zmin, float zmax, float thetaMaxDegrees, Mat4
     m_thetaZMin = std::acos(m_zMin / m_radius);
     m_thetaZMax = std::acos(m_zMax / m_radius);
     m_whole = m_zMin <= -m_radius && m_zMax >= m_radius && phiMax() >= quadric::kTwoPi;
+    if (m_whole && m_radius > 0.0) m_placed = ballOf(toWorld, static_cast<float>(m_radius));
 }
 
 bool Sphere::hitsLocal(DVec3 const& o, DVec3 const& d, double tnear, double tfar) const {
@@ -33,14 +58,29 @@ std::optional<Quadric::LocalHit> Sphere::intersectLocal(DVec3 const& o, DVec3 co
     if (!solveQuadratic(glm::dot(d, d), 2.0 * glm::dot(o, d), glm::dot(o, o) - m_radius * m_radius, t0, t1))
         return std::nullopt;
     return firstRoot(t0, t1, tnear, tfar, [&](double t) -> std::optional<Uv> {
+        if (m_whole) return Uv{0.0f, 0.0f};  // parametersAtHit works them out for the hit shaded
         DVec3 p = o + t * d;
-        p *= m_radius / glm::length(p);  // reproject onto the surface
-        if (p.x == 0.0 && p.y == 0.0) p.x = 1e-9 * m_radius;
-        if ((m_zMin > -m_radius && p.z < m_zMin) || (m_zMax < m_radius && p.z > m_zMax)) return std::nullopt;
-        double theta = std::acos(std::clamp(p.z / m_radius, -1.0, 1.0));
-        double v = (theta - m_thetaZMin) / (m_thetaZMax - m_thetaZMin);
-        return swept(azimuth(p.x, p.y), std::clamp(v, 0.0, 1.0));
+        return parametersOf(p * (m_radius / glm::length(p)));  // reprojected onto the surface
     });
+}
+
+std::optional<Quadric::Uv> Sphere::parametersOf(DVec3 p) const {
+    if (p.x == 0.0 && p.y == 0.0) p.x = 1e-9 * m_radius;
+    if ((m_zMin > -m_radius && p.z < m_zMin) || (m_zMax < m_radius && p.z > m_zMax)) return std::nullopt;
+    double theta = std::acos(std::clamp(p.z / m_radius, -1.0, 1.0));
+    double v = (theta - m_thetaZMin) / (m_thetaZMax - m_thetaZMin);
+    return swept(azimuth(p.x, p.y), std::clamp(v, 0.0, 1.0));
+}
+
+Quadric::Uv Sphere::parametersAtHit(HitRecord const& hit) const {
+    if (!m_whole) return Quadric::parametersAtHit(hit);
+    return parametersOf(pointOnSphere(hit)).value_or(Uv{0.0f, 0.0f});  // (a whole sphere refuses no point)
+}
+
+DVec3 Sphere::pointOnSphere(HitRecord const& hit) const {
+    DVec3 p = hitPointLocal(hit);
+    double length = glm::length(p);
+    return length > 0.0 ? p * (m_radius / length) : DVec3(0.0, 0.0, m_radius);
 }
 
 Quadric::LocalSurface Sphere::surfaceLocal(float u, float v) const {
@@ -55,13 +95,10 @@ Quadric::LocalSurface Sphere::surfaceLocal(float u, float v) const {
 Quadric::LocalSurface Sphere::surfaceAtHit(HitRecord const& hit) const {
     // The hit point put back on the sphere: no trigonometry, and as exact as
     // the point evaluated from (u, v).
-    DVec3 p = hitPointLocal(hit);
-    double length = glm::length(p);
-    if (!(length > 0.0)) return surfaceLocal(hit.u, hit.v);
-    p *= m_radius / length;
+    DVec3 p = pointOnSphere(hit);
     double rho = std::sqrt(p.x * p.x + p.y * p.y);
     if (!(rho > 0.0)) {  // a pole: the azimuth is u's
-        double phi = hit.u * phiMax();
+        double phi = parametersAtHit(hit).u * phiMax();
         return surfaceAt(p, std::cos(phi), std::sin(phi));
     }
     return surfaceAt(p, p.x / rho, p.y / rho);
