@@ -133,11 +133,14 @@ double peakMemoryMB(fs::path const& rixrender, std::string const& scene, int spp
 /// context each): large batches amortise every per-batch cost.
 void printBatchStatistics(RenderStats const& stats) {
     double const batches = static_cast<double>(std::max<uint64_t>(1, stats.batches));
-    std::printf("shading: %llu points in %llu batches, %.0f points per batch; %.0f%% of the points asked for tangents\n",
+    auto percentOfSurface = [&](uint64_t points) {
+        return stats.surfacePoints ? 100.0 * static_cast<double>(points) / static_cast<double>(stats.surfacePoints) : 0.0;
+    };
+    std::printf("shading: %llu points in %llu batches, %.0f points per batch; %.0f%% of the points asked for (u, v, s, t), "
+                "%.0f%% for tangents\n",
                 static_cast<unsigned long long>(stats.shadePoints), static_cast<unsigned long long>(stats.batches),
-                static_cast<double>(stats.shadePoints) / batches,
-                stats.surfacePoints ? 100.0 * static_cast<double>(stats.tangentPoints) / static_cast<double>(stats.surfacePoints)
-                                    : 0.0);
+                static_cast<double>(stats.shadePoints) / batches, percentOfSurface(stats.parameterPoints),
+                percentOfSurface(stats.tangentPoints));
 }
 
 /// Whole spheres through the quadric's exact code (the default) against

@@ -68,7 +68,7 @@ TEST_CASE("sphere: hit distance, outward normal and RI parameterisation", "[geom
     SurfaceBasics b = scene.shapes[0]->basics(hit);
     CHECK(b.P.z == Approx(3.0f).epsilon(1e-6));
     CHECK(b.Ng.z == Approx(-1.0f).epsilon(1e-6));  // outward, toward the camera
-    CHECK(b.v == Approx(0.0f).margin(1e-4));       // z = zmin: v = 0 (v grows with z)
+    CHECK(scene.shapes[0]->parameters(hit).v == Approx(0.0f).margin(1e-4));  // z = zmin: v = 0 (v grows with z)
     auto const& sphere = dynamic_cast<Quadric const&>(*scene.shapes[0]);
     for (float u : {0.1f, 0.5f, 0.9f})
         for (float v : {0.2f, 0.5f, 0.8f}) checkDerivatives(sphere, u, v);
@@ -112,7 +112,7 @@ TEST_CASE("cylinder and disk: hits, normals and derivatives", "[geometry]") {
     CHECK(side.geomID == 0u);
     CHECK(side.t == Approx(4.0f).epsilon(1e-6));
     CHECK(scene.shapes[0]->basics(side).Ng.x == Approx(1.0f).epsilon(1e-6));
-    CHECK(scene.shapes[0]->basics(side).v == Approx(0.75f).epsilon(1e-5));
+    CHECK(scene.shapes[0]->parameters(side).v == Approx(0.75f).epsilon(1e-5));
 
     HitRecord cap = trace(tracer, Vec3(1, 0.2f, 10), Vec3(0, 0, -1));
     REQUIRE(cap.hit());
@@ -120,7 +120,7 @@ TEST_CASE("cylinder and disk: hits, normals and derivatives", "[geometry]") {
     CHECK(cap.t == Approx(10.0f - 3.5f).epsilon(1e-6));
     SurfaceBasics disk = scene.shapes[1]->basics(cap);
     CHECK(disk.Ng.z == Approx(1.0f).epsilon(1e-6));
-    CHECK(disk.v == Approx(1.0f - std::sqrt(1.04f) / 2.0f).epsilon(1e-4));
+    CHECK(scene.shapes[1]->parameters(cap).v == Approx(1.0f - std::sqrt(1.04f) / 2.0f).epsilon(1e-4));
     // thetamax 270: the quadrant x > 0, y < 0 is missing.
     CHECK_FALSE(trace(tracer, Vec3(1, -0.5f, 10), Vec3(0, 0, -1)).hit());
     checkDerivatives(dynamic_cast<Quadric const&>(*scene.shapes[0]), 0.3f, 0.6f);
@@ -147,8 +147,9 @@ TEST_CASE("PointsPolygons: vertex normals and st are interpolated", "[geometry]"
     HitRecord hit = trace(tracer, Vec3(0.25f, 0.75f, 0), Vec3(0, 0, 1));
     REQUIRE(hit.hit());
     SurfaceBasics b = scene.shapes[0]->basics(hit);
-    CHECK(b.s == Approx(0.25f).epsilon(1e-5));
-    CHECK(b.t == Approx(0.75f).epsilon(1e-5));
+    SurfaceParameters at = scene.shapes[0]->parameters(hit);
+    CHECK(at.s == Approx(0.25f).epsilon(1e-5));
+    CHECK(at.t == Approx(0.75f).epsilon(1e-5));
     CHECK(b.N.z == Approx(-1.0f));
     CHECK(b.Ng.z == Approx(-1.0f));  // follows the authored normals
     SurfaceTangents t = scene.shapes[0]->tangents(hit);
@@ -217,8 +218,9 @@ TEST_CASE("a hyperboloid with both points at one height is a flat ring", "[geome
             CHECK(a.t == Approx(b.t).epsilon(1e-5));
             SurfaceBasics sa = flat.shapes[0]->basics(a), sb = disk.shapes[0]->basics(b);
             CHECK(sa.Ng.z == Approx(-sb.Ng.z));
-            CHECK(sa.u == Approx(sb.u).margin(1e-4));
-            CHECK(sa.v == Approx(1.0f - sb.v).margin(1e-4));
+            SurfaceParameters pa = flat.shapes[0]->parameters(a), pb = disk.shapes[0]->parameters(b);
+            CHECK(pa.u == Approx(pb.u).margin(1e-4));
+            CHECK(pa.v == Approx(1.0f - pb.v).margin(1e-4));
         }
     CHECK(hits > 100);
     // A ring from 0.5 to 1, a quarter of it: only those points.
@@ -233,8 +235,9 @@ TEST_CASE("a hyperboloid with both points at one height is a flat ring", "[geome
     REQUIRE(at.hit());
     CHECK(at.t == Approx(3.0f));
     SurfaceBasics const atRing = ring.shapes[0]->basics(at);
-    CHECK(atRing.u == Approx(0.5f / (0.5f * kPi)).epsilon(1e-4));
-    CHECK(atRing.v == Approx(0.5f).epsilon(1e-4));
+    SurfaceParameters const ringParameters = ring.shapes[0]->parameters(at);
+    CHECK(ringParameters.u == Approx(0.5f / (0.5f * kPi)).epsilon(1e-4));
+    CHECK(ringParameters.v == Approx(0.5f).epsilon(1e-4));
     CHECK(atRing.Ng.z == Approx(-1.0f));  // dPdu x dPdv, as for the ring above
 }
 
@@ -346,7 +349,7 @@ TEST_CASE("a whole sphere can be Embree's own sphere primitive: only when it is 
         float phi = std::atan2(local.y, local.x);
         float u = (phi < 0.0f ? phi + 2.0f * kPi : phi) / (2.0f * kPi);
         float v = 1.0f - std::acos(std::clamp(local.z, -1.0f, 1.0f)) / kPi;
-        for (SurfaceBasics const& s : {sa, sb}) {
+        for (SurfaceParameters const& s : {sphere.parameters(a), sphere.parameters(b)}) {
             CHECK(std::min(std::abs(s.u - u), 1.0f - std::abs(s.u - u)) < 1e-4f);  // (u wraps at the seam)
             CHECK(s.v == Approx(v).margin(1e-4));
         }

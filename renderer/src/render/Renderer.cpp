@@ -448,7 +448,7 @@ Film Renderer::render() {
     // The stats describe this render alone, however many came before it.
     r.tracer->counters().reset();
     for (auto* counter : {&r.counters.shadePoints, &r.counters.batches, &r.counters.builtins.surfacePoints,
-                          &r.counters.builtins.tangentPoints, &r.patternCounters.evaluations,
+                          &r.counters.builtins.parameterPoints, &r.counters.builtins.tangentPoints, &r.patternCounters.evaluations,
                           &r.patternCounters.points, &r.nonFinite, &r.invalidPdf})
         *counter = 0;
     uint64_t const lookupsBefore = r.textures ? r.textures->lookups() : 0;
@@ -477,6 +477,7 @@ Film Renderer::render() {
     m_stats.shadePoints = r.counters.shadePoints.load();
     m_stats.batches = r.counters.batches.load();
     m_stats.surfacePoints = r.counters.builtins.surfacePoints.load();
+    m_stats.parameterPoints = r.counters.builtins.parameterPoints.load();
     m_stats.tangentPoints = r.counters.builtins.tangentPoints.load();
     m_stats.patternEvaluations = r.patternCounters.evaluations.load();
     m_stats.patternPoints = r.patternCounters.points.load();
@@ -520,7 +521,8 @@ nlohmann::json RenderStats::toJson(Diagnostics const& diagnostics) const {
         {"rays", {{"camera", cameraRays}, {"shadow", shadowRays}, {"indirect", indirectRays}}},
         {"shade_points", shadePoints},
         {"batches", batches},
-        {"builtins", {{"surface_points", surfacePoints}, {"tangent_points", tangentPoints}}},
+        {"builtins",
+         {{"surface_points", surfacePoints}, {"parameter_points", parameterPoints}, {"tangent_points", tangentPoints}}},
         {"patterns", {{"evaluations", patternEvaluations}, {"points", patternPoints}, {"texture_lookups", textureLookups}}},
         {"nonfinite_samples", nonFiniteSamples},
         {"invalid_pdf_samples", invalidPdfSamples},

@@ -90,37 +90,44 @@ void ShadingContextImpl::computeSurfaceGroup() const {
     auto* P = m_arena.allocArray<RtPoint3>(static_cast<size_t>(numPts));
     auto* Nn = m_arena.allocArray<RtNormal3>(static_cast<size_t>(numPts));
     auto* Ngn = m_arena.allocArray<RtNormal3>(static_cast<size_t>(numPts));
-    float* uvst[4];
-    for (auto& array : uvst) array = m_arena.allocArray<float>(static_cast<size_t>(numPts));
     auto* biasR = m_arena.allocArray<float>(static_cast<size_t>(numPts));
     for (int i = 0; i < numPts; ++i) {
-        Shape const& shape = *m_scene.shapes[m_hits[i].geomID];
-        SurfaceBasics b = shape.basics(m_hits[i]);
-        if (shape.hasTextureCoordinates) {
-            float const* c = shape.textureCoordinates;
-            float u = b.u, v = b.v;
-            b.s = (1 - u) * (1 - v) * c[0] + u * (1 - v) * c[2] + (1 - u) * v * c[4] + u * v * c[6];
-            b.t = (1 - u) * (1 - v) * c[1] + u * (1 - v) * c[3] + (1 - u) * v * c[5] + u * v * c[7];
-        }
+        SurfaceBasics b = m_scene.shapes[m_hits[i].geomID]->basics(m_hits[i]);
         P[i] = toRt(b.P);
         Nn[i] = toRt(b.N);
         Ngn[i] = toRt(b.Ng);
-        uvst[0][i] = b.u;
-        uvst[1][i] = b.v;
-        uvst[2][i] = b.s;
-        uvst[3][i] = b.t;
         // P's error bound projected on the normal: the offset that clears it.
         biasR[i] = glm::dot(glm::abs(b.Ng), b.pError);
     }
     m_builtins[k_P] = P;
     m_builtins[k_Nn] = Nn;
     m_builtins[k_Ngn] = Ngn;
+    m_builtins[k_biasR] = biasR;
+    m_counters.surfacePoints.fetch_add(static_cast<uint64_t>(numPts), std::memory_order_relaxed);
+}
+
+void ShadingContextImpl::computeParameterGroup() const {
+    float* uvst[4];
+    for (auto& array : uvst) array = m_arena.allocArray<float>(static_cast<size_t>(numPts));
+    for (int i = 0; i < numPts; ++i) {
+        Shape const& shape = *m_scene.shapes[m_hits[i].geomID];
+        SurfaceParameters p = shape.parameters(m_hits[i]);
+        if (shape.hasTextureCoordinates) {  // TextureCoordinates: (s, t) between four corners
+            float const* c = shape.textureCoordinates;
+            float u = p.u, v = p.v;
+            p.s = (1 - u) * (1 - v) * c[0] + u * (1 - v) * c[2] + (1 - u) * v * c[4] + u * v * c[6];
+            p.t = (1 - u) * (1 - v) * c[1] + u * (1 - v) * c[3] + (1 - u) * v * c[5] + u * v * c[7];
+        }
+        uvst[0][i] = p.u;
+        uvst[1][i] = p.v;
+        uvst[2][i] = p.s;
+        uvst[3][i] = p.t;
+    }
     m_builtins[k_u] = uvst[0];
     m_builtins[k_v] = uvst[1];
     m_builtins[k_s] = uvst[2];
     m_builtins[k_t] = uvst[3];
-    m_builtins[k_biasR] = biasR;
-    m_counters.surfacePoints.fetch_add(static_cast<uint64_t>(numPts), std::memory_order_relaxed);
+    m_counters.parameterPoints.fetch_add(static_cast<uint64_t>(numPts), std::memory_order_relaxed);
 }
 
 void ShadingContextImpl::computeView() const {
@@ -178,6 +185,10 @@ int ShadingContextImpl::Builtin(BuiltinId id, RixSCType wanted, void const** res
             case k_dPdv:
             case k_du:
             case k_dv: computeTangentGroup(); break;
+            case k_u:
+            case k_v:
+            case k_s:
+            case k_t: computeParameterGroup(); break;
             default: computeSurfaceGroup(); break;
         }
     }

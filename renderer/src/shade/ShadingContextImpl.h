@@ -1,9 +1,10 @@
 // The renderer's RixShadingContext: a batch of hits on one Bxdf instance.
 //
-// Builtins are computed lazily, in two groups, the first time anyone (a
+// Builtins are computed lazily, in three groups, the first time anyone (a
 // plugin or the integrator) asks for one of them:
-//   surface group   P, Nn, Ngn, u, v, s, t   (one Shape::basics call per point)
-//   tangent group   dPdu, dPdv, Tn, du, dv   (one Shape::tangents call per point)
+//   surface group    P, Nn, Ngn, biasR        (one Shape::basics call per point)
+//   parameter group  u, v, s, t               (one Shape::parameters call per point)
+//   tangent group    dPdu, dPdv, Tn, du, dv   (one Shape::tangents call per point)
 // Vn and VLen come straight from the rays. The counters record how many
 // points each group was computed for, which the tests and stats use to prove
 // that nothing was computed that no one needed.
@@ -43,6 +44,7 @@ bool isFloatBuiltin(RixShadingContext::BuiltinId id);
 
 struct BuiltinCounters {
     std::atomic<uint64_t> surfacePoints{0};  ///< points whose surface group was computed
+    std::atomic<uint64_t> parameterPoints{0};  ///< points whose parameter group was computed
     std::atomic<uint64_t> tangentPoints{0};  ///< points whose tangent group was computed
 };
 
@@ -92,6 +94,7 @@ private:
     RixSCDetail primvarOverride(NodeParams const& node, int id, RixSCType wanted, size_t elementSize,
                                 void const** result, void const* dflt) const;
     void computeSurfaceGroup() const;
+    void computeParameterGroup() const;
     void computeTangentGroup() const;
     void computeView() const;
 

@@ -23,9 +23,7 @@ SurfaceBasics Curves::basics(HitRecord const& hit) const {
     float P[4];
     m_evaluator->evaluate(hit.primID, hit.u, hit.v, P, nullptr, nullptr, 4);
     out.pError = glm::max(out.pError, Vec3(0.02f * std::abs(P[3])));
-    out.u = out.s = hit.u;  // along the segment
-    out.v = out.t = hit.v;
-    return out;
+    return out;  // (u along the segment: the hit's own parameters)
 }
 
 SurfaceTangents Curves::tangents(HitRecord const& hit) const {
@@ -43,8 +41,6 @@ SurfaceBasics Points::basics(HitRecord const& hit) const {
     Vec4 const& s = m_spheres[hit.primID];
     Vec3 n = safeNormalize(out.P - Vec3(s));
     if (n != Vec3(0.0f)) out.Ng = out.N = n;
-    out.u = out.s = hit.u;
-    out.v = out.t = hit.v;
     return out;
 }
 

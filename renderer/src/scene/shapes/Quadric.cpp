@@ -33,15 +33,12 @@ SurfaceBasics Quadric::basics(HitRecord const& hit) const {
     // magnitudes involved in the transform. Bound it generously.
     Vec3 magnitude = m_absoluteLinear * glm::abs(local.P) + glm::abs(Vec3(m_objectToWorld[3]));
     out.pError = 4e-6f * magnitude + Vec3(1e-7f);
-    Uv uv = parametersAtHit(hit);
-    out.u = out.s = uv.u;
-    out.v = out.t = uv.v;
     return out;
 }
 
-void Quadric::primvar(Primvar const& var, HitRecord const& hit, float* out) const {
+SurfaceParameters Quadric::parameters(HitRecord const& hit) const {
     Uv uv = parametersAtHit(hit);
-    primvarAtCorners(var, uv.u, uv.v, out);
+    return {uv.u, uv.v, uv.u, uv.v};
 }
 
 SurfaceTangents Quadric::tangents(HitRecord const& hit) const {

@@ -59,8 +59,7 @@ public:
     /// uniform scale, so that Embree's own sphere primitive can intersect it
     /// (its hits carry no (u, v)); nothing otherwise.
     virtual std::optional<Vec4> placedSphere() const { return std::nullopt; }
-    /// Primvars interpolated over the hit's (u, v).
-    void primvar(Primvar const& var, HitRecord const& hit, float* out) const override;
+    SurfaceParameters parameters(HitRecord const& hit) const override;
 
     Mat4 const& objectToWorld() const { return m_objectToWorld; }
     Mat4 const& worldToObject() const { return m_worldToObject; }

@@ -47,6 +47,11 @@ struct SurfaceBasics {
     Vec3 Ng{0.0f, 0.0f, 1.0f};  ///< unit geometric normal, pointing "outside"
     Vec3 N{0.0f, 0.0f, 1.0f};   ///< unit shading normal
     Vec3 pError{0.0f};          ///< conservative per-axis bound on the error in P
+};
+
+/// Where a hit lies on its surface: the surface parameters (u, v) and the
+/// texture coordinates (s, t), which are (u, v) unless the shape has its own.
+struct SurfaceParameters {
     float u = 0.0f, v = 0.0f, s = 0.0f, t = 0.0f;
 };
 
@@ -92,10 +97,14 @@ public:
     virtual void accept(ShapeVisitor& visitor) const = 0;
     virtual SurfaceBasics basics(HitRecord const& hit) const = 0;
     virtual SurfaceTangents tangents(HitRecord const& hit) const = 0;
+    /// (u, v, s, t) at a hit: by default the (u, v) the hit carries, for both.
+    virtual SurfaceParameters parameters(HitRecord const& hit) const { return {hit.u, hit.v, hit.u, hit.v}; }
     /// The value of one of this shape's primvars at a hit (`out` receives
-    /// var.components floats). Shapes with per-vertex or per-face values override it.
+    /// var.components floats), interpolated over (u, v) between its corners.
+    /// Shapes with per-vertex or per-face values override it.
     virtual void primvar(Primvar const& var, HitRecord const& hit, float* out) const {
-        primvarAtCorners(var, hit.u, hit.v, out);
+        SurfaceParameters at = parameters(hit);
+        primvarAtCorners(var, at.u, at.v, out);
     }
 
     int material = -1;  ///< index into Scene::materials

@@ -17,8 +17,6 @@ SurfaceBasics SubdivisionSurface::basics(HitRecord const& hit) const {
     out.Ng = m_orientation * facet;
     out.N = limitNormal == Vec3(0.0f) ? out.Ng : m_orientation * limitNormal;
     if (glm::dot(out.Ng, out.N) < 0.0f) out.Ng = -out.Ng;
-    out.u = out.s = hit.u;
-    out.v = out.t = hit.v;
     return out;
 }
 

@@ -26,7 +26,7 @@ void TriangleMesh::primvar(Primvar const& var, HitRecord const& hit, float* out)
     for (size_t k = 0; k < c; ++k) out[k] = var.values[k];
 }
 
-Vec2 TriangleMesh::parameters(unsigned prim, float b1, float b2) const {
+Vec2 TriangleMesh::uvAt(unsigned prim, float b1, float b2) const {
     if (!m_data.uv.empty()) return interpolate(m_data.uv, prim, b1, b2);
     return Vec2(b1, b2);
 }
@@ -53,13 +53,13 @@ SurfaceBasics TriangleMesh::basics(HitRecord const& hit) const {
     } else {
         out.N = out.Ng;
     }
-    Vec2 uv = parameters(hit.primID, b1, b2);
-    out.u = uv.x;
-    out.v = uv.y;
-    Vec2 st = m_data.st.empty() ? uv : interpolate(m_data.st, hit.primID, b1, b2);
-    out.s = st.x;
-    out.t = st.y;
     return out;
+}
+
+SurfaceParameters TriangleMesh::parameters(HitRecord const& hit) const {
+    Vec2 uv = uvAt(hit.primID, hit.u, hit.v);
+    Vec2 st = m_data.st.empty() ? uv : interpolate(m_data.st, hit.primID, hit.u, hit.v);
+    return {uv.x, uv.y, st.x, st.y};
 }
 
 SurfaceTangents TriangleMesh::tangents(HitRecord const& hit) const {

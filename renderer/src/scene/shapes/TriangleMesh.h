@@ -54,6 +54,8 @@ public:
     void accept(ShapeVisitor& visitor) const override { visitor.visit(*this); }
     SurfaceBasics basics(HitRecord const& hit) const override;
     SurfaceTangents tangents(HitRecord const& hit) const override;
+    /// (u, v) from the mesh's uv (else the barycentric coordinates), (s, t) from its st (else u, v).
+    SurfaceParameters parameters(HitRecord const& hit) const override;
     void primvar(Primvar const& var, HitRecord const& hit, float* out) const override;
     MeshData const& data() const { return m_data; }
     /// +1 or -1: the sign that turns (p1 - p0) x (p2 - p0) into the facet normal.
@@ -65,7 +67,7 @@ private:
         unsigned const* tri = &m_data.indices[3 * prim];
         return (1.0f - b1 - b2) * values[tri[0]] + b1 * values[tri[1]] + b2 * values[tri[2]];
     }
-    Vec2 parameters(unsigned prim, float b1, float b2) const;
+    Vec2 uvAt(unsigned prim, float b1, float b2) const;
 
     MeshData m_data;
     const char* m_kind;
