@@ -55,6 +55,26 @@ TEST_CASE("tangent frames are computed only when a plugin asks for them", "[effe
     CHECK_FALSE(skipped(asking.stats, "tangent frames"));
 }
 
+TEST_CASE("surface parameters (u, v, s, t) are computed only when a plugin or pattern asks for them", "[effects]") {
+    auto plain = test::renderRib(sceneWith("Bxdf \"diffuse\" \"d\"", kDiskLight));
+    CHECK(plain.stats.parameterPoints == 0u);
+    CHECK(plain.stats.surfacePoints > 0u);
+    // A colour from v: the sphere's top (v near 1) lit brighter than its bottom half would be.
+    auto asking = test::renderRib(sceneWith("Pattern \"PxrVariable\" \"height\" \"string variable\" [\"v\"]\n"
+                                            "  Bxdf \"diffuse\" \"d\" \"reference color diffuseColor\" [\"height:resultRGB\"]",
+                                            kDiskLight));
+    CHECK(asking.stats.parameterPoints == asking.stats.shadePoints);
+    CHECK(asking.stats.tangentPoints == 0u);  // the groups are apart
+    double plainSum = 0.0, askingSum = 0.0;
+    for (int y = 0; y < 24; ++y)
+        for (int x = 0; x < 24; ++x) {
+            plainSum += plain.channel(x, y, 0);
+            askingSum += asking.channel(x, y, 0);
+        }
+    CHECK(askingSum > 0.2 * plainSum);  // v in (0, 1) darkens the white sphere, and v near 1 where the light is
+    CHECK(askingSum < 0.99 * plainSum);
+}
+
 TEST_CASE("lights with zero intensity and objects invisible to all rays are dropped at load", "[effects]") {
     std::string lights = kDiskLight +
                          "  Light \"PxrSphereLight\" \"off\" \"float intensity\" [0]\n"
