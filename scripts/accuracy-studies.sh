@@ -54,7 +54,7 @@ echo "studies written to $out"
 build/bin/rixbench > $out/bench.txt
 echo "bench written to $out/bench.txt"
 
-# Against Blender's Cycles on the chapter-6 scene (about six minutes; it says
+# Against Blender's Cycles on the chapter-6 scene (about three minutes; it says
 # "skipped" when Blender is not installed).
 bench/vs-cycles.sh --out out/vs-cycles > $out/vs-cycles.txt
 echo "Cycles comparison written to $out/vs-cycles.txt"
