@@ -27,6 +27,20 @@ HitRecord trace(RayTracer const& tracer, Vec3 org, Vec3 dir) {
     return tracer.intersect(org, glm::normalize(dir), 0.0f, kInfinity, RayKind::Camera, counts);
 }
 
+/// Numbers in [0, 1) from a small linear congruential generator: the tests
+/// need spread, not quality, and the same numbers everywhere.
+class Uniform {
+public:
+    explicit Uniform(uint32_t seed) : m_state(seed) {}
+    float operator()() {
+        m_state = m_state * 1664525u + 1013904223u;
+        return static_cast<float>(m_state >> 8) / 16777216.0f;
+    }
+
+private:
+    uint32_t m_state;
+};
+
 /// A hit on quadric q at parameters (u, v), as a ray would leave it: its
 /// point (org + t dir) on the surface, t = 0 here.
 HitRecord hitAt(Quadric const& q, float u, float v) {
@@ -249,11 +263,7 @@ TEST_CASE("shadow rays traced as a stream answer as one at a time", "[geometry]"
     RayTracer tracer(scene);
     std::vector<Vec3> org, dir;
     std::vector<float> reach;
-    uint32_t state = 12345u;
-    auto uniform = [&] {  // a small LCG: the test needs spread, not quality
-        state = state * 1664525u + 1013904223u;
-        return static_cast<float>(state >> 8) / 16777216.0f;
-    };
+    Uniform uniform(12345u);
     for (int k = 0; k < 600; ++k) {
         org.emplace_back(8.0f * uniform() - 4.0f, 8.0f * uniform() - 4.0f, 6.0f * uniform() - 1.5f);
         dir.push_back(glm::normalize(Vec3(uniform() - 0.5f, uniform() - 0.5f, uniform() - 0.5f)));
@@ -281,11 +291,7 @@ TEST_CASE("a shadow ray's answer for a sphere is the nearest-hit answer, for who
     Mat4 const place = glm::translate(Mat4(1.0f), Vec3(0.3f, -0.2f, 0.1f));
     Sphere const whole(1.0f, -1.0f, 1.0f, 360.0f, place, false);
     Sphere const cut(1.0f, -0.5f, 0.8f, 300.0f, place, false);
-    uint32_t state = 777u;
-    auto uniform = [&] {
-        state = state * 1664525u + 1013904223u;
-        return static_cast<double>(state >> 8) / 16777216.0;
-    };
+    Uniform uniform(777u);
     int hits = 0;
     for (int k = 0; k < 4000; ++k) {
         DVec3 org(3.0 * uniform() - 1.5, 3.0 * uniform() - 1.5, 3.0 * uniform() - 1.5);
@@ -325,11 +331,7 @@ TEST_CASE("a whole sphere can be Embree's own sphere primitive: only when it is 
     Scene scene = sceneWith("Translate 0.3 -0.2 5\nRotate 40 0.2 1 0.5\nScale 0.8 0.8 0.8\nSphere 1 -1 1 360");
     RayTracer exact(scene, WholeSpheres::Exact), embree(scene, WholeSpheres::EmbreePrimitive);
     auto const& sphere = dynamic_cast<Quadric const&>(*scene.shapes[0]);
-    uint32_t state = 99u;
-    auto uniform = [&] {
-        state = state * 1664525u + 1013904223u;
-        return static_cast<float>(state >> 8) / 16777216.0f;
-    };
+    Uniform uniform(99u);
     int hits = 0;
     for (int k = 0; k < 3000; ++k) {
         Vec3 org = k % 2 ? Vec3(0.0f) : Vec3(0.3f, -0.2f, 5.0f) + 0.5f * Vec3(uniform() - 0.5f, uniform() - 0.5f, uniform() - 0.5f);
