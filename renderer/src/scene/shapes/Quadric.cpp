@@ -36,11 +36,6 @@ SurfaceBasics Quadric::basics(HitRecord const& hit) const {
     return out;
 }
 
-SurfaceParameters Quadric::parameters(HitRecord const& hit) const {
-    Uv uv = parametersAtHit(hit);
-    return {uv.u, uv.v, uv.u, uv.v};
-}
-
 SurfaceTangents Quadric::tangents(HitRecord const& hit) const {
     LocalSurface local = surfaceAtHit(hit);
     return {transformVector(m_objectToWorld, local.dPdu), transformVector(m_objectToWorld, local.dPdv)};

@@ -47,19 +47,12 @@ public:
     /// Object-space bounding box.
     virtual void boundsLocal(Vec3& lower, Vec3& upper) const = 0;
 
-    /// Surface parameters of a hit.
-    struct Uv {
-        float u, v;
-    };
-    /// The (u, v) of a hit: by default those intersectLocal gave it; a shape
-    /// whose hits may carry none (see placedSphere) works them out here.
-    virtual Uv parametersAtHit(HitRecord const& hit) const { return {hit.u, hit.v}; }
     /// This quadric as one ball (centre and radius, in the space it is placed
     /// in) when it is a whole sphere placed by rotation, translation and
     /// uniform scale, so that Embree's own sphere primitive can intersect it
-    /// (its hits carry no (u, v)); nothing otherwise.
+    /// (its hits carry no (u, v): the shape works them out in parameters());
+    /// nothing otherwise.
     virtual std::optional<Vec4> placedSphere() const { return std::nullopt; }
-    SurfaceParameters parameters(HitRecord const& hit) const override;
 
     Mat4 const& objectToWorld() const { return m_objectToWorld; }
     Mat4 const& worldToObject() const { return m_worldToObject; }
@@ -79,6 +72,10 @@ protected:
     /// dP/du of a surface of revolution at its point p: u sweeps phi over phiMax.
     Vec3 sweepTangent(DVec3 const& p) const { return Vec3(-m_phiMax * p.y, m_phiMax * p.x, 0.0); }
 
+    /// Surface parameters of a hit.
+    struct Uv {
+        float u, v;
+    };
     /// (u, v) of a point at azimuth phi (radians, in [0, 2 pi)) and parameter v, or
     /// nothing where phi lies past the sweep.
     std::optional<Uv> swept(double phi, double v) const {

@@ -58,7 +58,7 @@ std::optional<Quadric::LocalHit> Sphere::intersectLocal(DVec3 const& o, DVec3 co
     if (!solveQuadratic(glm::dot(d, d), 2.0 * glm::dot(o, d), glm::dot(o, o) - m_radius * m_radius, t0, t1))
         return std::nullopt;
     return firstRoot(t0, t1, tnear, tfar, [&](double t) -> std::optional<Uv> {
-        if (m_whole) return Uv{0.0f, 0.0f};  // parametersAtHit works them out for the hit shaded
+        if (m_whole) return Uv{0.0f, 0.0f};  // parameters() works them out for the hit shaded
         DVec3 p = o + t * d;
         return parametersOf(p * (m_radius / glm::length(p)));  // reprojected onto the surface
     });
@@ -72,9 +72,10 @@ std::optional<Quadric::Uv> Sphere::parametersOf(DVec3 p) const {
     return swept(azimuth(p.x, p.y), std::clamp(v, 0.0, 1.0));
 }
 
-Quadric::Uv Sphere::parametersAtHit(HitRecord const& hit) const {
-    if (!m_whole) return Quadric::parametersAtHit(hit);
-    return parametersOf(pointOnSphere(hit)).value_or(Uv{0.0f, 0.0f});  // (a whole sphere refuses no point)
+SurfaceParameters Sphere::parameters(HitRecord const& hit) const {
+    if (!m_whole) return Quadric::parameters(hit);
+    Uv uv = parametersOf(pointOnSphere(hit)).value_or(Uv{0.0f, 0.0f});  // (a whole sphere refuses no point)
+    return {uv.u, uv.v, uv.u, uv.v};
 }
 
 DVec3 Sphere::pointOnSphere(HitRecord const& hit) const {
@@ -98,7 +99,7 @@ Quadric::LocalSurface Sphere::surfaceAtHit(HitRecord const& hit) const {
     DVec3 p = pointOnSphere(hit);
     double rho = std::sqrt(p.x * p.x + p.y * p.y);
     if (!(rho > 0.0)) {  // a pole: the azimuth is u's
-        double phi = parametersAtHit(hit).u * phiMax();
+        double phi = parameters(hit).u * phiMax();
         return surfaceAt(p, std::cos(phi), std::sin(phi));
     }
     return surfaceAt(p, p.x / rho, p.y / rho);
