@@ -94,6 +94,9 @@ TEST_CASE("malformed RIB gives file:line:col and what was expected", "[rib][erro
     auto c = GENERATE(values<Case>({
         {"WorldBegin\nSphere 1 -1 1\nWorldEnd", "bad.rib:2:1", "thetamax"},
         {"WorldBegin\n  Sphere 1 -1 \"x\" 360", "bad.rib:2:15", "zmax"},
+        // A template's placeholder where a value belongs: the word is named, where it stands.
+        {"Format 256 192 1\nShadingRate SR\nWorldBegin", "bad.rib:2:13", "found the word SR, which is not a value"},
+        {"PixelSamples SX SY", "bad.rib:1:14", "found the word SX"},
         {"Display \"a.exr\" \"file\" \"rgba\n", "bad.rib:1:24", "unterminated string"},
         {"Format 10 10 1 [1 2", "bad.rib:1:16", "unterminated array"},
         {"AttributeEnd", "bad.rib:1:1", "without a matching AttributeBegin"},

@@ -1,5 +1,7 @@
 #include "parse/RibRequest.h"
 
+#include "parse/RequestNames.h"
+
 #include <cmath>
 #include <sstream>
 
@@ -21,7 +23,15 @@ void RequestReader::fail(SourceLocation const& where, std::string const& message
 }
 
 RibValue const& RequestReader::take(const char* what, const char* expected) {
-    if (atEnd()) fail(m_request.where, std::string("expected ") + what + " (" + expected + "), but the request ends here");
+    if (atEnd()) {
+        std::string const missing = std::string("expected ") + what + " (" + expected + ")";
+        // A word that is no request where a value belongs ("ShadingRate SR" in a
+        // template, an unquoted string): point at it rather than at the request.
+        if (!m_request.endedBy.empty() && !isRibRequest(m_request.endedBy))
+            fail(m_request.endedAt, missing + ", found the word " + m_request.endedBy +
+                                        ", which is not a value (a number, a \"quoted string\" or a [list]) nor a request");
+        fail(m_request.where, missing + ", but the request ends here");
+    }
     return m_request.args[m_next++];
 }
 

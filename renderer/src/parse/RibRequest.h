@@ -26,6 +26,11 @@ struct RibRequest {
     std::string name;
     SourceLocation where;
     std::vector<RibValue> args;
+    /// The word that ended the request (the next request's name), "" at the
+    /// end of the file: when a value is missing it is often that word, a value
+    /// written without quotes or a name left in a template.
+    std::string endedBy;
+    SourceLocation endedAt;
 };
 
 class RequestReader {
