@@ -9,6 +9,7 @@
 #include "parse/RibParser.h"
 #include "scene/SceneBuilder.h"
 #include "scene/shapes/Quadrics.h"
+#include "scene/shapes/TriangleMesh.h"
 #include "support/RenderHelpers.h"
 
 #include <zip.h>
@@ -181,6 +182,45 @@ TEST_CASE("a name that is no RIB request is told apart from an unsupported one, 
     CHECK_THAT(warnings[2], Catch::Matchers::Contains("sphere is not a RIB request; skipped (did you mean Sphere?)"));
     CHECK_THAT(warnings[3], Catch::Matchers::Contains("Frobnicate is not a RIB request; skipped"));
     CHECK_THAT(warnings[3], !Catch::Matchers::Contains("did you mean"));
+}
+
+TEST_CASE("a misspelt AttributeBegin or TransformBegin is closed by its End as the block it meant, and only then",
+          "[rib]") {
+    // "TransforBegin" stands in a real Houdini export; RenderMan reads on past it.
+    Diagnostics diagnostics(false);
+    Scene scene = parseRib("WorldBegin\nAttributeBegin\n  TransforBegin\n    Translate 5 0 0\n  TransformEnd\n"
+                           "  Polygon \"P\" [0 0 0 1 0 0 0 1 0]\n"        // after the block: not moved
+                           "  AtributeBegin\n    Translate 0 7 0\n    Color [1 0 0]\n  AttributeEnd\n"
+                           "  Polygon \"P\" [0 0 0 1 0 0 0 1 0]\n"        // not moved, not red
+                           "  Color [1 0 0]\n  Polygon \"P\" [0 0 0 1 0 0 0 1 0]\n"
+                           "AttributeEnd\nWorldEnd\n",
+                           diagnostics);
+    REQUIRE(scene.shapes.size() == 3u);
+    for (size_t i = 0; i < 2; ++i) {
+        auto const& mesh = dynamic_cast<TriangleMesh const&>(*scene.shapes[i]);
+        INFO("polygon " << i);
+        for (Vec3 const& p : mesh.data().P) {
+            CHECK(p.x >= 0.0f);
+            CHECK(p.x <= 1.0f);
+            CHECK(p.y >= 0.0f);
+            CHECK(p.y <= 1.0f);
+        }
+    }
+    // The colour set inside the attribute block stayed there (the third polygon, red, shows it would tell).
+    CHECK(scene.shapes[1]->material == scene.shapes[0]->material);
+    CHECK(scene.shapes[2]->material != scene.shapes[0]->material);
+    std::vector<std::string> warnings = test::warningTexts(diagnostics);
+    REQUIRE(warnings.size() == 4u);
+    CHECK_THAT(warnings[1], Catch::Matchers::StartsWith("test.rib:5:3: TransformEnd closes the TransforBegin at test.rib:3:3"));
+    CHECK_THAT(warnings[3], Catch::Matchers::StartsWith("test.rib:10:3: AttributeEnd closes the AtributeBegin at test.rib:7:3"));
+
+    // Without a misspelt Begin at its depth an unmatched End is still an error.
+    Diagnostics strictDiagnostics(false);
+    CHECK_THROWS_WITH(parseRib("WorldBegin\nTransforBegin\nTransformBegin\nTransformEnd\nTransformEnd\nTransformEnd\n",
+                               strictDiagnostics),
+                      Catch::Matchers::StartsWith("test.rib:6:1: TransformEnd: TransformEnd without a matching"));
+    CHECK_THROWS_WITH(parseRib("WorldBegin\nAttributeBegin\nTransforBegin\nAttributeEnd\nTransformEnd\n", strictDiagnostics),
+                      Catch::Matchers::StartsWith("test.rib:5:1: TransformEnd: TransformEnd without a matching"));
 }
 
 TEST_CASE("the spelling hint: at most two letters off, and at most a third of the name", "[rib]") {

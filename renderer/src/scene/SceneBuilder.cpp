@@ -229,6 +229,12 @@ void SceneBuilder::handle(RibRequest const& request) {
     auto found = handlers().find(request.name);
     if (found == handlers().end()) {
         warnOnce("request " + request.name, request.where, unknownRequestMessage(request.name));
+        if (!isRibRequest(request.name)) {
+            std::string const meant = likelyRibRequest(request.name);
+            if (meant == "AttributeBegin" || meant == "TransformBegin")
+                m_skippedBegins.push_back({meant == "AttributeBegin" ? Block::Attribute : Block::Transform,
+                                           m_blocks.size(), request.name, request.where, state()});
+        }
         return;
     }
     RequestReader reader(request, m_declarations, &m_diagnostics);
@@ -240,6 +246,27 @@ void SceneBuilder::ignore(RequestReader&) {}
 bool SceneBuilder::isCameraOption(std::string const& name) {
     return name == "Display" || name == "Format" || name == "Projection" || name == "ScreenWindow" ||
            name == "FrameAspectRatio" || name == "PixelSamples" || name == "Hider" || name == "Integrator";
+}
+
+bool SceneBuilder::closesSkippedBegin(Block block, SourceLocation const& where, std::string const& end) {
+    // RenderMan reports an unmatched End and reads on. Here an End is let pass
+    // only when the cause is plain: it closes a Begin misspelt at this depth.
+    while (!m_skippedBegins.empty() && m_skippedBegins.back().depth > m_blocks.size()) m_skippedBegins.pop_back();
+    if (m_skippedBegins.empty()) return false;
+    SkippedBegin const& skipped = m_skippedBegins.back();
+    if (skipped.block != block || skipped.depth != m_blocks.size()) return false;
+    m_diagnostics.warn(where, end + " closes the " + skipped.word + " at " + skipped.where.str() +
+                                  ", which is no request: read as the " + (block == Block::Attribute ? "AttributeBegin" : "TransformBegin") +
+                                  " it was meant to be, so the state it saved comes back");
+    // As the matching End would: an attribute block restores everything, a
+    // transform block only the transform.
+    if (block == Block::Attribute) {
+        state() = skipped.saved;
+    } else {
+        state().transform = skipped.saved.transform;
+    }
+    m_skippedBegins.pop_back();
+    return true;
 }
 
 std::string SceneBuilder::unknownRequestMessage(std::string const& name) {

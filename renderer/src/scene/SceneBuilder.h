@@ -275,6 +275,19 @@ private:
     Declarations m_declarations;
     std::vector<Attributes> m_attributes{Attributes{}};
     std::vector<Block> m_blocks;
+    /// A misspelt AttributeBegin or TransformBegin that was skipped ("TransforBegin"
+    /// in a real exporter's output). When its End comes, the block it meant is
+    /// closed after all: the state it saved is restored.
+    struct SkippedBegin {
+        Block block;
+        size_t depth;  ///< m_blocks.size() where it stood: its End comes back to this depth
+        std::string word;
+        SourceLocation where;
+        Attributes saved;
+    };
+    std::vector<SkippedBegin> m_skippedBegins;
+    /// True (with a warning) when an unmatched End closes a skipped misspelt Begin.
+    bool closesSkippedBegin(Block block, SourceLocation const& where, std::string const& end);
     std::vector<std::string> m_fileStack;
     std::vector<std::string> m_archiveSearchPath;
     std::vector<std::string> m_proceduralSearchPath;  // where a DynamicLoad plugin would be looked for

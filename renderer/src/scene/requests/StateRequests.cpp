@@ -16,6 +16,7 @@ void SceneBuilder::attributeBegin(RequestReader& in) {
 
 void SceneBuilder::attributeEnd(RequestReader& in) {
     in.finish();
+    if (closesSkippedBegin(Block::Attribute, in.where(), "AttributeEnd")) return;
     if (m_blocks.empty() || m_blocks.back() != Block::Attribute)
         in.fail(in.where(), m_blocks.empty() ? "AttributeEnd without a matching AttributeBegin"
                                              : "AttributeEnd closes a TransformBegin block (expected TransformEnd)");
@@ -43,6 +44,7 @@ void SceneBuilder::transformBegin(RequestReader& in) {
 
 void SceneBuilder::transformEnd(RequestReader& in) {
     in.finish();
+    if (closesSkippedBegin(Block::Transform, in.where(), "TransformEnd")) return;
     if (m_blocks.empty() || m_blocks.back() != Block::Transform)
         in.fail(in.where(), m_blocks.empty() ? "TransformEnd without a matching TransformBegin"
                                              : "TransformEnd closes an AttributeBegin block (expected AttributeEnd)");
