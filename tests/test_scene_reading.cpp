@@ -1,6 +1,7 @@
 // What older and exported RIB files need from the scene reader: frames,
 // motion blocks, named coordinate systems, the RI defaults, classic surface
 // shaders, negative quadric radii and general polygons.
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <sstream>
@@ -327,6 +328,80 @@ TEST_CASE("Option Ri and Attribute Ri, as RenderMan 21 and later write requests,
     // A holdout is not modelled, and says so.
     test::parseRib("WorldBegin\nAttribute \"Ri\" \"int Matte\" [1]\nSphere 1 -1 1 360\n", quiet);
     CHECK(test::warningsContaining(quiet, "\"Matte\" [1] (a holdout) is not modelled") == 1);
+}
+
+TEST_CASE("Sides 1 hides the back of a surface from the camera, and from no other ray", "[rib]") {
+    // Two quads side by side in front of a green wall, wound opposite ways: whatever the
+    // winding rule, one shows the camera its outside and the other its back.
+    auto scene = [](char const* sides, std::string const& extra) {
+        return std::string("Format 16 8 1\nProjection \"orthographic\"\nScreenWindow -2 2 -1 1\n") +
+               "Integrator \"PxrDirectLighting\" \"d\"\nWorldBegin\n" + extra +
+               "AttributeBegin\nBxdf \"PxrConstant\" \"wall\" \"color emitColor\" [0 1 0]\n"
+               "Polygon \"P\" [-3 -2 10  3 -2 10  3 2 10  -3 2 10]\nAttributeEnd\n"
+               "AttributeBegin\nSides " + sides + "\nBxdf \"PxrConstant\" \"quads\" \"color emitColor\" [1 0 0]\n"
+               "Polygon \"P\" [-2 -1 5  0 -1 5  0 1 5  -2 1 5]\n"   // left half
+               "Polygon \"P\" [0 -1 5  0 1 5  2 1 5  2 -1 5]\n"     // right half, wound the other way
+               "AttributeEnd\nWorldEnd\n";
+    };
+    auto red = [](test::RenderOutcome const& r, bool left) {
+        return test::meanChannel(r, 0, [left](int x, int) { return (x < 8) == left; });
+    };
+    auto green = [](test::RenderOutcome const& r, bool left) {
+        return test::meanChannel(r, 1, [left](int x, int) { return (x < 8) == left; });
+    };
+    auto twoSided = test::renderRib(scene("2", ""), test::withSpp(4));
+    auto const& simulated = twoSided.stats.effects.simulated;
+    CHECK(std::find_if(simulated.begin(), simulated.end(),
+                       [](std::string const& e) { return e.find("Sides 1") != std::string::npos; }) == simulated.end());
+    CHECK(red(twoSided, true) == Approx(1.0));
+    CHECK(red(twoSided, false) == Approx(1.0));
+    auto oneSided = test::renderRib(scene("1", ""), test::withSpp(4));
+    // Exactly one half is culled: there the wall behind shows.
+    auto const& culling = oneSided.stats.effects.simulated;
+    CHECK(std::find_if(culling.begin(), culling.end(),
+                       [](std::string const& e) { return e.find("Sides 1") != std::string::npos; }) != culling.end());
+    bool const leftShown = red(oneSided, true) > 0.5;
+    CHECK(red(oneSided, !leftShown) == Approx(0.0).margin(1e-6));
+    CHECK(green(oneSided, !leftShown) == Approx(1.0));
+    CHECK(red(oneSided, leftShown) == Approx(1.0));
+    CHECK(green(oneSided, leftShown) == Approx(0.0).margin(1e-6));
+    // ReverseOrientation turns the outside over: the other half shows.
+    auto reversed = test::renderRib(scene("1", "ReverseOrientation\n"), test::withSpp(4));
+    CHECK(red(reversed, leftShown) == Approx(0.0).margin(1e-6));
+    CHECK(red(reversed, !leftShown) == Approx(1.0));
+
+    // A quadric from inside: a one-sided sphere around the camera hides nothing.
+    auto around = [](char const* sides) {
+        return test::renderRib(std::string("Format 8 8 1\nProjection \"perspective\" \"fov\" [40]\nWorldBegin\n") +
+                                   "Bxdf \"PxrConstant\" \"wall\" \"color emitColor\" [0 1 0]\n"
+                                   "Polygon \"P\" [-9 -9 10  9 -9 10  9 9 10  -9 9 10]\n"
+                                   "AttributeBegin\nSides " + sides +
+                                   "\nBxdf \"PxrConstant\" \"shell\" \"color emitColor\" [1 0 0]\nSphere 3 -3 3 360\n"
+                                   "AttributeEnd\nWorldEnd\n",
+                               test::withSpp(4));
+    };
+    auto all = [](int, int) { return true; };
+    CHECK(test::meanChannel(around("2"), 0, all) == Approx(1.0));
+    CHECK(test::meanChannel(around("1"), 0, all) == Approx(0.0).margin(1e-6));
+    CHECK(test::meanChannel(around("1"), 1, all) == Approx(1.0));
+
+    // Shadow rays still meet the back: a one-sided blocker, unseen by the camera, shadows the wall
+    // whichever way it faces.
+    auto sunlit = [](std::string const& blocker) {
+        return test::renderRib(std::string("Format 8 8 1\nProjection \"orthographic\"\nScreenWindow -1 1 -1 1\n") +
+                                   "Integrator \"PxrDirectLighting\" \"d\"\nWorldBegin\n"
+                                   // from the camera's side, along +z; the sun's small disc needs the exposure
+                                   "Light \"PxrDistantLight\" \"sun\" \"float exposure\" [15]\n"
+                                   "Bxdf \"PxrDiffuse\" \"wall\"\nPolygon \"P\" [-5 -5 10  5 -5 10  5 5 10  -5 5 10]\n" +
+                                   blocker + "WorldEnd\n",
+                               test::withSpp(4));
+    };
+    std::string const blocker = "Attribute \"visibility\" \"int camera\" [0]\nPolygon \"P\" [-5 -5 5  5 -5 5  5 5 5  -5 5 5]\n";
+    REQUIRE(test::meanChannel(sunlit(""), 0, all) > 0.1);
+    CHECK(test::meanChannel(sunlit("AttributeBegin\nSides 1\n" + blocker + "AttributeEnd\n"), 0, all) ==
+          Approx(0.0).margin(1e-6));
+    CHECK(test::meanChannel(sunlit("AttributeBegin\nSides 1\nReverseOrientation\n" + blocker + "AttributeEnd\n"), 0, all) ==
+          Approx(0.0).margin(1e-6));
 }
 
 TEST_CASE("RenderMan's bookkeeping parameters (a leading __) are accepted on any node without a warning", "[rib]") {

@@ -66,6 +66,8 @@ RayTracer::RayTracer(Scene const& scene, WholeSpheres wholeSpheres) {
 
     for (size_t id = 0; id < scene.shapes.size(); ++id) {
         Shape const& shape = *scene.shapes[id];
+        m_shapes.push_back(&shape);
+        m_anyOneSided = m_anyOneSided || (shape.oneSided && shape.visibility.camera);
         RTCGeometry geometry = buildEmbreeGeometry(m_device, shape, wholeSpheres == WholeSpheres::EmbreePrimitive);
         check(m_device, "build a geometry");
         unsigned geomID = static_cast<unsigned>(id);
@@ -168,6 +170,21 @@ void RayTracer::intersectCoherent(Vec3 const* org, Vec3 const* dir, int count, R
     rtcIntersect1M(embreeScene(kind), &context, rays.data(), static_cast<unsigned>(count), sizeof(RTCRayHit));
     counterOf(counts, kind) += static_cast<uint64_t>(count);
     for (int i = 0; i < count; ++i) hits[i] = toHitRecord(org[i], dir[i], rays[static_cast<size_t>(i)]);
+    if (kind == RayKind::Camera && m_anyOneSided)
+        for (int i = 0; i < count; ++i) passBackFaces(hits[i], counts);
+}
+
+void RayTracer::passBackFaces(HitRecord& hit, RayCounts& counts) const {
+    // A few layers at most in any real scene; the bound only keeps a
+    // degenerate stack of coincident backs from looping.
+    for (int layer = 0; layer < 64 && hit.hit(); ++layer) {
+        Shape const& shape = *m_shapes[hit.geomID];
+        if (!shape.oneSided || glm::dot(shape.basics(hit).Ng, hit.dir) <= 0.0f) return;
+        // On past the back, from just beyond it (relative to t, as t's rounding is).
+        float const tnear = hit.t * (1.0f + 1e-5f) + 1e-7f;
+        hit = intersect(hit.org, hit.dir, tnear, kInfinity, RayKind::Camera, counts);
+    }
+    hit.forget();
 }
 
 bool RayTracer::occluded(Vec3 const& org, Vec3 const& dir, float tnear, float tfar, RayCounts& counts) const {

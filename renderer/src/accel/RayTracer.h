@@ -90,8 +90,14 @@ public:
     RTCScene embreeScene(RayKind kind) const;
 
 private:
+    /// Camera hits on the back of a one-sided shape (Sides 1) are passed
+    /// through: the ray goes on to what lies behind.
+    void passBackFaces(HitRecord& hit, RayCounts& counts) const;
+
     RTCDevice m_device = nullptr;
     RTCScene m_camera = nullptr, m_indirect = nullptr, m_shadow = nullptr;
+    std::vector<Shape const*> m_shapes;  ///< by geomID
+    bool m_anyOneSided = false;
     mutable RayCounters m_counters;
     Observer* m_observer = nullptr;
 };

@@ -55,7 +55,7 @@ private:
         Vec3 color{1.0f};
         Vec3 opacity{1.0f};
         bool reverseOrientation = false;
-        bool twoSided = true;  ///< Sides 2 (RIB's default); only a mesh light reads it
+        bool twoSided = true;  ///< Sides 2 (RIB's default); Sides 1 hides backs from the camera
         /// BMRT's Attribute "light" "shadows" "on": classic lights given from here on cast
         /// ray-traced shadows (without it, or a shadow map, they cast none).
         bool classicLightShadows = false;

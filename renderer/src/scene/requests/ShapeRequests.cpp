@@ -92,6 +92,8 @@ void SceneBuilder::addShape(std::unique_ptr<Shape> shape, SourceLocation const& 
         std::copy(state().textureCoordinates.begin(), state().textureCoordinates.end(), shape->textureCoordinates);
     }
     shape->visibility = state().visibility;
+    // Curves and points face the ray they are seen by: they have no back to hide.
+    shape->oneSided = !state().twoSided && kind != "Curves" && kind != "Points";
     shape->name = state().name;
     shape->where = where;
     // Polygons under an area light are the light (seen by the rays its visibility allows).

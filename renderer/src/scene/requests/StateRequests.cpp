@@ -234,8 +234,9 @@ bool SceneBuilder::setOrientation(std::string const& value) {
 }
 
 void SceneBuilder::sides(RequestReader& in) {
-    // Every surface is shaded from the side it is seen from, so one- and
-    // two-sided surfaces render alike here; a mesh light emits from one face or both.
+    // Sides 1: the camera sees only the outside of what follows (the back is
+    // culled, as RenderMan culls it); every other ray sees both sides, and
+    // each side is shaded as seen. A mesh light emits from one face or both.
     float sides = in.number("number of sides");
     in.finish();
     if (sides != 1.0f && sides != 2.0f) in.fail(in.where(), "Sides must be 1 or 2");

@@ -114,6 +114,9 @@ public:
     bool hasTextureCoordinates = false;
     float textureCoordinates[8] = {0, 0, 1, 0, 0, 1, 1, 1};
     Visibility visibility;
+    /// Sides 1: only the outside is visible, so camera rays pass through the
+    /// back of it (a room's near wall seen from outside, say). Other rays see both sides.
+    bool oneSided = false;
     std::string name;  ///< Attribute "identifier" "name"
     SourceLocation where;
 };
