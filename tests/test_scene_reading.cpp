@@ -404,6 +404,26 @@ TEST_CASE("Sides 1 hides the back of a surface from the camera, and from no othe
           Approx(0.0).margin(1e-6));
 }
 
+TEST_CASE("BMRT's Attribute \"render\" \"casts_shadows\" \"none\" hides an object from shadow rays only", "[rib]") {
+    // A sky sphere around a scene (the RenderMan Repository's planet files) must not shadow it.
+    auto render = [](std::string const& casts) {
+        return test::renderRib(std::string("Format 8 8 1\nProjection \"perspective\" \"fov\" [30]\n"
+                                           "Integrator \"PxrDirectLighting\" \"d\"\nWorldBegin\n"
+                                           "Light \"PxrDistantLight\" \"sun\" \"float exposure\" [15]\n"
+                                           "Bxdf \"PxrDiffuse\" \"d\"\nPolygon \"P\" [-5 -5 10  5 -5 10  5 5 10  -5 5 10]\n"
+                                           "AttributeBegin\nSides 1\n") +  // seen from inside: the camera sees the wall
+                                   casts + "Sphere 50 -50 50 360\nAttributeEnd\nWorldEnd\n",
+                               test::withSpp(4));
+    };
+    auto all = [](int, int) { return true; };
+    test::RenderOutcome const open = render("Attribute \"render\" \"casts_shadows\" [\"none\"]\n");
+    CHECK(test::meanChannel(open, 0, all) > 0.1);
+    CHECK_FALSE(open.anyMessageContains("casts_shadows"));
+    CHECK(test::meanChannel(render(""), 0, all) == Approx(0.0).margin(1e-6));
+    CHECK(test::meanChannel(render("Attribute \"render\" \"string casts_shadows\" \"opaque\"\n"), 0, all) ==
+          Approx(0.0).margin(1e-6));
+}
+
 TEST_CASE("RenderMan's bookkeeping parameters (a leading __) are accepted on any node without a warning", "[rib]") {
     // What exporters add to lights, materials and patterns; a misspelt real parameter is still named.
     auto r = test::renderRib("Format 4 4 1\nProjection \"perspective\" \"fov\" [40]\nTranslate 0 0 5\nWorldBegin\n"

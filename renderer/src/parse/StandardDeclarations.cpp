@@ -49,6 +49,7 @@ std::vector<std::pair<char const*, char const*>> const& standardDeclarations() {
         {"estimator", "int"}, {"sigma", "int"}, {"pointfalloff", "int"}, {"shadows", "string"}, {"samples", "int"},
         {"membership", "string"}, {"centered", "int"}, {"extrapolate", "int"}, {"sense", "string"},
         {"motionfactor", "float"}, {"offset", "float"}, {"velocity", "float"},
+        {"casts_shadows", "string"},  // BMRT's Attribute "render"
     };
     return table;
 }

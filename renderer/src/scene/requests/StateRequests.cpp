@@ -183,6 +183,12 @@ void SceneBuilder::attribute(RequestReader& in) {
         else if (!shadows->floats.empty()) state().classicLightShadows = shadows->floats[0] != 0.0f;
         for (auto const& p : params.all())  // BMRT's "nsamples": shadows are sampled as the integrator samples
             if (p.name() == "nsamples") p.used = true;
+    } else if (category == "render" && params.has("casts_shadows")) {
+        // BMRT's shadow casting: "none" hides the object from shadow rays (a sky
+        // sphere around the scene, say); "opaque", "Os" and "shade" cast shadows,
+        // here all opaque ones.
+        Param const* casts = params.take("casts_shadows");
+        if (!casts->strings.empty()) state().visibility.transmission = casts->strings[0] != "none";
     } else if (category == "identifier") {
         if (Param const* name = params.take("name")) state().name = name->strings.empty() ? state().name : name->strings[0];
         for (auto const& p : params.all()) p.used = true;  // shadinggroup, id: labels only
