@@ -436,6 +436,28 @@ TEST_CASE("an archive named relative to an absolute search-path folder of anothe
                                                 "(/exporter-machine/project/shot/geometry/geo.rib) found beside the scene") == 1);
 }
 
+TEST_CASE("an archive named from the project folder is found from the scene's ancestors when rendering elsewhere",
+          "[rib]") {
+    // A student project: project/renderRib/scene.rib reads "rib/lights.rib", a path from the
+    // project folder it was rendered in. Rendered from anywhere else it still finds it, and says where.
+    namespace fs = std::filesystem;
+    fs::path const project = fs::path(test::outputDir()) / "archive-from-project" / "project";
+    fs::create_directories(project / "rib");
+    fs::create_directories(project / "renderRib");
+    std::ofstream(project / "rib" / "lights.rib") << "Sphere 1 -1 1 360\n";
+    std::ofstream(project / "renderRib" / "scene.rib") << "WorldBegin\nReadArchive \"rib/lights.rib\"\nWorldEnd\n";
+    Diagnostics diagnostics(false);
+    Scene scene = loadScene((project / "renderRib" / "scene.rib").string(), diagnostics);
+    CHECK(scene.shapes.size() == 1u);
+    CHECK(test::warningsContaining(diagnostics, "read from the scene's ancestor folder \"" +
+                                                    fs::absolute(project).lexically_normal().string() + "\"") == 1);
+    // A name found nowhere lists the ancestors it was looked for in.
+    std::ofstream(project / "renderRib" / "missing.rib") << "WorldBegin\nReadArchive \"rib/absent.rib\"\nWorldEnd\n";
+    Diagnostics missing(false);
+    loadScene((project / "renderRib" / "missing.rib").string(), missing);
+    CHECK(test::warningsContaining(missing, (fs::absolute(project).lexically_normal() / "rib" / "absent.rib").string()) == 1);
+}
+
 TEST_CASE("a file that is a Git LFS pointer is named as one: an archive is missing, a scene cannot be read", "[rib]") {
     // A repository cloned without Git LFS holds pointers like this one in place of its large files.
     namespace fs = std::filesystem;

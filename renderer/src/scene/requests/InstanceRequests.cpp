@@ -122,6 +122,20 @@ void SceneBuilder::readArchiveNamed(std::string const& name, SourceLocation cons
             }
         }
     }
+    // A project's scene (<project>/rib/scene.rib) names its archives from the
+    // folder it was rendered in ("rib/lights.rib"), most often the project's:
+    // the scene's ancestors stand in for it when the renderer runs elsewhere.
+    if (!path.is_absolute())
+        for (size_t parent = 2; parent < roots.size(); ++parent) {
+            fs::path const candidate = roots[parent] / path;
+            tried += "\n    " + candidate.string();
+            if (!exists(candidate)) continue;
+            warnOnce("archive from an ancestor", where,
+                     "archive \"" + name + "\" read from the scene's ancestor folder \"" + roots[parent].string() +
+                         "\" (the scene names its archives from there: rendering from that folder finds them as named)");
+            read(candidate);
+            return;
+        }
     if (!absolutes.empty())
         tried += "\n    (and every end of the absolute paths under " + roots[0].string() + ", " + roots[1].string() +
                  " and the scene's folder's " + std::to_string(roots.size() - 2) + " parents)";
