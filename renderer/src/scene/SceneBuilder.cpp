@@ -255,8 +255,9 @@ bool SceneBuilder::closesSkippedBegin(Block block, SourceLocation const& where, 
     if (m_skippedBegins.empty()) return false;
     SkippedBegin const& skipped = m_skippedBegins.back();
     if (skipped.block != block || skipped.depth != m_blocks.size()) return false;
+    std::string const meant = block == Block::Attribute ? "AttributeBegin" : "TransformBegin";
     m_diagnostics.warn(where, end + " closes the " + skipped.word + " at " + skipped.where.str() +
-                                  ", which is no request: read as the " + (block == Block::Attribute ? "AttributeBegin" : "TransformBegin") +
+                                  ", which is no request: read as the " + meant +
                                   " it was meant to be, so the state it saved comes back");
     // As the matching End would: an attribute block restores everything, a
     // transform block only the transform.
