@@ -72,6 +72,9 @@ public:
                         RayCounts& counts) const;
 
     RayCounters& counters() const { return m_counters; }
+    /// True when some shape the camera sees is one-sided (Sides 1), so camera
+    /// rays pass the backs they meet.
+    bool passesBackFaces() const { return m_anyOneSided; }
     /// World-space bounds of what camera rays can hit (empty: lower > upper).
     void cameraBounds(Vec3& lower, Vec3& upper) const;
 

@@ -56,11 +56,10 @@ void parseRib(std::string const& text, std::string const& fileName, RequestHandl
         request.where = token.location;
         for (;;) {
             RibToken const& next = lexer.peek();
-            if (next.kind == RibToken::Kind::Request || next.kind == RibToken::Kind::End) {
-                if (next.kind == RibToken::Kind::Request) {
-                    request.endedBy = next.text;
-                    request.endedAt = next.location;
-                }
+            if (next.kind == RibToken::Kind::End) break;
+            if (next.kind == RibToken::Kind::Request) {
+                request.endedBy = next.text;
+                request.endedAt = next.location;
                 break;
             }
             RibToken arg = lexer.next();

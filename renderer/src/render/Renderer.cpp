@@ -7,7 +7,6 @@
 #include <sys/resource.h>
 #include <unistd.h>
 
-#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cstdio>
@@ -331,9 +330,7 @@ Renderer::Renderer(Scene& scene, RenderSettings settings, Diagnostics& diagnosti
         diagnostics.warn("a Bxdf asks for presence/opacity/interior computation, which this renderer does not do; "
                          "surfaces are treated as opaque");
     for (std::string const& dropped : scene.dropped) effects.skip("dropped at load", dropped);
-    bool const culls = std::any_of(scene.shapes.begin(), scene.shapes.end(),
-                                   [](auto const& shape) { return shape->oneSided && shape->visibility.camera; });
-    if (culls) effects.simulate("one-sided surfaces (Sides 1): camera rays pass their backs");
+    if (r.tracer->passesBackFaces()) effects.simulate("one-sided surfaces (Sides 1): camera rays pass their backs");
 
     m_stats.integrator = r.integratorPlugin->name();
     m_stats.width = scene.xres;

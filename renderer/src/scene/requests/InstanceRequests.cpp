@@ -98,13 +98,16 @@ void SceneBuilder::readArchiveNamed(std::string const& name, SourceLocation cons
     // scene's ancestors (an exporter's project folder holds its scenes a few
     // levels down: <project>/renderman/<scene>/rib/<frame>/).
     fs::path scene = fs::path(m_fileStack.front()).parent_path();
-    std::vector<fs::path> roots = {fs::path(currentDirectory()), scene.empty() ? fs::path(".") : scene};
+    if (scene.empty()) scene = ".";
+    std::vector<fs::path> ancestors;  // the scene folder's parents, nearest first
     std::error_code absoluteError;
-    fs::path ancestor = fs::absolute(roots[1], absoluteError).lexically_normal();
+    fs::path ancestor = fs::absolute(scene, absoluteError).lexically_normal();
     for (int level = 0; level < kArchiveAncestorLevels && !absoluteError && ancestor.has_relative_path(); ++level) {
         ancestor = ancestor.parent_path();
-        if (ancestor.has_relative_path()) roots.push_back(ancestor);
+        if (ancestor.has_relative_path()) ancestors.push_back(ancestor);
     }
+    std::vector<fs::path> roots = {fs::path(currentDirectory()), scene};
+    roots.insert(roots.end(), ancestors.begin(), ancestors.end());
     for (fs::path const& absolute : absolutes) {
         std::vector<fs::path> parts(absolute.begin(), absolute.end());
         for (size_t first = 1; first < parts.size(); ++first) {
@@ -126,19 +129,19 @@ void SceneBuilder::readArchiveNamed(std::string const& name, SourceLocation cons
     // folder it was rendered in ("rib/lights.rib"), most often the project's:
     // the scene's ancestors stand in for it when the renderer runs elsewhere.
     if (!path.is_absolute())
-        for (size_t parent = 2; parent < roots.size(); ++parent) {
-            fs::path const candidate = roots[parent] / path;
+        for (fs::path const& parent : ancestors) {
+            fs::path const candidate = parent / path;
             tried += "\n    " + candidate.string();
             if (!exists(candidate)) continue;
             warnOnce("archive from an ancestor", where,
-                     "archive \"" + name + "\" read from the scene's ancestor folder \"" + roots[parent].string() +
+                     "archive \"" + name + "\" read from the scene's ancestor folder \"" + parent.string() +
                          "\" (the scene names its archives from there: rendering from that folder finds them as named)");
             read(candidate);
             return;
         }
     if (!absolutes.empty())
         tried += "\n    (and every end of the absolute paths under " + roots[0].string() + ", " + roots[1].string() +
-                 " and the scene's folder's " + std::to_string(roots.size() - 2) + " parents)";
+                 " and the scene's folder's " + std::to_string(ancestors.size()) + " parents)";
     // RenderMan renders on without a missing archive; so does this renderer, unless --strict.
     m_archiveMissing = true;
     missingFile(where, "archive \"" + name + "\" not found; tried:" + tried);
