@@ -184,6 +184,29 @@ TEST_CASE("a name that is no RIB request is told apart from an unsupported one, 
     CHECK_THAT(warnings[3], !Catch::Matchers::Contains("did you mean"));
 }
 
+TEST_CASE("a pbrt scene is named as one at its second pbrt directive; one stray pbrt word is only a warning", "[rib]") {
+    // pbrt's format looks like RIB: without this it stopped at "Integrator: expected integrator handle".
+    Diagnostics diagnostics(false);
+    CHECK_THROWS_WITH(parseRib("LookAt 1 1 -1  0 0 0  0 1 0\nCamera \"perspective\" \"float fov\" [50]\n"
+                               "Film \"image\" \"integer xresolution\" [450]\nIntegrator \"directlighting\"\n"
+                               "WorldBegin\nShape \"sphere\" \"float radius\" [1]\nWorldEnd\n",
+                               diagnostics),
+                      Catch::Matchers::StartsWith("test.rib:3:1: this looks like a pbrt scene file, not a RIB file: "
+                                                  "LookAt (at test.rib:1:1) and Film are pbrt directives"));
+    std::vector<std::string> warnings = test::warningTexts(diagnostics);
+    REQUIRE_FALSE(warnings.empty());
+    CHECK_THAT(warnings[0], Catch::Matchers::StartsWith("test.rib:1:1: LookAt is not a RIB request but a directive of "
+                                                        "pbrt's scene format"));
+
+    // The same pbrt word twice, in a RIB file, is a warning and the file is read.
+    Diagnostics ribDiagnostics(false);
+    Scene scene = parseRib("WorldBegin\nMaterial \"matte\"\nSphere 1 -1 1 360\nMaterial \"plastic\"\n"
+                           "Sphere 1 -1 1 360\nWorldEnd\n",
+                           ribDiagnostics);
+    CHECK(scene.shapes.size() == 2u);
+    CHECK(test::warningTexts(ribDiagnostics).size() == 1u);
+}
+
 TEST_CASE("a misspelt AttributeBegin or TransformBegin is closed by its End as the block it meant, and only then",
           "[rib]") {
     // "TransforBegin" stands in a real Houdini export; RenderMan reads on past it.

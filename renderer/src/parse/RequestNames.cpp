@@ -158,7 +158,20 @@ constexpr std::array kRequests = {
     "EditAttributeEnd",
 };
 
+// Directives of pbrt's scene format (versions 2 to 4), which looks like RIB
+// but is not, that RIB has no request of the same name for.
+constexpr std::array kPbrtDirectives = {
+    "LookAt",         "Film",        "Sampler", "Shape",           "Material",          "MakeNamedMaterial",
+    "NamedMaterial",  "Accelerator", "Texture", "MakeNamedMedium", "MediumInterface",   "ActiveTransform",
+    "TransformTimes", "Include",     "Import",  "ColorSpace",      "SurfaceIntegrator", "VolumeIntegrator",
+    "Renderer",
+};
+
 }  // namespace
+
+bool isPbrtDirective(std::string const& name) {
+    return std::find(kPbrtDirectives.begin(), kPbrtDirectives.end(), name) != kPbrtDirectives.end();
+}
 
 bool isRibRequest(std::string const& name) {
     return std::find(kRequests.begin(), kRequests.end(), name) != kRequests.end();

@@ -11,6 +11,10 @@ namespace bxdflab {
 /// True when `name` is a RIB request (names are case-sensitive, as in RIB).
 bool isRibRequest(std::string const& name);
 
+/// True when `name` is a directive of pbrt's scene format that RIB does not
+/// have (LookAt, Film, Shape, ...): a sign that the file is no RIB file.
+bool isPbrtDirective(std::string const& name);
+
 /// The request `name` was most likely meant to be (one or two letters off,
 /// ignoring case), or "" when none is that close.
 std::string likelyRibRequest(std::string const& name);

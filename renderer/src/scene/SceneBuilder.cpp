@@ -228,6 +228,7 @@ void SceneBuilder::handle(RibRequest const& request) {
     }
     auto found = handlers().find(request.name);
     if (found == handlers().end()) {
+        refuseIfPbrt(request);
         warnOnce("request " + request.name, request.where, unknownRequestMessage(request.name));
         if (!isRibRequest(request.name)) {
             std::string const meant = likelyRibRequest(request.name);
@@ -270,8 +271,22 @@ bool SceneBuilder::closesSkippedBegin(Block block, SourceLocation const& where, 
     return true;
 }
 
+void SceneBuilder::refuseIfPbrt(RibRequest const& request) {
+    // One pbrt word may be a stray one in a RIB file; two different ones make a
+    // pbrt scene, which would otherwise stop later at some puzzling error.
+    if (!isPbrtDirective(request.name)) return;
+    if (m_pbrtDirective.word.empty()) {
+        m_pbrtDirective = {request.name, request.where};
+    } else if (m_pbrtDirective.word != request.name) {
+        throw RibError(request.where, "this looks like a pbrt scene file, not a RIB file: " + m_pbrtDirective.word +
+                                          " (at " + m_pbrtDirective.where.str() + ") and " + request.name +
+                                          " are pbrt directives that RIB does not have, and BxdfLab reads RIB only");
+    }
+}
+
 std::string SceneBuilder::unknownRequestMessage(std::string const& name) {
     if (isRibRequest(name)) return "unsupported request " + name + " skipped";
+    if (isPbrtDirective(name)) return name + " is not a RIB request but a directive of pbrt's scene format; skipped";
     // Not a RIB request at all: usually a slip of the keyboard, which RIB
     // (case-sensitive) does not forgive.
     std::string message = name + " is not a RIB request; skipped";

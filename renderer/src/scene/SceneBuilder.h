@@ -288,6 +288,12 @@ private:
     std::vector<SkippedBegin> m_skippedBegins;
     /// True (with a warning) when an unmatched End closes a skipped misspelt Begin.
     bool closesSkippedBegin(Block block, SourceLocation const& where, std::string const& end);
+    /// Stops reading at a second, different pbrt directive (see isPbrtDirective).
+    void refuseIfPbrt(RibRequest const& request);
+    struct {
+        std::string word;
+        SourceLocation where;
+    } m_pbrtDirective;  ///< the first pbrt directive met, if any
     std::vector<std::string> m_fileStack;
     std::vector<std::string> m_archiveSearchPath;
     std::vector<std::string> m_proceduralSearchPath;  // where a DynamicLoad plugin would be looked for
