@@ -124,6 +124,9 @@ TEST_CASE("malformed RIB gives file:line:col and what was expected", "[rib][erro
          "\"exposure\" is a float, and its value cannot be one"},
         {"Light \"PxrDiskLight\" \"l\" \"float intensity\" \"x\"", "bad.rib:1:44", "declared float"},
         {"Translate 1e999 0 0", "bad.rib:1:11", "too large for a 32-bit float"},
+        // A shell line left at the top of a RIB file (a real one has "set -x"): the whole word is shown.
+        {"set -x\nFormat 10 10 1", "bad.rib:1:5", "malformed number '-x'"},
+        {"Translate 1.5.2x 0 0", "bad.rib:1:11", "malformed number '1.5.2x'"},
         {"WorldBegin\nTranslate 3e38 0 0\nPolygon \"P\" [0 0 0 3e38 0 0 0 1 0]", "bad.rib:3:1", "not finite once transformed"},
         {"WorldBegin\nScale 1e30 1 1\nScale 1e30 1 1", "bad.rib:3:1", "finite"},
         {"WorldBegin\nPolygon \"P\" [0 0 0 1 0 0]", "bad.rib:2:1", "at least 3 vertices"},

@@ -260,8 +260,11 @@ RibToken RibLexer::scan() {
         token.text = m_text.substr(start, m_pos - start);
         char* end = nullptr;
         token.number = std::strtod(token.text.c_str(), &end);
-        if (end != token.text.c_str() + token.text.size())
-            throw RibError(token.location, "malformed number '" + token.text + "'");
+        if (end != token.text.c_str() + token.text.size()) {
+            // Show the whole word ("-x" of a shell line, "1.5f"), not only the part read as a number.
+            while (std::isalnum(static_cast<unsigned char>(current())) || current() == '_' || current() == '.') advance();
+            throw RibError(token.location, "malformed number '" + m_text.substr(start, m_pos - start) + "'");
+        }
         // RIB numbers are 32-bit floats: a larger one would silently become infinite.
         if (!(std::fabs(token.number) <= FLT_MAX))
             throw RibError(token.location, "number " + token.text + " is too large for a 32-bit float (at most about 3.4e38)");
