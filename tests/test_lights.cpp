@@ -216,6 +216,38 @@ TEST_CASE("classic light shaders: pointlight, spotlight and distantlight light w
                                                 "the same point, so the light has no direction; it is left out") == 1);
 }
 
+TEST_CASE("a LightSource without its handle is read as Aqsis and Pixie read it: the string after the shader is a "
+          "parameter's name", "[lights]") {
+    // A hand-written teaching file: LightSource "ambientlight" "intensity" [1], no sequence number.
+    std::string const head = "Format 8 8 1\nProjection \"orthographic\"\nScreenWindow -0.01 0.01 -0.01 0.01\n"
+                             "Integrator \"PxrDirectLighting\" \"d\"\nWorldBegin\n";
+    std::string const matte = "Surface \"matte\"\nPolygon \"P\" [-10 -10 5  10 -10 5  10 10 5  -10 10 5]\nWorldEnd\n";
+    RenderSettings settings;
+    settings.spp = 4;
+    auto mean = [](test::RenderOutcome const& r) { return test::meanChannel(r, 0, [](int, int) { return true; }); };
+    auto point = test::renderRib(head + "LightSource \"pointlight\" \"intensity\" [8] \"from\" [0 0 3]\n" + matte, settings);
+    CHECK(mean(point) == Approx(8.0 / 4.0).epsilon(1e-3));
+    CHECK(point.anyMessageContains("test.rib:6:1: LightSource has no handle"));
+    auto ambient = test::renderRib(head + "LightSource \"ambientlight\" \"intensity\" [0.25]\n" + matte, settings);
+    CHECK(mean(ambient) == Approx(0.25).epsilon(1e-3));
+
+    // With no parameters at all, and twice: two lights, one warning.
+    Diagnostics diagnostics(false);
+    Scene scene = test::parseRib("WorldBegin\nLightSource \"distantlight\"\nLightSource \"distantlight\" "
+                                 "\"from\" [0 1 0] \"to\" [0 0 0]\nLightSource \"spotlight\" \"key\" \"intensity\" [2]\n"
+                                 "Illuminate \"key\" 0\n",
+                                 diagnostics);
+    CHECK(scene.lights.size() == 2u);  // the spotlight with its handle is named, and turned off by it
+    CHECK(test::warningsContaining(diagnostics, "has no handle") == 1);
+    // A handle followed by a string-valued parameter is still a handle.
+    Diagnostics named(false);
+    Scene withHandle = test::parseRib("WorldBegin\nLightSource \"shadowspot\" \"key\" \"shadowname\" \"raytrace\"\n"
+                                      "Illuminate \"key\" 0\n",
+                                      named);
+    CHECK(withHandle.lights.empty());
+    CHECK(test::warningsContaining(named, "has no handle") == 0);
+}
+
 TEST_CASE("a light shader this renderer does not have is placed by its name, then by its parameters", "[lights]") {
     auto kindOf = [](std::string const& lightSource, bool known = false) {
         Diagnostics diagnostics(false);

@@ -112,6 +112,11 @@ bool RequestReader::nextIsArray() const {
     return kind == RibValue::Kind::StringArray || kind == RibValue::Kind::NumberArray;
 }
 
+bool RequestReader::nextIsParameter() const {
+    if (m_next + 1 >= m_request.args.size() || m_request.args[m_next].kind != RibValue::Kind::String) return false;
+    return m_request.args[m_next + 1].kind != RibValue::Kind::String;
+}
+
 std::vector<std::string> RequestReader::stringArray(const char* what) {
     RibValue const& v = take(what, "an array of strings");
     if (v.kind == RibValue::Kind::String || v.kind == RibValue::Kind::StringArray) return v.strings;

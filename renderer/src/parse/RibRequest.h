@@ -54,6 +54,10 @@ public:
     bool nextIsString() const;
     /// Whether the next argument is written as an array ([...]), not a lone value.
     bool nextIsArray() const;
+    /// Whether the next arguments are a parameter's name and its value: a lone
+    /// string followed by a number or an array (not by another string, as a
+    /// handle is followed by a name).
+    bool nextIsParameter() const;
     /// The remaining arguments as "type name" value pairs.
     ParamList params();
     /// Throws if arguments are left over.

@@ -176,6 +176,8 @@ private:
     void light(RequestReader& in);
     void lightSource(RequestReader& in);
     void areaLightSource(RequestReader& in);
+    /// A LightSource's or AreaLightSource's handle, read next; one is made up when it is left out.
+    std::string lightHandle(RequestReader& in, std::string const& request);
     /// Makes the shapes in the current attribute block emit the light `shader` describes.
     void startAreaLight(std::string const& shader, std::string const& handle, ParamList const& params,
                         SourceLocation const& where);

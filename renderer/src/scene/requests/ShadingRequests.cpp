@@ -371,10 +371,22 @@ void SceneBuilder::light(RequestReader& in) {
     if (building()) makeLightFrom("Light", type, handle, params, state().transform, in.where());
 }
 
+std::string SceneBuilder::lightHandle(RequestReader& in, std::string const& request) {
+    // A sequence number in older files, a string in newer ones. Some hand-written
+    // files leave it out (LightSource "ambientlight" "intensity" [1]), which Aqsis
+    // and Pixie read: the string that follows is then a parameter's name.
+    if (in.atEnd() || in.nextIsParameter()) {
+        std::string handle = "(no handle, " + in.where().str() + ")";
+        warnOnce(request + " without handle", in.where(),
+                 request + " has no handle (a number or a name after the shader's name); read without one");
+        return handle;
+    }
+    return in.nextIsString() ? in.string("light handle") : std::to_string(in.integer("light handle"));
+}
+
 void SceneBuilder::lightSource(RequestReader& in) {
     std::string type = in.string("light shader name");
-    // The handle: a sequence number in older files, a string in newer ones.
-    std::string handle = in.nextIsString() ? in.string("light handle") : std::to_string(in.integer("light handle"));
+    std::string handle = lightHandle(in, "LightSource");
     ParamList params = in.params();
     if (!m_inWorld) {
         m_cameraLights.push_back({"LightSource", type, handle, params, state().transform, in.where()});
@@ -385,7 +397,7 @@ void SceneBuilder::lightSource(RequestReader& in) {
 
 void SceneBuilder::areaLightSource(RequestReader& in) {
     std::string type = in.string("area light shader name");
-    std::string handle = in.nextIsString() ? in.string("light handle") : std::to_string(in.integer("light handle"));
+    std::string handle = lightHandle(in, "AreaLightSource");
     ParamList params = in.params();
     params.typeUntyped(lightParameterTypes(), "AreaLightSource \"" + type + "\"");
     startAreaLight(type, handle, params, in.where());
