@@ -187,7 +187,7 @@ TEST_CASE("a name that is no RIB request is told apart from an unsupported one, 
     CHECK_THAT(warnings[3], !Catch::Matchers::Contains("did you mean"));
 }
 
-TEST_CASE("a pbrt scene is named as one at its second pbrt directive; one stray pbrt word is only a warning", "[rib]") {
+TEST_CASE("a pbrt scene is named as one at its second pbrt directive, and one stray pbrt word is only a warning", "[rib]") {
     // pbrt's format looks like RIB: without this it stopped at "Integrator: expected integrator handle".
     Diagnostics diagnostics(false);
     CHECK_THROWS_WITH(parseRib("LookAt 1 1 -1  0 0 0  0 1 0\nCamera \"perspective\" \"float fov\" [50]\n"
