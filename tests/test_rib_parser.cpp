@@ -707,4 +707,20 @@ TEST_CASE("a missing archive, sky image or texture is a warning naming what was 
     Scene textured = parseRib(texture, textureWarnings, "lenient.rib");
     CHECK(textured.missingTextures == std::set<std::string>{"no-such.tx"});
     CHECK(test::warningTexts(textureWarnings).size() == 1u);
+
+    // An exporter's scene read without its archive files: each missing one is named, the places
+    // tried only for the first three (a MayaMan scene names 52, nine places each).
+    Diagnostics many(false);
+    parseRib("WorldBegin\nReadArchive \"a1\"\nReadArchive \"a2\"\nReadArchive \"a3\"\nReadArchive \"a4\"\n"
+             "ReadArchive \"a5\"\n",
+             many, "lenient.rib");
+    std::vector<std::string> missing = test::warningTexts(many);
+    REQUIRE(missing.size() == 5u);
+    for (size_t i = 0; i < 5; ++i) {
+        INFO(missing[i]);
+        CHECK_THAT(missing[i], Catch::Matchers::Contains("archive \"a" + std::to_string(i + 1) + "\" not found"));
+        CHECK((missing[i].find("tried:") != std::string::npos) == (i < 3));
+        CHECK((missing[i].find('\n') == std::string::npos) == (i >= 3));
+    }
+    CHECK_THAT(missing[4], Catch::Matchers::Contains("(looked for as the archives above)"));
 }

@@ -301,6 +301,7 @@ private:
     std::vector<std::string> m_proceduralSearchPath;  // where a DynamicLoad plugin would be looked for
     std::map<std::string, std::string> m_userOptions;  // Option "user" values, for "${NAME}" in search paths
     bool m_archiveMissing = false;  // an archive was not found: objects it defined may be missing too
+    int m_archivesNotFound = 0;     // the first few list the places tried, the rest one line each
     std::map<std::string, int> m_defaultMaterials;
     std::map<std::string, int> m_patternHandles;  ///< handle -> the latest Pattern of that name
     std::map<std::shared_ptr<AreaLightDesc>, int> m_emissiveMaterials;

@@ -143,8 +143,14 @@ void SceneBuilder::readArchiveNamed(std::string const& name, SourceLocation cons
         tried += "\n    (and every end of the absolute paths under " + roots[0].string() + ", " + roots[1].string() +
                  " and the scene's folder's " + std::to_string(ancestors.size()) + " parents)";
     // RenderMan renders on without a missing archive; so does this renderer, unless --strict.
+    // An exporter's scene read without its archive files names dozens: after
+    // the first few, each is one line.
     m_archiveMissing = true;
-    missingFile(where, "archive \"" + name + "\" not found; tried:" + tried);
+    int constexpr kListedWithPlacesTried = 3;
+    if (++m_archivesNotFound <= kListedWithPlacesTried || m_options.strict)
+        missingFile(where, "archive \"" + name + "\" not found; tried:" + tried);
+    else
+        missingFile(where, "archive \"" + name + "\" not found (looked for as the archives above)");
 }
 
 void SceneBuilder::procedural(RequestReader& in) {
