@@ -261,7 +261,7 @@ RibToken RibLexer::scan() {
         char* end = nullptr;
         token.number = std::strtod(token.text.c_str(), &end);
         if (end != token.text.c_str() + token.text.size()) {
-            // Show the whole word ("-x" of a shell line, "1.5f"), not only the part read as a number.
+            // Show the whole word ("-x" of a shell line, "1.2.3a"), not only the part read as a number.
             while (std::isalnum(static_cast<unsigned char>(current())) || current() == '_' || current() == '.') advance();
             throw RibError(token.location, "malformed number '" + m_text.substr(start, m_pos - start) + "'");
         }
