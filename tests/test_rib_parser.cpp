@@ -484,6 +484,28 @@ TEST_CASE("an archive named from the project folder is found from the scene's an
     CHECK(test::warningsContaining(missing, (fs::absolute(project).lexically_normal() / "rib" / "absent.rib").string()) == 1);
 }
 
+TEST_CASE("an archive rendered as a scene is named as the archive, also when its shapes come from an archive it reads",
+          "[rib]") {
+    // A student project's bottle.rib reads bottle_geometry.rib outside any world: bottle.rib is the
+    // archive the user gave the renderer, and the error names it, at the shape that gave it away.
+    namespace fs = std::filesystem;
+    fs::path const folder = fs::path(test::outputDir()) / "archive-as-scene";
+    fs::create_directories(folder);
+    std::ofstream(folder / "bottle_geometry.rib") << "AttributeBegin\n  Sphere 1 -1 1 360\nAttributeEnd\n";
+    std::ofstream(folder / "bottle.rib") << "Attribute \"identifier\" \"name\" [\"bottle\"]\nReadArchive \"bottle_geometry.rib\"\n";
+    Diagnostics diagnostics(false);
+    std::string const outer = (folder / "bottle.rib").string();
+    CHECK_THROWS_WITH(loadScene(outer, diagnostics),
+                      Catch::Matchers::StartsWith((folder / "bottle_geometry.rib").string() + ":2:3: geometry before any "
+                                                  "WorldBegin: \"" + outer + "\", which reads this file outside any world, "
+                                                  "is itself an archive"));
+    // The archive alone is named as one in so many words.
+    Diagnostics alone(false);
+    CHECK_THROWS_WITH(loadScene((folder / "bottle_geometry.rib").string(), alone),
+                      Catch::Matchers::Contains(":2:3: geometry before any WorldBegin: a file of shapes without a world "
+                                                "is an archive"));
+}
+
 TEST_CASE("a file that is a Git LFS pointer is named as one: an archive is missing, a scene cannot be read", "[rib]") {
     // A repository cloned without Git LFS holds pointers like this one in place of its large files.
     namespace fs = std::filesystem;

@@ -67,11 +67,14 @@ float radiusOf(float value, bool& reverse) {
 }  // namespace
 
 void SceneBuilder::addShape(std::unique_ptr<Shape> shape, SourceLocation const& where, PrimvarSet constants) {
-    if (!m_inWorld)
-        throw RibError(where, m_framesDone == 0
-                                  ? "geometry before any WorldBegin: a file of shapes without a world is an archive "
-                                    "(read it from a scene with ReadArchive)"
-                                  : "geometry after WorldEnd: shapes must come between WorldBegin and WorldEnd");
+    if (!m_inWorld) {
+        if (m_framesDone > 0) throw RibError(where, "geometry after WorldEnd: shapes must come between WorldBegin and WorldEnd");
+        // Read through an archive, the file given to the renderer is the archive to name.
+        std::string const archive = m_fileStack.size() > 1 ? "\"" + m_fileStack.front() + "\", which reads this file outside "
+                                                               "any world, is itself an archive"
+                                                             : "a file of shapes without a world is an archive";
+        throw RibError(where, "geometry before any WorldBegin: " + archive + " (read it from a scene with ReadArchive)");
+    }
     if (!building()) return;
     for (int i = 0; i < 4; ++i)
         for (int j = 0; j < 4; ++j)
