@@ -42,9 +42,7 @@ Quadric::LocalSurface Cone::surfaceLocal(float u, float v) const {
 }
 
 void Cone::boundsLocal(Vec3& lower, Vec3& upper) const {
-    float r = static_cast<float>(m_radius), h = static_cast<float>(m_height);
-    lower = Vec3(-r, -r, std::min(0.0f, h));
-    upper = Vec3(r, r, std::max(0.0f, h));
+    boundsOfRevolution(m_radius, std::min(0.0, m_height), std::max(0.0, m_height), lower, upper);
 }
 
 }  // namespace bxdflab

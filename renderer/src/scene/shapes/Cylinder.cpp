@@ -22,11 +22,7 @@ std::optional<Quadric::LocalHit> Cylinder::intersectLocal(DVec3 const& o, DVec3 
     double t0, t1;
     if (!solveQuadratic(a, 2.0 * (o.x * d.x + o.y * d.y), o.x * o.x + o.y * o.y - m_radius * m_radius, t0, t1))
         return std::nullopt;
-    return firstRoot(t0, t1, tnear, tfar, [&](double t) -> std::optional<Uv> {
-        DVec3 p = o + t * d;
-        if (p.z < m_zMin || p.z > m_zMax) return std::nullopt;
-        return swept(azimuth(p.x, p.y), heightFraction(p.z, m_zMin, m_zMax));
-    });
+    return firstRootBetweenHeights(t0, t1, tnear, tfar, o, d, m_zMin, m_zMax);
 }
 
 Quadric::LocalSurface Cylinder::surfaceLocal(float u, float v) const {
@@ -42,9 +38,7 @@ Quadric::LocalSurface Cylinder::surfaceLocal(float u, float v) const {
 }
 
 void Cylinder::boundsLocal(Vec3& lower, Vec3& upper) const {
-    float r = static_cast<float>(m_radius);
-    lower = Vec3(-r, -r, static_cast<float>(m_zMin));
-    upper = Vec3(r, r, static_cast<float>(m_zMax));
+    boundsOfRevolution(m_radius, m_zMin, m_zMax, lower, upper);
 }
 
 }  // namespace bxdflab

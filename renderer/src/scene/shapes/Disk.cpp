@@ -36,9 +36,7 @@ Quadric::LocalSurface Disk::surfaceLocal(float u, float v) const {
 }
 
 void Disk::boundsLocal(Vec3& lower, Vec3& upper) const {
-    float r = static_cast<float>(m_radius), h = static_cast<float>(m_height);
-    lower = Vec3(-r, -r, h);
-    upper = Vec3(r, r, h);
+    boundsOfRevolution(m_radius, m_height, m_height, lower, upper);
 }
 
 }  // namespace bxdflab

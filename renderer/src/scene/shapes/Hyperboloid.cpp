@@ -77,9 +77,8 @@ Quadric::LocalSurface Hyperboloid::surfaceLocal(float u, float v) const {
 }
 
 void Hyperboloid::boundsLocal(Vec3& lower, Vec3& upper) const {
-    float r = static_cast<float>(std::max(glm::length(glm::dvec2(m_p1)), glm::length(glm::dvec2(m_p2))));
-    lower = Vec3(-r, -r, static_cast<float>(std::min(m_p1.z, m_p2.z)));
-    upper = Vec3(r, r, static_cast<float>(std::max(m_p1.z, m_p2.z)));
+    boundsOfRevolution(std::max(glm::length(glm::dvec2(m_p1)), glm::length(glm::dvec2(m_p2))), std::min(m_p1.z, m_p2.z),
+                       std::max(m_p1.z, m_p2.z), lower, upper);
 }
 
 }  // namespace bxdflab

@@ -22,11 +22,7 @@ std::optional<Quadric::LocalHit> Paraboloid::intersectLocal(DVec3 const& o, DVec
     if (!solveQuadratic(k * (d.x * d.x + d.y * d.y), 2.0 * k * (o.x * d.x + o.y * d.y) - d.z,
                         k * (o.x * o.x + o.y * o.y) - o.z, t0, t1))
         return std::nullopt;
-    return firstRoot(t0, t1, tnear, tfar, [&](double t) -> std::optional<Uv> {
-        DVec3 p = o + t * d;
-        if (p.z < m_zMin || p.z > m_zMax) return std::nullopt;
-        return swept(azimuth(p.x, p.y), heightFraction(p.z, m_zMin, m_zMax));
-    });
+    return firstRootBetweenHeights(t0, t1, tnear, tfar, o, d, m_zMin, m_zMax);
 }
 
 Quadric::LocalSurface Paraboloid::surfaceLocal(float u, float v) const {
@@ -47,9 +43,7 @@ Quadric::LocalSurface Paraboloid::surfaceLocal(float u, float v) const {
 }
 
 void Paraboloid::boundsLocal(Vec3& lower, Vec3& upper) const {
-    float r = static_cast<float>(m_rmax);
-    lower = Vec3(-r, -r, static_cast<float>(m_zMin));
-    upper = Vec3(r, r, static_cast<float>(m_zMax));
+    boundsOfRevolution(m_rmax, m_zMin, m_zMax, lower, upper);
 }
 
 }  // namespace bxdflab

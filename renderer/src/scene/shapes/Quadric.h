@@ -98,6 +98,22 @@ protected:
         }
         return std::nullopt;
     }
+    /// firstRoot for a surface of revolution cut at the heights zMin..zMax (a
+    /// cylinder, a paraboloid): v is the hit's height fraction.
+    std::optional<LocalHit> firstRootBetweenHeights(double t0, double t1, double tnear, double tfar, DVec3 const& org,
+                                                    DVec3 const& dir, double zMin, double zMax) const {
+        return firstRoot(t0, t1, tnear, tfar, [&](double t) -> std::optional<Uv> {
+            DVec3 p = org + t * dir;
+            if (p.z < zMin || p.z > zMax) return std::nullopt;
+            return swept(azimuth(p.x, p.y), heightFraction(p.z, zMin, zMax));
+        });
+    }
+    /// The box around a surface of revolution of radius at most r between zMin and zMax.
+    static void boundsOfRevolution(double r, double zMin, double zMax, Vec3& lower, Vec3& upper) {
+        float const radius = static_cast<float>(r);
+        lower = Vec3(-radius, -radius, static_cast<float>(zMin));
+        upper = Vec3(radius, radius, static_cast<float>(zMax));
+    }
 
 private:
     Mat4 m_objectToWorld;

@@ -116,9 +116,7 @@ Quadric::LocalSurface Sphere::surfaceAt(DVec3 const& p, double cosPhi, double si
 }
 
 void Sphere::boundsLocal(Vec3& lower, Vec3& upper) const {
-    float r = static_cast<float>(m_radius);
-    lower = Vec3(-r, -r, static_cast<float>(m_zMin));
-    upper = Vec3(r, r, static_cast<float>(m_zMax));
+    boundsOfRevolution(m_radius, m_zMin, m_zMax, lower, upper);
 }
 
 }  // namespace bxdflab
