@@ -2,7 +2,8 @@
 // EvaluateSamplesAtIndex give the same W, FPdf and RPdf (0.01%), and a valid
 // sample has FPdf > 0 -- what PxrValidateBxdf shows as a picture. And each
 // point's answers depend on that point alone: not on its place in the batch,
-// nor on another thread shading at the same time.
+// nor on another thread shading at the same time; a point that wants no lobe
+// gets none.
 #include <cmath>
 
 #include "checks/CheckSupport.h"
@@ -68,8 +69,8 @@ bool sameAnswer(ProbeResult const& a, ProbeResult const& b, bool compareL) {
 
 /// A batch of points that differ in normal, tangent, view, parameters (as a
 /// texture makes them) and random numbers is asked, then asked again moved one
-/// place later behind a new first point (which wants no lobe): every point keeps
-/// all it had, so its answers must not change. A Bxdf that reads index 0
+/// place later behind a new first point (which wants no lobe, and must get
+/// nothing): every point keeps all it had, so its answers must not change. A Bxdf that reads index 0
 /// (gloss[0], m_Nn[0], lobesWanted[0]) or a neighbour's entry where it should
 /// read [i] answers differently. Returns the failure, or nothing.
 std::string answersDependOnPlaceInBatch(CheckContext& c, std::string const& params, std::string const& modeName) {
@@ -97,8 +98,15 @@ std::string answersDependOnPlaceInBatch(CheckContext& c, std::string const& para
                "anywhere but from the RixRNG it is given?";
     };
 
+    auto wantedNothing = [&](char const* call, char const* answered) {
+        return std::string(call) + " " + answered + " for a point whose lobesWanted asks for no lobe (sampling mode \"" +
+               modeName + "\", " + withParams(params) + ", the first point of a batch): an integrator that wants no " +
+               "lobe of this Bxdf at a point (past its diffuse depth, say) must get nothing there. Test lobesWanted[i] " +
+               "against the lobes each point would sample or evaluate, and leave the point alone when it wants none";
+    };
     auto generated = c.plugin.generate(asked, batch.points, samples);
     auto generatedMoved = c.plugin.generate(askedMoved, moved, movedSamples);
+    if (generatedMoved[0].valid) return wantedNothing("GenerateSample", "returned a valid sample");
     for (size_t j = 0; j + 1 < n; ++j)
         if (!sameAnswer(generated[j], generatedMoved[j + 1], true))
             return differs("GenerateSample", j, generated[j], generatedMoved[j + 1]);
@@ -108,6 +116,7 @@ std::string answersDependOnPlaceInBatch(CheckContext& c, std::string const& para
     movedL.insert(movedL.end(), L.begin(), L.end() - 1);
     auto evaluated = c.plugin.evaluate(asked, batch.points, L);
     auto evaluatedMoved = c.plugin.evaluate(askedMoved, moved, movedL);
+    if (evaluatedMoved[0].valid) return wantedNothing("EvaluateSample", "evaluated a lobe");
     for (size_t j = 0; j + 1 < n; ++j)
         if (!sameAnswer(evaluated[j], evaluatedMoved[j + 1], false))
             return differs("EvaluateSample", j, evaluated[j], evaluatedMoved[j + 1]);
