@@ -70,9 +70,10 @@ bool sameAnswer(ProbeResult const& a, ProbeResult const& b, bool compareL) {
 /// A batch of points that differ in normal, tangent, view, parameters (as a
 /// texture makes them) and random numbers is asked, then asked again moved one
 /// place later behind a new first point (which wants no lobe, and must get
-/// nothing): every point keeps all it had, so its answers must not change. A Bxdf that reads index 0
-/// (gloss[0], m_Nn[0], lobesWanted[0]) or a neighbour's entry where it should
-/// read [i] answers differently. Returns the failure, or nothing.
+/// nothing): every point keeps all it had, so its answers must not change. A
+/// Bxdf that reads index 0 (gloss[0], m_Nn[0], lobesWanted[0]) or a
+/// neighbour's entry where it should read [i] answers differently. Returns the
+/// failure, or nothing.
 std::string answersDependOnPlaceInBatch(CheckContext& c, std::string const& params, std::string const& modeName) {
     size_t const n = 64;
     MixedBatch const batch(c.exercise, n, 47.0);
