@@ -273,9 +273,11 @@ TEST_CASE("PxrVCM and PxrPathTracer agree on a box lit through its ceiling", "[i
     rib.replace(rib.find("Format 320 320 1"), 16, "Format 48 48 1");
     RenderSettings settings;
     settings.spp = 256;
-    auto vcm = test::renderRib(withIntegrator(rib, "Integrator \"PxrVCM\" \"v\" \"int maxPathLength\" [5]"), settings);
+    std::string const file = std::string(SCENES_DIR) + "/ch11/box.rib";  // its archive is found beside it
+    auto vcm = test::renderRib(withIntegrator(rib, "Integrator \"PxrVCM\" \"v\" \"int maxPathLength\" [5]"), settings, file);
     auto paths = test::renderRib(
-        withIntegrator(rib, "Integrator \"PxrPathTracer\" \"p\" \"int maxPathLength\" [5] \"int allowCaustics\" [1]"), settings);
+        withIntegrator(rib, "Integrator \"PxrPathTracer\" \"p\" \"int maxPathLength\" [5] \"int allowCaustics\" [1]"),
+        settings, file);
     for (int c = 0; c < 3; ++c)
         CHECK(test::meanChannel(vcm, c, kAll) == Approx(test::meanChannel(paths, c, kAll)).epsilon(0.006));
 }
