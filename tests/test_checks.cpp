@@ -179,6 +179,28 @@ TEST_CASE("render comparison: noise passes, a thin bias fails on the mean, a cla
     CHECK_FALSE(compareRenders(wrong, reference).passed());
 }
 
+TEST_CASE("noise comparison: too noisy fails, too smooth fails only where the scene fixes the estimator",
+          "[checks][render]") {
+    auto withVariance = [](float variance) {
+        RenderImage image;
+        image.width = image.height = 32;
+        image.rgb.assign(3 * 32 * 32, 0.5f);
+        image.variance.assign(3 * 32 * 32, variance);
+        return image;
+    };
+    RenderImage const reference = withVariance(1e-4f);
+    CHECK(compareNoise(withVariance(1.2e-4f), reference, 1.5).passed);
+    CHECK_FALSE(compareNoise(withVariance(2e-4f), reference, 1.5).passed);
+    // Smoother is better where the estimator is the student's choice...
+    CHECK(compareNoise(withVariance(1e-5f), reference, 1.5).passed);
+    // ...but where the scene's parameters fix it, a smoother image took samples it was not asked for.
+    NoiseVerdict smooth = compareNoise(withVariance(1e-5f), reference, 1.5, true);
+    CHECK_FALSE(smooth.passed);
+    CHECK(smooth.message.find("sample counts") != std::string::npos);
+    CHECK(compareNoise(withVariance(0.8e-4f), reference, 1.5, true).passed);
+    CHECK_FALSE(compareNoise(withVariance(2e-4f), reference, 1.5, true).passed);
+}
+
 TEST_CASE("render comparison: a pixel whose few samples all missed a rare light is noisy, not exact", "[checks][render]") {
     // A penumbra at 8 spp: each sample sees the light with probability 1/16 and then adds 1/8.
     // Many pixels get no hit at all and report a variance of exactly 0; their neighbours show the noise.

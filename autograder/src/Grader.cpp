@@ -381,11 +381,17 @@ SceneRender renderScene(Exercise const& e, std::string const& scene, Course& cou
     return out;
 }
 
-/// A render check's result, and the first scene's two images (for the noise check that follows it).
+/// One scene's two images, kept for the noise check.
+struct SceneImages {
+    std::string scene;
+    RenderImage mine;
+    RenderImage const* theirs = nullptr;
+};
+
+/// A render check's result, and the images of every scene that came back (for the noise check that follows it).
 struct RenderOutcome {
     CheckResult result;
-    RenderImage mine;
-    RenderImage const* theirs = nullptr;  ///< set once the student's render came back as an image
+    std::vector<SceneImages> images;  ///< in the manifest's order; empty until a render came back as an image
 };
 
 /// Renders every scene of the exercise; the check passes when each agrees with
@@ -393,7 +399,7 @@ struct RenderOutcome {
 /// not (or of the first scene).
 RenderOutcome renderCheck(Exercise const& e, double points, Course& course, SandboxLayout const& layout,
                           nlohmann::json const& rubric, OutputFolder const& out) {
-    RenderOutcome outcome{CheckResult::start(e, "renders", points), {}, nullptr};
+    RenderOutcome outcome{CheckResult::start(e, "renders", points), {}};
     CheckResult& r = outcome.result;
     auto start = Clock::now();
     std::optional<SceneRender> shown;
@@ -406,10 +412,7 @@ RenderOutcome renderCheck(Exercise const& e, double points, Course& course, Sand
             r.details = one.rendererSaid;
             break;
         }
-        if (!outcome.theirs) {
-            outcome.mine = one.mine;
-            outcome.theirs = one.theirs;
-        }
+        outcome.images.push_back({scene, one.mine, one.theirs});
         agreements += prefix + one.verdict.message + "\n";
         bool const failed = !one.verdict.passed();
         if (failed || !shown) {
@@ -435,6 +438,27 @@ RenderOutcome renderCheck(Exercise const& e, double points, Course& course, Sand
     r.summary = e.scenes.size() > 1 ? "all " + std::to_string(e.scenes.size()) + " scenes agree with the solution's" : agreements.substr(0, agreements.size() - 1);
     if (e.scenes.size() > 1) r.details = agreements + r.details;
     return outcome;
+}
+
+/// The noise check: the first scene's variance at most noiseLimit times the
+/// solution's, and each of the manifest's sameNoiseScenes within noiseLimit
+/// of it both ways (there the scene fixes the estimator).
+NoiseVerdict noiseVerdict(Exercise const& e, std::vector<SceneImages> const& images) {
+    bool const several = e.scenes.size() > 1;
+    auto bothWays = [&](std::string const& scene) {
+        return std::find(e.sameNoiseScenes.begin(), e.sameNoiseScenes.end(), scene) != e.sameNoiseScenes.end();
+    };
+    NoiseVerdict first = compareNoise(images.front().mine, *images.front().theirs, e.noiseLimit, bothWays(images.front().scene));
+    if (several) first.message = images.front().scene + ": " + first.message;
+    if (!first.passed) return first;
+    for (size_t k = 1; k < images.size(); ++k) {
+        if (!bothWays(images[k].scene)) continue;
+        NoiseVerdict v = compareNoise(images[k].mine, *images[k].theirs, e.noiseLimit, true);
+        v.message = images[k].scene + ": " + v.message;
+        if (!v.passed) return v;
+        first.message += "; " + v.message;
+    }
+    return first;
 }
 
 }  // namespace
@@ -616,7 +640,7 @@ Grade grade(GradeOptions const& options, Course& course, OutputFolder const& out
                 rendered = renderCheck(e, max, course, checking, rubric, out);
                 r = rendered->result;
             } else if (check == "noise") {
-                if (!rendered || !rendered->theirs) {
+                if (!rendered || rendered->images.empty()) {
                     r.summary = "not run: it compares the images of the renders check, which must come first and "
                                 "produce an image";
                 } else if (!rendered->result.passed()) {
@@ -624,7 +648,7 @@ Grade grade(GradeOptions const& options, Course& course, OutputFolder const& out
                     r.summary = "not graded: the noise of an image counts only once the image is right (the renders "
                                 "check failed)";
                 } else {
-                    NoiseVerdict v = compareNoise(rendered->mine, *rendered->theirs, e.noiseLimit);
+                    NoiseVerdict const v = noiseVerdict(e, rendered->images);
                     r.status = v.passed ? CheckOutcome::Status::Passed : CheckOutcome::Status::Failed;
                     r.summary = v.message;
                 }

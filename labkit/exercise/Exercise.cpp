@@ -67,6 +67,10 @@ Exercise loadExercise(std::string const& courseRoot, std::string const& manifest
         e.scene = j.value("scene", e.scenes.empty() ? std::string() : e.scenes.front());
         if (e.scenes.empty() && !e.scene.empty()) e.scenes.push_back(e.scene);
         e.noiseLimit = j.value("noiseLimit", e.noiseLimit);
+        e.sameNoiseScenes = j.value("sameNoiseScenes", std::vector<std::string>{});
+        for (auto const& scene : e.sameNoiseScenes)
+            if (std::find(e.scenes.begin(), e.scenes.end(), scene) == e.scenes.end())
+                throw std::runtime_error("\"sameNoiseScenes\" names " + scene + ", which is not one of its scenes");
         e.compareBlock = j.value("compareBlock", e.compareBlock);
         e.renderSpp = j.value("renderSpp", e.renderSpp);
         if (e.compareBlock < 1 || e.compareBlock > 64) throw std::runtime_error("\"compareBlock\" must be 1 to 64");

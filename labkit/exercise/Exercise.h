@@ -48,6 +48,10 @@ struct Exercise {
     int renderSpp = 0;        ///< samples per pixel of the "renders" check's images (0: the rubric's render_spp)
     int compareBlock = 1;     ///< the "renders" check compares squares of this many pixels a side (see compareRenders)
     double noiseLimit = 1.5;  ///< the "noise" check: the render's variance at most this times the solution's
+    /// Scenes (of `scenes`) whose parameters fix the estimator, one sampling
+    /// strategy alone: there the "noise" check also wants the variance at
+    /// least 1 / noiseLimit times the solution's.
+    std::vector<std::string> sameNoiseScenes;
 
     std::string params;       ///< parameters every check uses (white where energy matters)
     std::string colorParams;  ///< a second, coloured set the values check also compares

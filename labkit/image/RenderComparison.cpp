@@ -177,7 +177,7 @@ RenderVerdict compareUnits(RenderImage const& a, RenderImage const& b, double va
 
 }  // namespace
 
-NoiseVerdict compareNoise(RenderImage const& tested, RenderImage const& reference, double limit) {
+NoiseVerdict compareNoise(RenderImage const& tested, RenderImage const& reference, double limit, bool bothWays) {
     NoiseVerdict v;
     // The sum of the per-pixel variances without each image's largest 1%: a
     // few pixels whose handful of samples caught a rare bright path would
@@ -195,14 +195,26 @@ NoiseVerdict compareNoise(RenderImage const& tested, RenderImage const& referenc
     };
     double const mine = trimmedSum(tested.variance), theirs = trimmedSum(reference.variance);
     v.ratio = theirs > 0.0 ? mine / theirs : (mine > 0.0 ? 1e30 : 1.0);
-    v.passed = v.ratio <= limit;
-    char text[256];
-    std::snprintf(text, sizeof text,
-                  "your image's variance is %.3g times the solution's at the same samples per pixel (at most %.3g "
-                  "allowed)%s",
-                  std::min(v.ratio, 1e6), limit,
-                  v.passed ? "" : ": the estimate is right on average but converges slower; is a sampling "
-                                  "strategy or a MIS weight missing?");
+    bool const tooNoisy = v.ratio > limit, tooSmooth = bothWays && v.ratio < 1.0 / limit;
+    v.passed = !tooNoisy && !tooSmooth;
+    char text[512];
+    if (bothWays)
+        std::snprintf(text, sizeof text,
+                      "your image's variance is %.3g times the solution's at the same samples per pixel (between %.3g "
+                      "and %.3g allowed)%s",
+                      std::min(v.ratio, 1e6), 1.0 / limit, limit,
+                      tooSmooth ? ": the scene's parameters fix the sampling, so a right integrator is as noisy as the "
+                                  "solution, and a smoother image takes samples the scene does not ask for; does the "
+                                  "integrator read its sample counts (numLightSamples, numBxdfSamples)?"
+                      : tooNoisy ? ": is a sample lost or weighted badly?"
+                                 : "");
+    else
+        std::snprintf(text, sizeof text,
+                      "your image's variance is %.3g times the solution's at the same samples per pixel (at most %.3g "
+                      "allowed)%s",
+                      std::min(v.ratio, 1e6), limit,
+                      v.passed ? "" : ": the estimate is right on average but converges slower; is a sampling "
+                                      "strategy or a MIS weight missing?");
     v.message = text;
     return v;
 }

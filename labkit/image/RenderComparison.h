@@ -58,7 +58,11 @@ struct NoiseVerdict {
     bool passed = false;
     std::string message;
 };
-NoiseVerdict compareNoise(RenderImage const& tested, RenderImage const& reference, double limit);
+/// With `bothWays` the ratio must also be at least 1 / limit: for a scene
+/// whose parameters fix the estimator (one sampling strategy alone), where a
+/// right integrator is as noisy as the solution and a smoother image means
+/// samples the scene did not ask for.
+NoiseVerdict compareNoise(RenderImage const& tested, RenderImage const& reference, double limit, bool bothWays = false);
 
 /// Relative mean squared error, mean((a - b)^2 / (b^2 + 0.01)), over every value.
 double relativeMse(std::vector<float> const& a, std::vector<float> const& b);
