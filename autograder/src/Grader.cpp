@@ -444,21 +444,19 @@ RenderOutcome renderCheck(Exercise const& e, double points, Course& course, Sand
 /// solution's, and each of the manifest's sameNoiseScenes within noiseLimit
 /// of it both ways (there the scene fixes the estimator).
 NoiseVerdict noiseVerdict(Exercise const& e, std::vector<SceneImages> const& images) {
-    bool const several = e.scenes.size() > 1;
-    auto bothWays = [&](std::string const& scene) {
-        return std::find(e.sameNoiseScenes.begin(), e.sameNoiseScenes.end(), scene) != e.sameNoiseScenes.end();
-    };
-    NoiseVerdict first = compareNoise(images.front().mine, *images.front().theirs, e.noiseLimit, bothWays(images.front().scene));
-    if (several) first.message = images.front().scene + ": " + first.message;
-    if (!first.passed) return first;
-    for (size_t k = 1; k < images.size(); ++k) {
-        if (!bothWays(images[k].scene)) continue;
-        NoiseVerdict v = compareNoise(images[k].mine, *images[k].theirs, e.noiseLimit, true);
-        v.message = images[k].scene + ": " + v.message;
+    NoiseVerdict all;
+    all.passed = true;
+    for (SceneImages const& image : images) {
+        bool const fixed = std::find(e.sameNoiseScenes.begin(), e.sameNoiseScenes.end(), image.scene) !=
+                           e.sameNoiseScenes.end();
+        if (&image != &images.front() && !fixed) continue;
+        NoiseVerdict v = compareNoise(image.mine, *image.theirs, e.noiseLimit, fixed);
+        if (e.scenes.size() > 1) v.message = image.scene + ": " + v.message;
         if (!v.passed) return v;
-        first.message += "; " + v.message;
+        if (&image == &images.front()) all.ratio = v.ratio;
+        all.message += (all.message.empty() ? "" : "; ") + v.message;
     }
-    return first;
+    return all;
 }
 
 }  // namespace

@@ -197,24 +197,21 @@ NoiseVerdict compareNoise(RenderImage const& tested, RenderImage const& referenc
     v.ratio = theirs > 0.0 ? mine / theirs : (mine > 0.0 ? 1e30 : 1.0);
     bool const tooNoisy = v.ratio > limit, tooSmooth = bothWays && v.ratio < 1.0 / limit;
     v.passed = !tooNoisy && !tooSmooth;
-    char text[512];
+    char allowed[64];
     if (bothWays)
-        std::snprintf(text, sizeof text,
-                      "your image's variance is %.3g times the solution's at the same samples per pixel (between %.3g "
-                      "and %.3g allowed)%s",
-                      std::min(v.ratio, 1e6), 1.0 / limit, limit,
-                      tooSmooth ? ": the scene's parameters fix the sampling, so a right integrator is as noisy as the "
-                                  "solution, and a smoother image takes samples the scene does not ask for; does the "
-                                  "integrator read its sample counts (numLightSamples, numBxdfSamples)?"
-                      : tooNoisy ? ": is a sample lost or weighted badly?"
-                                 : "");
+        std::snprintf(allowed, sizeof allowed, "between %.3g and %.3g", 1.0 / limit, limit);
     else
-        std::snprintf(text, sizeof text,
-                      "your image's variance is %.3g times the solution's at the same samples per pixel (at most %.3g "
-                      "allowed)%s",
-                      std::min(v.ratio, 1e6), limit,
-                      v.passed ? "" : ": the estimate is right on average but converges slower; is a sampling "
-                                      "strategy or a MIS weight missing?");
+        std::snprintf(allowed, sizeof allowed, "at most %.3g", limit);
+    char const* why = tooNoisy ? ": the estimate is right on average but converges slower; is a sampling strategy "
+                                 "or a MIS weight missing?"
+                      : tooSmooth ? ": the scene's parameters fix the sampling, so a right integrator is as noisy as "
+                                    "the solution, and a smoother image takes samples the scene does not ask for; "
+                                    "does the integrator read its sample counts (numLightSamples, numBxdfSamples)?"
+                                  : "";
+    char text[512];
+    std::snprintf(text, sizeof text,
+                  "your image's variance is %.3g times the solution's at the same samples per pixel (%s allowed)%s",
+                  std::min(v.ratio, 1e6), allowed, why);
     v.message = text;
     return v;
 }
