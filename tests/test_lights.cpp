@@ -561,6 +561,51 @@ TEST_CASE("classic lights cast shadows only when asked: a shadow map, a traced s
     CHECK(behindBlocker("Attribute \"light\" \"string shadows\" [\"off\"]\n", distant) == Approx(0.7).epsilon(1e-3));
 }
 
+TEST_CASE("RIS lights' shadow controls: enableShadows 0 lights what lies behind a blocker, controls at values that "
+          "change nothing are read quietly, and one that would change the image is said to be unused",
+          "[lights]") {
+    // A square between a sun (no angular extent) and a white diffuse floor that fills the view.
+    auto behindBlocker = [](std::string const& light, Diagnostics* diagnostics = nullptr, bool blocked = true) {
+        std::string rib = "Format 8 8 1\nProjection \"orthographic\"\nScreenWindow -0.01 0.01 -0.01 0.01\n"
+                          "Integrator \"PxrDirectLighting\" \"d\"\nWorldBegin\n"
+                          "Light \"PxrDistantLight\" \"sun\" \"float angleExtent\" [0] " + light + "\n"
+                          "Bxdf \"diffuse\" \"white\" \"color diffuseColor\" [1 1 1]\n"
+                          "AttributeBegin\nAttribute \"visibility\" \"int camera\" [0]\n" +
+                          (blocked ? "Polygon \"P\" [-1 -1 3  1 -1 3  1 1 3  -1 1 3]\n" : "") + "AttributeEnd\n"
+                          "Polygon \"P\" [-10 -10 5  10 -10 5  10 10 5  -10 10 5]\nWorldEnd\n";
+        if (diagnostics) {
+            test::parseRib(rib, *diagnostics);
+            return 0.0;
+        }
+        return test::meanChannel(test::renderRib(rib, test::withSpp(4)), 0, [](int, int) { return true; });
+    };
+    CHECK(behindBlocker("") == 0.0);
+    CHECK(behindBlocker("\"int enableShadows\" [1]") == 0.0);
+    double const unshadowed = behindBlocker("\"int enableShadows\" [0]");
+    CHECK(unshadowed > 0.0);
+    CHECK(unshadowed == Approx(behindBlocker("", nullptr, false)).epsilon(1e-6));  // as if the blocker were not there
+    CHECK(behindBlocker("\"enableShadows\" [0]") == unshadowed);  // untyped, as older exporters write it
+
+    // What RenderMan for Maya and Houdini write for every light: no warning, no change.
+    std::string const defaults = "\"color shadowColor\" [0 0 0] \"float shadowDistance\" [-1] \"float shadowFalloff\" [-1] "
+                                 "\"float shadowFalloffGamma\" [1] \"string shadowSubset\" [\"\"] \"string shadowExcludeSubset\" "
+                                 "[\"\"] \"int thinShadow\" [1] \"int traceLightPaths\" [0] \"int fixedSampleCount\" [0] "
+                                 "\"float diffuse\" [1] \"float specular\" [1] \"float importanceMultiplier\" [1] "
+                                 "\"string lightGroup\" [\"keys\"]";
+    Diagnostics quiet(false);
+    behindBlocker(defaults, &quiet);
+    CHECK(test::warningTexts(quiet).empty());
+    CHECK(behindBlocker(defaults) == 0.0);
+
+    // A grey shadow or a light kept out of the diffuse lobe would change the image: not modelled, so said.
+    Diagnostics told(false);
+    behindBlocker("\"color shadowColor\" [0.5 0.5 0.5] \"float diffuse\" [0]", &told);
+    std::vector<std::string> const warnings = test::warningTexts(told);
+    REQUIRE(warnings.size() == 2u);
+    CHECK_THAT(warnings[0], Catch::Matchers::EndsWith("parameter \"shadowColor\" is not used; ignored"));
+    CHECK_THAT(warnings[1], Catch::Matchers::EndsWith("parameter \"diffuse\" is not used; ignored"));
+}
+
 TEST_CASE("an area light shader without geometry (plausibleArealight) is a light of its shape, radiance intensity x "
           "lightcolor, unseen by the camera",
           "[lights][classic]") {

@@ -276,12 +276,12 @@ TEST_CASE("a parameter nobody reads names the one its reader asked for when it i
     Diagnostics many(false);
     std::string lights;
     for (char const* handle : {"key", "fill", "rim"})
-        lights += std::string("Light \"PxrRectLight\" \"") + handle + "\" \"float specular\" [0.3] \"int enableShadows\" [1]\n";
+        lights += std::string("Light \"PxrRectLight\" \"") + handle + "\" \"float specular\" [0.3] \"float shadowFalloff\" [2]\n";
     parseRib("WorldBegin\n" + lights + "Light \"PxrDiskLight\" \"d\" \"float specular\" [0.5]\nWorldEnd\n", many);
     std::vector<std::string> const once = test::warningTexts(many);
     REQUIRE(once.size() == 3u);  // the rect lights' two names, and the disk light's own
     CHECK(once[0] == "test.rib:2:28: PxrRectLight \"key\": parameter \"specular\" is not used; ignored");
-    CHECK_THAT(once[1], Catch::Matchers::Contains("PxrRectLight \"key\": parameter \"enableShadows\""));
+    CHECK_THAT(once[1], Catch::Matchers::Contains("PxrRectLight \"key\": parameter \"shadowFalloff\""));
     CHECK_THAT(once[2], Catch::Matchers::Contains("PxrDiskLight \"d\": parameter \"specular\""));
 }
 

@@ -21,8 +21,9 @@ struct RixLightSample {
     RtColorRGB radiance;       ///< arriving along -wi (black when the light faces away)
     float pdf = 0.0f;          ///< per unit solid angle; 1 for delta lights
     bool delta = false;        ///< no Bxdf sample can ever find this direction
-    bool shadows = true;       ///< false: the light casts no shadows (a classic light without a shadow map);
-                               ///< ask Unoccluded with distance 0, which is always clear
+    bool shadows = true;       ///< false: the light casts no shadows (a classic light without a shadow map,
+                               ///< a RIS light with enableShadows 0); ask Unoccluded with distance 0, which is
+                               ///< always clear
 };
 
 /// The light a ray reaches (before any surface), if any.

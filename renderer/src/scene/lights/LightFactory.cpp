@@ -76,6 +76,33 @@ std::unique_ptr<Light> classicAreaLight(std::string const& shader, ParamList con
     return light;
 }
 
+/// The shadow and bookkeeping controls every RIS light has. enableShadows 0 turns the light's
+/// shadows off. The others are taken where their value changes nothing here (a light group only
+/// names an AOV; the rest at their defaults); a value that would change the image stays unread,
+/// so that the caller's "not used" warning names it.
+void readCommonControls(ParamList const& params, Light& light) {
+    light.castsShadows = params.getFloat("enableShadows", 1.0f) != 0.0f;
+    params.ignore("lightGroup");
+    auto atDefault = [&params](char const* name, std::vector<float> const& noEffect) {
+        Param const* p = params.find(name);
+        if (p && p->floats == noEffect) params.ignore(name);
+    };
+    atDefault("shadowColor", {0.0f, 0.0f, 0.0f});
+    atDefault("diffuse", {1.0f});
+    atDefault("specular", {1.0f});
+    atDefault("shadowDistance", {-1.0f});
+    atDefault("shadowFalloff", {-1.0f});
+    atDefault("shadowFalloffGamma", {1.0f});
+    atDefault("thinShadow", {1.0f});
+    atDefault("traceLightPaths", {0.0f});
+    atDefault("fixedSampleCount", {0.0f});
+    atDefault("importanceMultiplier", {1.0f});
+    atDefault("colorMapGamma", {1.0f, 1.0f, 1.0f});
+    atDefault("colorMapSaturation", {1.0f});
+    for (char const* subset : {"shadowSubset", "shadowExcludeSubset"})
+        if (Param const* p = params.find(subset); p && (p->strings.empty() || p->strings[0].empty())) params.ignore(subset);
+}
+
 }  // namespace
 
 std::unique_ptr<Light> makeLight(std::string const& type, ParamList const& params, Mat4 const& lightToWorld,
@@ -133,6 +160,7 @@ std::unique_ptr<Light> makeLight(std::string const& type, ParamList const& param
     if (type == "PxrDistantLight")
         radiance *= distantLightIrradianceScale(params.getFloat("angleExtent", kSunAngleExtent), areaNormalize);
     light->color = RtColorRGB(radiance.x, radiance.y, radiance.z);
+    readCommonControls(params, *light);
     return light;
 }
 
@@ -141,6 +169,13 @@ std::map<std::string, ParamType> const& lightParameterTypes() {
         // Every RIS light.
         {"intensity", ParamType::Float}, {"exposure", ParamType::Float}, {"lightColor", ParamType::Color},
         {"enableTemperature", ParamType::Int}, {"temperature", ParamType::Float}, {"areaNormalize", ParamType::Int},
+        {"enableShadows", ParamType::Int}, {"shadowColor", ParamType::Color}, {"diffuse", ParamType::Float},
+        {"specular", ParamType::Float}, {"shadowDistance", ParamType::Float}, {"shadowFalloff", ParamType::Float},
+        {"shadowFalloffGamma", ParamType::Float}, {"thinShadow", ParamType::Int}, {"traceLightPaths", ParamType::Int},
+        {"fixedSampleCount", ParamType::Int}, {"importanceMultiplier", ParamType::Float},
+        {"shadowSubset", ParamType::String}, {"shadowExcludeSubset", ParamType::String},
+        {"lightGroup", ParamType::String}, {"colorMapGamma", ParamType::Vector},
+        {"colorMapSaturation", ParamType::Float},
         // PxrRectLight and PxrDiskLight's shaping.
         {"coneAngle", ParamType::Float}, {"coneSoftness", ParamType::Float}, {"emissionFocus", ParamType::Float},
         {"emissionFocusTint", ParamType::Color},
