@@ -825,6 +825,28 @@ TEST_CASE("a stand-in keeps the gain on a textured colour: PxrSurface's diffuseG
     CHECK(half.y == Approx(0.5f * full.y).epsilon(1e-4));
 }
 
+TEST_CASE("a PxrSurface stand-in glows as PxrSurface does: glowGain x glowColor, plain or textured, off by default",
+          "[rib][plugins]") {
+    // No light at all: what the camera sees of the ball is its own glow.
+    auto centre = [](std::string const& params, std::string const& pattern = "") {
+        std::string rib = "Format 8 8 1\nProjection \"perspective\" \"fov\" [30]\nIntegrator \"PxrPathTracer\" \"p\"\n"
+                          "WorldBegin\nTranslate 0 0 5\n" + pattern + "Bxdf \"PxrSurface\" \"s\" " + params +
+                          "\nSphere 1 -1 1 360\nWorldEnd\n";
+        auto r = test::renderRib(rib, test::withSpp(4));
+        return Vec3(r.channel(4, 4, 0), r.channel(4, 4, 1), r.channel(4, 4, 2));
+    };
+    Vec3 const glow = centre("\"float glowGain\" [0.5] \"color glowColor\" [1 0.2 0.1]");
+    CHECK(glow.x == Approx(0.5f));
+    CHECK(glow.y == Approx(0.1f));
+    CHECK(glow.z == Approx(0.05f));
+    CHECK(centre("\"float glowGain\" [2]") == Vec3(2.0f));  // glowColor's default is white
+    CHECK(centre("\"color glowColor\" [1 1 1]") == Vec3(0.0f));  // glowGain's default is 0
+    Vec3 const textured = centre("\"reference color glowColor\" [\"tex:resultRGB\"] \"float glowGain\" [0.5]",
+                                 "Pattern \"PxrMix\" \"tex\" \"color color1\" [0.2 0.4 0.8] \"float mix\" [0]\n");
+    CHECK(textured.x == Approx(0.1f));
+    CHECK(textured.z == Approx(0.4f));
+}
+
 TEST_CASE("primvars reach plugins (GetPrimVar): constant, per-face, per-vertex and per-corner values", "[rib][primvars]") {
     std::string const head = "Format 16 16 1\nProjection \"orthographic\"\nScreenWindow -1 1 -1 1\n"
                              "Integrator \"PxrDefault\" \"d\"\nWorldBegin\nTranslate 0 0 5\n";

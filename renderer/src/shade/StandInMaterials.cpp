@@ -127,7 +127,17 @@ std::optional<StandIn> standInFor(MaterialDesc const& material, std::vector<Patt
         out.add(floatParam("specular", std::clamp(luminance(face) / 0.08f, 0.0f, 1.0f)));
         out.add(floatParam("roughness", std::sqrt(std::clamp(floatOf(in, "specularRoughness").value_or(0.2f), 0.0f, 1.0f))));
         if (auto coat = colorOf(in, {"clearcoatFaceColor"})) out.add(floatParam("clearcoat", std::min(1.0f, luminance(*coat) / 0.04f)));
-        s.note = "PxrDisney with its diffuse colour and specular face colour (no layering, transmission or subsurface)";
+        // Glow: the surface itself emits glowGain x glowColor (off by default), PxrDisney's emitColor.
+        float const glowGain = floatOf(in, "glowGain").value_or(0.0f);
+        Vec3 const glow = colorOf(in, {"glowColor"}).value_or(Vec3(1.0f));
+        if (glowGain > 0.0f) {
+            if (carryConnection(material, "glowColor", s.material, "emitColor", glow))
+                applyGain(s.material, "emitColor", glowGain, patterns);
+            else
+                out.add(colorParam("emitColor", glow * glowGain));
+        }
+        s.note = "PxrDisney with its diffuse colour, specular face colour and glow (no layering, transmission or "
+                 "subsurface)";
     } else if (name == "PxrLMPlastic") {
         Vec3 const diffuse = colorOf(in, {"diffuseColor"}).value_or(Vec3(0.5f));
         if (!carryConnection(material, "diffuseColor", s.material, "baseColor", diffuse))
