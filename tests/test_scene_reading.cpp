@@ -825,6 +825,24 @@ TEST_CASE("a stand-in keeps the gain on a textured colour: PxrSurface's diffuseG
     CHECK(half.y == Approx(0.5f * full.y).epsilon(1e-4));
 }
 
+TEST_CASE("a PxrSurface with no diffuse and a coloured specular face (an exporter's metal) stands in as a metal of "
+          "that colour", "[rib][plugins]") {
+    auto centre = [](std::string const& params) {
+        std::string rib = "Format 8 8 1\nProjection \"perspective\" \"fov\" [30]\nIntegrator \"PxrPathTracer\" \"p\"\n"
+                          "WorldBegin\nLight \"PxrDomeLight\" \"sky\"\nTranslate 0 0 5\nBxdf \"PxrSurface\" \"s\" " + params +
+                          "\nSphere 1 -1 1 360\nWorldEnd\n";
+        auto r = test::renderRib(rib, test::withSpp(16));
+        return Vec3(r.channel(4, 4, 0), r.channel(4, 4, 1), r.channel(4, 4, 2));
+    };
+    // Gold under a white sky of radiance 1: about its face colour at normal view, not a black ball's grey glint.
+    Vec3 const gold = centre("\"float diffuseGain\" [0] \"color specularFaceColor\" [0.9 0.6 0.2] \"float specularRoughness\" [0.1]");
+    CHECK(gold.x == Approx(0.9f).epsilon(0.1));
+    CHECK(gold.x > 3.0f * gold.z);
+    // With a diffuse colour the face colour stays a dielectric's reflectance: the ball keeps its diffuse blue.
+    Vec3 const plastic = centre("\"color diffuseColor\" [0.1 0.1 0.8] \"color specularFaceColor\" [0.9 0.6 0.2]");
+    CHECK(plastic.z > 2.0f * plastic.x);
+}
+
 TEST_CASE("a PxrSurface stand-in glows as PxrSurface does: glowGain x glowColor, plain or textured, off by default",
           "[rib][plugins]") {
     // No light at all: what the camera sees of the ball is its own glow.

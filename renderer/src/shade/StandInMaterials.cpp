@@ -120,10 +120,15 @@ std::optional<StandIn> standInFor(MaterialDesc const& material, std::vector<Patt
         float const gain = floatOf(in, "diffuseGain").value_or(1.0f);
         Vec3 const colour = colorOf(in, {"diffuseColor"}).value_or(Vec3(0.18f));
         Vec3 face = colorOf(in, {"specularFaceColor"}).value_or(Vec3(0.0f));
-        if (carryConnection(material, "diffuseColor", s.material, "baseColor", colour))
+        bool const textured = carryConnection(material, "diffuseColor", s.material, "baseColor", colour);
+        // No diffuse and a face colour brighter than any dielectric's (PxrDisney's specular 1 reflects
+        // 0.08): what exporters write for a metal, which reflects its face colour.
+        bool const metal = !textured && luminance(colour * gain) < 1e-3f && luminance(face) > 0.08f;
+        if (textured)
             applyGain(s.material, "baseColor", gain, patterns);  // the gain, on the texture or its fallback
         else
-            out.add(colorParam("baseColor", colour * gain));
+            out.add(colorParam("baseColor", metal ? face : colour * gain));
+        if (metal) out.add(floatParam("metallic", 1.0f));
         out.add(floatParam("specular", std::clamp(luminance(face) / 0.08f, 0.0f, 1.0f)));
         out.add(floatParam("roughness", std::sqrt(std::clamp(floatOf(in, "specularRoughness").value_or(0.2f), 0.0f, 1.0f))));
         if (auto coat = colorOf(in, {"clearcoatFaceColor"})) out.add(floatParam("clearcoat", std::min(1.0f, luminance(*coat) / 0.04f)));
@@ -136,8 +141,9 @@ std::optional<StandIn> standInFor(MaterialDesc const& material, std::vector<Patt
             else
                 out.add(colorParam("emitColor", glow * glowGain));
         }
-        s.note = "PxrDisney with its diffuse colour, specular face colour and glow (no layering, transmission or "
-                 "subsurface)";
+        s.note = std::string(metal ? "a PxrDisney metal of its specular face colour, with its glow"
+                                   : "PxrDisney with its diffuse colour, specular face colour and glow") +
+                 " (no layering, transmission or subsurface)";
     } else if (name == "PxrLMPlastic") {
         Vec3 const diffuse = colorOf(in, {"diffuseColor"}).value_or(Vec3(0.5f));
         if (!carryConnection(material, "diffuseColor", s.material, "baseColor", diffuse))
