@@ -826,7 +826,7 @@ TEST_CASE("a stand-in keeps the gain on a textured colour: PxrSurface's diffuseG
 }
 
 TEST_CASE("a PxrSurface with no diffuse and a coloured specular face (an exporter's metal) stands in as a metal of "
-          "that colour", "[rib][plugins]") {
+          "that colour; physical Fresnel gives that colour from the index", "[rib][plugins]") {
     auto centre = [](std::string const& params) {
         std::string rib = "Format 8 8 1\nProjection \"perspective\" \"fov\" [30]\nIntegrator \"PxrPathTracer\" \"p\"\n"
                           "WorldBegin\nLight \"PxrDomeLight\" \"sky\"\nTranslate 0 0 5\nBxdf \"PxrSurface\" \"s\" " + params +
@@ -841,6 +841,13 @@ TEST_CASE("a PxrSurface with no diffuse and a coloured specular face (an exporte
     // With a diffuse colour the face colour stays a dielectric's reflectance: the ball keeps its diffuse blue.
     Vec3 const plastic = centre("\"color diffuseColor\" [0.1 0.1 0.8] \"color specularFaceColor\" [0.9 0.6 0.2]");
     CHECK(plastic.z > 2.0f * plastic.x);
+    // Physical Fresnel (specularFresnelMode 1) reads the index and extinction instead of the face colour:
+    // glass's 1.5 reflects 4% at normal view, and gold's index (n 0.18 0.42 1.37, k 3.42 2.35 1.77) gold.
+    std::string const black = "\"float diffuseGain\" [0] \"int specularFresnelMode\" [1] \"float specularRoughness\" [0.05] ";
+    CHECK(centre(black + "\"color specularIor\" [1.5 1.5 1.5]").y == Approx(0.04f).epsilon(0.2));
+    Vec3 const physicalGold = centre(black + "\"color specularIor\" [0.18 0.42 1.37] \"color specularExtinctionCoeff\" [3.42 2.35 1.77]");
+    CHECK(physicalGold.x > 0.8f);
+    CHECK(physicalGold.x > 2.0f * physicalGold.z);
 }
 
 TEST_CASE("a PxrSurface stand-in glows as PxrSurface does: glowGain x glowColor, plain or textured, off by default",

@@ -120,6 +120,13 @@ std::optional<StandIn> standInFor(MaterialDesc const& material, std::vector<Patt
         float const gain = floatOf(in, "diffuseGain").value_or(1.0f);
         Vec3 const colour = colorOf(in, {"diffuseColor"}).value_or(Vec3(0.18f));
         Vec3 face = colorOf(in, {"specularFaceColor"}).value_or(Vec3(0.0f));
+        if (floatOf(in, "specularFresnelMode").value_or(0.0f) == 1.0f) {
+            // Physical Fresnel: the reflectance at normal view of an index n and extinction k,
+            // ((n-1)^2 + k^2) / ((n+1)^2 + k^2), in place of the artist's face colour.
+            Vec3 const n = colorOf(in, {"specularIor"}).value_or(Vec3(1.5f));
+            Vec3 const k = colorOf(in, {"specularExtinctionCoeff"}).value_or(Vec3(0.0f));
+            face = ((n - 1.0f) * (n - 1.0f) + k * k) / ((n + 1.0f) * (n + 1.0f) + k * k);
+        }
         bool const textured = carryConnection(material, "diffuseColor", s.material, "baseColor", colour);
         // No diffuse and a face colour brighter than any dielectric's (PxrDisney's specular 1 reflects
         // 0.08): what exporters write for a metal, which reflects its face colour.
