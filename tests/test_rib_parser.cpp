@@ -86,6 +86,34 @@ TEST_CASE("lexer: requests, numbers, strings, arrays and comments with positions
     CHECK(lexer.next().kind == RibToken::Kind::End);
 }
 
+TEST_CASE("lexer: a file saved with a byte-order mark, Windows or classic Mac OS line ends reads as any other",
+          "[rib]") {
+    // Each line holds a comment, which ends where the line does.
+    for (std::string const end : {"\n", "\r\n", "\r"}) {
+        for (std::string const mark : {"", "\xef\xbb\xbf"}) {
+            CAPTURE(end.size(), mark.size());
+            RibLexer lexer(mark + "Sphere 1 # one" + end + "# two" + end + "  Disk # three" + end + "[ 3 ]", "t.rib");
+            RibToken const sphere = lexer.next();
+            CHECK(sphere.text == "Sphere");
+            CHECK(sphere.location.column == 1);
+            CHECK(lexer.next().number == 1.0);
+            RibToken const disk = lexer.next();
+            CHECK(disk.text == "Disk");
+            CHECK(disk.location.line == 3);
+            CHECK(disk.location.column == 3);
+            RibToken const open = lexer.next();
+            CHECK(open.kind == RibToken::Kind::ArrayBegin);
+            CHECK(open.location.line == 4);
+            CHECK(lexer.next().number == 3.0);
+        }
+    }
+    // A classic Mac OS file renders its sphere and locates its errors by line.
+    Diagnostics diagnostics(false);
+    Scene scene = parseRib("WorldBegin # the world\rSurface \"matte\"\rSphere 1 -1 1 360\rWorldEnd\r", diagnostics);
+    CHECK(scene.shapes.size() == 1u);
+    CHECK_THAT(ribErrorOf("WorldBegin # the world\rSphere 1 -1 1\r"), Catch::Matchers::StartsWith("bad.rib:2:1"));
+}
+
 TEST_CASE("malformed RIB gives file:line:col and what was expected", "[rib][errors]") {
     struct Case {
         const char* rib;

@@ -826,7 +826,7 @@ TEST_CASE("a stand-in keeps the gain on a textured colour: PxrSurface's diffuseG
 }
 
 TEST_CASE("a PxrSurface with no diffuse and a coloured specular face (an exporter's metal) stands in as a metal of "
-          "that colour; physical Fresnel gives that colour from the index", "[rib][plugins]") {
+          "that colour, and with physical Fresnel the colour its index gives", "[rib][plugins]") {
     auto centre = [](std::string const& params) {
         std::string rib = "Format 8 8 1\nProjection \"perspective\" \"fov\" [30]\nIntegrator \"PxrPathTracer\" \"p\"\n"
                           "WorldBegin\nLight \"PxrDomeLight\" \"sky\"\nTranslate 0 0 5\nBxdf \"PxrSurface\" \"s\" " + params +

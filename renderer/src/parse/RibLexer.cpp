@@ -43,11 +43,29 @@ std::string RibToken::describe() const {
     }
 }
 
-RibLexer::RibLexer(std::string text, std::string fileName) : m_text(std::move(text)), m_file(std::move(fileName)) {}
+RibLexer::RibLexer(std::string text, std::string fileName) : m_text(std::move(text)), m_file(std::move(fileName)) {
+    // A byte-order mark, as some Windows editors save text: not part of the file's content. (Binary
+    // RIB reserves 0xef, so no binary file starts with one.)
+    if (m_text.compare(0, 3, "\xef\xbb\xbf") == 0) m_pos = 3;
+}
 
-void RibLexer::advance() {
+bool RibLexer::atLineEnd() const {
+    // "\n", and a "\r" not followed by one: files saved on classic Mac OS end their lines in "\r" alone.
+    char const c = current();
+    return c == '\n' || (c == '\r' && (m_pos + 1 >= m_text.size() || m_text[m_pos + 1] != '\n'));
+}
+
+void RibLexer::advance() { step(atLineEnd()); }
+
+void RibLexer::advanceInPayload() {
+    // A binary token's bytes are data: a 0x0d among them ends no line (a 0x0a counts, as it always has,
+    // so that the locations of binary files stay as they were).
+    step(current() == '\n');
+}
+
+void RibLexer::step(bool lineEnd) {
     if (m_pos >= m_text.size()) return;
-    if (m_text[m_pos] == '\n') {
+    if (lineEnd) {
         ++m_line;
         m_column = 1;
     } else {
@@ -60,7 +78,7 @@ void RibLexer::skipSpaceAndComments() {
     for (;;) {
         char c = current();
         if (c == '#') {
-            while (current() != '\n' && current() != '\0') advance();
+            while (!atLineEnd() && current() != '\0') advance();
         } else if (c != '\0' && std::isspace(static_cast<unsigned char>(c))) {
             advance();
         } else {
@@ -90,7 +108,7 @@ uint32_t RibLexer::takeUnsigned(int count, SourceLocation const& where) {
     uint32_t value = 0;
     for (int i = 0; i < count; ++i) {
         value = (value << 8) | static_cast<unsigned char>(current());
-        advance();
+        advanceInPayload();
     }
     return value;
 }
@@ -98,7 +116,7 @@ uint32_t RibLexer::takeUnsigned(int count, SourceLocation const& where) {
 std::string RibLexer::takeBytes(size_t count, SourceLocation const& where) {
     if (count > m_text.size() - m_pos) throw RibError(where, "binary RIB string cut short by the end of the file");
     std::string out = m_text.substr(m_pos, count);
-    for (size_t i = 0; i < count; ++i) advance();
+    for (size_t i = 0; i < count; ++i) advanceInPayload();
     return out;
 }
 

@@ -43,7 +43,10 @@ private:
     bool scanBinary(unsigned char code, RibToken& token);
     void skipSpaceAndComments();
     char current() const { return m_pos < m_text.size() ? m_text[m_pos] : '\0'; }
+    bool atLineEnd() const;
     void advance();
+    void advanceInPayload();
+    void step(bool lineEnd);
     /// The next `count` bytes as an unsigned big-endian number (count <= 4).
     uint32_t takeUnsigned(int count, SourceLocation const& where);
     std::string takeBytes(size_t count, SourceLocation const& where);
