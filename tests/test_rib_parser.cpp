@@ -86,8 +86,8 @@ TEST_CASE("lexer: requests, numbers, strings, arrays and comments with positions
     CHECK(lexer.next().kind == RibToken::Kind::End);
 }
 
-TEST_CASE("lexer: a file saved with a byte-order mark, Windows or classic Mac OS line ends reads as any other",
-          "[rib]") {
+TEST_CASE("lexer: a file saved with a byte-order mark, Windows or classic Mac OS line ends reads as any other, and "
+          "UTF-16 text is named as such", "[rib]") {
     // Each line holds a comment, which ends where the line does.
     for (std::string const end : {"\n", "\r\n", "\r"}) {
         for (std::string const mark : {"", "\xef\xbb\xbf"}) {
@@ -112,6 +112,12 @@ TEST_CASE("lexer: a file saved with a byte-order mark, Windows or classic Mac OS
     Scene scene = parseRib("WorldBegin # the world\rSurface \"matte\"\rSphere 1 -1 1 360\rWorldEnd\r", diagnostics);
     CHECK(scene.shapes.size() == 1u);
     CHECK_THAT(ribErrorOf("WorldBegin # the world\rSphere 1 -1 1\r"), Catch::Matchers::StartsWith("bad.rib:2:1"));
+    // UTF-16 text is named as such, little- or big-endian, rather than as a stray binary code.
+    for (std::string const mark : {"\xff\xfe", "\xfe\xff"}) {
+        std::string const message = ribErrorOf(mark + std::string("W\0o\0r\0l\0d\0", 10));
+        CHECK_THAT(message, Catch::Matchers::StartsWith("bad.rib:1:1"));
+        CHECK_THAT(message, Catch::Matchers::Contains("UTF-16"));
+    }
 }
 
 TEST_CASE("malformed RIB gives file:line:col and what was expected", "[rib][errors]") {

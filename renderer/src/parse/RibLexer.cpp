@@ -202,6 +202,13 @@ bool RibLexer::scanBinary(unsigned char code, RibToken& token) {
             throw RibError(where, "binary RIB uses string code " + std::to_string(id) + " before defining it");
         return string(found->second);
     }
+    // What Windows PowerShell's > and some editors save: text of two bytes a character, which starts
+    // with the byte-order mark 0xff 0xfe (or 0xfe 0xff).
+    bool const utf16 = m_pos == 1 && m_text.size() >= 2 &&
+                       ((code == 0xff && m_text[1] == '\xfe') || (code == 0xfe && m_text[1] == '\xff'));
+    if (utf16)
+        throw RibError(where, "the file is UTF-16 text (two bytes a character, as Windows PowerShell's > writes); "
+                              "RIB is ASCII, UTF-8 or RenderMan's binary encoding: save it as one of those");
     char shown[16];
     std::snprintf(shown, sizeof shown, "0x%02x", code);
     throw RibError(where, std::string("unexpected byte ") + shown + " (a code the binary RIB encoding reserves)");
