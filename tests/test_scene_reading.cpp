@@ -848,6 +848,9 @@ TEST_CASE("a PxrSurface with no diffuse and a coloured specular face (an exporte
     Vec3 const physicalGold = centre(black + "\"color specularIor\" [0.18 0.42 1.37] \"color specularExtinctionCoeff\" [3.42 2.35 1.77]");
     CHECK(physicalGold.x > 0.8f);
     CHECK(physicalGold.x > 2.0f * physicalGold.z);
+    // Values no material has stay finite and reflect no more than arrives.
+    CHECK(std::isfinite(centre(black + "\"color specularIor\" [-1 -1 -1]").x));
+    CHECK(centre("\"float diffuseGain\" [0] \"color specularFaceColor\" [3 3 3]").x <= 1.01f);
 }
 
 TEST_CASE("a PxrSurface stand-in glows as PxrSurface does: glowGain x glowColor, plain or textured, off by default",

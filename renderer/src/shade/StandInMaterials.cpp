@@ -123,8 +123,8 @@ std::optional<StandIn> standInFor(MaterialDesc const& material, std::vector<Patt
         if (floatOf(in, "specularFresnelMode").value_or(0.0f) == 1.0f) {
             // Physical Fresnel: the reflectance at normal view of an index n and extinction k,
             // ((n-1)^2 + k^2) / ((n+1)^2 + k^2), in place of the artist's face colour.
-            Vec3 const n = colorOf(in, {"specularIor"}).value_or(Vec3(1.5f));
-            Vec3 const k = colorOf(in, {"specularExtinctionCoeff"}).value_or(Vec3(0.0f));
+            Vec3 const n = glm::max(colorOf(in, {"specularIor"}).value_or(Vec3(1.5f)), Vec3(0.0f));
+            Vec3 const k = glm::max(colorOf(in, {"specularExtinctionCoeff"}).value_or(Vec3(0.0f)), Vec3(0.0f));
             face = ((n - 1.0f) * (n - 1.0f) + k * k) / ((n + 1.0f) * (n + 1.0f) + k * k);
         }
         bool const textured = carryConnection(material, "diffuseColor", s.material, "baseColor", colour);
@@ -134,7 +134,7 @@ std::optional<StandIn> standInFor(MaterialDesc const& material, std::vector<Patt
         if (textured)
             applyGain(s.material, "baseColor", gain, patterns);  // the gain, on the texture or its fallback
         else
-            out.add(colorParam("baseColor", metal ? face : colour * gain));
+            out.add(colorParam("baseColor", metal ? glm::clamp(face, Vec3(0.0f), Vec3(1.0f)) : colour * gain));
         if (metal) out.add(floatParam("metallic", 1.0f));
         out.add(floatParam("specular", std::clamp(luminance(face) / 0.08f, 0.0f, 1.0f)));
         out.add(floatParam("roughness", std::sqrt(std::clamp(floatOf(in, "specularRoughness").value_or(0.2f), 0.0f, 1.0f))));
