@@ -869,6 +869,7 @@ TEST_CASE("a PxrSurface stand-in glows as PxrSurface does: glowGain x glowColor,
     CHECK(glow.z == Approx(0.05f));
     CHECK(centre("\"float glowGain\" [2]") == Vec3(2.0f));  // glowColor's default is white
     CHECK(centre("\"color glowColor\" [1 1 1]") == Vec3(0.0f));  // glowGain's default is 0
+    CHECK(centre("\"float glowGain\" [1] \"color glowColor\" [-1 0.5 -1]") == Vec3(0.0f, 0.5f, 0.0f));  // no negative light
     Vec3 const textured = centre("\"reference color glowColor\" [\"tex:resultRGB\"] \"float glowGain\" [0.5]",
                                  "Pattern \"PxrMix\" \"tex\" \"color color1\" [0.2 0.4 0.8] \"float mix\" [0]\n");
     CHECK(textured.x == Approx(0.1f));

@@ -141,7 +141,7 @@ std::optional<StandIn> standInFor(MaterialDesc const& material, std::vector<Patt
         if (auto coat = colorOf(in, {"clearcoatFaceColor"})) out.add(floatParam("clearcoat", std::min(1.0f, luminance(*coat) / 0.04f)));
         // Glow: the surface itself emits glowGain x glowColor (off by default), PxrDisney's emitColor.
         float const glowGain = floatOf(in, "glowGain").value_or(0.0f);
-        Vec3 const glow = colorOf(in, {"glowColor"}).value_or(Vec3(1.0f));
+        Vec3 const glow = glm::max(colorOf(in, {"glowColor"}).value_or(Vec3(1.0f)), Vec3(0.0f));  // emits, never absorbs
         if (glowGain > 0.0f) {
             if (carryConnection(material, "glowColor", s.material, "emitColor", glow))
                 applyGain(s.material, "emitColor", glowGain, patterns);
