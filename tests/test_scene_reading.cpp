@@ -853,6 +853,20 @@ TEST_CASE("a PxrSurface with no diffuse and a coloured specular face (an exporte
     CHECK(centre("\"float diffuseGain\" [0] \"color specularFaceColor\" [3 3 3]").x <= 1.01f);
 }
 
+TEST_CASE("a stand-in says that it renders a cut-out (presence below 1 or textured) opaque", "[rib][plugins]") {
+    auto told = [](std::string const& params, std::string const& pattern = "") {
+        std::string rib = "Format 8 8 1\nProjection \"perspective\" \"fov\" [30]\nWorldBegin\nTranslate 0 0 5\n" + pattern +
+                          "Bxdf \"PxrSurface\" \"leaf\" " + params + "\nSphere 1 -1 1 360\nWorldEnd\n";
+        return test::renderRib(rib, test::withSpp(1)).anyMessageContains(
+            "Bxdf \"PxrSurface\" \"leaf\": its presence (a cut-out) is not rendered by the stand-in; the surface is opaque");
+    };
+    CHECK(told("\"float presence\" [0.5]"));
+    CHECK(told("\"reference float presence\" [\"alpha:resultR\"]",
+               "Pattern \"PxrMix\" \"alpha\" \"color color1\" [1 0 0]\n"));
+    CHECK_FALSE(told("\"float presence\" [1]"));
+    CHECK_FALSE(told("\"color diffuseColor\" [1 0 0]"));
+}
+
 TEST_CASE("a PxrSurface stand-in glows as PxrSurface does: glowGain x glowColor, plain or textured, off by default",
           "[rib][plugins]") {
     // No light at all: what the camera sees of the ball is its own glow.

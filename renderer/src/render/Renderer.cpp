@@ -228,7 +228,7 @@ Renderer::Renderer(Scene& scene, RenderSettings settings, Diagnostics& diagnosti
 
     // Plugins: one instance per Bxdf statement; each plugin hears RenderBegin once.
     // RenderMan's own materials that are not on the search path get a stock stand-in.
-    std::set<std::string> standInsWarned;
+    std::set<std::string> standInsWarned, cutOutsWarned;
     std::vector<MaterialDesc> used;
     for (MaterialDesc const& material : scene.materials) {
         std::optional<StandIn> standIn;
@@ -239,6 +239,10 @@ Renderer::Renderer(Scene& scene, RenderSettings settings, Diagnostics& diagnosti
                                                  standIn->note);
             m_stats.effects.skip("material " + material.plugin, "rendered as " + standIn->note);
         }
+        if (standIn && standIn->cutOut && cutOutsWarned.insert(material.plugin).second)
+            diagnostics.warn(material.where, "Bxdf \"" + material.plugin + "\" \"" + material.handle +
+                                                 "\": its presence (a cut-out) is not rendered by the stand-in; the "
+                                                 "surface is opaque");
         used.push_back(standIn ? standIn->material : material);
     }
     r.loadPatterns(used);

@@ -179,6 +179,9 @@ std::optional<StandIn> standInFor(MaterialDesc const& material, std::vector<Patt
         if (color && !connected) out.add(colorParam("diffuseColor", *color));
         s.note = color || connected ? "PxrDiffuse in its colour" : "PxrDiffuse";
     }
+    // Presence (PxrSurface's cut-out opacity, RenderMan 21's too): no stand-in renders it.
+    std::optional<float> const presence = floatOf(in, "presence");
+    s.cutOut = material.connections.count("presence") > 0 || (presence && *presence < 1.0f);
     // A normal map or bump pattern stays on the surface (PxrDisney has bumpNormal; PxrDiffuse does not).
     if (s.material.plugin == "PxrDisney") carryConnection(material, "bumpNormal", s.material, "bumpNormal", Vec3(0.0f));
     return s;
