@@ -586,6 +586,16 @@ TEST_CASE("RIS lights' shadow controls: enableShadows 0 lights what lies behind 
     CHECK(unshadowed == Approx(behindBlocker("", nullptr, false)).epsilon(1e-6));  // as if the blocker were not there
     CHECK(behindBlocker("\"enableShadows\" [0]") == unshadowed);  // untyped, as older exporters write it
 
+    // RenderMan 20's area light takes its shape from the geometry that follows, and its controls with it.
+    for (char const* enable : {"0", "1"}) {
+        Diagnostics diagnostics(false);
+        Scene area = test::parseRib(std::string("WorldBegin\nAttributeBegin\nAreaLightSource \"PxrStdAreaLight\" \"a\" "
+                                                "\"float enableShadows\" [") + enable + "]\nSphere 1 -1 1 360\nAttributeEnd\n"
+                                                "WorldEnd\n", diagnostics);
+        REQUIRE(area.lights.size() == 1u);
+        CHECK(area.lights[0]->castsShadows == (enable[0] == '1'));
+    }
+
     // What RenderMan for Maya and Houdini write for every light: no warning, no change.
     std::string const defaults = "\"color shadowColor\" [0 0 0] \"float shadowDistance\" [-1] \"float shadowFalloff\" [-1] "
                                  "\"float shadowFalloffGamma\" [1] \"string shadowSubset\" [\"\"] \"string shadowExcludeSubset\" "

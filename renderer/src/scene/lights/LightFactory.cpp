@@ -76,11 +76,9 @@ std::unique_ptr<Light> classicAreaLight(std::string const& shader, ParamList con
     return light;
 }
 
-/// The shadow and bookkeeping controls every RIS light has. enableShadows 0 turns the light's
-/// shadows off. The others are taken where their value changes nothing here (a light group only
-/// names an AOV; the rest at their defaults); a value that would change the image stays unread,
-/// so that the caller's "not used" warning names it.
-void readCommonControls(ParamList const& params, Light& light) {
+}  // namespace
+
+void readCommonLightControls(ParamList const& params, Light& light) {
     light.castsShadows = params.getFloat("enableShadows", 1.0f) != 0.0f;
     params.ignore("lightGroup");
     auto atDefault = [&params](char const* name, std::vector<float> const& noEffect) {
@@ -102,8 +100,6 @@ void readCommonControls(ParamList const& params, Light& light) {
     for (char const* subset : {"shadowSubset", "shadowExcludeSubset"})
         if (Param const* p = params.find(subset); p && (p->strings.empty() || p->strings[0].empty())) params.ignore(subset);
 }
-
-}  // namespace
 
 std::unique_ptr<Light> makeLight(std::string const& type, ParamList const& params, Mat4 const& lightToWorld,
                                  TextureLocator const& textures, SourceLocation const& where, Diagnostics& diagnostics,
@@ -160,7 +156,7 @@ std::unique_ptr<Light> makeLight(std::string const& type, ParamList const& param
     if (type == "PxrDistantLight")
         radiance *= distantLightIrradianceScale(params.getFloat("angleExtent", kSunAngleExtent), areaNormalize);
     light->color = RtColorRGB(radiance.x, radiance.y, radiance.z);
-    readCommonControls(params, *light);
+    readCommonLightControls(params, *light);
     return light;
 }
 

@@ -22,6 +22,13 @@ std::unique_ptr<Light> makeLight(std::string const& type, ParamList const& param
                                  TextureLocator const& textures, SourceLocation const& where, Diagnostics& diagnostics,
                                  MissingFileReport const& missing);
 
+/// The shadow and bookkeeping controls every RIS light has. enableShadows 0 turns the light's
+/// shadows off. The others are taken where their value changes nothing here (a light group only
+/// names an AOV; the rest at their defaults); a value that would change the image stays unread,
+/// so that the caller's "not used" warning names it. makeLight applies it; an area light whose
+/// shape comes later (PxrMeshLight, RenderMan 20's PxrStdAreaLight) is given it with its shape.
+void readCommonLightControls(ParamList const& params, Light& light);
+
 /// The types of the RenderMan light parameters this renderer reads, as
 /// RenderMan's own declarations give them: a RIB may write them without a
 /// type ("exposure" [2]), as RenderMan types them from the light's declaration.

@@ -477,7 +477,7 @@ void SceneBuilder::addAreaLight(std::unique_ptr<Light> light, AreaLightDesc cons
     if (area.classic && light->surfaceArea() > 0.0f)
         radiance = classicAreaLightRadiance(area.shader, area.params, light->surfaceArea());
     light->color = RtColorRGB(radiance.x, radiance.y, radiance.z);
-    if (!area.classic) light->castsShadows = area.params.getFloat("enableShadows", 1.0f) != 0.0f;
+    if (!area.classic) readCommonLightControls(area.params, *light);
     light->handle = area.handle;
     light->visibility = state().visibility;
     if (light->color.IsBlack()) {
