@@ -132,6 +132,11 @@ private:
     void attributeEnd(RequestReader& in);
     void transformBegin(RequestReader& in);
     void transformEnd(RequestReader& in);
+    /// Opens an attribute or transform block: the state is saved to restore at its end.
+    void beginBlock(RequestReader& in, Block block);
+    /// Closes the innermost block, which must be of this kind: false when the end
+    /// closes a begin that was skipped (nothing to restore).
+    bool endBlock(RequestReader& in, Block block);
     void identity(RequestReader& in);
     void transform(RequestReader& in);
     void concatTransform(RequestReader& in);
@@ -222,6 +227,24 @@ private:
     void geometry(RequestReader& in);
     /// Adds a shape with the material and attributes in effect, and its primvars that do not vary.
     void addShape(std::unique_ptr<Shape> shape, SourceLocation const& where, PrimvarSet constants = {});
+    /// What every quadric request starts with: its numbers (the radius among them, made
+    /// positive with the orientation flipped, when radiusArgument names it), and its
+    /// primvars, the parameters it does not use warned about.
+    struct QuadricRequest {
+        std::vector<float> v;
+        PrimvarSet primvars;
+        bool reverse = false;
+        float radius = 0.0f;
+    };
+    QuadricRequest readQuadric(RequestReader& in, char const* request, int count, char const* arguments,
+                               int radiusArgument);
+    /// Adds the polygons a polygon request describes, with its primvars.
+    void addPolygonMesh(char const* request, std::vector<int> const& loops, std::vector<int> const& nverts,
+                        std::vector<int> const& verts, ParamList& params, RequestReader& in);
+    /// Adds a surface tessellated to triangles (its orientation is in the triangles already).
+    void addTessellated(MeshData mesh, char const* request, RequestReader& in, PrimvarSet primvars);
+    /// The warning for a mesh request with no faces.
+    void warnEmptyMesh(char const* request, RequestReader& in);
     // Free-form shapes (scene/requests/FreeformRequests.cpp).
     void subdivisionMesh(RequestReader& in);
     void hierarchicalSubdivisionMesh(RequestReader& in);

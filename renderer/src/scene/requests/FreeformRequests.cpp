@@ -189,8 +189,7 @@ void SceneBuilder::nuPatch(RequestReader& in) {
     PrimvarSet vars = shapePrimvars(params, 4);
     params.warnUnused(m_diagnostics, "NuPatch");
     bool flip = state().reverseOrientation != mirrors(state().transform);
-    addShape(std::make_unique<TriangleMesh>(buildNurbsPatch(d, state().transform, flip, in.where()), "NuPatch", false),
-             in.where(), std::move(vars));
+    addTessellated(buildNurbsPatch(d, state().transform, flip, in.where()), "NuPatch", in, std::move(vars));
 }
 
 void SceneBuilder::trimCurve(RequestReader& in) {
@@ -214,7 +213,7 @@ void SceneBuilder::blobby(RequestReader& in) {
         warnOnce("empty blobby", in.where(), "Blobby: the field never reaches the surface threshold; nothing to draw");
         return;
     }
-    addShape(std::make_unique<TriangleMesh>(std::move(mesh), "Blobby", false), in.where(), std::move(vars));
+    addTessellated(std::move(mesh), "Blobby", in, std::move(vars));
 }
 
 void SceneBuilder::points(RequestReader& in) {

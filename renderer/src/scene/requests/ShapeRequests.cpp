@@ -128,90 +128,97 @@ void SceneBuilder::addShape(std::unique_ptr<Shape> shape, SourceLocation const& 
     m_scene.shapes.push_back(std::move(shape));
 }
 
-void SceneBuilder::sphere(RequestReader& in) {
-    std::vector<float> v = in.numbers(4, "radius zmin zmax thetamax");
+SceneBuilder::QuadricRequest SceneBuilder::readQuadric(RequestReader& in, char const* request, int count,
+                                                      char const* arguments, int radiusArgument) {
+    QuadricRequest q;
+    q.v = in.numbers(static_cast<size_t>(count), arguments);
     ParamList params = in.params();
-    PrimvarSet vars = shapePrimvars(params, 4);
-    params.warnUnused(m_diagnostics, "Sphere");
-    bool reverse = state().reverseOrientation;
-    float radius = radiusOf(v[0], reverse);
-    if (!(radius > 0.0f)) in.fail(in.where(), "radius must not be zero, got " + std::to_string(v[0]));
-    bool whole = v[1] <= -radius && v[2] >= radius && v[3] >= 360.0f;
-    if (whole && shapeAsLight("PxrSphereLight", glm::scale(state().transform, Vec3(2.0f * radius)))) return;
-    addShape(std::make_unique<Sphere>(radius, v[1], v[2], v[3], state().transform, reverse), in.where(), std::move(vars));
+    q.primvars = shapePrimvars(params, 4);
+    params.warnUnused(m_diagnostics, request);
+    q.reverse = state().reverseOrientation;
+    if (radiusArgument >= 0) q.radius = radiusOf(q.v[static_cast<size_t>(radiusArgument)], q.reverse);
+    return q;
+}
+
+void SceneBuilder::sphere(RequestReader& in) {
+    QuadricRequest q = readQuadric(in, "Sphere", 4, "radius zmin zmax thetamax", 0);
+    std::vector<float> const& v = q.v;
+    if (!(q.radius > 0.0f)) in.fail(in.where(), "radius must not be zero, got " + std::to_string(v[0]));
+    bool whole = v[1] <= -q.radius && v[2] >= q.radius && v[3] >= 360.0f;
+    if (whole && shapeAsLight("PxrSphereLight", glm::scale(state().transform, Vec3(2.0f * q.radius)))) return;
+    addShape(std::make_unique<Sphere>(q.radius, v[1], v[2], v[3], state().transform, q.reverse), in.where(),
+             std::move(q.primvars));
 }
 
 void SceneBuilder::cylinder(RequestReader& in) {
-    std::vector<float> v = in.numbers(4, "radius zmin zmax thetamax");
-    ParamList params = in.params();
-    PrimvarSet vars = shapePrimvars(params, 4);
-    params.warnUnused(m_diagnostics, "Cylinder");
-    bool reverse = state().reverseOrientation;
-    float radius = radiusOf(v[0], reverse);
-    if (!(radius > 0.0f)) in.fail(in.where(), "radius must not be zero, got " + std::to_string(v[0]));
-    addShape(std::make_unique<Cylinder>(radius, v[1], v[2], v[3], state().transform, reverse), in.where(), std::move(vars));
+    QuadricRequest q = readQuadric(in, "Cylinder", 4, "radius zmin zmax thetamax", 0);
+    std::vector<float> const& v = q.v;
+    if (!(q.radius > 0.0f)) in.fail(in.where(), "radius must not be zero, got " + std::to_string(v[0]));
+    addShape(std::make_unique<Cylinder>(q.radius, v[1], v[2], v[3], state().transform, q.reverse), in.where(),
+             std::move(q.primvars));
 }
 
 void SceneBuilder::disk(RequestReader& in) {
-    std::vector<float> v = in.numbers(3, "height radius thetamax");
-    ParamList params = in.params();
-    PrimvarSet vars = shapePrimvars(params, 4);
-    params.warnUnused(m_diagnostics, "Disk");
-    bool reverse = state().reverseOrientation;
-    float radius = radiusOf(v[1], reverse);
-    if (!(radius > 0.0f)) in.fail(in.where(), "radius must not be zero, got " + std::to_string(v[1]));
-    Mat4 diskLight = glm::scale(glm::translate(state().transform, Vec3(0.0f, 0.0f, v[0])), Vec3(2.0f * radius, 2.0f * radius, 1.0f));
-    if (reverse) diskLight = glm::scale(diskLight, Vec3(1.0f, -1.0f, -1.0f));  // it emits the other way
+    QuadricRequest q = readQuadric(in, "Disk", 3, "height radius thetamax", 1);
+    std::vector<float> const& v = q.v;
+    if (!(q.radius > 0.0f)) in.fail(in.where(), "radius must not be zero, got " + std::to_string(v[1]));
+    Mat4 diskLight = glm::scale(glm::translate(state().transform, Vec3(0.0f, 0.0f, v[0])),
+                                Vec3(2.0f * q.radius, 2.0f * q.radius, 1.0f));
+    if (q.reverse) diskLight = glm::scale(diskLight, Vec3(1.0f, -1.0f, -1.0f));  // it emits the other way
     if (v[2] >= 360.0f && shapeAsLight("PxrDiskLight", diskLight)) return;
-    addShape(std::make_unique<Disk>(v[0], radius, v[2], state().transform, reverse), in.where(), std::move(vars));
+    addShape(std::make_unique<Disk>(v[0], q.radius, v[2], state().transform, q.reverse), in.where(),
+             std::move(q.primvars));
 }
 
 void SceneBuilder::cone(RequestReader& in) {
-    std::vector<float> v = in.numbers(3, "height radius thetamax");
-    ParamList params = in.params();
-    PrimvarSet vars = shapePrimvars(params, 4);
-    params.warnUnused(m_diagnostics, "Cone");
-    bool reverse = state().reverseOrientation;
-    float radius = radiusOf(v[1], reverse);
-    if (!(radius > 0.0f) || v[0] == 0.0f) in.fail(in.where(), "needs a non-zero radius and height");
-    addShape(std::make_unique<Cone>(v[0], radius, v[2], state().transform, reverse), in.where(), std::move(vars));
+    QuadricRequest q = readQuadric(in, "Cone", 3, "height radius thetamax", 1);
+    std::vector<float> const& v = q.v;
+    if (!(q.radius > 0.0f) || v[0] == 0.0f) in.fail(in.where(), "needs a non-zero radius and height");
+    addShape(std::make_unique<Cone>(v[0], q.radius, v[2], state().transform, q.reverse), in.where(),
+             std::move(q.primvars));
 }
 
 void SceneBuilder::paraboloid(RequestReader& in) {
-    std::vector<float> v = in.numbers(4, "rmax zmin zmax thetamax");
-    ParamList params = in.params();
-    PrimvarSet vars = shapePrimvars(params, 4);
-    params.warnUnused(m_diagnostics, "Paraboloid");
-    bool reverse = state().reverseOrientation;
-    float radius = radiusOf(v[0], reverse);
-    if (!(radius > 0.0f) || !(std::max(v[1], v[2]) > 0.0f)) in.fail(in.where(), "needs a non-zero rmax and a positive zmax");
-    addShape(std::make_unique<Paraboloid>(radius, v[1], v[2], v[3], state().transform, reverse), in.where(), std::move(vars));
+    QuadricRequest q = readQuadric(in, "Paraboloid", 4, "rmax zmin zmax thetamax", 0);
+    std::vector<float> const& v = q.v;
+    if (!(q.radius > 0.0f) || !(std::max(v[1], v[2]) > 0.0f))
+        in.fail(in.where(), "needs a non-zero rmax and a positive zmax");
+    addShape(std::make_unique<Paraboloid>(q.radius, v[1], v[2], v[3], state().transform, q.reverse), in.where(),
+             std::move(q.primvars));
 }
 
 void SceneBuilder::hyperboloid(RequestReader& in) {
-    std::vector<float> v = in.numbers(7, "point1 point2 thetamax");
-    ParamList params = in.params();
-    PrimvarSet vars = shapePrimvars(params, 4);
-    params.warnUnused(m_diagnostics, "Hyperboloid");
+    QuadricRequest q = readQuadric(in, "Hyperboloid", 7, "point1 point2 thetamax", -1);
+    std::vector<float> const& v = q.v;
     if (v[2] == v[5] && v[0] == v[3] && v[1] == v[4]) {
         warnOnce("point hyperboloid", in.where(), "Hyperboloid with both points the same describes no surface; skipped");
         return;
     }
     addShape(std::make_unique<Hyperboloid>(Vec3(v[0], v[1], v[2]), Vec3(v[3], v[4], v[5]), v[6], state().transform,
-                                           state().reverseOrientation),
-             in.where(), std::move(vars));
+                                           q.reverse),
+             in.where(), std::move(q.primvars));
+}
+
+void SceneBuilder::addTessellated(MeshData mesh, char const* request, RequestReader& in, PrimvarSet primvars) {
+    addShape(std::make_unique<TriangleMesh>(std::move(mesh), request, false), in.where(), std::move(primvars));
 }
 
 void SceneBuilder::torus(RequestReader& in) {
-    std::vector<float> v = in.numbers(5, "majorrad minorrad phimin phimax thetamax");
-    ParamList params = in.params();
-    PrimvarSet vars = shapePrimvars(params, 4);
-    params.warnUnused(m_diagnostics, "Torus");
+    QuadricRequest q = readQuadric(in, "Torus", 5, "majorrad minorrad phimin phimax thetamax", -1);
+    std::vector<float> const& v = q.v;
     if (!(v[0] > 0.0f) || !(v[1] > 0.0f)) in.fail(in.where(), "radii must be positive");
     bool flip = state().reverseOrientation != mirrors(state().transform);
-    addShape(std::make_unique<TriangleMesh>(buildTorus(v[0], v[1], v[2], v[3], v[4], state().transform, flip), "Torus",
-                                            false),
-             in.where(), std::move(vars));
+    addTessellated(buildTorus(v[0], v[1], v[2], v[3], v[4], state().transform, flip), "Torus", in,
+                   std::move(q.primvars));
+}
+
+void SceneBuilder::addPolygonMesh(char const* request, std::vector<int> const& loops, std::vector<int> const& nverts,
+                                  std::vector<int> const& verts, ParamList& params, RequestReader& in) {
+    MeshData mesh = buildPolygonMesh(loops, nverts, verts, params, state().transform, in.where());
+    PrimvarSet vars = shapePrimvars(params);
+    params.warnUnused(m_diagnostics, request);
+    addShape(std::make_unique<TriangleMesh>(std::move(mesh), request, state().reverseOrientation), in.where(),
+             std::move(vars));
 }
 
 void SceneBuilder::polygon(RequestReader& in) {
@@ -222,10 +229,7 @@ void SceneBuilder::polygon(RequestReader& in) {
     if (count < 3) in.fail(in.where(), "a polygon needs at least 3 vertices, got " + std::to_string(count));
     std::vector<int> indices(static_cast<size_t>(count));
     for (int i = 0; i < count; ++i) indices[static_cast<size_t>(i)] = i;
-    MeshData mesh = buildPolygonMesh({1}, {count}, indices, params, state().transform, in.where());
-    PrimvarSet vars = shapePrimvars(params);
-    params.warnUnused(m_diagnostics, "Polygon");
-    addShape(std::make_unique<TriangleMesh>(std::move(mesh), "Polygon", state().reverseOrientation), in.where(), std::move(vars));
+    addPolygonMesh("Polygon", {1}, {count}, indices, params, in);
 }
 
 void SceneBuilder::generalPolygon(RequestReader& in) {
@@ -241,26 +245,20 @@ void SceneBuilder::generalPolygon(RequestReader& in) {
         in.fail(in.where(), "needs a \"P\" parameter with " + std::to_string(total) + " points (the loops' vertex counts added up)");
     std::vector<int> indices(static_cast<size_t>(total));
     for (long i = 0; i < total; ++i) indices[static_cast<size_t>(i)] = static_cast<int>(i);
-    MeshData mesh = buildPolygonMesh({static_cast<int>(nverts.size())}, nverts, indices, params, state().transform,
-                                     in.where());
-    PrimvarSet vars = shapePrimvars(params);
-    params.warnUnused(m_diagnostics, "GeneralPolygon");
-    addShape(std::make_unique<TriangleMesh>(std::move(mesh), "GeneralPolygon", state().reverseOrientation), in.where(), std::move(vars));
+    addPolygonMesh("GeneralPolygon", {static_cast<int>(nverts.size())}, nverts, indices, params, in);
+}
+
+void SceneBuilder::warnEmptyMesh(char const* request, RequestReader& in) {
+    warnOnce("empty mesh", in.where(), std::string(request) + " with no polygons; skipped");
 }
 
 void SceneBuilder::pointsPolygons(RequestReader& in) {
     std::vector<int> nverts = in.intArray("nvertices (vertex count per face)");
     std::vector<int> verts = in.intArray("vertices (point indices)");
     ParamList params = in.params();
-    if (nverts.empty()) {
-        warnOnce("empty mesh", in.where(), "PointsPolygons with no polygons; skipped");
-        return;
-    }
+    if (nverts.empty()) return warnEmptyMesh("PointsPolygons", in);
     std::vector<int> loops(nverts.size(), 1);
-    MeshData mesh = buildPolygonMesh(loops, nverts, verts, params, state().transform, in.where());
-    PrimvarSet vars = shapePrimvars(params);
-    params.warnUnused(m_diagnostics, "PointsPolygons");
-    addShape(std::make_unique<TriangleMesh>(std::move(mesh), "PointsPolygons", state().reverseOrientation), in.where(), std::move(vars));
+    addPolygonMesh("PointsPolygons", loops, nverts, verts, params, in);
 }
 
 void SceneBuilder::pointsGeneralPolygons(RequestReader& in) {
@@ -268,15 +266,8 @@ void SceneBuilder::pointsGeneralPolygons(RequestReader& in) {
     std::vector<int> nverts = in.intArray("nvertices (vertex count per loop)");
     std::vector<int> verts = in.intArray("vertices (point indices)");
     ParamList params = in.params();
-    if (nloops.empty()) {
-        warnOnce("empty mesh", in.where(), "PointsGeneralPolygons with no polygons; skipped");
-        return;
-    }
-    MeshData mesh = buildPolygonMesh(nloops, nverts, verts, params, state().transform, in.where());
-    PrimvarSet vars = shapePrimvars(params);
-    params.warnUnused(m_diagnostics, "PointsGeneralPolygons");
-    addShape(std::make_unique<TriangleMesh>(std::move(mesh), "PointsGeneralPolygons", state().reverseOrientation),
-             in.where(), std::move(vars));
+    if (nloops.empty()) return warnEmptyMesh("PointsGeneralPolygons", in);
+    addPolygonMesh("PointsGeneralPolygons", nloops, nverts, verts, params, in);
 }
 
 void SceneBuilder::patch(RequestReader& in) {
@@ -303,7 +294,7 @@ void SceneBuilder::patch(RequestReader& in) {
     } else {
         in.fail(in.where(), "unknown patch type \"" + type + "\" (bilinear or bicubic)");
     }
-    addShape(std::make_unique<TriangleMesh>(std::move(mesh), "Patch", false), in.where(), std::move(vars));
+    addTessellated(std::move(mesh), "Patch", in, std::move(vars));
 }
 
 void SceneBuilder::patchMesh(RequestReader& in) {
@@ -328,7 +319,7 @@ void SceneBuilder::patchMesh(RequestReader& in) {
                                       in.where(), normals ? &*normals : nullptr);
     else
         in.fail(in.where(), "unknown patch type \"" + type + "\" (bilinear or bicubic)");
-    addShape(std::make_unique<TriangleMesh>(std::move(mesh), "PatchMesh", false), in.where(), std::move(vars));
+    addTessellated(std::move(mesh), "PatchMesh", in, std::move(vars));
 }
 
 void SceneBuilder::geometry(RequestReader& in) {
@@ -366,8 +357,7 @@ void SceneBuilder::geometry(RequestReader& in) {
     PrimvarSet vars = shapePrimvars(params);
     params.warnUnused(m_diagnostics, "Geometry \"teapot\"");
     bool flip = state().reverseOrientation != mirrors(state().transform);
-    addShape(std::make_unique<TriangleMesh>(buildTeapot(state().transform, flip), "teapot", false), in.where(),
-             std::move(vars));
+    addTessellated(buildTeapot(state().transform, flip), "teapot", in, std::move(vars));
 }
 
 }  // namespace bxdflab

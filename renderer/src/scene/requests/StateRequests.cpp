@@ -8,19 +8,29 @@
 
 namespace bxdflab {
 
-void SceneBuilder::attributeBegin(RequestReader& in) {
+void SceneBuilder::beginBlock(RequestReader& in, Block block) {
     in.finish();
     m_attributes.push_back(state());
-    m_blocks.push_back(Block::Attribute);
+    m_blocks.push_back(block);
 }
 
-void SceneBuilder::attributeEnd(RequestReader& in) {
+bool SceneBuilder::endBlock(RequestReader& in, Block block) {
     in.finish();
-    if (closesSkippedBegin(Block::Attribute, in.where(), "AttributeEnd")) return;
-    if (m_blocks.empty() || m_blocks.back() != Block::Attribute)
-        in.fail(in.where(), m_blocks.empty() ? "AttributeEnd without a matching AttributeBegin"
-                                             : "AttributeEnd closes a TransformBegin block (expected TransformEnd)");
+    bool const attribute = block == Block::Attribute;
+    std::string const end = attribute ? "AttributeEnd" : "TransformEnd";
+    if (closesSkippedBegin(block, in.where(), end)) return false;
+    if (m_blocks.empty() || m_blocks.back() != block)
+        in.fail(in.where(), m_blocks.empty() ? end + " without a matching " + (attribute ? "AttributeBegin" : "TransformBegin")
+                            : attribute ? "AttributeEnd closes a TransformBegin block (expected TransformEnd)"
+                                        : "TransformEnd closes an AttributeBegin block (expected AttributeEnd)");
     m_blocks.pop_back();
+    return true;
+}
+
+void SceneBuilder::attributeBegin(RequestReader& in) { beginBlock(in, Block::Attribute); }
+
+void SceneBuilder::attributeEnd(RequestReader& in) {
+    if (!endBlock(in, Block::Attribute)) return;
     warnIfUnshaped(m_attributes.back().areaLight, m_attributes[m_attributes.size() - 2].areaLight);
     m_attributes.pop_back();
 }
@@ -36,19 +46,10 @@ void SceneBuilder::warnIfUnshaped(std::shared_ptr<AreaLightDesc> const& closing,
                  "a Geometry \"rectlight\", \"spherelight\", \"disklight\" or \"distantlight\")");
 }
 
-void SceneBuilder::transformBegin(RequestReader& in) {
-    in.finish();
-    m_attributes.push_back(state());
-    m_blocks.push_back(Block::Transform);
-}
+void SceneBuilder::transformBegin(RequestReader& in) { beginBlock(in, Block::Transform); }
 
 void SceneBuilder::transformEnd(RequestReader& in) {
-    in.finish();
-    if (closesSkippedBegin(Block::Transform, in.where(), "TransformEnd")) return;
-    if (m_blocks.empty() || m_blocks.back() != Block::Transform)
-        in.fail(in.where(), m_blocks.empty() ? "TransformEnd without a matching TransformBegin"
-                                             : "TransformEnd closes an AttributeBegin block (expected AttributeEnd)");
-    m_blocks.pop_back();
+    if (!endBlock(in, Block::Transform)) return;
     // Only the transform is restored; attributes set inside the block persist.
     Attributes inner = m_attributes.back();
     m_attributes.pop_back();
