@@ -12,6 +12,8 @@ PlanarLight::PlanarLight(Shape shape, Mat4 const& lightToWorld) : m_shape(shape)
     m_planeNormal = safeNormalize(glm::cross(m_axisX, m_axisY));
     float parallelogram = glm::length(glm::cross(m_axisX, m_axisY));
     m_area = shape == Shape::Disk ? kPi * parallelogram : 4.0f * parallelogram;
+    // Every point is center + a axisX + b axisY with |a|, |b| <= 1.
+    m_boundingRadius = glm::length(m_axisX) + glm::length(m_axisY);
 }
 
 float PlanarLight::solidAnglePdf(Vec3 const& towardLight, float distance) const {
@@ -80,6 +82,8 @@ SphereLight::SphereLight(Mat4 const& lightToWorld) {
     m_center = transformPoint(lightToWorld, Vec3(0.0f));
     // A sphere light stays a sphere: non-uniform scales are averaged.
     m_radius = 0.5f * std::cbrt(std::fabs(glm::determinant(Mat3(lightToWorld))));
+    m_area = 4.0f * kPi * m_radius * m_radius;
+    m_boundingRadius = m_radius;
 }
 
 float SphereLight::coneOneMinusCos(Vec3 const& P) const {
@@ -155,6 +159,7 @@ CylinderLight::CylinderLight(Mat4 const& lightToWorld) {
     m_across1 = safeNormalize(acrossY - glm::dot(acrossY, m_axis) * m_axis);
     m_across2 = glm::cross(m_axis, m_across1);
     m_area = 2.0f * kPi * m_radius * m_length;
+    m_boundingRadius = std::sqrt(0.25f * m_length * m_length + m_radius * m_radius);
 }
 
 Vec3 CylinderLight::pointAt(float s, float phi, Vec3& normal) const {

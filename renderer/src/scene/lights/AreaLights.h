@@ -6,28 +6,20 @@
 #pragma once
 
 #include "scene/lights/EmissionShaping.h"
-#include "scene/lights/Light.h"
+#include "scene/lights/ShapedLight.h"
 
 namespace bxdflab {
 
 /// A flat light: a disk or a rectangle spanned by axes ex, ey around center.
-class PlanarLight final : public Light {
+class PlanarLight final : public ShapedLight {
 public:
     enum class Shape { Disk, Rect };
     PlanarLight(Shape shape, Mat4 const& lightToWorld);
     const char* kind() const override { return m_shape == Shape::Disk ? "PxrDiskLight" : "PxrRectLight"; }
     LightSample sample(Vec3 const& P, Vec2 const& xi) const override;
     bool intersect(Vec3 const& org, Vec3 const& dir, float& distance, RtColorRGB& radiance, float& pdf) const override;
-    bool canEmit() const override { return m_area > 0.0f; }
     bool sampleEmission(Vec2 const& xiPosition, Vec2 const& xiDirection, LightEmission& out) const override;
     EmissionDensity emissionDensity(Vec3 const& point, Vec3 const& dir) const override;
-    bool boundingSphere(Vec3& center, float& radius) const override {
-        // Every point is center + a axisX + b axisY with |a|, |b| <= 1.
-        center = m_center;
-        radius = glm::length(m_axisX) + glm::length(m_axisY);
-        return true;
-    }
-    float surfaceArea() const override { return m_area; }
     /// coneAngle, coneSoftness, emissionFocus (see EmissionShaping.h).
     void setShaping(EmissionShaping const& shaping) { m_shaping = shaping; }
 
@@ -37,33 +29,24 @@ private:
     RtColorRGB emitted(float cosTheta) const;
     Shape m_shape;
     EmissionShaping m_shaping;
-    Vec3 m_center, m_axisX, m_axisY, m_emitNormal, m_planeNormal;
-    float m_area;
+    Vec3 m_axisX, m_axisY, m_emitNormal, m_planeNormal;
 };
 
 /// A sphere light, sampled uniformly inside the cone it subtends (exact
 /// solid-angle sampling).
-class SphereLight final : public Light {
+class SphereLight final : public ShapedLight {
 public:
     explicit SphereLight(Mat4 const& lightToWorld);
     const char* kind() const override { return "PxrSphereLight"; }
     LightSample sample(Vec3 const& P, Vec2 const& xi) const override;
     bool intersect(Vec3 const& org, Vec3 const& dir, float& distance, RtColorRGB& radiance, float& pdf) const override;
-    bool canEmit() const override { return m_radius > 0.0f; }
     bool sampleEmission(Vec2 const& xiPosition, Vec2 const& xiDirection, LightEmission& out) const override;
     EmissionDensity emissionDensity(Vec3 const& point, Vec3 const& dir) const override;
-    bool boundingSphere(Vec3& center, float& radius) const override {
-        center = m_center;
-        radius = m_radius;
-        return true;
-    }
     float radius() const { return m_radius; }
-    float surfaceArea() const override { return 4.0f * kPi * m_radius * m_radius; }
 
 private:
     /// 1 - cos(theta_max) of the cone seen from P, or 0 inside the sphere.
     float coneOneMinusCos(Vec3 const& P) const;
-    Vec3 m_center;
     float m_radius;
 };
 
@@ -72,28 +55,21 @@ private:
 /// its open ends emit nothing. Points are sampled uniformly over the side.
 /// As in RenderMan, the cross-section's scale should be uniform; an uneven
 /// one is averaged, as a sphere light's is.
-class CylinderLight final : public Light {
+class CylinderLight final : public ShapedLight {
 public:
     explicit CylinderLight(Mat4 const& lightToWorld);
     const char* kind() const override { return "PxrCylinderLight"; }
     LightSample sample(Vec3 const& P, Vec2 const& xi) const override;
     bool intersect(Vec3 const& org, Vec3 const& dir, float& distance, RtColorRGB& radiance, float& pdf) const override;
-    bool canEmit() const override { return m_area > 0.0f; }
     bool sampleEmission(Vec2 const& xiPosition, Vec2 const& xiDirection, LightEmission& out) const override;
     EmissionDensity emissionDensity(Vec3 const& point, Vec3 const& dir) const override;
-    bool boundingSphere(Vec3& center, float& radius) const override {
-        center = m_center;
-        radius = std::sqrt(0.25f * m_length * m_length + m_radius * m_radius);
-        return true;
-    }
-    float surfaceArea() const override { return m_area; }
 
 private:
     /// The point of the side at axial fraction s (-0.5 to 0.5) and angle phi, and its outward normal.
     Vec3 pointAt(float s, float phi, Vec3& normal) const;
     float solidAnglePdf(Vec3 const& towardLight, float distance, Vec3 const& normal) const;
-    Vec3 m_center, m_axis, m_across1, m_across2;  ///< unit axis; the two unit directions across it
-    float m_length, m_radius, m_area;
+    Vec3 m_axis, m_across1, m_across2;  ///< unit axis; the two unit directions across it
+    float m_length, m_radius;
 };
 
 }  // namespace bxdflab

@@ -28,14 +28,8 @@ MeshLight::MeshLight(MeshData const& mesh, float orientation, bool twoSided) : m
     }
     if (!m_triangles.empty()) {
         m_center = 0.5f * (lower + upper);
-        m_radius = 0.5f * glm::length(upper - lower);
+        m_boundingRadius = 0.5f * glm::length(upper - lower);
     }
-}
-
-bool MeshLight::boundingSphere(Vec3& center, float& radius) const {
-    center = m_center;
-    radius = m_radius;
-    return true;
 }
 
 Vec3 MeshLight::samplePoint(Vec2 const& xi, Vec3& normal) const {
@@ -81,7 +75,7 @@ bool MeshLight::intersect(Vec3 const& org, Vec3 const& dir, float& distance, RtC
     // Most rays pass far from a light: test its bounding sphere first.
     Vec3 const oc = org - m_center;
     float const b = glm::dot(oc, dir);
-    if (b * b - (glm::dot(oc, oc) - m_radius * m_radius) < 0.0f) return false;
+    if (b * b - (glm::dot(oc, oc) - m_boundingRadius * m_boundingRadius) < 0.0f) return false;
 
     Triangle const* nearest = nullptr;
     float nearestT = kInfinity;

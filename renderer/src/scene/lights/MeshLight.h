@@ -11,12 +11,12 @@
 
 #include <vector>
 
-#include "scene/lights/Light.h"
+#include "scene/lights/ShapedLight.h"
 #include "scene/shapes/TriangleMesh.h"
 
 namespace bxdflab {
 
-class MeshLight final : public Light {
+class MeshLight final : public ShapedLight {
 public:
     /// Lights with more triangles than this stay glowing geometry: every
     /// camera and Bxdf-sampled ray tests each triangle of a light.
@@ -29,11 +29,8 @@ public:
     const char* kind() const override { return "PxrMeshLight"; }
     LightSample sample(Vec3 const& P, Vec2 const& xi) const override;
     bool intersect(Vec3 const& org, Vec3 const& dir, float& distance, RtColorRGB& radiance, float& pdf) const override;
-    bool canEmit() const override { return m_area > 0.0f; }
     bool sampleEmission(Vec2 const& xiPosition, Vec2 const& xiDirection, LightEmission& out) const override;
     EmissionDensity emissionDensity(Vec3 const& point, Vec3 const& dir) const override;
-    bool boundingSphere(Vec3& center, float& radius) const override;
-    float surfaceArea() const override { return m_area; }
 
 private:
     struct Triangle {
@@ -47,10 +44,7 @@ private:
 
     std::vector<Triangle> m_triangles;
     std::vector<float> m_cumulativeArea;  ///< running sum of the triangles' areas
-    float m_area = 0.0f;
     bool m_twoSided;
-    Vec3 m_center{0.0f};
-    float m_radius = 0.0f;
 };
 
 }  // namespace bxdflab
