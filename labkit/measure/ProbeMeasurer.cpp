@@ -106,30 +106,32 @@ RixBXLobeTraits ProbeMeasurer::lobes(std::string const& params) {
     return guarded([&] { return probe(params).lobes(); });
 }
 
-std::vector<ProbeResult> ProbeMeasurer::evaluate(std::string const& params, std::vector<ProbePoint> const& points,
-                                                 std::vector<Vec3> const& L) {
+template <typename Input, typename Call>
+std::vector<ProbeResult> ProbeMeasurer::askPerPoint(std::string const& params, std::vector<ProbePoint> const& points,
+                                                    std::vector<Input> const& inputs, Call&& call) {
     std::lock_guard<std::mutex> guard(m_lock);
     std::string asked = params;
     if (std::optional<int> rounds = takeTogetherMark(asked))
         return guarded([&] {
             return askTogether(asked, *rounds, points.size(), [&](BxdfProbe& p, size_t begin, size_t end) {
-                return p.evaluate(slice(points, begin, end), slice(L, begin, end));
+                return call(p, slice(points, begin, end), slice(inputs, begin, end));
             });
         });
-    return guarded([&] { return probe(params).evaluate(points, L); });
+    return guarded([&] { return call(probe(params), points, inputs); });
+}
+
+std::vector<ProbeResult> ProbeMeasurer::evaluate(std::string const& params, std::vector<ProbePoint> const& points,
+                                                 std::vector<Vec3> const& L) {
+    return askPerPoint(params, points, L, [](BxdfProbe& p, std::vector<ProbePoint> const& at,
+                                             std::vector<Vec3> const& directions) { return p.evaluate(at, directions); });
 }
 
 std::vector<ProbeResult> ProbeMeasurer::generate(std::string const& params, std::vector<ProbePoint> const& points,
                                                  std::vector<SampleSpec> const& samples) {
-    std::lock_guard<std::mutex> guard(m_lock);
-    std::string asked = params;
-    if (std::optional<int> rounds = takeTogetherMark(asked))
-        return guarded([&] {
-            return askTogether(asked, *rounds, points.size(), [&](BxdfProbe& p, size_t begin, size_t end) {
-                return p.generate(slice(points, begin, end), slice(samples, begin, end));
-            });
-        });
-    return guarded([&] { return probe(params).generate(points, samples); });
+    return askPerPoint(params, points, samples,
+                       [](BxdfProbe& p, std::vector<ProbePoint> const& at, std::vector<SampleSpec> const& randoms) {
+                           return p.generate(at, randoms);
+                       });
 }
 
 std::vector<ProbeResult> ProbeMeasurer::evaluateAtIndex(std::string const& params, ProbePoint const& point,

@@ -38,6 +38,11 @@ private:
     /// for the two halves of `count` points on two threads at once, `rounds` times.
     template <typename Ask>
     std::vector<ProbeResult> askTogether(std::string const& params, int rounds, size_t count, Ask&& ask);
+    /// One call of the probe per point (evaluate, generate): on this thread, or
+    /// split between two threads when the parameters ask for that.
+    template <typename Input, typename Call>
+    std::vector<ProbeResult> askPerPoint(std::string const& params, std::vector<ProbePoint> const& points,
+                                         std::vector<Input> const& inputs, Call&& call);
     /// The sampling exercise's entry points (loaded on first use).
     void loadSampling();
 
