@@ -30,6 +30,7 @@
 #include "CommandLine.h"
 #include "RayRecording.h"
 #include "film/OiioImageFiles.h"
+#include "parse/RibText.h"
 #include "render/Renderer.h"
 #include "scene/SceneBuilder.h"
 
@@ -74,15 +75,9 @@ std::string meshScene(int triangles) {
     rib << "Format 200 175 1\nProjection \"perspective\" \"fov\" [15]\nIntegrator \"PxrDirectLighting\" \"d\"\n"
            "WorldBegin\n AttributeBegin\n Translate -2 2 0\n Rotate 14.04 0 1 0\n Rotate 13.63 1 0 0\n"
            " Light \"PxrDiskLight\" \"l\" \"float intensity\" [150]\n AttributeEnd\n Translate 0 0 8\n"
-           " Bxdf \"diffuse\" \"d\"\n PointsPolygons [";
-    for (int k = 0; k < n * n; ++k) rib << "4 ";
-    rib << "] [";
-    for (int i = 0; i < n; ++i)
-        for (int j = 0; j < n; ++j) {
-            int a = i * (n + 1) + j;
-            rib << a << ' ' << a + 1 << ' ' << a + n + 2 << ' ' << a + n + 1 << ' ';
-        }
-    rib << "] \"P\" [";
+           " Bxdf \"diffuse\" \"d\"\n PointsPolygons ";
+    writeQuadGridFaces(rib, n, n);
+    rib << " \"P\" [";
     for (int i = 0; i <= n; ++i)
         for (int j = 0; j <= n; ++j) {
             double theta = M_PI * i / n, phi = 2 * M_PI * j / n;

@@ -16,6 +16,7 @@
 #include <sstream>
 
 #include "film/OiioImageFiles.h"
+#include "parse/RibText.h"
 #include "CommandLine.h"
 #include "ToolSupport.h"
 #include "render/Film.h"
@@ -101,15 +102,9 @@ void drawSphere(BxdfProbe& probe, float theta, float phi, std::string const& pat
            "  AttributeBegin\n  Attribute \"visibility\" \"int camera\" [0]\n"
            "  Light \"PxrDomeLight\" \"sky\" \"float intensity\" [0.6]\n"
            "  Translate 2 -3 4\n  Light \"PxrSphereLight\" \"key\" \"float intensity\" [20]\n  AttributeEnd\n"
-           "  Bxdf \"diffuse\" \"lobe\" \"color diffuseColor\" [0.9 0.45 0.1]\n  PointsPolygons [";
-    for (int k = 0; k < thetaSteps * phiSteps; ++k) rib << "4 ";
-    rib << "] [";
-    for (int i = 0; i < thetaSteps; ++i)
-        for (int j = 0; j < phiSteps; ++j) {
-            int a = i * (phiSteps + 1) + j;
-            rib << a << ' ' << a + 1 << ' ' << a + phiSteps + 2 << ' ' << a + phiSteps + 1 << ' ';
-        }
-    rib << "] \"P\" [";
+           "  Bxdf \"diffuse\" \"lobe\" \"color diffuseColor\" [0.9 0.45 0.1]\n  PointsPolygons ";
+    writeQuadGridFaces(rib, thetaSteps, phiSteps);
+    rib << " \"P\" [";
     for (size_t k = 0; k < L.size(); ++k) {
         Vec3 p = L[k] * (r[k] / top);
         rib << p.x << ' ' << p.y << ' ' << p.z << ' ';
