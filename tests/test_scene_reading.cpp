@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <map>
 #include <sstream>
 
 #include "accel/RayTracer.h"
@@ -541,6 +542,82 @@ TEST_CASE("RenderMan's camera plugins are perspective cameras, with no Projectio
     CHECK(test::warningsContaining(diagnostics, "PxrCamera") == 1);
     Scene none = test::parseRib("WorldBegin\n", diagnostics);
     CHECK(none.camera.projection == "orthographic");
+}
+
+TEST_CASE("a subdivision surface keeps its primvars: vertex, varying, facevarying (s and t from st) and uniform",
+          "[rib][geometry][primvars]") {
+    // A 2 x 2 grid of quads over [-1, 1]^2, its border kept (interpolateboundary 1), seen from z = 0.
+    std::string const grid = "WorldBegin\nTranslate 0 0 5\nSubdivisionMesh \"catmull-clark\" [4 4 4 4] "
+                             "[0 1 4 3  1 2 5 4  3 4 7 6  4 5 8 7] [\"interpolateboundary\"] [1 0] [1] [] "
+                             "\"P\" [-1 -1 0  0 -1 0  1 -1 0  -1 0 0  0 0 0  1 0 0  -1 1 0  0 1 0  1 1 0] ";
+    struct Seen {
+        SurfaceParameters at;
+        std::map<std::string, std::vector<float>> values;
+    };
+    auto look = [&](std::string const& primvars, float x, float y) {
+        Diagnostics diagnostics(false);
+        Scene scene = test::parseRib(grid + primvars + "\n", diagnostics);
+        CHECK(test::warningsContaining(diagnostics, "not used") == 0);
+        REQUIRE(scene.shapes.size() == 1u);
+        RayTracer tracer(scene);
+        HitRecord hit = trace(tracer, Vec3(x, y, 0.0f), Vec3(0, 0, 1));
+        REQUIRE(hit.hit());
+        Shape const& shape = *scene.shapes[0];
+        Seen seen{shape.parameters(hit), {}};
+        for (Primvar const& var : shape.primvars.all()) {
+            std::vector<float> value(static_cast<size_t>(var.components));
+            shape.primvar(var, hit, value.data());
+            seen.values[var.name] = value;
+        }
+        return seen;
+    };
+    SECTION("one UV sheet over the faces (facevarying st): s and t run across the whole mesh, not each face") {
+        // Each face's corners, in its own order, given its quarter of [0, 1]^2.
+        std::string const st = "\"facevarying float[2] st\" [0 0  0.5 0  0.5 0.5  0 0.5   0.5 0  1 0  1 0.5  0.5 0.5   "
+                               "0 0.5  0.5 0.5  0.5 1  0 1   0.5 0.5  1 0.5  1 1  0.5 1]";
+        for (Vec2 xy : {Vec2(-0.5f, -0.5f), Vec2(0.0f, 0.0f), Vec2(0.5f, -0.3f), Vec2(-0.7f, 0.6f)}) {
+            CAPTURE(xy.x, xy.y);
+            Seen seen = look(st, xy.x, xy.y);
+            // A linear layout stays linear under subdivision.
+            CHECK(seen.at.s == Approx(0.5f * (xy.x + 1.0f)).margin(0.01));
+            CHECK(seen.at.t == Approx(0.5f * (xy.y + 1.0f)).margin(0.01));
+            CHECK(seen.values.at("st")[0] == Approx(seen.at.s));
+        }
+        // "s" and "t" given apart do the same.
+        std::string const apart = "\"facevarying float s\" [0 0.5 0.5 0  0.5 1 1 0.5  0 0.5 0.5 0  0.5 1 1 0.5] "
+                                  "\"facevarying float t\" [0 0 0.5 0.5  0 0 0.5 0.5  0.5 0.5 1 1  0.5 0.5 1 1]";
+        Seen seen = look(apart, 0.5f, -0.3f);
+        CHECK(seen.at.s == Approx(0.75f).margin(0.01));
+        CHECK(seen.at.t == Approx(0.35f).margin(0.01));
+    }
+    SECTION("a seam: the right column's faces map to an island of their own, and s jumps across the centre line") {
+        std::string const st = "\"facevarying float[2] st\" [0 0  0.4 0  0.4 0.5  0 0.5   0.6 0  1 0  1 0.5  0.6 0.5   "
+                               "0 0.5  0.4 0.5  0.4 1  0 1   0.6 0.5  1 0.5  1 1  0.6 1]";
+        CHECK(look(st, -0.01f, 0.3f).at.s == Approx(0.4f).margin(0.01));
+        CHECK(look(st, 0.01f, 0.3f).at.s == Approx(0.6f).margin(0.01));
+    }
+    SECTION("vertex values are subdivided as the points are, varying ones linearly, uniform ones per face") {
+        std::string const vars = "\"vertex float height\" [-1 0 1  -1 0 1  -1 0 1] "
+                                 "\"varying float across\" [-1 -1 -1  0 0 0  1 1 1] "
+                                 "\"uniform float face\" [0 1 2 3] \"varying color Cs\" [1 0 0  1 0 0  1 0 0  0 1 0  0 1 0  "
+                                 "0 1 0  0 0 1  0 0 1  0 0 1]";
+        Seen seen = look(vars, 0.5f, 0.3f);
+        CHECK(seen.values.at("height")[0] == Approx(0.5f).margin(0.01));
+        CHECK(seen.values.at("across")[0] == Approx(0.3f).margin(0.01));
+        CHECK(seen.values.at("face")[0] == 3.0f);
+        CHECK(seen.values.at("Cs")[1] == Approx(0.7f).margin(0.01));  // 0.3 of the way from green to blue
+        CHECK(seen.values.at("Cs")[2] == Approx(0.3f).margin(0.01));
+        CHECK(look(vars, -0.5f, -0.5f).values.at("face")[0] == 0.0f);
+        CHECK(look(vars, 0.5f, -0.5f).values.at("face")[0] == 1.0f);
+    }
+    SECTION("a primvar with the wrong number of values is an error at its parameter") {
+        Diagnostics diagnostics(false);
+        CHECK_THROWS_WITH(test::parseRib(grid + "\"facevarying float[2] st\" [0 0  1 0  1 1]\n", diagnostics),
+                          Catch::Matchers::Contains("test.rib:3:") &&
+                              Catch::Matchers::Contains("needs 16 values here (one per face corner), got 3"));
+        CHECK_THROWS_WITH(test::parseRib(grid + "\"vertex float h\" [0 1 2 3]\n", diagnostics),
+                          Catch::Matchers::Contains("needs 9 values here (one per point), got 4"));
+    }
 }
 
 TEST_CASE("free-form shapes: subdivision surface, NURBS patch, curves, points and blobby", "[rib][geometry]") {

@@ -126,6 +126,10 @@ public:
                   unsigned count) const override {
         rtcInterpolate1(m_geometry, primID, u, v, RTC_BUFFER_TYPE_VERTEX, 0, value, dPdu, dPdv, count);
     }
+    void evaluateAttribute(unsigned slot, unsigned primID, float u, float v, float* value,
+                           unsigned count) const override {
+        rtcInterpolate1(m_geometry, primID, u, v, RTC_BUFFER_TYPE_VERTEX_ATTRIBUTE, slot, value, nullptr, nullptr, count);
+    }
 
 private:
     RTCGeometry m_geometry;
@@ -207,12 +211,68 @@ public:
                                   : data.boundary == SubdivisionData::Boundary::Edges        ? RTC_SUBDIVISION_MODE_SMOOTH_BOUNDARY
                                                                                              : RTC_SUBDIVISION_MODE_NO_BOUNDARY;
         rtcSetGeometrySubdivisionMode(m_geometry, 0, mode);
+        setPrimvars(data, mode);
         rtcSetGeometryTessellationRate(m_geometry, kTessellationRate);
         rtcCommitGeometry(m_geometry);
         surface.attach(std::make_shared<EmbreeEvaluator>(m_geometry));
     }
 
 private:
+    /// A subdivision surface's primvars as vertex attributes, one slot each (in
+    /// their order), each with the topology its rate calls for: vertex ones
+    /// share P's; varying ones share one that is linear over every face; each
+    /// facevarying one has its own, whose seams are its own.
+    void setPrimvars(SubdivisionData const& data, RTCSubdivisionMode vertexMode) {
+        if (data.primvars.empty()) return;
+        unsigned topologies = 1, linearTopology = 0;
+        std::vector<unsigned> topologyOf;
+        for (SubdivisionPrimvar const& sub : data.primvars) {
+            if (sub.rate == SubdivisionPrimvar::Rate::Vertex) {
+                topologyOf.push_back(0);
+            } else if (sub.rate == SubdivisionPrimvar::Rate::Varying) {
+                if (linearTopology == 0) linearTopology = topologies++;
+                topologyOf.push_back(linearTopology);
+            } else {
+                topologyOf.push_back(topologies++);
+            }
+        }
+        rtcSetGeometryTopologyCount(m_geometry, topologies);
+        rtcSetGeometryVertexAttributeCount(m_geometry, static_cast<unsigned>(data.primvars.size()));
+        if (linearTopology != 0) {
+            setIndices(linearTopology, data.indices);
+            rtcSetGeometrySubdivisionMode(m_geometry, linearTopology, RTC_SUBDIVISION_MODE_PIN_ALL);
+        }
+        RTCSubdivisionMode const seams =
+            data.faceVaryingBoundary == SubdivisionData::FaceVaryingBoundary::Smooth        ? vertexMode
+            : data.faceVaryingBoundary == SubdivisionData::FaceVaryingBoundary::PinBoundary ? RTC_SUBDIVISION_MODE_PIN_BOUNDARY
+            : data.faceVaryingBoundary == SubdivisionData::FaceVaryingBoundary::Linear      ? RTC_SUBDIVISION_MODE_PIN_ALL
+                                                                                            : RTC_SUBDIVISION_MODE_PIN_CORNERS;
+        for (size_t slot = 0; slot < data.primvars.size(); ++slot) {
+            SubdivisionPrimvar const& sub = data.primvars[slot];
+            unsigned const topology = topologyOf[slot];
+            if (sub.rate == SubdivisionPrimvar::Rate::FaceVarying) {
+                setIndices(topology, sub.cornerValues);
+                rtcSetGeometrySubdivisionMode(m_geometry, topology, seams);
+            }
+            rtcSetGeometryVertexAttributeTopology(m_geometry, static_cast<unsigned>(slot), topology);
+            // Four floats a value (Embree may read 16 bytes at any of them), up to 3 of them used.
+            size_t const c = static_cast<size_t>(sub.var.components), count = sub.var.values.size() / c;
+            static RTCFormat const formats[] = {RTC_FORMAT_FLOAT, RTC_FORMAT_FLOAT2, RTC_FORMAT_FLOAT3};
+            auto* values = static_cast<Vec4*>(rtcSetNewGeometryBuffer(m_geometry, RTC_BUFFER_TYPE_VERTEX_ATTRIBUTE,
+                                                                      static_cast<unsigned>(slot), formats[c - 1],
+                                                                      sizeof(Vec4), count));
+            for (size_t i = 0; i < count; ++i) {
+                values[i] = Vec4(0.0f);
+                for (size_t k = 0; k < c; ++k) values[i][static_cast<int>(k)] = sub.var.values[i * c + k];
+            }
+        }
+    }
+    void setIndices(unsigned topology, std::vector<unsigned> const& indices) {
+        void* buffer = rtcSetNewGeometryBuffer(m_geometry, RTC_BUFFER_TYPE_INDEX, topology, RTC_FORMAT_UINT,
+                                               sizeof(unsigned), indices.size());
+        std::memcpy(buffer, indices.data(), indices.size() * sizeof(unsigned));
+    }
+
     RTCDevice m_device;
     bool m_embreeSpheres;
     RTCGeometry m_geometry = nullptr;

@@ -84,11 +84,11 @@ void SceneBuilder::readSubdivisionMesh(RequestReader& in, bool hierarchical) {
     std::vector<Vec3> P = worldPoints(params, state().transform, in);
     params.ignore("N");  // the limit surface has its own normals
     PrimvarSet vars = shapePrimvars(params);
-    params.warnUnused(m_diagnostics, request);
     if (scheme == "bilinear") {
-        // Flat faces: the polygons themselves.
+        // Flat faces: the polygons themselves, which keep the primvars that vary.
         std::vector<int> loops(nverts.size(), 1);
         MeshData mesh = buildPolygonMesh(loops, nverts, verts, params, state().transform, in.where());
+        params.warnUnused(m_diagnostics, request);
         addShape(std::make_unique<TriangleMesh>(std::move(mesh), request, state().reverseOrientation), in.where(),
                  std::move(vars));
         return;
@@ -114,6 +114,9 @@ void SceneBuilder::readSubdivisionMesh(RequestReader& in, bool hierarchical) {
                                     " points)");
         data.indices.push_back(static_cast<unsigned>(v));
     }
+    PrimvarSet perFace = readSubdivisionPrimvars(params, data);
+    for (Primvar& var : perFace.all()) vars.add(std::move(var));
+    params.warnUnused(m_diagnostics, request);
     // Tags: each has two counts in nargs (integers, floats), or three in a
     // hierarchical mesh (integers, floats, strings), and takes them in turn.
     size_t const countsPerTag = hierarchical ? 3 : 2;
@@ -152,6 +155,15 @@ void SceneBuilder::readSubdivisionMesh(RequestReader& in, bool hierarchical) {
             data.boundary = mode == 2 ? SubdivisionData::Boundary::Edges
                             : mode == 0 ? SubdivisionData::Boundary::None
                                         : SubdivisionData::Boundary::EdgesAndCorners;
+        } else if (tag == "facevaryinginterpolateboundary") {
+            // 0 subdivides facevarying values smoothly up to their seams; 1 (the default)
+            // and 2 pin their corners; 3 pins the whole seam; more makes them linear.
+            int mode = ni > 0 ? intargs[ints] : 1;
+            using Seams = SubdivisionData::FaceVaryingBoundary;
+            data.faceVaryingBoundary = mode <= 0 ? Seams::Smooth
+                                       : mode <= 2 ? Seams::PinCorners
+                                       : mode == 3 ? Seams::PinBoundary
+                                                   : Seams::Linear;
         } else {
             warnOnce("subdivision tag " + tag, in.where(), std::string(request) + " tag \"" + tag + "\" is not used; skipped");
         }

@@ -87,6 +87,9 @@ public:
     /// derivatives in u and v (each `count` floats; dPdu and dPdv may be null).
     virtual void evaluate(unsigned primID, float u, float v, float* value, float* dPdu, float* dPdv,
                           unsigned count) const = 0;
+    /// One of the surface's other vertex attributes (slot `slot`, `count` floats) at (u, v).
+    virtual void evaluateAttribute(unsigned slot, unsigned primID, float u, float v, float* value,
+                                   unsigned count) const = 0;
 };
 
 class Shape {

@@ -1,8 +1,97 @@
 #include "scene/shapes/SubdivisionSurface.h"
 
+#include <cstring>
+#include <map>
+#include <optional>
+
 namespace bxdflab {
+
+namespace {
+
+/// The rate a storage class asks for, or nothing for constant and uniform.
+std::optional<SubdivisionPrimvar::Rate> rateOf(std::string const& storageClass) {
+    if (storageClass.empty() || storageClass == "vertex") return SubdivisionPrimvar::Rate::Vertex;
+    if (storageClass == "varying") return SubdivisionPrimvar::Rate::Varying;
+    if (storageClass == "facevarying" || storageClass == "facevertex") return SubdivisionPrimvar::Rate::FaceVarying;
+    return std::nullopt;
+}
+
+/// Facevarying values, one per face corner, shared by the corners of one point
+/// that carry the same value: the subdivision then runs smoothly across faces
+/// and stops at seams.
+void weldCorners(Param const& param, SubdivisionData const& data, SubdivisionPrimvar& out) {
+    size_t const c = static_cast<size_t>(out.var.components);
+    std::map<std::pair<unsigned, std::vector<float>>, unsigned> seen;
+    out.cornerValues.reserve(data.indices.size());
+    for (size_t corner = 0; corner < data.indices.size(); ++corner) {
+        std::vector<float> value(param.floats.begin() + static_cast<std::ptrdiff_t>(corner * c),
+                                 param.floats.begin() + static_cast<std::ptrdiff_t>((corner + 1) * c));
+        auto [it, added] = seen.try_emplace({data.indices[corner], value}, static_cast<unsigned>(seen.size()));
+        if (added) out.var.values.insert(out.var.values.end(), value.begin(), value.end());
+        out.cornerValues.push_back(it->second);
+    }
+}
+
+}  // namespace
+
+PrimvarSet readSubdivisionPrimvars(ParamList const& params, SubdivisionData& data) {
+    PrimvarSet uniform;
+    for (Param const& p : params.all()) {
+        int const components = primvarComponents(p);
+        if (components == 0 || isGeometryParameter(p.name()) || p.used) continue;
+        std::string const& cls = p.decl.storageClass;
+        size_t const given = p.floats.size() / static_cast<size_t>(components);
+        Primvar var;
+        var.name = p.name();
+        var.type = p.decl.type;
+        var.components = components;
+        std::optional<SubdivisionPrimvar::Rate> rate = rateOf(cls);
+        size_t const wanted = cls == "uniform"                                        ? data.faceSizes.size()
+                              : rate == SubdivisionPrimvar::Rate::FaceVarying ? data.indices.size()
+                              : rate                                                  ? data.P.size()
+                                                                                      : 1;
+        if (given != wanted || p.floats.size() % static_cast<size_t>(components) != 0)
+            throw RibError(p.location, "primvar \"" + p.name() + "\" (" + (cls.empty() ? std::string("vertex") : cls) +
+                                           ") needs " + std::to_string(wanted) + " values here (" +
+                                           (cls == "uniform" ? "one per face" : rate == SubdivisionPrimvar::Rate::FaceVarying ? "one per face corner" : rate ? "one per point" : "one") +
+                                           "), got " + std::to_string(given));
+        p.used = true;
+        if (!rate) {  // uniform (constant ones are the shape's own)
+            var.detail = Primvar::Detail::Uniform;
+            var.values = p.floats;
+            uniform.add(std::move(var));
+            continue;
+        }
+        SubdivisionPrimvar sub;
+        sub.var = std::move(var);
+        sub.var.detail = Primvar::Detail::Varying;
+        sub.rate = *rate;
+        if (sub.rate == SubdivisionPrimvar::Rate::FaceVarying)
+            weldCorners(p, data, sub);
+        else
+            sub.var.values = p.floats;
+        data.primvars.push_back(std::move(sub));
+    }
+    return uniform;
+}
+
 SubdivisionSurface::SubdivisionSurface(SubdivisionData data, bool flipNormals)
-    : m_data(std::move(data)), m_orientation(flipNormals ? -1.0f : 1.0f) {}
+    : m_data(std::move(data)), m_orientation(flipNormals ? -1.0f : 1.0f) {
+    for (SubdivisionPrimvar const& sub : m_data.primvars) {
+        Primvar listed = sub.var;
+        listed.values.clear();  // the ray tracer holds them
+        primvars.add(std::move(listed));
+    }
+    m_stSlot = slotOf("st", 2);
+    m_sSlot = slotOf("s", 1);
+    m_tSlot = slotOf("t", 1);
+}
+
+int SubdivisionSurface::slotOf(std::string const& primvarName, int components) const {
+    for (size_t i = 0; i < m_data.primvars.size(); ++i)
+        if (m_data.primvars[i].var.name == primvarName && m_data.primvars[i].var.components == components) return static_cast<int>(i);
+    return -1;
+}
 
 SurfaceBasics SubdivisionSurface::basics(HitRecord const& hit) const {
     SurfaceTangents t = tangents(hit);
@@ -24,6 +113,34 @@ SurfaceTangents SubdivisionSurface::tangents(HitRecord const& hit) const {
     float P[3], dPdu[3], dPdv[3];
     m_evaluator->evaluate(hit.primID, hit.u, hit.v, P, dPdu, dPdv, 3);
     return {Vec3(dPdu[0], dPdu[1], dPdu[2]), Vec3(dPdv[0], dPdv[1], dPdv[2])};
+}
+
+SurfaceParameters SubdivisionSurface::parameters(HitRecord const& hit) const {
+    SurfaceParameters out{hit.u, hit.v, hit.u, hit.v};
+    if (m_stSlot >= 0) {
+        float st[2];
+        m_evaluator->evaluateAttribute(static_cast<unsigned>(m_stSlot), hit.primID, hit.u, hit.v, st, 2);
+        out.s = st[0];
+        out.t = st[1];
+    } else if (m_sSlot >= 0 && m_tSlot >= 0) {
+        m_evaluator->evaluateAttribute(static_cast<unsigned>(m_sSlot), hit.primID, hit.u, hit.v, &out.s, 1);
+        m_evaluator->evaluateAttribute(static_cast<unsigned>(m_tSlot), hit.primID, hit.u, hit.v, &out.t, 1);
+    }
+    return out;
+}
+
+void SubdivisionSurface::primvar(Primvar const& var, HitRecord const& hit, float* out) const {
+    size_t const c = static_cast<size_t>(var.components);
+    if (var.detail == Primvar::Detail::Uniform && (hit.primID + 1) * c <= var.values.size()) {
+        std::memcpy(out, var.values.data() + hit.primID * c, c * sizeof(float));
+        return;
+    }
+    int const slot = slotOf(var.name, var.components);
+    if (slot >= 0) {
+        m_evaluator->evaluateAttribute(static_cast<unsigned>(slot), hit.primID, hit.u, hit.v, out, static_cast<unsigned>(c));
+        return;
+    }
+    Shape::primvar(var, hit, out);  // a constant
 }
 
 }  // namespace bxdflab

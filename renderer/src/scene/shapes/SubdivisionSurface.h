@@ -10,6 +10,18 @@
 
 namespace bxdflab {
 
+/// A primvar that varies over a subdivision surface, interpolated by the ray
+/// tracer's own subdivision of it (uniform ones are one value per face and need none).
+struct SubdivisionPrimvar {
+    /// vertex: subdivided as P is; varying: linear over each face; facevarying
+    /// (and facevertex): subdivided per face corner, with seams where a point's
+    /// corners carry different values (a UV layout's island borders).
+    enum class Rate { Vertex, Varying, FaceVarying };
+    Primvar var;  ///< values: one per point, or one per distinct corner value (facevarying)
+    Rate rate = Rate::Vertex;
+    std::vector<unsigned> cornerValues;  ///< facevarying: each face corner's index into var.values
+};
+
 struct SubdivisionData {
     std::vector<Vec3> P;               ///< control points, world space
     std::vector<unsigned> faceSizes;   ///< vertices per face
@@ -20,7 +32,18 @@ struct SubdivisionData {
     std::vector<float> cornerWeights;  ///< one per corner
     std::vector<unsigned> holes;       ///< face indices, sorted, each once
     enum class Boundary { None, EdgesAndCorners, Edges } boundary = Boundary::None;
+    /// How facevarying values behave along their seams and the mesh's border
+    /// (the "facevaryinginterpolateboundary" tag; RenderMan's default pins the corners).
+    enum class FaceVaryingBoundary { Smooth, PinCorners, PinBoundary, Linear } faceVaryingBoundary =
+        FaceVaryingBoundary::PinCorners;
+    std::vector<SubdivisionPrimvar> primvars;
 };
+
+/// Takes the vertex, varying, facevarying and facevertex primvars of a
+/// SubdivisionMesh's parameters into `data` (its faces and points already
+/// read), and returns its uniform ones (one value per face). Values of the
+/// wrong count are an error at the parameter.
+PrimvarSet readSubdivisionPrimvars(ParamList const& params, SubdivisionData& data);
 
 class SubdivisionSurface final : public Shape {
 public:
@@ -30,12 +53,18 @@ public:
     void accept(ShapeVisitor& visitor) const override { visitor.visit(*this); }
     SurfaceBasics basics(HitRecord const& hit) const override;
     SurfaceTangents tangents(HitRecord const& hit) const override;
+    /// s and t from the "st" primvar (or "s" and "t") where the mesh has them.
+    SurfaceParameters parameters(HitRecord const& hit) const override;
+    void primvar(Primvar const& var, HitRecord const& hit, float* out) const override;
     SubdivisionData const& data() const { return m_data; }
     /// The limit surface as the ray tracer built it (evaluated at hits).
     void attach(std::shared_ptr<SurfaceEvaluator const> evaluator) const { m_evaluator = std::move(evaluator); }
 
 private:
+    /// The index in m_data.primvars (the ray tracer's attribute slot) of a primvar, or -1.
+    int slotOf(std::string const& primvarName, int components) const;
     SubdivisionData m_data;
+    int m_stSlot = -1, m_sSlot = -1, m_tSlot = -1;
     float m_orientation;
     mutable std::shared_ptr<SurfaceEvaluator const> m_evaluator;
 };
