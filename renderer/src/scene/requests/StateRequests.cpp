@@ -19,10 +19,11 @@ bool SceneBuilder::endBlock(RequestReader& in, Block block) {
     bool const attribute = block == Block::Attribute;
     std::string const end = attribute ? "AttributeEnd" : "TransformEnd";
     if (closesSkippedBegin(block, in.where(), end)) return false;
-    if (m_blocks.empty() || m_blocks.back() != block)
-        in.fail(in.where(), m_blocks.empty() ? end + " without a matching " + (attribute ? "AttributeBegin" : "TransformBegin")
-                            : attribute ? "AttributeEnd closes a TransformBegin block (expected TransformEnd)"
-                                        : "TransformEnd closes an AttributeBegin block (expected AttributeEnd)");
+    if (m_blocks.empty())
+        in.fail(in.where(), end + " without a matching " + (attribute ? "AttributeBegin" : "TransformBegin"));
+    if (m_blocks.back() != block)
+        in.fail(in.where(), end + (attribute ? " closes a TransformBegin block (expected TransformEnd)"
+                                             : " closes an AttributeBegin block (expected AttributeEnd)"));
     m_blocks.pop_back();
     return true;
 }

@@ -46,14 +46,17 @@ PrimvarSet readSubdivisionPrimvars(ParamList const& params, SubdivisionData& dat
         var.type = p.decl.type;
         var.components = components;
         std::optional<SubdivisionPrimvar::Rate> rate = rateOf(cls);
-        size_t const wanted = cls == "uniform"                                        ? data.faceSizes.size()
-                              : rate == SubdivisionPrimvar::Rate::FaceVarying ? data.indices.size()
-                              : rate                                                  ? data.P.size()
-                                                                                      : 1;
-        if (given != wanted || p.floats.size() % static_cast<size_t>(components) != 0)
+        // How many values the storage class asks for, and what of the mesh they follow.
+        std::pair<size_t, char const*> wanted = {1, "one"};
+        if (cls == "uniform")
+            wanted = {data.faceSizes.size(), "one per face"};
+        else if (rate == SubdivisionPrimvar::Rate::FaceVarying)
+            wanted = {data.indices.size(), "one per face corner"};
+        else if (rate)
+            wanted = {data.P.size(), "one per point"};
+        if (given != wanted.first || p.floats.size() % static_cast<size_t>(components) != 0)
             throw RibError(p.location, "primvar \"" + p.name() + "\" (" + (cls.empty() ? std::string("vertex") : cls) +
-                                           ") needs " + std::to_string(wanted) + " values here (" +
-                                           (cls == "uniform" ? "one per face" : rate == SubdivisionPrimvar::Rate::FaceVarying ? "one per face corner" : rate ? "one per point" : "one") +
+                                           ") needs " + std::to_string(wanted.first) + " values here (" + wanted.second +
                                            "), got " + std::to_string(given));
         p.used = true;
         if (!rate) {  // uniform (constant ones are the shape's own)
