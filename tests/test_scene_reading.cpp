@@ -620,6 +620,78 @@ TEST_CASE("a subdivision surface keeps its primvars: vertex, varying, facevaryin
     }
 }
 
+TEST_CASE("a patch mesh's (u, v) run over the whole mesh, and its primvars follow the RI specification's layout",
+          "[rib][geometry][primvars][patches]") {
+    // A 3 x 3 bilinear mesh (2 x 2 patches) over [-1, 1]^2, seen from z = 0.
+    std::string const grid = "WorldBegin\nTranslate 0 0 5\nPatchMesh \"bilinear\" 3 \"nonperiodic\" 3 \"nonperiodic\" "
+                             "\"P\" [-1 -1 0  0 -1 0  1 -1 0  -1 0 0  0 0 0  1 0 0  -1 1 0  0 1 0  1 1 0] ";
+    struct Seen {
+        SurfaceParameters at;
+        std::map<std::string, std::vector<float>> values;
+    };
+    auto look = [](std::string const& rib, float x, float y) {
+        Diagnostics diagnostics(false);
+        Scene scene = test::parseRib(rib + "\n", diagnostics);
+        CHECK(test::warningsContaining(diagnostics, "not used") == 0);
+        REQUIRE(scene.shapes.size() == 1u);
+        RayTracer tracer(scene);
+        HitRecord hit = trace(tracer, Vec3(x, y, 0.0f), Vec3(0, 0, 1));
+        REQUIRE(hit.hit());
+        Shape const& shape = *scene.shapes[0];
+        Seen seen{shape.parameters(hit), {}};
+        for (Primvar const& var : shape.primvars.all()) {
+            std::vector<float> value(static_cast<size_t>(var.components));
+            shape.primvar(var, hit, value.data());
+            seen.values[var.name] = value;
+        }
+        return seen;
+    };
+    SECTION("u, v and the default s, t go from 0 to 1 across the mesh, not across each patch") {
+        for (Vec2 xy : {Vec2(-0.5f, -0.5f), Vec2(0.3f, -0.7f), Vec2(0.6f, 0.2f)}) {
+            CAPTURE(xy.x, xy.y);
+            Seen seen = look(grid, xy.x, xy.y);
+            CHECK(seen.at.u == Approx(0.5f * (xy.x + 1.0f)).margin(1e-4));
+            CHECK(seen.at.v == Approx(0.5f * (xy.y + 1.0f)).margin(1e-4));
+            CHECK(seen.at.s == Approx(seen.at.u));
+            CHECK(seen.at.t == Approx(seen.at.v));
+        }
+    }
+    SECTION("varying values (one per patch corner) give s and t and other primvars; uniform ones one per patch") {
+        std::string const vars = "\"varying float[2] st\" [1 0  0.5 0  0 0   1 0.5  0.5 0.5  0 0.5   1 1  0.5 1  0 1] "
+                                 "\"uniform float patch\" [0 1 2 3] \"varying color Cs\" [0 0 0  0 0 0  0 0 0  "
+                                 "0 0 0  1 1 1  0 0 0  0 0 0  0 0 0  0 0 0]";
+        Seen seen = look(grid + vars, 0.3f, -0.7f);
+        CHECK(seen.at.s == Approx(1.0f - 0.5f * 1.3f).margin(1e-4));  // s runs the other way
+        CHECK(seen.at.t == Approx(0.15f).margin(1e-4));
+        CHECK(seen.values.at("patch")[0] == 1.0f);
+        CHECK(seen.values.at("Cs")[0] == Approx(0.7f * 0.3f).margin(1e-4));  // bilinear toward the centre corner
+        CHECK(look(grid + vars, -0.5f, 0.5f).values.at("patch")[0] == 2.0f);
+        CHECK(look(grid + vars, 0.5f, 0.5f).values.at("patch")[0] == 3.0f);
+    }
+    SECTION("vertex values of a bicubic patch go through its basis, as its points do") {
+        // A flat Bezier patch over [-1, 1]^2 whose "x" primvar is each control point's x: it reproduces x.
+        std::string const patch = "WorldBegin\nTranslate 0 0 5\nPatch \"bicubic\" \"P\" [-1 -1 0  -0.3 -1 0  0.3 -1 0  1 -1 0  "
+                                  "-1 -0.3 0  -0.3 -0.3 0  0.3 -0.3 0  1 -0.3 0  -1 0.3 0  -0.3 0.3 0  0.3 0.3 0  1 0.3 0  "
+                                  "-1 1 0  -0.3 1 0  0.3 1 0  1 1 0] \"vertex float x\" [-1 -0.3 0.3 1  -1 -0.3 0.3 1  "
+                                  "-1 -0.3 0.3 1  -1 -0.3 0.3 1]";
+        for (float x : {-0.8f, 0.1f, 0.55f}) CHECK(look(patch, x, 0.2f).values.at("x")[0] == Approx(x).margin(2e-3));
+    }
+    SECTION("a bent bilinear patch interpolates its corners' varying values") {
+        std::string const patch = "WorldBegin\nTranslate 0 0 5\nPatch \"bilinear\" \"P\" [-1 -1 0  1 -1 0.5  -1 1 0.5  1 1 0] "
+                                  "\"varying float w\" [0 1 2 3]";
+        CHECK(look(patch, 0.0f, 0.0f).values.at("w")[0] == Approx(1.5f).margin(0.02));
+        CHECK(look(patch, 0.9f, -0.9f).values.at("w")[0] == Approx(1.0f).margin(0.1));
+    }
+    SECTION("a count that does not fit the layout is an error at the parameter") {
+        Diagnostics diagnostics(false);
+        CHECK_THROWS_WITH(test::parseRib(grid + "\"varying float w\" [0 1 2 3]\n", diagnostics),
+                          Catch::Matchers::Contains("test.rib:3:") &&
+                              Catch::Matchers::Contains("needs 9 values here (one per patch corner), got 4"));
+        CHECK_THROWS_WITH(test::parseRib(grid + "\"uniform float w\" [0 1 2]\n", diagnostics),
+                          Catch::Matchers::Contains("needs 4 values here (one per patch), got 3"));
+    }
+}
+
 TEST_CASE("free-form shapes: subdivision surface, NURBS patch, curves, points and blobby", "[rib][geometry]") {
     auto hitDistance = [](std::string const& rib, Vec3 org = Vec3(0.0f), Vec3 dir = Vec3(0, 0, 1)) {
         Diagnostics diagnostics(false);

@@ -277,23 +277,22 @@ void SceneBuilder::patch(RequestReader& in) {
     std::vector<Vec3> points = patchPoints(params, in, side, side);
     std::optional<std::vector<Vec3>> normals;
     if (type == "bilinear") normals = bilinearNormals(params, in, 4);
-    PrimvarSet vars = shapePrimvars(params, 4);
-    params.warnUnused(m_diagnostics, "Patch");
+    PrimvarSet vars = shapePrimvars(params);
     bool flip = state().reverseOrientation != mirrors(state().transform);
     MeshData mesh;
+    // A patch is a mesh of one patch: its primvars are laid out as a patch mesh's.
     if (type == "bilinear") {
         if (points.size() != 4) in.fail(in.where(), "a bilinear patch needs \"P\" with exactly 4 points");
-        std::array<Vec3, 4> cornerNormals;
-        if (normals) std::copy(normals->begin(), normals->end(), cornerNormals.begin());
-        mesh = buildBilinearPatch({points[0], points[1], points[2], points[3]}, state().transform, flip,
-                                  normals ? &cornerNormals : nullptr);
+        mesh = buildBilinearPatchMesh(points, 2, false, 2, false, state().transform, flip, in.where(),
+                                      normals ? &*normals : nullptr, &params);
     } else if (type == "bicubic") {
         if (points.size() != 16) in.fail(in.where(), "a bicubic patch needs \"P\" with exactly 16 points");
         mesh = buildBicubicPatchMesh(points, 4, false, 4, false, state().uBasis, state().vBasis, state().transform, flip,
-                                     in.where());
+                                     in.where(), &params);
     } else {
         in.fail(in.where(), "unknown patch type \"" + type + "\" (bilinear or bicubic)");
     }
+    params.warnUnused(m_diagnostics, "Patch");
     addTessellated(std::move(mesh), "Patch", in, std::move(vars));
 }
 
@@ -308,17 +307,17 @@ void SceneBuilder::patchMesh(RequestReader& in) {
     std::optional<std::vector<Vec3>> normals;
     if (type == "bilinear") normals = bilinearNormals(params, in, points.size());
     PrimvarSet vars = shapePrimvars(params);
-    params.warnUnused(m_diagnostics, "PatchMesh");
     bool flip = state().reverseOrientation != mirrors(state().transform);
     MeshData mesh;
     if (type == "bicubic")
         mesh = buildBicubicPatchMesh(points, nu, uwrap == "periodic", nv, vwrap == "periodic", state().uBasis,
-                                     state().vBasis, state().transform, flip, in.where());
+                                     state().vBasis, state().transform, flip, in.where(), &params);
     else if (type == "bilinear")
         mesh = buildBilinearPatchMesh(points, nu, uwrap == "periodic", nv, vwrap == "periodic", state().transform, flip,
-                                      in.where(), normals ? &*normals : nullptr);
+                                      in.where(), normals ? &*normals : nullptr, &params);
     else
         in.fail(in.where(), "unknown patch type \"" + type + "\" (bilinear or bicubic)");
+    params.warnUnused(m_diagnostics, "PatchMesh");
     addTessellated(std::move(mesh), "PatchMesh", in, std::move(vars));
 }
 

@@ -4,6 +4,7 @@
 #include <functional>
 #include <numeric>
 
+#include "scene/shapes/PatchPrimvars.h"
 #include "scene/shapes/TeapotData.h"
 #include "scene/shapes/Triangulation.h"
 
@@ -288,26 +289,25 @@ SplineBasis SplineBasis::bezier() {
     return b;
 }
 
-namespace {
-
-/// The four basis weights [t^3 t^2 t 1] M and their derivatives.
-void splineWeights(SplineBasis const& basis, float t, float w[4], float dw[4]) {
+void SplineBasis::weights(float t, float w[4], float dw[4]) const {
     float powers[4] = {t * t * t, t * t, t, 1.0f}, slopes[4] = {3 * t * t, 2 * t, 1.0f, 0.0f};
     for (int j = 0; j < 4; ++j) {
         w[j] = dw[j] = 0.0f;
         for (int i = 0; i < 4; ++i) {
-            w[j] += powers[i] * basis.matrix[i][j];
-            dw[j] += slopes[i] * basis.matrix[i][j];
+            w[j] += powers[i] * matrix[i][j];
+            dw[j] += slopes[i] * matrix[i][j];
         }
     }
 }
+
+namespace {
 
 /// One bicubic patch, control[row in v][column in u], sampled on a 13 x 13 grid.
 SurfaceGrid sampleBicubicPatch(Vec3 const (&control)[4][4], SplineBasis const& uBasis, SplineBasis const& vBasis) {
     return sampleSurface(12, 12, [&](float u, float v, Vec3& P, Vec3& dPdu, Vec3& dPdv) {
         float wu[4], dwu[4], wv[4], dwv[4];
-        splineWeights(uBasis, u, wu, dwu);
-        splineWeights(vBasis, v, wv, dwv);
+        uBasis.weights(u, wu, dwu);
+        vBasis.weights(v, wv, dwv);
         P = dPdu = dPdv = Vec3(0.0f);
         for (int j = 0; j < 4; ++j)
             for (int i = 0; i < 4; ++i) {
@@ -316,6 +316,22 @@ SurfaceGrid sampleBicubicPatch(Vec3 const (&control)[4][4], SplineBasis const& u
                 dPdv += wu[i] * dwv[j] * control[j][i];
             }
     });
+}
+
+/// Makes the vertices from `first` on, one patch's with (u, v) over [0, 1]^2,
+/// part of a mesh of patchesU x patchesV patches whose (u, v) run over [0, 1]^2
+/// together (the RI specification's parameterisation of a patch mesh).
+void spreadOverMesh(MeshData& mesh, size_t first, int pu, int pv, int patchesU, int patchesV) {
+    if (patchesU == 1 && patchesV == 1) return;
+    float const nu = static_cast<float>(patchesU), nv = static_cast<float>(patchesV);
+    for (size_t k = first; k < mesh.P.size(); ++k) {
+        Vec2 const local = mesh.uv[k];
+        mesh.uv[k] = Vec2((static_cast<float>(pu) + local.x) / nu, (static_cast<float>(pv) + local.y) / nv);
+        if (k < mesh.st.size()) mesh.st[k] = mesh.uv[k];
+        // Derivatives in the mesh's parameters: a patch spans 1 / patches of them.
+        if (k < mesh.dPdu.size()) mesh.dPdu[k] *= nu;
+        if (k < mesh.dPdv.size()) mesh.dPdv[k] *= nv;
+    }
 }
 
 int patchCount(int points, bool periodic, int step, int order, SourceLocation const& where, const char* axis) {
@@ -331,7 +347,7 @@ int patchCount(int points, bool periodic, int step, int order, SourceLocation co
 
 MeshData buildBicubicPatchMesh(std::vector<Vec3> const& points, int nu, bool uPeriodic, int nv, bool vPeriodic,
                                SplineBasis const& uBasis, SplineBasis const& vBasis, Mat4 const& toWorld, bool flip,
-                               SourceLocation const& where) {
+                               SourceLocation const& where, ParamList const* primvars) {
     if (nu < 1 || nv < 1 || points.size() != static_cast<size_t>(nu) * static_cast<size_t>(nv))
         throw RibError(where, "PatchMesh: \"P\" has " + std::to_string(points.size()) + " points, expected nu x nv = " +
                                   std::to_string(nu) + " x " + std::to_string(nv));
@@ -346,15 +362,19 @@ MeshData buildBicubicPatchMesh(std::vector<Vec3> const& points, int nu, bool uPe
                     int col = (pu * uBasis.step + i) % nu, row = (pv * vBasis.step + j) % nv;
                     control[j][i] = points[static_cast<size_t>(row) * static_cast<size_t>(nu) + static_cast<size_t>(col)];
                 }
+            size_t const first = mesh.P.size();
             placeGrid(mesh, sampleBicubicPatch(control, uBasis, vBasis), toWorld, flip);
+            spreadOverMesh(mesh, first, pu, pv, patchesU, patchesV);
         }
     mesh.st = mesh.uv;
+    if (primvars)
+        addPatchPrimvars(mesh, *primvars, {nu, nv, uPeriodic, vPeriodic, patchesU, patchesV, true, uBasis, vBasis});
     return mesh;
 }
 
 MeshData buildBilinearPatchMesh(std::vector<Vec3> const& points, int nu, bool uPeriodic, int nv, bool vPeriodic,
                                 Mat4 const& toWorld, bool flip, SourceLocation const& where,
-                                std::vector<Vec3> const* normals) {
+                                std::vector<Vec3> const* normals, ParamList const* primvars) {
     if (nu < 2 || nv < 2 || points.size() != static_cast<size_t>(nu) * static_cast<size_t>(nv))
         throw RibError(where, "PatchMesh \"bilinear\": \"P\" must have nu x nv points with nu, nv >= 2");
     if (normals && normals->size() != points.size())
@@ -369,9 +389,14 @@ MeshData buildBilinearPatchMesh(std::vector<Vec3> const& points, int nu, bool uP
             std::array<Vec3, 4> cornerNormals;
             if (normals)
                 for (size_t k = 0; k < 4; ++k) cornerNormals[k] = (*normals)[c[k]];
+            size_t const first = mesh.P.size();
             mesh.append(buildBilinearPatch({points[c[0]], points[c[1]], points[c[2]], points[c[3]]}, toWorld, flip,
                                            normals ? &cornerNormals : nullptr));
+            spreadOverMesh(mesh, first, i, j, patchesU, patchesV);
         }
+    if (primvars)
+        addPatchPrimvars(mesh, *primvars,
+                         {nu, nv, uPeriodic, vPeriodic, patchesU, patchesV, false, SplineBasis::bezier(), SplineBasis::bezier()});
     return mesh;
 }
 

@@ -34,19 +34,25 @@ struct SplineBasis {
     /// "bezier", "b-spline", "catmull-rom", "hermite" or "power"; false if unknown.
     static bool named(std::string const& name, SplineBasis& out);
     static SplineBasis bezier();
+    /// The four control points' weights [t^3 t^2 t 1] M at t, and their derivatives.
+    void weights(float t, float w[4], float dw[4]) const;
 };
 
 /// Patch "bicubic" / PatchMesh "bicubic": nu x nv control points (u varies
 /// fastest), periodic or not in each direction, tessellated with exact
 /// derivatives. Throws RibError when the counts do not fit the basis.
+/// As in RenderMan, (u, v) run from 0 to 1 over the whole mesh. With
+/// `primvars`, its primvars that vary over the mesh are taken (PatchPrimvars.h).
 MeshData buildBicubicPatchMesh(std::vector<Vec3> const& points, int nu, bool uPeriodic, int nv, bool vPeriodic,
                                SplineBasis const& uBasis, SplineBasis const& vBasis, Mat4 const& toWorld, bool flip,
-                               SourceLocation const& where);
+                               SourceLocation const& where, ParamList const* primvars = nullptr);
 
-/// PatchMesh "bilinear": a grid of nu x nv points, and optionally a normal at each.
+/// PatchMesh "bilinear" (and Patch "bilinear", a mesh of 2 x 2 points): a grid
+/// of nu x nv points, and optionally a normal at each; (u, v) and primvars as
+/// for the bicubic mesh.
 MeshData buildBilinearPatchMesh(std::vector<Vec3> const& points, int nu, bool uPeriodic, int nv, bool vPeriodic,
                                 Mat4 const& toWorld, bool flip, SourceLocation const& where,
-                                std::vector<Vec3> const* normals = nullptr);
+                                std::vector<Vec3> const* normals = nullptr, ParamList const* primvars = nullptr);
 
 /// Torus majorrad minorrad phimin phimax thetamax, tessellated finely with
 /// exact derivatives of the RenderMan parameterisation.

@@ -11,12 +11,22 @@
 // there); quadrics and patches take four corner values, in (u, v) order.
 #pragma once
 
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "parse/ParamList.h"
 
 namespace bxdflab {
+
+/// Values laid out over a surface's (u, v) (a patch mesh's corners or control
+/// points): read at a hit's (u, v), not blended from the tessellation's vertices.
+class ParametricValues {
+public:
+    virtual ~ParametricValues() = default;
+    /// The value at (u, v): `out` receives the primvar's components.
+    virtual void at(float u, float v, float* out) const = 0;
+};
 
 struct Primvar {
     enum class Detail { Constant, Uniform, Varying };
@@ -25,6 +35,7 @@ struct Primvar {
     int components = 1;  ///< floats per value: 1, 2 (float[2]), 3 (color, point, vector, normal)
     Detail detail = Detail::Constant;
     std::vector<float> values;
+    std::shared_ptr<ParametricValues const> parametric;  ///< when set, the values (`values` is then empty)
 };
 
 class PrimvarSet {

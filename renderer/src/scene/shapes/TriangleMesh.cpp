@@ -12,6 +12,11 @@ TriangleMesh::TriangleMesh(MeshData data, const char* kindName, bool flipNormals
 
 void TriangleMesh::primvar(Primvar const& var, HitRecord const& hit, float* out) const {
     size_t const c = static_cast<size_t>(var.components);
+    if (var.parametric) {
+        Vec2 const uv = uvAt(hit.primID, hit.u, hit.v);
+        var.parametric->at(uv.x, uv.y, out);
+        return;
+    }
     if (var.detail == Primvar::Detail::Uniform && var.values.size() >= (hit.primID + 1) * c) {
         for (size_t k = 0; k < c; ++k) out[k] = var.values[hit.primID * c + k];
         return;
@@ -59,6 +64,11 @@ SurfaceBasics TriangleMesh::basics(HitRecord const& hit) const {
 SurfaceParameters TriangleMesh::parameters(HitRecord const& hit) const {
     Vec2 uv = uvAt(hit.primID, hit.u, hit.v);
     Vec2 st = m_data.st.empty() ? uv : interpolate(m_data.st, hit.primID, hit.u, hit.v);
+    if (m_data.stAtUv) {
+        float value[2];
+        m_data.stAtUv->at(uv.x, uv.y, value);
+        st = Vec2(value[0], value[1]);
+    }
     return {uv.x, uv.y, st.x, st.y};
 }
 

@@ -21,8 +21,10 @@ struct MeshData {
     std::vector<Vec3> dPdu;
     std::vector<Vec3> dPdv;
     /// Primvars that vary over the mesh: Varying ones hold a value per mesh
-    /// vertex, Uniform ones a value per triangle.
+    /// vertex, Uniform ones a value per triangle (or either is parametric).
     PrimvarSet primvars;
+    /// Texture coordinates laid out over uv (a patch mesh's "st"): read at the hit's (u, v) instead of st.
+    std::shared_ptr<ParametricValues const> stAtUv;
 
     size_t triangleCount() const { return indices.size() / 3; }
     /// Appends another mesh with the same attributes.
