@@ -6,9 +6,11 @@
 //   constant  one value for the whole shape
 //   uniform   one value per face (per triangle of a mesh, once triangulated)
 //   varying   values at the shape's vertices or corners, interpolated
-// Meshes store varying values per mesh vertex (their triangulation already
-// made one vertex per corner, so vertex, varying and facevarying all end up
-// there); quadrics and patches take four corner values, in (u, v) order.
+// Polygon meshes store varying values per mesh vertex (their triangulation
+// already made one vertex per corner, so vertex, varying and facevarying all
+// end up there); quadrics take four corner values, in (u, v) order; patch
+// meshes and subdivision surfaces keep the values as given and read them at
+// the hit (PatchPrimvars, SubdivisionSurface).
 #pragma once
 
 #include <memory>
