@@ -40,7 +40,7 @@ public:
     }
     bool uniform() const { return m_uniform; }
 
-    void at(float meshU, float meshV, float* out) const override {
+    void at(unsigned, float meshU, float meshV, float* out) const override {
         float u, v;
         int const pu = locate(meshU, m_layout.patchesU, u), pv = locate(meshV, m_layout.patchesV, v);
         std::fill(out, out + m_c, 0.0f);
@@ -80,24 +80,9 @@ private:
     int m_cornersU = 0, m_cornersV = 0;
 };
 
-/// s and t given apart, read as one pair.
-class SeparateST final : public ParametricValues {
-public:
-    SeparateST(std::shared_ptr<ParametricValues const> s, std::shared_ptr<ParametricValues const> t)
-        : m_s(std::move(s)), m_t(std::move(t)) {}
-    void at(float u, float v, float* out) const override {
-        m_s->at(u, v, &out[0]);
-        m_t->at(u, v, &out[1]);
-    }
-
-private:
-    std::shared_ptr<ParametricValues const> m_s, m_t;
-};
-
 }  // namespace
 
 void addPatchPrimvars(MeshData& mesh, ParamList const& params, PatchLayout const& layout) {
-    std::shared_ptr<ParametricValues const> s, t;
     for (Param const& p : params.all()) {
         int const components = primvarComponents(p);
         if (components == 0 || p.used || isGeometryParameter(p.name()) || p.decl.storageClass == "constant") continue;
@@ -108,15 +93,9 @@ void addPatchPrimvars(MeshData& mesh, ParamList const& params, PatchLayout const
         var.type = p.decl.type;
         var.components = components;
         var.detail = values->uniform() ? Primvar::Detail::Uniform : Primvar::Detail::Varying;
-        var.parametric = values;
-        if (!values->uniform()) {
-            if (var.name == "st" && components == 2) mesh.stAtUv = values;
-            if (var.name == "s" && components == 1) s = values;
-            if (var.name == "t" && components == 1) t = values;
-        }
+        var.parametric = std::move(values);
         mesh.primvars.add(std::move(var));
     }
-    if (!mesh.stAtUv && s && t) mesh.stAtUv = std::make_shared<SeparateST const>(s, t);
 }
 
 }  // namespace bxdflab

@@ -20,8 +20,8 @@ struct PatchLayout {
 
 /// Gives `mesh` (the tessellated patches, its uv running over [0, 1]^2 across
 /// all of them) the primvars of `params` not taken yet, each read at a hit's
-/// (u, v); "st" (or "s" and "t") also become its texture coordinates. Marks
-/// them used; a count that does not fit the mesh is an error at the parameter.
+/// (u, v) (an "st" among them gives the mesh's s and t). Marks them used; a
+/// count that does not fit the mesh is an error at the parameter.
 void addPatchPrimvars(MeshData& mesh, ParamList const& params, PatchLayout const& layout);
 
 }  // namespace bxdflab

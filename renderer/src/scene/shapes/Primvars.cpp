@@ -49,6 +49,36 @@ PrimvarSet shapePrimvars(ParamList const& params, size_t corners, size_t element
     return set;
 }
 
+namespace {
+
+/// s and t given apart, read as one pair.
+class SeparateST final : public ParametricValues {
+public:
+    SeparateST(std::shared_ptr<ParametricValues const> s, std::shared_ptr<ParametricValues const> t)
+        : m_s(std::move(s)), m_t(std::move(t)) {}
+    void at(unsigned face, float u, float v, float* out) const override {
+        m_s->at(face, u, v, &out[0]);
+        m_t->at(face, u, v, &out[1]);
+    }
+
+private:
+    std::shared_ptr<ParametricValues const> m_s, m_t;
+};
+
+}  // namespace
+
+std::shared_ptr<ParametricValues const> parametricTextureCoordinates(PrimvarSet const& primvars) {
+    auto varying = [&](char const* name, int components) -> std::shared_ptr<ParametricValues const> {
+        Primvar const* var = primvars.find(name);
+        if (!var || var->components != components || var->detail != Primvar::Detail::Varying) return nullptr;
+        return var->parametric;
+    };
+    if (auto st = varying("st", 2)) return st;
+    auto s = varying("s", 1), t = varying("t", 1);
+    if (s && t) return std::make_shared<SeparateST const>(s, t);
+    return nullptr;
+}
+
 void primvarAtCorners(Primvar const& var, float u, float v, float* out) {
     size_t const c = static_cast<size_t>(var.components);
     if (var.detail != Primvar::Detail::Varying || var.values.size() < 4 * c) {

@@ -21,13 +21,15 @@
 
 namespace bxdflab {
 
-/// Values laid out over a surface's (u, v) (a patch mesh's corners or control
-/// points): read at a hit's (u, v), not blended from the tessellation's vertices.
+/// Values laid out over a surface's parameters (a patch mesh's corners or
+/// control points, a subdivision surface's points or face corners): read at a
+/// hit, not blended from a tessellation's vertices.
 class ParametricValues {
 public:
     virtual ~ParametricValues() = default;
-    /// The value at (u, v): `out` receives the primvar's components.
-    virtual void at(float u, float v, float* out) const = 0;
+    /// The value on face `face` (a subdivision face; patch meshes ignore it) at
+    /// its parameters (u, v): `out` receives the primvar's components.
+    virtual void at(unsigned face, float u, float v, float* out) const = 0;
 };
 
 struct Primvar {
@@ -61,6 +63,10 @@ bool isGeometryParameter(std::string const& name);
 
 /// Floats per value of a parameter used as a primvar, or 0 when it cannot be one (strings, matrices).
 int primvarComponents(Param const& param);
+
+/// The texture coordinates a shape's parametric primvars give: "st", or "s"
+/// and "t" read together; nothing when it has neither.
+std::shared_ptr<ParametricValues const> parametricTextureCoordinates(PrimvarSet const& primvars);
 
 /// The primvars in a shape's parameter list that are not geometry: those with
 /// one value (constant, or uniform over a shape of one face), and, when

@@ -32,6 +32,20 @@ void weldCorners(Param const& param, SubdivisionData const& data, SubdivisionPri
     }
 }
 
+/// A primvar of a subdivision surface, read on its limit surface.
+class LimitValues final : public ParametricValues {
+public:
+    LimitValues(SubdivisionSurface const& surface, unsigned slot, unsigned components)
+        : m_surface(surface), m_slot(slot), m_components(components) {}
+    void at(unsigned face, float u, float v, float* out) const override {
+        m_surface.limitValue(m_slot, face, u, v, out, m_components);
+    }
+
+private:
+    SubdivisionSurface const& m_surface;  ///< which holds this
+    unsigned m_slot, m_components;
+};
+
 }  // namespace
 
 PrimvarSet readSubdivisionPrimvars(ParamList const& params, SubdivisionData& data) {
@@ -80,20 +94,14 @@ PrimvarSet readSubdivisionPrimvars(ParamList const& params, SubdivisionData& dat
 
 SubdivisionSurface::SubdivisionSurface(SubdivisionData data, bool flipNormals)
     : m_data(std::move(data)), m_orientation(flipNormals ? -1.0f : 1.0f) {
-    for (SubdivisionPrimvar const& sub : m_data.primvars) {
-        Primvar listed = sub.var;
+    for (size_t slot = 0; slot < m_data.primvars.size(); ++slot) {
+        Primvar listed = m_data.primvars[slot].var;
         listed.values.clear();  // the ray tracer holds them
+        listed.parametric = std::make_shared<LimitValues const>(*this, static_cast<unsigned>(slot),
+                                                                static_cast<unsigned>(listed.components));
         primvars.add(std::move(listed));
     }
-    m_stSlot = slotOf("st", 2);
-    m_sSlot = slotOf("s", 1);
-    m_tSlot = slotOf("t", 1);
-}
-
-int SubdivisionSurface::slotOf(std::string const& primvarName, int components) const {
-    for (size_t i = 0; i < m_data.primvars.size(); ++i)
-        if (m_data.primvars[i].var.name == primvarName && m_data.primvars[i].var.components == components) return static_cast<int>(i);
-    return -1;
+    m_textureCoordinates = parametricTextureCoordinates(primvars);
 }
 
 SurfaceBasics SubdivisionSurface::basics(HitRecord const& hit) const {
@@ -120,14 +128,11 @@ SurfaceTangents SubdivisionSurface::tangents(HitRecord const& hit) const {
 
 SurfaceParameters SubdivisionSurface::parameters(HitRecord const& hit) const {
     SurfaceParameters out{hit.u, hit.v, hit.u, hit.v};
-    if (m_stSlot >= 0) {
+    if (m_textureCoordinates) {
         float st[2];
-        m_evaluator->evaluateAttribute(static_cast<unsigned>(m_stSlot), hit.primID, hit.u, hit.v, st, 2);
+        m_textureCoordinates->at(hit.primID, hit.u, hit.v, st);
         out.s = st[0];
         out.t = st[1];
-    } else if (m_sSlot >= 0 && m_tSlot >= 0) {
-        m_evaluator->evaluateAttribute(static_cast<unsigned>(m_sSlot), hit.primID, hit.u, hit.v, &out.s, 1);
-        m_evaluator->evaluateAttribute(static_cast<unsigned>(m_tSlot), hit.primID, hit.u, hit.v, &out.t, 1);
     }
     return out;
 }
@@ -138,9 +143,8 @@ void SubdivisionSurface::primvar(Primvar const& var, HitRecord const& hit, float
         std::memcpy(out, var.values.data() + hit.primID * c, c * sizeof(float));
         return;
     }
-    int const slot = slotOf(var.name, var.components);
-    if (slot >= 0) {
-        m_evaluator->evaluateAttribute(static_cast<unsigned>(slot), hit.primID, hit.u, hit.v, out, static_cast<unsigned>(c));
+    if (var.parametric) {
+        var.parametric->at(hit.primID, hit.u, hit.v, out);
         return;
     }
     Shape::primvar(var, hit, out);  // a constant

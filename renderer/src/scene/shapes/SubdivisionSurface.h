@@ -48,6 +48,9 @@ PrimvarSet readSubdivisionPrimvars(ParamList const& params, SubdivisionData& dat
 class SubdivisionSurface final : public Shape {
 public:
     SubdivisionSurface(SubdivisionData data, bool flipNormals);
+    /// Its primvars read through it: it stays where it was made.
+    SubdivisionSurface(SubdivisionSurface const&) = delete;
+    SubdivisionSurface& operator=(SubdivisionSurface const&) = delete;
 
     const char* kind() const override { return "SubdivisionMesh"; }
     void accept(ShapeVisitor& visitor) const override { visitor.visit(*this); }
@@ -55,16 +58,18 @@ public:
     SurfaceTangents tangents(HitRecord const& hit) const override;
     /// s and t from the "st" primvar (or "s" and "t") where the mesh has them.
     SurfaceParameters parameters(HitRecord const& hit) const override;
+    /// A primvar's value on the limit surface (slot: its index in data().primvars).
+    void limitValue(unsigned slot, unsigned face, float u, float v, float* out, unsigned count) const {
+        m_evaluator->evaluateAttribute(slot, face, u, v, out, count);
+    }
     void primvar(Primvar const& var, HitRecord const& hit, float* out) const override;
     SubdivisionData const& data() const { return m_data; }
     /// The limit surface as the ray tracer built it (evaluated at hits).
     void attach(std::shared_ptr<SurfaceEvaluator const> evaluator) const { m_evaluator = std::move(evaluator); }
 
 private:
-    /// The index in m_data.primvars (the ray tracer's attribute slot) of a primvar, or -1.
-    int slotOf(std::string const& primvarName, int components) const;
     SubdivisionData m_data;
-    int m_stSlot = -1, m_sSlot = -1, m_tSlot = -1;
+    std::shared_ptr<ParametricValues const> m_textureCoordinates;
     float m_orientation;
     mutable std::shared_ptr<SurfaceEvaluator const> m_evaluator;
 };

@@ -8,13 +8,14 @@ TriangleMesh::TriangleMesh(MeshData data, const char* kindName, bool flipNormals
     : m_data(std::move(data)), m_kind(kindName), m_orientation(flipNormals ? -1.0f : 1.0f) {
     primvars = std::move(m_data.primvars);
     m_data.primvars = PrimvarSet();
+    m_textureCoordinates = parametricTextureCoordinates(primvars);
 }
 
 void TriangleMesh::primvar(Primvar const& var, HitRecord const& hit, float* out) const {
     size_t const c = static_cast<size_t>(var.components);
     if (var.parametric) {
         Vec2 const uv = uvAt(hit.primID, hit.u, hit.v);
-        var.parametric->at(uv.x, uv.y, out);
+        var.parametric->at(hit.primID, uv.x, uv.y, out);
         return;
     }
     if (var.detail == Primvar::Detail::Uniform && var.values.size() >= (hit.primID + 1) * c) {
@@ -64,9 +65,9 @@ SurfaceBasics TriangleMesh::basics(HitRecord const& hit) const {
 SurfaceParameters TriangleMesh::parameters(HitRecord const& hit) const {
     Vec2 uv = uvAt(hit.primID, hit.u, hit.v);
     Vec2 st = m_data.st.empty() ? uv : interpolate(m_data.st, hit.primID, hit.u, hit.v);
-    if (m_data.stAtUv) {
+    if (m_textureCoordinates) {
         float value[2];
-        m_data.stAtUv->at(uv.x, uv.y, value);
+        m_textureCoordinates->at(hit.primID, uv.x, uv.y, value);
         st = Vec2(value[0], value[1]);
     }
     return {uv.x, uv.y, st.x, st.y};

@@ -21,10 +21,9 @@ struct MeshData {
     std::vector<Vec3> dPdu;
     std::vector<Vec3> dPdv;
     /// Primvars that vary over the mesh: Varying ones hold a value per mesh
-    /// vertex, Uniform ones a value per triangle (or either is parametric).
+    /// vertex, Uniform ones a value per triangle, or either is read at the
+    /// mesh's uv (a patch mesh's, whose "st" then gives s and t).
     PrimvarSet primvars;
-    /// Texture coordinates laid out over uv (a patch mesh's "st"): read at the hit's (u, v) instead of st.
-    std::shared_ptr<ParametricValues const> stAtUv;
 
     size_t triangleCount() const { return indices.size() / 3; }
     /// Appends another mesh with the same attributes.
@@ -70,6 +69,7 @@ private:
         return (1.0f - b1 - b2) * values[tri[0]] + b1 * values[tri[1]] + b2 * values[tri[2]];
     }
     Vec2 uvAt(unsigned prim, float b1, float b2) const;
+    std::shared_ptr<ParametricValues const> m_textureCoordinates;  ///< parametric st, read instead of st
 
     MeshData m_data;
     const char* m_kind;
