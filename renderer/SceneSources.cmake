@@ -33,6 +33,7 @@ set(RIX_SCENE_SOURCES
   scene/shapes/Hyperboloid.cpp
   scene/shapes/TriangleMesh.cpp
   scene/shapes/MeshBuilders.cpp
+  scene/shapes/NurbsPrimvars.cpp
   scene/shapes/PatchPrimvars.cpp
   scene/shapes/Triangulation.cpp
   scene/shapes/Primvars.cpp

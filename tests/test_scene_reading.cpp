@@ -581,6 +581,16 @@ std::string readingError(std::string const& rib) {
     return "";
 }
 
+/// Each primvar, given to `shape` (a request on line 3), stops the scene at that line with its message.
+void checkCountErrors(std::string const& shape,
+                      std::vector<std::pair<std::string, std::string>> const& primvarsAndMessages) {
+    for (auto const& [primvar, message] : primvarsAndMessages) {
+        CAPTURE(primvar);
+        CHECK_THAT(readingError(shape + primvar + "\n"),
+                   Catch::Matchers::Contains("test.rib:3:") && Catch::Matchers::Contains(message));
+    }
+}
+
 }  // namespace
 
 TEST_CASE("a subdivision surface keeps its primvars: vertex, varying, facevarying (s and t from st) and uniform",
@@ -630,11 +640,10 @@ TEST_CASE("a subdivision surface keeps its primvars: vertex, varying, facevaryin
         CHECK(look(vars, 0.5f, -0.5f).values.at("face")[0] == 1.0f);
     }
     SECTION("a primvar with the wrong number of values is an error at its parameter") {
-        std::string const error = readingError(grid + "\"facevarying float[2] st\" [0 0  1 0  1 1]\n");
-        CHECK_THAT(error, Catch::Matchers::Contains("test.rib:3:") &&
-                              Catch::Matchers::Contains("needs 16 values here (one per face corner), got 3"));
-        CHECK_THAT(readingError(grid + "\"vertex float h\" [0 1 2 3]\n"),
-                   Catch::Matchers::Contains("needs 9 values here (one per point), got 4"));
+        checkCountErrors(grid,
+                         {{"\"facevarying float[2] st\" [0 0  1 0  1 1]",
+                           "needs 16 values here (one per face corner), got 3"},
+                          {"\"vertex float h\" [0 1 2 3]", "needs 9 values here (one per point), got 4"}});
     }
 }
 
@@ -681,11 +690,61 @@ TEST_CASE("a patch mesh's (u, v) run over the whole mesh, and its primvars follo
         CHECK(look(patch, 0.9f, -0.9f).values.at("w")[0] == Approx(1.0f).margin(0.1));
     }
     SECTION("a count that does not fit the layout is an error at the parameter") {
-        CHECK_THAT(readingError(grid + "\"varying float w\" [0 1 2 3]\n"),
-                   Catch::Matchers::StartsWith("test.rib:3:") &&
-                       Catch::Matchers::Contains("needs 9 values here (one per patch corner), got 4"));
-        CHECK_THAT(readingError(grid + "\"uniform float w\" [0 1 2]\n"),
-                   Catch::Matchers::Contains("needs 4 values here (one per patch), got 3"));
+        checkCountErrors(
+            grid, {{"\"varying float w\" [0 1 2 3]", "needs 9 values here (one per patch corner), got 4"},
+                   {"\"uniform float w\" [0 1 2]", "needs 4 values here (one per patch), got 3"}});
+    }
+}
+
+TEST_CASE(
+    "a NuPatch's primvars follow the RI specification's layout: per control point, segment corner and "
+    "segment",
+    "[rib][geometry][primvars][nurbs]") {
+    // Linear in u over two segments (knots 0 0 1 2 2: x = u - 1), one segment in v (y = 2 v - 1), seen from z
+    // = 0.
+    std::string const strip =
+        "WorldBegin\nTranslate 0 0 5\nNuPatch 3 2 [0 0 1 2 2] 0 2 2 2 [0 0 1 1] 0 1 "
+        "\"P\" [-1 -1 0  0 -1 0  1 -1 0  -1 1 0  0 1 0  1 1 0] ";
+    auto const look = sampleAlongZ;
+    SECTION(
+        "varying values sit at the segments' corners, uniform ones on the segments, and st gives s and t") {
+        std::string const vars =
+            "\"varying float w\" [0 1 2  10 11 12] \"uniform float segment\" [5 7] "
+            "\"varying float[2] st\" [0 1  0.5 1  1 1  0 0  0.5 0  1 0]";
+        SurfaceSample seen = look(strip + vars, 0.3f, -0.6f);  // u = 1.3, v = 0.2
+        CHECK(seen.at.u == Approx(1.3f).margin(1e-4));
+        CHECK(seen.at.v == Approx(0.2f).margin(1e-4));
+        CHECK(seen.values.at("w")[0] == Approx(1.3f + 10.0f * 0.2f).margin(1e-4));
+        CHECK(seen.values.at("segment")[0] == 7.0f);
+        CHECK(look(strip + vars, -0.3f, -0.6f).values.at("segment")[0] == 5.0f);
+        CHECK(seen.at.s == Approx(0.65f).margin(1e-4));
+        CHECK(seen.at.t == Approx(0.8f).margin(1e-4));  // t runs the other way
+    }
+    SECTION("vertex values go through the rational basis, as the points do") {
+        // A quadratic arc of weights 1 2 1, flat in z = 0, whose x at u is (2u - 1) / (1 + 2u - 2u^2): the
+        // primvar "x", each control point's x, gives that only when weighted as the points are (unweighted,
+        // it would be 2u - 1, up to 0.09 away). It is compared at the u the hit reports, as a tessellated
+        // surface's u is itself interpolated.
+        std::string const rational =
+            "WorldBegin\nTranslate 0 0 5\nNuPatch 3 3 [0 0 0 1 1 1] 0 1 2 2 [0 0 1 1] 0 1 "
+            "\"Pw\" [-1 -1 0 1  0 -2 0 2  1 -1 0 1  -1 1 0 1  0 2 0 2  1 1 0 1] "
+            "\"vertex float x\" [-1 0 1  -1 0 1] \"point Pref\" [-1 -1 0  0 -1 0  1 -1 0  "
+            "-1 1 0  0 1 0  1 1 0]";
+        for (float x : {-0.7f, 0.3f, 0.8f}) {
+            CAPTURE(x);
+            SurfaceSample seen = look(rational, x, 0.4f);
+            float const u = seen.at.u, surfaceX = (2 * u - 1) / (1 + 2 * u - 2 * u * u);
+            CHECK(surfaceX == Approx(x).margin(0.03));  // the hit's u is near where x is
+            CHECK(seen.values.at("x")[0] == Approx(surfaceX).margin(1e-4));
+            CHECK(seen.values.at("Pref")[0] == Approx(surfaceX).margin(1e-4));
+            CHECK(seen.values.at("Pref")[1] == Approx(0.4f).margin(1e-4));
+        }
+    }
+    SECTION("a count that does not fit the layout is an error at the parameter") {
+        checkCountErrors(
+            strip, {{"\"varying float w\" [0 1 2]", "needs 6 values here (one per segment corner), got 3"},
+                    {"\"uniform float w\" [0 1 2]", "needs 2 values here (one per segment), got 3"},
+                    {"\"vertex float w\" [0 1 2 3]", "needs 6 values here (one per control point), got 4"}});
     }
 }
 

@@ -7,6 +7,7 @@
 #include "scene/SceneBuilder.h"
 #include "scene/shapes/BlobbySurface.h"
 #include "scene/shapes/Curves.h"
+#include "scene/shapes/NurbsPrimvars.h"
 #include "scene/shapes/NurbsSurface.h"
 #include "scene/shapes/SubdivisionSurface.h"
 
@@ -198,10 +199,12 @@ void SceneBuilder::nuPatch(RequestReader& in) {
     } else {
         in.fail(in.where(), "needs \"P\" or \"Pw\" control points");
     }
-    PrimvarSet vars = shapePrimvars(params, 4);
-    params.warnUnused(m_diagnostics, "NuPatch");
     bool flip = state().reverseOrientation != mirrors(state().transform);
-    addTessellated(buildNurbsPatch(d, state().transform, flip, in.where()), "NuPatch", in, std::move(vars));
+    MeshData mesh = buildNurbsPatch(d, state().transform, flip, in.where());
+    addNurbsPrimvars(mesh, params, d);
+    PrimvarSet vars = shapePrimvars(params);
+    params.warnUnused(m_diagnostics, "NuPatch");
+    addTessellated(std::move(mesh), "NuPatch", in, std::move(vars));
 }
 
 void SceneBuilder::trimCurve(RequestReader& in) {

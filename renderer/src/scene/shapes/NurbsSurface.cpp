@@ -9,10 +9,10 @@ namespace {
 constexpr int kSegmentsPerSpan = 8;          // tessellation of each non-empty knot span
 constexpr size_t kMaxVertices = 4'000'000;   // refuse absurd patches rather than exhaust memory
 
-/// The B-spline basis functions of one order and their first derivatives at
-/// t: N[i] and dN[i] for every control point i (Cox-de Boor recursion).
-void basis(std::vector<float> const& knots, int count, int order, float t, std::vector<float>& N,
-           std::vector<float>& dN) {
+}  // namespace
+
+void bsplineBasis(std::vector<float> const& knots, int count, int order, float t, std::vector<float>& N,
+                  std::vector<float>& dN) {
     int const n = static_cast<int>(knots.size()) - 1;
     // Degree 0: the span holding t (the last non-empty span takes t = its end).
     std::vector<double> b(static_cast<size_t>(n), 0.0);
@@ -50,6 +50,8 @@ void basis(std::vector<float> const& knots, int count, int order, float t, std::
         dN[static_cast<size_t>(i)] = static_cast<float>(d);
     }
 }
+
+namespace {
 
 /// Parameter values along one direction: kSegmentsPerSpan steps in each knot span within [lo, hi].
 std::vector<float> samples(std::vector<float> const& knots, float lo, float hi) {
@@ -98,8 +100,8 @@ MeshData buildNurbsPatch(NurbsDesc const& d, Mat4 const& toWorld, bool flip, Sou
     std::vector<float> Nu, dNu, Nv, dNv;
     // The point at (u, v) and its derivatives, in the patch's own space.
     auto evaluate = [&](float u, float v, Vec3& P, Vec3& dPdu, Vec3& dPdv) {
-        basis(d.vknot, d.nv, d.vorder, v, Nv, dNv);
-        basis(d.uknot, d.nu, d.uorder, u, Nu, dNu);
+        bsplineBasis(d.vknot, d.nv, d.vorder, v, Nv, dNv);
+        bsplineBasis(d.uknot, d.nu, d.uorder, u, Nu, dNu);
         // H = sum N_i(u) N_j(v) Pw_ij, and its u and v derivatives.
         Vec4 H(0.0f), Hu(0.0f), Hv(0.0f);
         for (int j = 0; j < d.nv; ++j) {

@@ -18,6 +18,12 @@ struct NurbsDesc {
     std::vector<Vec4> Pw;  ///< nu x nv homogeneous control points (x w, y w, z w, w), u fastest
 };
 
+/// The B-spline basis functions of one order over `knots` and their first
+/// derivatives at t: N[i] and dN[i] for each of the `count` control points
+/// (Cox-de Boor recursion; t at the end of the last span belongs to it).
+void bsplineBasis(std::vector<float> const& knots, int count, int order, float t, std::vector<float>& N,
+                  std::vector<float>& dN);
+
 /// Checks the description (throws a RibError at `where` naming the problem)
 /// and tessellates it in world space.
 MeshData buildNurbsPatch(NurbsDesc const& nurbs, Mat4 const& toWorld, bool flip, SourceLocation const& where);

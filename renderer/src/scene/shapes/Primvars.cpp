@@ -1,6 +1,37 @@
 #include "scene/shapes/Primvars.h"
 
+#include <algorithm>
+
+#include "core/Error.h"
+
 namespace bxdflab {
+
+LaidOutValues::LaidOutValues(Param const& param, int components)
+    : m_values(param.floats),
+      m_c(static_cast<size_t>(components)),
+      m_uniform(param.decl.storageClass == "uniform"),
+      m_vertexClass(param.decl.storageClass.empty() || param.decl.storageClass == "vertex") {}
+
+void LaidOutValues::requireCount(Param const& param, size_t wanted, char const* each) const {
+    if (m_values.size() == wanted * m_c) return;
+    std::string const& cls = param.decl.storageClass;
+    throw RibError(param.location, "primvar \"" + param.name() + "\" (" + (cls.empty() ? "vertex" : cls) +
+                                       ") needs " + std::to_string(wanted) + " values here (" + each +
+                                       "), got " + std::to_string(m_values.size() / m_c));
+}
+
+void LaidOutValues::add(float* out, size_t item, float weight) const {
+    for (size_t k = 0; k < m_c; ++k) out[k] += weight * m_values[item * m_c + k];
+}
+
+void LaidOutValues::blend(float* out, size_t item00, size_t item10, size_t item01, size_t item11, float u,
+                          float v) const {
+    std::fill(out, out + m_c, 0.0f);
+    add(out, item00, (1 - u) * (1 - v));
+    add(out, item10, u * (1 - v));
+    add(out, item01, (1 - u) * v);
+    add(out, item11, u * v);
+}
 
 bool isGeometryParameter(std::string const& name) {
     for (char const* g : {"P", "Pw", "Pz", "N", "width", "constantwidth"})

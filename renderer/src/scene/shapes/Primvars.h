@@ -9,8 +9,8 @@
 // Polygon meshes store varying values per mesh vertex (their triangulation
 // already made one vertex per corner, so vertex, varying and facevarying all
 // end up there); quadrics take four corner values, in (u, v) order; patch
-// meshes and subdivision surfaces keep the values as given and read them at
-// the hit (PatchPrimvars, SubdivisionSurface).
+// meshes, NURBS patches and subdivision surfaces keep the values as given and
+// read them at the hit (PatchPrimvars, NurbsPrimvars, SubdivisionSurface).
 #pragma once
 
 #include <memory>
@@ -30,6 +30,31 @@ public:
     /// The value on face `face` (a subdivision face; patch meshes ignore it) at
     /// its parameters (u, v): `out` receives the primvar's components.
     virtual void at(unsigned face, float u, float v, float* out) const = 0;
+};
+
+/// Values kept as a request lays them out, one value of `components` floats
+/// per item (a control point, a corner, a patch): what the patch meshes' and
+/// NURBS patches' values have in common.
+class LaidOutValues : public ParametricValues {
+public:
+    bool uniform() const { return m_uniform; }
+
+protected:
+    LaidOutValues(Param const& param, int components);
+    /// Throws at the parameter unless it holds `wanted` values, `each` saying
+    /// what one value belongs to ("one per patch").
+    void requireCount(Param const& param, size_t wanted, char const* each) const;
+    /// out[k] += weight x the value of `item`, for each component.
+    void add(float* out, size_t item, float weight) const;
+    /// out = the values of four corner items blended bilinearly at (u, v):
+    /// item00 at (0, 0), item10 at (1, 0), item01 at (0, 1), item11 at (1, 1).
+    void blend(float* out, size_t item00, size_t item10, size_t item01, size_t item11, float u,
+               float v) const;
+
+    std::vector<float> m_values;
+    size_t m_c;
+    bool m_uniform;      ///< "uniform": one value per piece (patch, segment)
+    bool m_vertexClass;  ///< "vertex", or no class given (the specification's default)
 };
 
 struct Primvar {
@@ -75,6 +100,27 @@ std::shared_ptr<ParametricValues const> parametricTextureCoordinates(PrimvarSet 
 /// (a particle of Points) are kept as uniform, one per primitive. Meshes find
 /// the rest themselves (MeshBuilders). Marks them used.
 PrimvarSet shapePrimvars(ParamList const& params, size_t corners = 0, size_t elements = 0);
+
+/// Adds to `primvars` each parameter of `params` that varies over the shape
+/// (neither geometry, nor constant, nor taken yet), its values read at a hit
+/// through a `Values(param, components, layout)`: a LaidOutValues that throws
+/// where the count does not fit the layout. Marks them used.
+template <class Values, class Layout>
+void addParametricPrimvars(PrimvarSet& primvars, ParamList const& params, Layout const& layout) {
+    for (Param const& p : params.all()) {
+        int const components = primvarComponents(p);
+        if (components == 0 || p.used || isGeometryParameter(p.name()) || p.decl.storageClass == "constant") continue;
+        auto values = std::make_shared<Values const>(p, components, layout);
+        p.used = true;
+        Primvar var;
+        var.name = p.name();
+        var.type = p.decl.type;
+        var.components = components;
+        var.detail = values->uniform() ? Primvar::Detail::Uniform : Primvar::Detail::Varying;
+        var.parametric = std::move(values);
+        primvars.add(std::move(var));
+    }
+}
 
 /// The value of `var` at parameters (u, v) of a four-corner shape, or its
 /// constant value: `out` receives var.components floats.
