@@ -158,6 +158,24 @@ TEST_CASE("classic Surface shaders become the ClassicSurface Bxdf with the Color
     }
 }
 
+TEST_CASE("a classic shader takes a shape's own Cs, and a negative component of it reflects nothing",
+          "[rib]") {
+    // Files give Cs data for their own shaders (renderman.org's toon examples: a red below 0); the standard
+    // shaders standing in read it as a colour, and no channel of the image goes below black.
+    RenderSettings settings;
+    settings.spp = 1;
+    auto r = test::renderRib(
+        "Format 8 8 1\nProjection \"orthographic\"\nScreenWindow -1 1 -1 1\nWorldBegin\n"
+        "Translate 0 0 5\nSurface \"constant\"\nPatch \"bilinear\" \"P\" [-1 -1 0  1 -1 0  -1 1 0  1 1 0] "
+        "\"varying color Cs\" [-0.5 0.25 1  -0.5 0.25 1  -0.5 0.25 1  -0.5 0.25 1]\n",
+        settings);
+    for (int x : {1, 6}) {
+        CHECK(r.channel(x, 4, 0) == 0.0f);
+        CHECK(r.channel(x, 4, 1) == Approx(0.25f));
+        CHECK(r.channel(x, 4, 2) == Approx(1.0f));
+    }
+}
+
 TEST_CASE("a classic shader's parameters are its own: others are warned about by the shader's name", "[rib]") {
     Diagnostics diagnostics(false);
     Scene scene = test::parseRib("WorldBegin\nSurface \"metal\" \"Kd\" [0.5] \"roughnes\" [0.2] \"Ks\" [0.8] "

@@ -124,8 +124,13 @@ public:
         RixShadingContext::Allocator pool(sCtx);
         int const n = sCtx->numPts;
         RtColorRGB* color = pool.AllocForBxdf<RtColorRGB>(n);
-        for (int i = 0; i < n; ++i)
+        // A reflectance below 0 means nothing to light; where a file's Cs holds other data for its own
+        // shader (negative values), the stand-in reflects none of that channel rather than light below black.
+        for (int i = 0; i < n; ++i) {
             color[i] = (CsVarying ? CsVarying[i] : *Cs) * (OsVarying ? OsVarying[i] : *Os) * textureColor[i];
+            color[i] = RtColorRGB(std::max(color[i].r, 0.0f), std::max(color[i].g, 0.0f),
+                                  std::max(color[i].b, 0.0f));
+        }
         if (shader == Shader::Default) {
             RtVector3 const* Vn;
             RtNormal3 const* Nn;
