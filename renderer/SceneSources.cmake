@@ -38,6 +38,7 @@ set(RIX_SCENE_SOURCES
   scene/shapes/Triangulation.cpp
   scene/shapes/Primvars.cpp
   scene/shapes/SubdivisionSurface.cpp
+  scene/shapes/CurvePrimvars.cpp
   scene/shapes/Curves.cpp
   scene/shapes/NurbsSurface.cpp
   scene/shapes/BlobbySurface.cpp

@@ -766,6 +766,49 @@ TEST_CASE(
     }
 }
 
+TEST_CASE("Curves keep their primvars: one per curve, per segment end and per control vertex",
+          "[rib][geometry][primvars][curves]") {
+    // Vertical tubes 0.4 wide in the plane z = 5, seen from z = 0; a segment's parameter runs up them.
+    std::string const head = "WorldBegin\nTranslate 0 0 5\n";
+    std::string const twoLines = head +
+                                 "Curves \"linear\" [2 2] \"nonperiodic\" \"constantwidth\" [0.4] "
+                                 "\"P\" [-1.5 -0.5 0  -1.5 0.5 0  1 -0.5 0  1 0.5 0] ";
+    auto const look = sampleAlongZ;
+    SECTION("uniform values are one per curve, varying ones blend along each segment") {
+        std::string const vars =
+            "\"varying color Cs\" [1 0 0  0 0 1  0 1 0  1 1 0] \"uniform float id\" [1 2]";
+        SurfaceSample left = look(twoLines + vars, -1.5f, 0.2f), right = look(twoLines + vars, 1.0f, -0.3f);
+        CHECK(left.values.at("id")[0] == 1.0f);
+        CHECK(right.values.at("id")[0] == 2.0f);
+        CHECK(left.values.at("Cs")[0] == Approx(0.3f).margin(0.01));
+        CHECK(left.values.at("Cs")[2] == Approx(0.7f).margin(0.01));
+        CHECK(right.values.at("Cs")[0] == Approx(0.2f).margin(0.01));
+        CHECK(right.values.at("Cs")[1] == Approx(1.0f).margin(1e-4));
+        // A varying st gives the curves' s and t.
+        SurfaceSample textured = look(twoLines + "\"varying float[2] st\" [0 0  0 1  1 0  1 1]", 1.0f, -0.3f);
+        CHECK(textured.at.s == Approx(1.0f));
+        CHECK(textured.at.t == Approx(0.2f).margin(0.01));
+    }
+    SECTION("vertex values of a cubic curve go through its basis, as its points do") {
+        // A b-spline of six vertices evenly up y (three segments): the primvar "h", each vertex's y,
+        // is the height of the curve wherever it is hit.
+        std::string const spline = head +
+                                   "Basis \"b-spline\" 1 \"b-spline\" 1\n"
+                                   "Curves \"cubic\" [6] \"nonperiodic\" \"constantwidth\" [0.4] "
+                                   "\"P\" [0 -1 0  0 -0.6 0  0 -0.2 0  0 0.2 0  0 0.6 0  0 1 0] "
+                                   "\"vertex float h\" [-1 -0.6 -0.2 0.2 0.6 1]";
+        for (float y : {-0.45f, 0.1f, 0.5f})
+            CHECK(look(spline, 0.0f, y).values.at("h")[0] == Approx(y).margin(0.01));
+    }
+    SECTION("a count that does not fit the curves is an error at the parameter") {
+        checkCountErrors(
+            twoLines,
+            {{"\"varying float w\" [0 1 2]", "needs 4 values here (one per segment end), got 3"},
+             {"\"uniform float w\" [1 2 3]", "needs 2 values here (one per curve), got 3"},
+             {"\"vertex float w\" [1 2 3]", "needs 4 values here (one per control vertex), got 3"}});
+    }
+}
+
 TEST_CASE("free-form shapes: subdivision surface, NURBS patch, curves, points and blobby", "[rib][geometry]") {
     auto hitDistance = [](std::string const& rib, Vec3 org = Vec3(0.0f), Vec3 dir = Vec3(0, 0, 1)) {
         Diagnostics diagnostics(false);

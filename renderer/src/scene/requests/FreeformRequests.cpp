@@ -6,6 +6,7 @@
 
 #include "scene/SceneBuilder.h"
 #include "scene/shapes/BlobbySurface.h"
+#include "scene/shapes/CurvePrimvars.h"
 #include "scene/shapes/Curves.h"
 #include "scene/shapes/NurbsPrimvars.h"
 #include "scene/shapes/NurbsSurface.h"
@@ -267,14 +268,17 @@ void SceneBuilder::curves(RequestReader& in) {
     std::vector<float> const* widths = params.getFloats("width", ParamType::Float);
     float constantWidth = params.getFloat("constantwidth", 1.0f);
     params.ignore("N");  // ribbons facing N are drawn as round tubes
-    PrimvarSet vars = shapePrimvars(params);
-    params.warnUnused(m_diagnostics, "Curves");
     float const scale = lengthScale(state().transform);
     int const step = cubic ? state().vBasis.step : 1;
     Rows const convert = toBezier(state().vBasis);
 
     CurveData data;
     data.cubic = cubic;
+    CurveLayout layout;
+    layout.cubic = cubic;
+    layout.periodic = periodic;
+    layout.basis = state().vBasis;
+    layout.curves = nverts.size();
     bool const perVertex = widthClass == "vertex";
     size_t first = 0, widthIndex = 0;
     for (size_t curve = 0; curve < nverts.size(); ++curve) {
@@ -302,6 +306,9 @@ void SceneBuilder::curves(RequestReader& in) {
         auto point = [&](int k) { return P[first + static_cast<size_t>(periodic ? k % n : k)]; };
         for (int s = 0; s < segments; ++s) {
             data.segments.push_back(static_cast<unsigned>(data.points.size()));
+            layout.segments.push_back({static_cast<unsigned>(curve), static_cast<unsigned>(s),
+                                       static_cast<unsigned>(first), static_cast<unsigned>(n),
+                                       static_cast<unsigned>(widthIndex), static_cast<unsigned>(varying)});
             if (!cubic) {
                 data.points.emplace_back(point(s), radius(s));
                 data.points.emplace_back(point(s + 1), radius(s + 1));
@@ -330,8 +337,15 @@ void SceneBuilder::curves(RequestReader& in) {
         first += static_cast<size_t>(n);
         widthIndex += static_cast<size_t>(varying);
     }
+    layout.vertices = first;
+    layout.varyings = widthIndex;
+    PrimvarSet alongCurves;
+    addCurvePrimvars(alongCurves, params, std::move(layout));
+    PrimvarSet constants = shapePrimvars(params);
+    params.warnUnused(m_diagnostics, "Curves");
     if (data.segments.empty()) return;
-    addShape(std::make_unique<Curves>(std::move(data)), in.where(), std::move(vars));
+    addShape(std::make_unique<Curves>(std::move(data), std::move(alongCurves)), in.where(),
+             std::move(constants));
 }
 
 }  // namespace bxdflab

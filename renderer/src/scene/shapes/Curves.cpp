@@ -15,6 +15,11 @@ void pointOnRay(HitRecord const& hit, SurfaceBasics& out) {
 
 }  // namespace
 
+Curves::Curves(CurveData data, PrimvarSet curvePrimvars) : m_data(std::move(data)) {
+    primvars = std::move(curvePrimvars);
+    takeSTFromPrimvars();
+}
+
 SurfaceBasics Curves::basics(HitRecord const& hit) const {
     SurfaceBasics out;
     pointOnRay(hit, out);

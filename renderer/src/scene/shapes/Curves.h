@@ -19,7 +19,9 @@ struct CurveData {
 
 class Curves final : public Shape {
 public:
-    explicit Curves(CurveData data) : m_data(std::move(data)) {}
+    /// `primvars`: those that vary along the curves (CurvePrimvars); an "st"
+    /// among them gives the curves' s and t.
+    Curves(CurveData data, PrimvarSet primvars);
 
     const char* kind() const override { return "Curves"; }
     void accept(ShapeVisitor& visitor) const override { visitor.visit(*this); }

@@ -24,6 +24,12 @@ void LaidOutValues::add(float* out, size_t item, float weight) const {
     for (size_t k = 0; k < m_c; ++k) out[k] += weight * m_values[item * m_c + k];
 }
 
+void LaidOutValues::mix(float* out, size_t item0, size_t item1, float t) const {
+    std::fill(out, out + m_c, 0.0f);
+    add(out, item0, 1 - t);
+    add(out, item1, t);
+}
+
 void LaidOutValues::blend(float* out, size_t item00, size_t item10, size_t item01, size_t item11, float u,
                           float v) const {
     std::fill(out, out + m_c, 0.0f);

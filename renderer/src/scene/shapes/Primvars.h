@@ -9,8 +9,9 @@
 // Polygon meshes store varying values per mesh vertex (their triangulation
 // already made one vertex per corner, so vertex, varying and facevarying all
 // end up there); quadrics take four corner values, in (u, v) order; patch
-// meshes, NURBS patches and subdivision surfaces keep the values as given and
-// read them at the hit (PatchPrimvars, NurbsPrimvars, SubdivisionSurface).
+// meshes, NURBS patches, curves and subdivision surfaces keep the values as
+// given and read them at the hit (PatchPrimvars, NurbsPrimvars, CurvePrimvars,
+// SubdivisionSurface).
 #pragma once
 
 #include <memory>
@@ -46,6 +47,8 @@ protected:
     void requireCount(Param const& param, size_t wanted, char const* each) const;
     /// out[k] += weight x the value of `item`, for each component.
     void add(float* out, size_t item, float weight) const;
+    /// out = the values of two items blended linearly: item0 at t = 0, item1 at t = 1.
+    void mix(float* out, size_t item0, size_t item1, float t) const;
     /// out = the values of four corner items blended bilinearly at (u, v):
     /// item00 at (0, 0), item10 at (1, 0), item01 at (0, 1), item11 at (1, 1).
     void blend(float* out, size_t item00, size_t item10, size_t item01, size_t item11, float u,

@@ -100,14 +100,29 @@ public:
     virtual void accept(ShapeVisitor& visitor) const = 0;
     virtual SurfaceBasics basics(HitRecord const& hit) const = 0;
     virtual SurfaceTangents tangents(HitRecord const& hit) const = 0;
-    /// (u, v, s, t) at a hit: by default the (u, v) the hit carries, for both.
-    virtual SurfaceParameters parameters(HitRecord const& hit) const { return {hit.u, hit.v, hit.u, hit.v}; }
+    /// (u, v, s, t) at a hit: by default the (u, v) the hit carries, for both,
+    /// unless an st among the shape's laid-out primvars gives s and t.
+    virtual SurfaceParameters parameters(HitRecord const& hit) const {
+        SurfaceParameters at{hit.u, hit.v, hit.u, hit.v};
+        if (m_primvarST) {
+            float st[2];
+            m_primvarST->at(hit.primID, hit.u, hit.v, st);
+            at.s = st[0];
+            at.t = st[1];
+        }
+        return at;
+    }
     /// The value of one of this shape's primvars at a hit (`out` receives
-    /// var.components floats), interpolated over (u, v) between its corners.
-    /// Shapes with per-vertex or per-face values override it.
+    /// var.components floats): read from its values laid out over the shape's
+    /// pieces (the hit's primitive) and parameters, else interpolated over
+    /// (u, v) between its corners. Shapes with per-vertex or per-face values
+    /// override it.
     virtual void primvar(Primvar const& var, HitRecord const& hit, float* out) const {
         SurfaceParameters at = parameters(hit);
-        primvarAtCorners(var, at.u, at.v, out);
+        if (var.parametric)
+            var.parametric->at(hit.primID, at.u, at.v, out);
+        else
+            primvarAtCorners(var, at.u, at.v, out);
     }
 
     int material = -1;  ///< index into Scene::materials
@@ -122,6 +137,12 @@ public:
     bool oneSided = false;
     std::string name;  ///< Attribute "identifier" "name"
     SourceLocation where;
+
+protected:
+    /// Once the shape's primvars are in place: an "st" (or "s" and "t") among
+    /// those laid out over it gives its s and t from then on.
+    void takeSTFromPrimvars() { m_primvarST = parametricTextureCoordinates(primvars); }
+    std::shared_ptr<ParametricValues const> m_primvarST;
 };
 
 }  // namespace bxdflab

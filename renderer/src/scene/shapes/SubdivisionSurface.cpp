@@ -101,7 +101,7 @@ SubdivisionSurface::SubdivisionSurface(SubdivisionData data, bool flipNormals)
                                                                 static_cast<unsigned>(listed.components));
         primvars.add(std::move(listed));
     }
-    m_textureCoordinates = parametricTextureCoordinates(primvars);
+    takeSTFromPrimvars();
 }
 
 SurfaceBasics SubdivisionSurface::basics(HitRecord const& hit) const {
@@ -124,17 +124,6 @@ SurfaceTangents SubdivisionSurface::tangents(HitRecord const& hit) const {
     float P[3], dPdu[3], dPdv[3];
     m_evaluator->evaluate(hit.primID, hit.u, hit.v, P, dPdu, dPdv, 3);
     return {Vec3(dPdu[0], dPdu[1], dPdu[2]), Vec3(dPdv[0], dPdv[1], dPdv[2])};
-}
-
-SurfaceParameters SubdivisionSurface::parameters(HitRecord const& hit) const {
-    SurfaceParameters out{hit.u, hit.v, hit.u, hit.v};
-    if (m_textureCoordinates) {
-        float st[2];
-        m_textureCoordinates->at(hit.primID, hit.u, hit.v, st);
-        out.s = st[0];
-        out.t = st[1];
-    }
-    return out;
 }
 
 void SubdivisionSurface::primvar(Primvar const& var, HitRecord const& hit, float* out) const {

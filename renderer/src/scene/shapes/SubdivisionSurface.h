@@ -56,8 +56,6 @@ public:
     void accept(ShapeVisitor& visitor) const override { visitor.visit(*this); }
     SurfaceBasics basics(HitRecord const& hit) const override;
     SurfaceTangents tangents(HitRecord const& hit) const override;
-    /// s and t from the "st" primvar (or "s" and "t") where the mesh has them.
-    SurfaceParameters parameters(HitRecord const& hit) const override;
     /// A primvar's value on the limit surface (slot: its index in data().primvars).
     void limitValue(unsigned slot, unsigned face, float u, float v, float* out, unsigned count) const {
         m_evaluator->evaluateAttribute(slot, face, u, v, out, count);
@@ -69,7 +67,6 @@ public:
 
 private:
     SubdivisionData m_data;
-    std::shared_ptr<ParametricValues const> m_textureCoordinates;
     float m_orientation;
     mutable std::shared_ptr<SurfaceEvaluator const> m_evaluator;
 };

@@ -8,7 +8,7 @@ TriangleMesh::TriangleMesh(MeshData data, const char* kindName, bool flipNormals
     : m_data(std::move(data)), m_kind(kindName), m_orientation(flipNormals ? -1.0f : 1.0f) {
     primvars = std::move(m_data.primvars);
     m_data.primvars = PrimvarSet();
-    m_textureCoordinates = parametricTextureCoordinates(primvars);
+    takeSTFromPrimvars();
 }
 
 void TriangleMesh::primvar(Primvar const& var, HitRecord const& hit, float* out) const {
@@ -65,9 +65,9 @@ SurfaceBasics TriangleMesh::basics(HitRecord const& hit) const {
 SurfaceParameters TriangleMesh::parameters(HitRecord const& hit) const {
     Vec2 uv = uvAt(hit.primID, hit.u, hit.v);
     Vec2 st = m_data.st.empty() ? uv : interpolate(m_data.st, hit.primID, hit.u, hit.v);
-    if (m_textureCoordinates) {
+    if (m_primvarST) {
         float value[2];
-        m_textureCoordinates->at(hit.primID, uv.x, uv.y, value);
+        m_primvarST->at(hit.primID, uv.x, uv.y, value);
         st = Vec2(value[0], value[1]);
     }
     return {uv.x, uv.y, st.x, st.y};

@@ -69,7 +69,6 @@ private:
         return (1.0f - b1 - b2) * values[tri[0]] + b1 * values[tri[1]] + b2 * values[tri[2]];
     }
     Vec2 uvAt(unsigned prim, float b1, float b2) const;
-    std::shared_ptr<ParametricValues const> m_textureCoordinates;  ///< parametric st, read instead of st
 
     MeshData m_data;
     const char* m_kind;
