@@ -1,6 +1,7 @@
 #include "scene/shapes/NurbsPrimvars.h"
 
 #include <algorithm>
+#include <memory>
 
 #include "scene/shapes/Primvars.h"
 
@@ -23,8 +24,9 @@ int locateSegment(std::vector<float> const& knots, int count, int order, float t
 
 class NurbsValues final : public LaidOutValues {
 public:
-    NurbsValues(Param const& param, int components, NurbsDesc const& nurbs)
-        : LaidOutValues(param, components), m_nurbs(nurbs) {
+    NurbsValues(Param const& param, int components, std::shared_ptr<NurbsDesc const> const& shared)
+        : LaidOutValues(param, components), m_nurbs(shared) {
+        NurbsDesc const& nurbs = *shared;
         m_segmentsU = nurbs.nu - nurbs.uorder + 1;
         m_segmentsV = nurbs.nv - nurbs.vorder + 1;
         if (m_uniform)
@@ -44,8 +46,8 @@ public:
             return;
         }
         float su, sv;
-        int const iu = locateSegment(m_nurbs.uknot, m_nurbs.nu, m_nurbs.uorder, u, su);
-        int const iv = locateSegment(m_nurbs.vknot, m_nurbs.nv, m_nurbs.vorder, v, sv);
+        int const iu = locateSegment(m_nurbs->uknot, m_nurbs->nu, m_nurbs->uorder, u, su);
+        int const iv = locateSegment(m_nurbs->vknot, m_nurbs->nv, m_nurbs->vorder, v, sv);
         if (m_uniform) {
             std::fill(out, out + m_c, 0.0f);
             add(out, static_cast<size_t>(iv) * static_cast<size_t>(m_segmentsU) + static_cast<size_t>(iu),
@@ -65,16 +67,16 @@ private:
     void atControlPoints(float u, float v, float* out) const {
         std::fill(out, out + m_c, 0.0f);
         std::vector<float> Nu, dNu, Nv, dNv;
-        bsplineBasis(m_nurbs.uknot, m_nurbs.nu, m_nurbs.uorder, u, Nu, dNu);
-        bsplineBasis(m_nurbs.vknot, m_nurbs.nv, m_nurbs.vorder, v, Nv, dNv);
+        bsplineBasis(m_nurbs->uknot, m_nurbs->nu, m_nurbs->uorder, u, Nu, dNu);
+        bsplineBasis(m_nurbs->vknot, m_nurbs->nv, m_nurbs->vorder, v, Nv, dNv);
         float weightSum = 0.0f;
-        for (int j = 0; j < m_nurbs.nv; ++j) {
+        for (int j = 0; j < m_nurbs->nv; ++j) {
             if (Nv[static_cast<size_t>(j)] == 0.0f) continue;
-            for (int i = 0; i < m_nurbs.nu; ++i) {
+            for (int i = 0; i < m_nurbs->nu; ++i) {
                 size_t const point =
-                    static_cast<size_t>(j) * static_cast<size_t>(m_nurbs.nu) + static_cast<size_t>(i);
+                    static_cast<size_t>(j) * static_cast<size_t>(m_nurbs->nu) + static_cast<size_t>(i);
                 float const weight =
-                    Nu[static_cast<size_t>(i)] * Nv[static_cast<size_t>(j)] * m_nurbs.Pw[point].w;
+                    Nu[static_cast<size_t>(i)] * Nv[static_cast<size_t>(j)] * m_nurbs->Pw[point].w;
                 add(out, point, weight);
                 weightSum += weight;
             }
@@ -83,14 +85,15 @@ private:
             for (size_t k = 0; k < m_c; ++k) out[k] /= weightSum;
     }
 
-    NurbsDesc m_nurbs;  ///< its knots, orders and weights (a copy per primvar: NuPatch primvars are few)
+    std::shared_ptr<NurbsDesc const> m_nurbs;  ///< the patch's knots, orders and weights, kept once for its primvars
     int m_segmentsU = 0, m_segmentsV = 0;
 };
 
 }  // namespace
 
 void addNurbsPrimvars(MeshData& mesh, ParamList const& params, NurbsDesc const& nurbs) {
-    addParametricPrimvars<NurbsValues>(mesh.primvars, params, nurbs);
+    auto const shared = std::make_shared<NurbsDesc const>(nurbs);
+    addParametricPrimvars<NurbsValues>(mesh.primvars, params, shared);
 }
 
 }  // namespace bxdflab
