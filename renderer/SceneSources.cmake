@@ -7,6 +7,7 @@ set(RIX_SCENE_SOURCES
   core/Diagnostics.cpp
   core/GitLfs.cpp
   core/ImageFiles.cpp
+  core/PixelFilter.cpp
   core/Spelling.cpp
   core/TextureLocator.cpp
   parse/RibLexer.cpp

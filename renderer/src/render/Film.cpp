@@ -10,14 +10,15 @@ namespace bxdflab {
 Film::Film(int width, int height)
     : m_width(width), m_height(height), m_pixels(static_cast<size_t>(width) * static_cast<size_t>(height)) {}
 
-void Film::addSample(int x, int y, RtColorRGB const& radiance, float alpha) {
+void Film::addSample(int x, int y, RtColorRGB const& radiance, float alpha, float weight) {
     Pixel& p = m_pixels[static_cast<size_t>(y) * static_cast<size_t>(m_width) + static_cast<size_t>(x)];
     for (int c = 0; c < 3; ++c) {
         double v = radiance[c];
-        p.sum[c] += v;
+        p.sum[c] += weight * v;
         p.sumSq[c] += v * v;
     }
-    p.alpha += alpha;
+    p.alpha += weight * alpha;
+    p.weight += weight;
     ++p.count;
 }
 
@@ -50,14 +51,14 @@ std::vector<float> Film::rgba() const {
     uint64_t const paths = m_splatPaths.load();
     for (size_t i = 0; i < m_pixels.size(); ++i) {
         Pixel const& p = m_pixels[i];
-        if (p.count == 0) continue;
+        if (p.count == 0 || p.weight == 0.0) continue;
         for (int c = 0; c < 3; ++c) {
             double splat = m_splats && paths > 0 ? static_cast<double>(m_splats[3 * i + static_cast<size_t>(c)].load()) *
                                                        kSplatUnit / static_cast<double>(paths)
                                                  : 0.0;
-            out[4 * i + static_cast<size_t>(c)] = static_cast<float>(p.sum[c] / p.count + splat);
+            out[4 * i + static_cast<size_t>(c)] = static_cast<float>(p.sum[c] / p.weight + splat);
         }
-        out[4 * i + 3] = static_cast<float>(p.alpha / p.count);
+        out[4 * i + 3] = static_cast<float>(p.alpha / p.weight);
         m_finish.apply(&out[4 * i]);
     }
     return out;
@@ -67,9 +68,9 @@ std::vector<float> Film::varianceOfMean() const {
     std::vector<float> out(m_pixels.size() * 3, 0.0f);
     for (size_t i = 0; i < m_pixels.size(); ++i) {
         Pixel const& p = m_pixels[i];
-        if (p.count < 2) continue;
+        if (p.count < 2 || p.weight == 0.0) continue;
         for (int c = 0; c < 3; ++c) {
-            double mean = p.sum[c] / p.count;
+            double mean = p.sum[c] / p.weight;
             double variance = std::max(0.0, (p.sumSq[c] - p.count * mean * mean) / (p.count - 1));
             out[3 * i + static_cast<size_t>(c)] = static_cast<float>(variance / p.count);
         }

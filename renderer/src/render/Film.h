@@ -1,7 +1,8 @@
-// The image being rendered. Each pixel averages its samples with a box
-// filter one pixel wide (a sample counts only for the pixel it falls in), so
-// every pixel is an independent Monte Carlo estimate and its sample variance
-// is meaningful: the autograder compares renders pixel by pixel with it.
+// The image being rendered. Each pixel averages its own samples (drawn around
+// it from the pixel filter, a box one pixel wide unless the scene names
+// another, and weighted by its sign), so every pixel is an independent Monte
+// Carlo estimate and its sample variance is meaningful: the autograder
+// compares renders pixel by pixel with it (under the default box).
 #pragma once
 
 #include <atomic>
@@ -26,9 +27,11 @@ public:
     int width() const override { return m_width; }
     int height() const override { return m_height; }
 
-    /// Adds one sample to pixel (x, y). Samples must arrive in a fixed order
-    /// per pixel for renders to be bit-for-bit reproducible.
-    void addSample(int x, int y, RtColorRGB const& radiance, float alpha);
+    /// Adds one sample to pixel (x, y), counting `weight` times (the pixel
+    /// filter's: below 0 in a negative lobe); a pixel is the weighted mean of
+    /// its samples. Samples must arrive in a fixed order per pixel for renders
+    /// to be bit-for-bit reproducible.
+    void addSample(int x, int y, RtColorRGB const& radiance, float alpha, float weight = 1.0f);
 
     /// Light tracing (PxrVCM): light subpaths joined to the camera add to
     /// whichever pixel they land in, from any thread. Those additions are
@@ -51,6 +54,7 @@ private:
         double sum[3] = {0, 0, 0};
         double sumSq[3] = {0, 0, 0};
         double alpha = 0;
+        double weight = 0;  ///< the samples' filter weights, summed (their count under a box)
         int count = 0;
     };
     int m_width, m_height;

@@ -1,10 +1,10 @@
 #include "render/Renderer.h"
 
+#include <sys/resource.h>
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
-#include <sys/resource.h>
 #include <unistd.h>
 
 #include <atomic>
@@ -14,15 +14,17 @@
 #include <mutex>
 #include <optional>
 #include <set>
+#include <sstream>
 #include <thread>
 
 #include "accel/RayTracer.h"
 #include "core/CrashReport.h"
 #include "core/ImageFiles.h"
-#include "shade/BatchShader.h"
+#include "core/PixelFilter.h"
 #include "scene/Camera.h"
 #include "scene/PatternReach.h"
 #include "scene/lights/HeadLight.h"
+#include "shade/BatchShader.h"
 #include "shade/BxdfInstance.h"
 #include "shade/MemoryArena.h"
 #include "shade/PatternInstance.h"
@@ -64,6 +66,7 @@ struct Worker {
     std::vector<RixRNG::SampleCtx> samples;
     std::vector<RtColorRGB> radiance, groupRadiance;
     std::vector<float> alpha;
+    std::vector<float> filterWeight;  ///< each camera sample's weight under the pixel filter
 };
 
 class ProgressBar {
@@ -142,6 +145,7 @@ struct Renderer::Impl {
     std::vector<std::unique_ptr<BxdfInstance>> materials;
     std::unique_ptr<RayTracer> tracer;
     std::unique_ptr<Camera> camera;
+    PixelFilter pixelFilter;
     std::unique_ptr<IntegratorPlugin> integratorPlugin;
     RixIntegrator* integrator = nullptr;
     std::unique_ptr<Light> headlight;
@@ -291,6 +295,22 @@ Renderer::Renderer(Scene& scene, RenderSettings settings, Diagnostics& diagnosti
             m_stats.effects.simulate("depth of field");
         }
     }
+    if (PixelFilterDesc const& filter = scene.pixelFilter;
+        filter.name != "box" || filter.xwidth != 1.0f || filter.ywidth != 1.0f) {
+        std::ostringstream named;
+        named << "pixel filter " << filter.name << " " << filter.xwidth << " x " << filter.ywidth;
+        if (r.integrator->WantsLightTracing()) {
+            // Light subpaths land in one pixel each; filtering them too would spread them over its
+            // neighbours.
+            diagnostics.warn(integrator.where, "Integrator \"" + integrator.name +
+                                                   "\" adds light subpaths to the pixel they land in: the " +
+                                                   named.str() + " is not applied (a box one pixel wide is)");
+            m_stats.effects.skip(named.str(), integrator.name + " adds light subpaths to one pixel each");
+        } else {
+            r.pixelFilter = PixelFilter(filter.name, filter.xwidth, filter.ywidth);
+            m_stats.effects.simulate(named.str());
+        }
+    }
     if (r.integrator->WantsHeadlight()) {
         r.headlight = std::make_unique<HeadLight>(r.camera->position());
         r.shadingLights.push_back(r.headlight.get());
@@ -371,6 +391,7 @@ void Renderer::Impl::renderTile(int tileX, int tileY, int spp, Film& film, Worke
         w.samples.resize(static_cast<size_t>(count));
         w.radiance.assign(static_cast<size_t>(count), RtColorRGB(0.0f));
         w.alpha.assign(static_cast<size_t>(count), 0.0f);
+        w.filterWeight.resize(static_cast<size_t>(count));
 
         // Camera rays, pixel by pixel and sample by sample: this order fixes
         // each pixel's sample sequence, whatever the thread count.
@@ -383,8 +404,11 @@ void Renderer::Impl::renderTile(int tileX, int tileY, int spp, Film& film, Worke
                 for (int s = s0; s < s1; ++s, ++k) {
                     RixRNG::SampleCtx& sample = w.samples[static_cast<size_t>(k)];
                     sample = {patternid, static_cast<uint32_t>(s), 0, -1.0f};
-                    RtFloat2 jitter = RixRNG::Sample2D(sample);
-                    float const rasterX = static_cast<float>(x) + jitter.x, rasterY = static_cast<float>(y) + jitter.y;
+                    RtFloat2 const jitter = RixRNG::Sample2D(sample);
+                    Vec2 const offset =
+                        pixelFilter.sample(jitter.x, jitter.y, w.filterWeight[static_cast<size_t>(k)]);
+                    float const rasterX = static_cast<float>(x) + offset.x,
+                                rasterY = static_cast<float>(y) + offset.y;
                     Vec3& org = w.rayOrigins[static_cast<size_t>(k)];
                     Vec3& dir = w.rayDirections[static_cast<size_t>(k)];
                     if (lens) {
@@ -423,7 +447,8 @@ void Renderer::Impl::renderTile(int tileX, int tileY, int spp, Film& film, Worke
                         nonFinite.fetch_add(1, std::memory_order_relaxed);
                         value = RtColorRGB(0.0f);
                     }
-                    film.addSample(x, y, value, w.alpha[static_cast<size_t>(k)]);
+                    film.addSample(x, y, value, w.alpha[static_cast<size_t>(k)],
+                                   w.filterWeight[static_cast<size_t>(k)]);
                 }
     }
     tracer->counters().add(counts);

@@ -93,11 +93,20 @@ struct AreaLightDesc {
 };
 
 /// What a frame's options say: image, camera, display, integrator.
+/// PixelFilter: a name of pixelFilterNames() and its widths in pixels. RenderMan's
+/// own default is "gaussian" 2 2; a scene that names none is filtered with a
+/// box one pixel wide, so that each sample counts for its own pixel only.
+struct PixelFilterDesc {
+    std::string name = "box";
+    float xwidth = 1.0f, ywidth = 1.0f;
+};
+
 struct SceneOptions {
     std::string file;  ///< the top-level RIB file
     int xres = 640, yres = 480;
     float pixelAspect = 1.0f;
     int spp = 16;
+    PixelFilterDesc pixelFilter;
     CameraDesc camera;
     DisplayDesc display;
     ImageFinish finish;  ///< Imager and DisplayFilter

@@ -31,6 +31,7 @@ std::map<std::string, SceneBuilder::Handler> const& SceneBuilder::handlers() {
         {"Projection", &SceneBuilder::projection},
         {"ScreenWindow", &SceneBuilder::screenWindow},
         {"PixelSamples", &SceneBuilder::pixelSamples},
+        {"PixelFilter", &SceneBuilder::pixelFilter},
         {"Hider", &SceneBuilder::hider},
         {"DepthOfField", &SceneBuilder::depthOfField},
         {"Imager", &SceneBuilder::imager},
@@ -246,7 +247,8 @@ void SceneBuilder::ignore(RequestReader&) {}
 
 bool SceneBuilder::isCameraOption(std::string const& name) {
     return name == "Display" || name == "Format" || name == "Projection" || name == "ScreenWindow" ||
-           name == "FrameAspectRatio" || name == "PixelSamples" || name == "Hider" || name == "Integrator";
+           name == "FrameAspectRatio" || name == "PixelSamples" || name == "PixelFilter" || name == "Hider" ||
+           name == "Integrator";
 }
 
 bool SceneBuilder::closesSkippedBegin(Block block, SourceLocation const& where, std::string const& end) {

@@ -94,6 +94,9 @@ private:
     void screenWindow(RequestReader& in);
     void setScreenWindow(std::vector<float> const& window);
     void pixelSamples(RequestReader& in);
+    void pixelFilter(RequestReader& in);
+    /// PixelFilter's name and widths, checked (an unknown name keeps the filter as it was, with a warning).
+    void setPixelFilter(std::string const& name, float xwidth, float ywidth, SourceLocation const& where);
     void hider(RequestReader& in);
     void imager(RequestReader& in);
     void depthOfField(RequestReader& in);

@@ -1,5 +1,6 @@
 // Options, the camera and frames: what comes before WorldBegin, and the
 // blocks that make frames.
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
@@ -7,6 +8,7 @@
 #include <map>
 #include <sstream>
 
+#include "core/PixelFilter.h"
 #include "scene/SceneBuilder.h"
 
 namespace bxdflab {
@@ -195,6 +197,30 @@ void SceneBuilder::pixelSamples(RequestReader& in) {
     m_scene.spp = static_cast<int>(spp);
 }
 
+void SceneBuilder::pixelFilter(RequestReader& in) {
+    std::string const name = in.string("filter name");
+    std::vector<float> const widths = in.numbers(2, "xwidth ywidth");
+    in.finish();
+    setPixelFilter(name, widths[0], widths[1], in.where());
+}
+
+void SceneBuilder::setPixelFilter(std::string const& name, float xwidth, float ywidth,
+                                  SourceLocation const& where) {
+    if (!(xwidth > 0.0f && ywidth > 0.0f && xwidth <= 16.0f && ywidth <= 16.0f))
+        throw RibError(where, "PixelFilter widths must be above 0 and at most 16 pixels");
+    std::vector<std::string> const& known = pixelFilterNames();
+    if (std::find(known.begin(), known.end(), name) == known.end()) {
+        std::ostringstream message;
+        message << "PixelFilter \"" << name << "\" is not one this renderer has (";
+        for (std::string const& k : known) message << k << (&k == &known.back() ? "" : ", ");
+        message << "); the image is filtered with " << m_scene.pixelFilter.name << " "
+                << m_scene.pixelFilter.xwidth << " " << m_scene.pixelFilter.ywidth;
+        warnOnce("pixel filter " + name, where, message.str());
+        return;
+    }
+    m_scene.pixelFilter = {name, xwidth, ywidth};
+}
+
 void SceneBuilder::hider(RequestReader& in) {
     std::string type = in.string("hider type");
     ParamList params = in.params();
@@ -373,8 +399,14 @@ void SceneBuilder::riOptions(ParamList const& params, SourceLocation const& wher
         checkCropWindow(crop ? *crop : std::vector<float>{}, params.find("CropWindow")->location,
                         "Option \"Ri\" \"CropWindow\"");
     }
+    if (Param const* p = params.take("PixelFilterName")) {
+        std::vector<float> const* widths = params.getFloats("PixelFilterWidth", ParamType::Float);
+        setPixelFilter(params.getString("PixelFilterName", "box"),
+                       widths && widths->size() == 2 ? (*widths)[0] : 2.0f,
+                       widths && widths->size() == 2 ? (*widths)[1] : 2.0f, p->location);
+    }
     // The rest are requests this renderer skips when written out (PixelVariance,
-    // PixelFilterName, FrameAspectRatio, Exposure, ...).
+    // FrameAspectRatio, Exposure, ...).
     for (auto const& p : params.all())
         if (!p.used)
             warnOnce("option Ri " + p.name(), p.location,
