@@ -295,8 +295,8 @@ Renderer::Renderer(Scene& scene, RenderSettings settings, Diagnostics& diagnosti
             m_stats.effects.simulate("depth of field");
         }
     }
-    if (PixelFilterDesc const& filter = scene.pixelFilter;
-        filter.name != "box" || filter.xwidth != 1.0f || filter.ywidth != 1.0f) {
+    PixelFilterDesc const& filter = scene.pixelFilter;
+    if (PixelFilter const applied(filter.name, filter.xwidth, filter.ywidth); !applied.isUnitBox()) {
         std::ostringstream named;
         named << "pixel filter " << filter.name << " " << filter.xwidth << " x " << filter.ywidth;
         if (r.integrator->WantsLightTracing()) {
@@ -307,7 +307,7 @@ Renderer::Renderer(Scene& scene, RenderSettings settings, Diagnostics& diagnosti
                                                    named.str() + " is not applied (a box one pixel wide is)");
             m_stats.effects.skip(named.str(), integrator.name + " adds light subpaths to one pixel each");
         } else {
-            r.pixelFilter = PixelFilter(filter.name, filter.xwidth, filter.ywidth);
+            r.pixelFilter = applied;
             m_stats.effects.simulate(named.str());
         }
     }

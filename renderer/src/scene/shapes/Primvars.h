@@ -28,14 +28,15 @@ namespace bxdflab {
 class ParametricValues {
 public:
     virtual ~ParametricValues() = default;
-    /// The value on face `face` (a subdivision face; patch meshes ignore it) at
-    /// its parameters (u, v): `out` receives the primvar's components.
+    /// The value on face `face` (a subdivision face, a curve segment; patches
+    /// ignore it) at its parameters (u, v): `out` receives the primvar's
+    /// components.
     virtual void at(unsigned face, float u, float v, float* out) const = 0;
 };
 
 /// Values kept as a request lays them out, one value of `components` floats
-/// per item (a control point, a corner, a patch): what the patch meshes' and
-/// NURBS patches' values have in common.
+/// per item (a control point, a corner, a patch): what the values of patch
+/// meshes, NURBS patches and curves have in common.
 class LaidOutValues : public ParametricValues {
 public:
     bool uniform() const { return m_uniform; }
