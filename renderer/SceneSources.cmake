@@ -10,7 +10,9 @@ set(RIX_SCENE_SOURCES
   core/PixelFilter.cpp
   core/Spelling.cpp
   core/TextureLocator.cpp
+  core/Variables.cpp
   parse/RibLexer.cpp
+  parse/RibCondition.cpp
   parse/RibParser.cpp
   parse/RibRequest.cpp
   parse/ParamList.cpp

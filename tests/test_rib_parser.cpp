@@ -1,18 +1,19 @@
 // The RIB front end: tokens, requests, the graphics state, and located errors.
+#include <zip.h>
+
 #include <catch2/catch.hpp>
 #include <filesystem>
 #include <fstream>
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "core/Spelling.h"
+#include "parse/RibCondition.h"
 #include "parse/RibLexer.h"
 #include "parse/RibParser.h"
 #include "scene/SceneBuilder.h"
 #include "scene/shapes/Quadrics.h"
 #include "scene/shapes/TriangleMesh.h"
 #include "support/RenderHelpers.h"
-
-#include <zip.h>
 
 using namespace bxdflab;
 using bxdflab::test::parseRib;
@@ -680,24 +681,108 @@ TEST_CASE("a RenderMan for Maya export finds its geometry: ${NAME} from Option \
     CHECK(test::warningsContaining(diagnostics, "Option \"user\"") == 0);  // used, not skipped
 }
 
-TEST_CASE("conditional RIB: the first branch is read as if it held, ElseIf and Else branches are skipped", "[rib]") {
-    // RenderMan for Maya wraps its defaults in IfBegin "!defined(...)" blocks that hold when the
-    // scene is rendered on its own; their other branches must not be read on top of them.
+TEST_CASE("conditional RIB: the first branch whose condition holds is read", "[rib][condition]") {
+    // RenderMan for Maya binds materials through such blocks ("shader_bindingstrength"), and
+    // picks light rigs and passes by user options.
     Diagnostics diagnostics(false);
-    Scene scene = parseRib("WorldBegin\nIfBegin \"!defined(RMSPROJ_FROM_ENV)\"\n  Sphere 1 -1 1 360\n"
-                           "ElseIf \"$user:pass == 'shadow'\"\n  Disk 0 1 360\n"
-                           "  IfBegin \"defined(x)\"\n    Disk 0 2 360\n  IfEnd\n"
-                           "Else\n  Cone 1 1 360\nIfEnd\n"
-                           "IfBegin \"$user:x > 1\"\nElse\n  Disk 0 3 360\nIfEnd\nCylinder 1 -1 1 360\n",
-                           diagnostics, "cond.rib");
-    REQUIRE(scene.shapes.size() == 2u);
-    CHECK(dynamic_cast<Sphere const*>(scene.shapes[0].get()) != nullptr);
+    Scene scene = parseRib(
+        "Option \"user\" \"string pass\" [\"shadow\"]\nWorldBegin\n"
+        "IfBegin \"$user:pass == 'beauty'\"\n  Sphere 1 -1 1 360\n"
+        "ElseIf \"$user:pass == 'shadow'\"\n  Disk 0 1 360\n"
+        "  IfBegin \"defined(user:nothing)\"\n    Disk 0 2 360\n  IfEnd\n"
+        "Else\n  Cone 1 1 360\nIfEnd\n"
+        "AttributeBegin\n  Attribute \"user\" \"int shader_bindingstrength\" [1]\n"
+        "  IfBegin \"!defined(user:shader_bindingstrength) || $user:shader_bindingstrength <= 0\"\n"
+        "    Sphere 2 -2 2 360\n  Else\n    Cylinder 1 -1 1 360\n  IfEnd\nAttributeEnd\n"
+        // The attribute ended with its block.
+        "IfBegin \"!defined(user:shader_bindingstrength)\"\n  Paraboloid 1 0 1 360\nIfEnd\n"
+        // A skipped block's conditions are not read, so this one is not warned about.
+        "IfBegin \"0\"\n  IfBegin \"$$$\"\n  IfEnd\nIfEnd\n"
+        // One that cannot be read is taken to hold, as files were read before conditions were.
+        "IfBegin \"$user:pass ==\"\n  Hyperboloid 1 0 0 1 1 1 360\nElseIf \"1\"\n  Sphere 1 -1 1 "
+        "360\nIfEnd\n",
+        diagnostics, "cond.rib");
+    REQUIRE(scene.shapes.size() == 4u);
+    CHECK(dynamic_cast<Disk const*>(scene.shapes[0].get()) != nullptr);
     CHECK(dynamic_cast<Cylinder const*>(scene.shapes[1].get()) != nullptr);
-    CHECK(test::warningsContaining(diagnostics, "cond.rib:2:1: IfBegin \"!defined(RMSPROJ_FROM_ENV)\": conditions are not "
-                                                "evaluated here") == 1);
+    CHECK(dynamic_cast<Paraboloid const*>(scene.shapes[2].get()) != nullptr);
+    CHECK(dynamic_cast<Hyperboloid const*>(scene.shapes[3].get()) != nullptr);
+    CHECK(test::warningsContaining(diagnostics,
+                                   "cond.rib:28:1: IfBegin/ElseIf \"$user:pass ==\": a value is missing "
+                                   "at the end (at character 14); the condition is taken to hold") == 1);
     CHECK(test::warningsContaining(diagnostics, "") == 1);
     CHECK_THAT(ribErrorOf("WorldBegin\nSphere 1 -1 1 360\nIfEnd\n"), Catch::Matchers::StartsWith("bad.rib:3:1: IfEnd without"));
-    CHECK_THAT(ribErrorOf("WorldBegin\nElse\n"), Catch::Matchers::StartsWith("bad.rib:2:1: ElseIf/Else without"));
+    CHECK_THAT(ribErrorOf("WorldBegin\nElse\n"), Catch::Matchers::StartsWith("bad.rib:2:1: Else without"));
+    CHECK_THAT(ribErrorOf("WorldBegin\nElseIf \"1\"\n"),
+               Catch::Matchers::StartsWith("bad.rib:2:1: ElseIf without"));
+
+    SECTION("the frame number, and a branch after Else") {
+        Diagnostics frames(false);
+        Scene framed = parseRib(
+            "FrameBegin 3\nWorldBegin\nIfBegin \"$Frame == 3\"\n  Sphere 1 -1 1 360\n"
+            "Else\n  Disk 0 1 360\nElseIf \"1\"\n  Cone 1 1 360\nIfEnd\nWorldEnd\nFrameEnd\n",
+            frames, "frames.rib");
+        REQUIRE(framed.shapes.size() == 1u);
+        CHECK(dynamic_cast<Sphere const*>(framed.shapes[0].get()) != nullptr);
+        CHECK(test::warningsContaining(frames,
+                                       "frames.rib:7:1: ElseIf after Else: its branch is never read") == 1);
+    }
+}
+
+TEST_CASE("conditions: values, comparisons, defined() and regular expressions", "[rib][condition]") {
+    std::map<std::string, std::string> const variables = {
+        {"user:pass", "beauty"}, {"user:strength", "0"}, {"user:count", "9"}, {"RMSTREE", "/opt/rfm"}};
+    VariableLookup const lookup = [&](std::string const& name) -> std::optional<std::string> {
+        auto found = variables.find(name);
+        if (found == variables.end()) return std::nullopt;
+        return found->second;
+    };
+    auto holds = [&](std::string const& condition) { return evaluateCondition(condition, lookup); };
+    CHECK(holds("1"));
+    CHECK_FALSE(holds("0"));
+    CHECK_FALSE(holds("''"));
+    CHECK(holds("'beauty' == 'beauty'"));
+    CHECK(holds("$user:pass == 'beauty'"));
+    CHECK(holds("${user:pass} == \"beauty\""));
+    CHECK_FALSE(holds("$user:pass != 'beauty'"));
+    CHECK(holds("$user:nothing == ''"));  // not set: empty
+    CHECK_FALSE(holds("defined(user:nothing)"));
+    CHECK(holds("defined(RMSTREE) && !defined(RMSPROJ_FROM_ENV)"));
+    CHECK(holds("defined($RMSTREE)"));
+    // Numbers compare as numbers (as text "9" would come after "10"), other values as text.
+    CHECK(holds("$user:count < 10"));
+    CHECK(holds("$user:count >= 9.0"));
+    CHECK(holds("'abc' < 'abd'"));
+    CHECK(holds("!defined(user:strength) || $user:strength <= 0"));
+    CHECK_FALSE(holds("!defined(user:strength) || $user:strength > 0"));
+    // ! binds after the comparison it stands before, && before ||.
+    CHECK(holds("!$user:pass == 'shadow'"));
+    CHECK(holds("1 || 0 && 0"));
+    CHECK_FALSE(holds("(1 || 0) && 0"));
+    CHECK(holds("!(1 && 0)"));
+    CHECK(holds("$user:pass =~ '^bea'"));
+    CHECK_FALSE(holds("$user:pass =~ 'x$'"));
+    CHECK(holds("$RMSTREE =~ '/(opt|usr)/'"));
+    // A pattern that backtracking matchers take exponential time over.
+    CHECK_FALSE(holds("'aaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaa' =~ '(a*)*b'"));
+
+    auto errorOf = [&](std::string const& condition) -> ConditionError {
+        try {
+            evaluateCondition(condition, lookup);
+        } catch (ConditionError const& e) {
+            return e;
+        }
+        return {std::string::npos, "no error"};
+    };
+    CHECK(errorOf("$user:pass ==").offset == 13);
+    CHECK(errorOf("'beauty").message == "this string has no closing quote");
+    CHECK(errorOf("1 1").message == "unexpected '1'");
+    CHECK(errorOf("(1").message == "')' expected");
+    CHECK(errorOf("beauty").offset == 0);
+    CHECK(errorOf("$user:pass =~ '('").message == "'(' is not a regular expression");
+    CHECK(errorOf("$user:pass =~ '('").offset == 14);
+    CHECK(errorOf("${user:pass").message == "'${' has no closing '}'");
+    CHECK(errorOf("defined()").message == "a variable's name is expected here");
 }
 
 TEST_CASE("what 1990s RIB files write: mpoint, a standard name as a shader's own, blobby leaves, numbered objects",

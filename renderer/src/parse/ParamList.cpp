@@ -148,6 +148,14 @@ size_t Param::count() const {
     return floats.size() / static_cast<size_t>(componentsOf(decl.type));
 }
 
+std::optional<std::string> Param::firstValueText() const {
+    if (!strings.empty()) return strings.front();
+    if (floats.empty()) return std::nullopt;
+    std::ostringstream number;
+    number << floats.front();
+    return number.str();
+}
+
 namespace {
 
 /// A parameter the renderer makes itself (no source location): its name and type, values to come.

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <functional>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -69,6 +70,9 @@ struct Param {
     std::string const& name() const { return decl.name; }
     /// Number of items (values / components).
     size_t count() const;
+    /// The first value as text (a number as a stream prints it), as variables
+    /// hold values; nothing when there is no value.
+    std::optional<std::string> firstValueText() const;
 };
 
 /// A "color <name>" parameter made by the renderer itself (no source location).

@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <filesystem>
 
+#include "core/Variables.h"
 #include "parse/RequestNames.h"
+#include "parse/RibCondition.h"
 #include "parse/RibParser.h"
 #include "parse/ZipMember.h"
 #include "scene/PatternReach.h"
@@ -23,7 +25,7 @@ std::map<std::string, SceneBuilder::Handler> const& SceneBuilder::handlers() {
         // Options, camera, frames.
         {"version", &SceneBuilder::ignore},
         {"IfBegin", &SceneBuilder::ifBegin},
-        {"ElseIf", &SceneBuilder::elseBranch},
+        {"ElseIf", &SceneBuilder::elseIf},
         {"Else", &SceneBuilder::elseBranch},
         {"IfEnd", &SceneBuilder::ifEnd},
         {"Display", &SceneBuilder::display},
@@ -158,9 +160,10 @@ void SceneBuilder::readText(std::string const& text, std::string const& fileName
 void SceneBuilder::finishInput(std::string const& name) {
     if (m_keptFrame) static_cast<SceneOptions&>(m_scene) = m_keptOptions;
     if (m_recording) m_diagnostics.warn(name + ": " + m_recordingEnd + " missing at the end of the file");
-    if (!m_conditionReading.empty()) {
-        m_diagnostics.warn(name + ": " + std::to_string(m_conditionReading.size()) + " IfBegin left open at the end of the file");
-        m_conditionReading.clear();
+    if (!m_conditions.empty()) {
+        m_diagnostics.warn(name + ": " + std::to_string(m_conditions.size()) +
+                           " IfBegin left open at the end of the file");
+        m_conditions.clear();
     }
     if (!m_blocks.empty())
         m_diagnostics.warn(name + ": " + std::to_string(m_blocks.size()) +
@@ -215,7 +218,7 @@ void SceneBuilder::handle(RibRequest const& request) {
     // A branch of conditional RIB that is not read: only its nesting counts.
     bool const conditional = request.name == "IfBegin" || request.name == "ElseIf" || request.name == "Else" ||
                              request.name == "IfEnd";
-    if (!conditional && !m_conditionReading.empty() && !m_conditionReading.back()) return;
+    if (!conditional && !m_conditions.empty() && !m_conditions.back().reading) return;
     // A motion block holds one request per time sample: the first one is used.
     if (m_motionSamples > 0 && request.name != "MotionEnd" && m_motionSeen++ > 0) return;
     // The camera and image are fixed at WorldBegin (RenderMan reports these as
@@ -298,26 +301,65 @@ std::string SceneBuilder::unknownRequestMessage(std::string const& name) {
 }
 
 void SceneBuilder::ifBegin(RequestReader& in) {
-    std::string condition = in.string("condition");
+    std::string const condition = in.string("condition");
     in.finish();
-    bool const outerRead = m_conditionReading.empty() || m_conditionReading.back();
-    if (outerRead)
-        warnOnce("conditional RIB", in.where(),
-                 "IfBegin \"" + condition + "\": conditions are not evaluated here; the first branch is read as if " +
-                     "it held and any ElseIf/Else branch is skipped");
-    m_conditionReading.push_back(outerRead);
+    bool const enclosingRead = m_conditions.empty() || m_conditions.back().reading;
+    // A skipped part's conditions are not evaluated: only its nesting counts.
+    bool const holds = enclosingRead && conditionHolds(condition, in.where());
+    m_conditions.push_back({enclosingRead, holds, holds, false});
+}
+
+void SceneBuilder::elseIf(RequestReader& in) {
+    std::string const condition = in.string("condition");
+    in.finish();
+    if (m_conditions.empty()) throw RibError(in.where(), "ElseIf without an IfBegin");
+    ConditionBlock& block = m_conditions.back();
+    if (block.elseSeen)
+        warnOnce("ElseIf after Else", in.where(), "ElseIf after Else: its branch is never read");
+    block.reading =
+        block.enclosingRead && !block.branchTaken && !block.elseSeen && conditionHolds(condition, in.where());
+    block.branchTaken = block.branchTaken || block.reading;
 }
 
 void SceneBuilder::elseBranch(RequestReader& in) {
-    in.skipRemaining();
-    if (m_conditionReading.empty()) throw RibError(in.where(), "ElseIf/Else without an IfBegin");
-    m_conditionReading.back() = false;  // the first branch was taken (or the whole block is skipped)
+    in.finish();
+    if (m_conditions.empty()) throw RibError(in.where(), "Else without an IfBegin");
+    ConditionBlock& block = m_conditions.back();
+    if (block.elseSeen)
+        warnOnce("second Else", in.where(), "a second Else in one IfBegin block: its branch is never read");
+    block.reading = block.enclosingRead && !block.branchTaken && !block.elseSeen;
+    block.branchTaken = true;
+    block.elseSeen = true;
 }
 
 void SceneBuilder::ifEnd(RequestReader& in) {
     in.finish();
-    if (m_conditionReading.empty()) throw RibError(in.where(), "IfEnd without an IfBegin");
-    m_conditionReading.pop_back();
+    if (m_conditions.empty()) throw RibError(in.where(), "IfEnd without an IfBegin");
+    m_conditions.pop_back();
+}
+
+bool SceneBuilder::conditionHolds(std::string const& condition, SourceLocation const& where) {
+    try {
+        return evaluateCondition(condition, [this](std::string const& name) { return variable(name); });
+    } catch (ConditionError const& e) {
+        warnOnce("unreadable condition " + condition, where,
+                 "IfBegin/ElseIf \"" + condition + "\": " + e.message + " (at character " +
+                     std::to_string(e.offset + 1) + "); the condition is taken to hold");
+        return true;
+    }
+}
+
+std::optional<std::string> SceneBuilder::variable(std::string const& name) const {
+    bool const userClass = name.rfind("user:", 0) == 0;
+    std::string const bare = userClass ? name.substr(5) : name;
+    if (userClass) {
+        Attributes const& attributes = m_attributes.back();
+        if (auto found = attributes.user.find(bare); found != attributes.user.end()) return found->second;
+    }
+    if (auto found = m_userOptions.find(bare); found != m_userOptions.end()) return found->second;
+    if (userClass) return std::nullopt;
+    if (name == "Frame" && m_frameNumber >= 0) return std::to_string(m_frameNumber);
+    return environmentVariable(name);
 }
 
 void SceneBuilder::finishFrame() {

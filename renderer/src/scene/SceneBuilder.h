@@ -66,6 +66,7 @@ private:
         std::array<float, 8> textureCoordinates{{0, 0, 1, 0, 0, 1, 1, 1}};
         SplineBasis uBasis = SplineBasis::bezier(), vBasis = SplineBasis::bezier();
         std::map<std::string, Mat4> scopedSpaces;  ///< ScopedCoordinateSystem
+        std::map<std::string, std::string> user;   ///< Attribute "user" values, which conditions read
         /// A classic Surface shader in effect (when no Bxdf is): its name and parameters.
         std::shared_ptr<MaterialDesc> surface;
         /// An AreaLightSource (or PxrMeshLight) in effect: the shapes that follow emit its light.
@@ -125,11 +126,19 @@ private:
     static std::string unknownRequestMessage(std::string const& name);
     /// Requests that set the camera or the image, which a world block cannot change.
     static bool isCameraOption(std::string const& name);
-    // Conditional RIB (IfBegin / ElseIf / Else / IfEnd): conditions are not
-    // evaluated; the first branch is read as if it held, the others skipped.
+    // Conditional RIB (IfBegin / ElseIf / Else / IfEnd): the first branch whose
+    // condition holds is read, the others skipped.
     void ifBegin(RequestReader& in);
+    void elseIf(RequestReader& in);
     void elseBranch(RequestReader& in);
     void ifEnd(RequestReader& in);
+    /// Whether an IfBegin's or ElseIf's condition holds. One that cannot be read
+    /// is warned about and taken to hold (the first branch is read, as before conditions were evaluated).
+    bool conditionHolds(std::string const& condition, SourceLocation const& where);
+    /// The value of a variable a condition or a search path names: "user:NAME" is
+    /// Attribute "user" NAME, else Option "user" NAME; a bare NAME is Option "user"
+    /// NAME, else the environment variable; "Frame" is the frame number.
+    std::optional<std::string> variable(std::string const& name) const;
     // The graphics state (scene/requests/StateRequests.cpp).
     void attributeBegin(RequestReader& in);
     void attributeEnd(RequestReader& in);
@@ -325,7 +334,7 @@ private:
     std::vector<std::string> m_fileStack;
     std::vector<std::string> m_archiveSearchPath;
     std::vector<std::string> m_proceduralSearchPath;  // where a DynamicLoad plugin would be looked for
-    std::map<std::string, std::string> m_userOptions;  // Option "user" values, for "${NAME}" in search paths
+    std::map<std::string, std::string> m_userOptions;  // Option "user" values, for "${NAME}" and conditions
     bool m_archiveMissing = false;  // an archive was not found: objects it defined may be missing too
     int m_archivesNotFound = 0;     // the first few list the places tried, the rest one line each
     std::map<std::string, int> m_defaultMaterials;
@@ -354,8 +363,14 @@ private:
         std::vector<Attributes> attributes;
     };
     std::vector<SavedFrame> m_frames;
-    /// Open IfBegin blocks, innermost last: whether each is in the branch being read.
-    std::vector<bool> m_conditionReading;
+    /// An open IfBegin block.
+    struct ConditionBlock {
+        bool enclosingRead;  ///< the block itself is in a part being read
+        bool branchTaken;    ///< one of its branches has been read (or is being read)
+        bool reading;        ///< the current branch is read
+        bool elseSeen;
+    };
+    std::vector<ConditionBlock> m_conditions;  ///< innermost last
     int m_motionSamples = 0;  ///< inside MotionBegin: how many requests the block holds per sample
     int m_motionSeen = 0;
     /// The standard light shaders' ambientlight: light the classic shaders add as Ka * ambient.

@@ -9,6 +9,8 @@
 #include <fstream>
 #include <sstream>
 
+#include "core/Variables.h"
+
 namespace bxdflab {
 namespace fs = std::filesystem;
 
@@ -20,50 +22,20 @@ std::vector<std::string> splitSearchPath(std::string const& colonSeparated) {
     return parts;
 }
 
-namespace {
-
-/// ${NAME} and $NAME replaced by the environment variable's value (empty when unset),
-/// as RenderMan's ini files write ${RMANTREE}.
-std::string expandVariables(std::string const& text) {
-    std::string out;
-    for (size_t i = 0; i < text.size();) {
-        if (text[i] != '$') {
-            out += text[i++];
-            continue;
-        }
-        size_t start = i + 1, end = start;
-        bool braced = start < text.size() && text[start] == '{';
-        if (braced) {
-            end = text.find('}', start);
-            if (end == std::string::npos) {
-                out += text.substr(i);
-                break;
-            }
-            ++start;
-        } else {
-            while (end < text.size() && (std::isalnum(static_cast<unsigned char>(text[end])) || text[end] == '_')) ++end;
-        }
-        std::string name = text.substr(start, end - start);
-        if (char const* value = std::getenv(name.c_str())) out += value;
-        i = braced ? end + 1 : end;
-    }
-    return out;
-}
-
-}  // namespace
-
 std::vector<std::string> readIniPluginPath(std::string const& iniFile) {
     std::ifstream in(iniFile);
     if (!in) return {};
     std::vector<std::string> folders;
     fs::path base = fs::path(iniFile).parent_path();
+    // As RenderMan's ini files write ${RMANTREE}: an unset variable is empty.
+    auto unsetIsEmpty = [](std::string const& name) { return environmentVariable(name).value_or(""); };
     for (std::string line; std::getline(in, line);) {
         std::istringstream words(line);
         std::string key, value;
         if (!(words >> key) || key[0] == '#') continue;
         if (key != "/standardrixpluginpath") continue;
         std::getline(words >> std::ws, value);
-        for (std::string const& item : splitSearchPath(expandVariables(value))) {
+        for (std::string const& item : splitSearchPath(expandVariables(value, unsetIsEmpty))) {
             if (item == "@" || item == "&") continue;  // RenderMan's "the default" and "the path so far"
             fs::path path(item);
             folders.push_back(path.is_relative() ? (base / path).lexically_normal().string() : item);

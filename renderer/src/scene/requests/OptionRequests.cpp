@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "core/PixelFilter.h"
+#include "core/Variables.h"
 #include "scene/SceneBuilder.h"
 
 namespace bxdflab {
@@ -17,47 +18,6 @@ namespace fs = std::filesystem;
 namespace {
 constexpr int kMaxResolution = 16384;
 constexpr int kMaxSamplesPerPixel = 1 << 20;  // as rixrender --spp
-
-/// `text` with "${NAME}" and "$NAME" replaced by the value of Option "user"
-/// "NAME" (also written "user:NAME"), else of the environment variable NAME;
-/// a name with neither is left as it is. RenderMan substitutes search paths
-/// this way ("${RMSPROJ}" in RenderMan for Maya's exports).
-std::string expandVariables(std::string const& text, std::map<std::string, std::string> const& user) {
-    std::string out;
-    for (size_t i = 0; i < text.size();) {
-        if (text[i] != '$' || i + 1 >= text.size()) {
-            out += text[i++];
-            continue;
-        }
-        bool const braced = text[i + 1] == '{';
-        size_t const start = i + (braced ? 2 : 1);
-        size_t end = start;
-        auto isNameChar = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
-        if (braced) {
-            end = text.find('}', start);
-            if (end == std::string::npos) {
-                out += text.substr(i);
-                break;
-            }
-        } else {
-            while (end < text.size() && isNameChar(text[end])) ++end;
-            if (text.compare(start, end - start, "user") == 0 && end < text.size() && text[end] == ':')
-                for (++end; end < text.size() && isNameChar(text[end]);) ++end;
-        }
-        std::string name = text.substr(start, end - start);
-        size_t const next = braced ? end + 1 : end;
-        std::string const bare = name.rfind("user:", 0) == 0 ? name.substr(5) : name;
-        if (auto found = user.find(bare); found != user.end()) {
-            out += found->second;
-        } else if (char const* value = std::getenv(bare.c_str()); value && !name.empty()) {
-            out += value;
-        } else {
-            out += text.substr(i, next - i);
-        }
-        i = next;
-    }
-    return out;
-}
 
 std::vector<std::string> splitPath(std::string const& list) {
     std::vector<std::string> parts;
@@ -310,16 +270,10 @@ void SceneBuilder::option(RequestReader& in) {
     std::string category = in.string("option name");
     ParamList params = in.params();
     if (category == "user") {
-        // Values a scene names in its search paths ("${RMSPROJ}").
+        // Values a scene names in its search paths ("${RMSPROJ}") and conditions.
         for (Param const& p : params.all()) {
             p.used = true;
-            if (!p.strings.empty())
-                m_userOptions[p.name()] = p.strings.front();
-            else if (!p.floats.empty()) {
-                std::ostringstream number;
-                number << p.floats.front();
-                m_userOptions[p.name()] = number.str();
-            }
+            if (std::optional<std::string> value = p.firstValueText()) m_userOptions[p.name()] = *value;
         }
         return;
     }
@@ -334,7 +288,9 @@ void SceneBuilder::option(RequestReader& in) {
     auto update = [&](std::vector<std::string>& list, std::string const& key) {
         Param const* p = params.take(key);
         if (!p) return;
-        std::string value = expandVariables(params.getString(key, ""), m_userOptions);
+        // "${RMSPROJ}" (RenderMan for Maya's exports) is read as a condition reads it.
+        std::string value = expandVariables(params.getString(key, ""),
+                                            [this](std::string const& name) { return variable(name); });
         std::vector<std::string> previous = list;
         list.clear();
         // A folder is searched once, where it first appears: "&" twice (or repeated

@@ -191,6 +191,12 @@ void SceneBuilder::attribute(RequestReader& in) {
         // here all opaque ones.
         Param const* casts = params.take("casts_shadows");
         if (!casts->strings.empty()) state().visibility.transmission = casts->strings[0] != "none";
+    } else if (category == "user") {
+        // Values conditions read ("$user:shader_bindingstrength"); they last to the block's end.
+        for (Param const& p : params.all()) {
+            p.used = true;
+            if (std::optional<std::string> value = p.firstValueText()) state().user[p.name()] = *value;
+        }
     } else if (category == "identifier") {
         if (Param const* name = params.take("name")) state().name = name->strings.empty() ? state().name : name->strings[0];
         for (auto const& p : params.all()) p.used = true;  // shadinggroup, id: labels only
