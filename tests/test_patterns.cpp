@@ -74,6 +74,30 @@ TEST_CASE("a connected parameter takes the pattern's value at every point", "[pa
             CHECK(r.channel(4, y, 1) == Approx(pixelU(4)).margin(0.02));
         }
     }
+    SECTION(
+        "PxrManifold2D reads s from the primvar primvarS names; a name the surface lacks leaves t as it is") {
+        std::string const polygon =
+            "Polygon \"P\" [-1 -1 0  1 -1 0  1 1 0  -1 1 0] \"varying float mapS\" [1 0 0 1]\n";
+        auto plain =
+            test::renderRib(kHead +
+                                "Pattern \"PxrManifold2D\" \"m\"\n"
+                                "Bxdf \"PxrConstant\" \"c\" \"reference color emitColor\" [\"m:result\"]\n" +
+                                polygon,
+                            fewSamples());
+        auto mapped =
+            test::renderRib(kHead +
+                                "Pattern \"PxrManifold2D\" \"m\" \"string primvarS\" [\"mapS\"] "
+                                "\"string primvarT\" [\"noSuchPrimvar\"]\n"
+                                "Bxdf \"PxrConstant\" \"c\" \"reference color emitColor\" [\"m:result\"]\n" +
+                                polygon,
+                            fewSamples());
+        CHECK_FALSE(mapped.anyMessageContains("has no parameter"));
+        for (int x : {1, 8, 14})
+            for (int y : {2, 13}) {
+                CHECK(mapped.channel(x, y, 0) == Approx(1.0f - pixelU(x)).margin(0.02));
+                CHECK(mapped.channel(x, y, 1) == Approx(plain.channel(x, y, 1)).margin(1e-6));
+            }
+    }
 }
 
 TEST_CASE("patterns run only for the parameters asked for, each once per batch", "[patterns]") {
@@ -142,6 +166,22 @@ TEST_CASE("PxrTexture reads what OpenImageIO's texture system reads, a missing f
                                  fewSamples());
         CHECK(r.channel(8, 1, 1) < 0.15f);   // the top of the square (v near 1) shows the image's top row
         CHECK(r.channel(8, 14, 1) > 0.85f);
+    }
+    SECTION("blur widens the filter; lerp, filter and atlasStyle 0 are read as RenderMan writes them") {
+        std::string const texture =
+            "Pattern \"PxrTexture\" \"t\" \"string filename\" [\"" + file +
+            "\"] \"int invertT\" [0] \"int lerp\" [1] \"int filter\" [1] \"int atlasStyle\" [0]";
+        std::string const shaded =
+            "Bxdf \"PxrConstant\" \"c\" \"reference color emitColor\" [\"t:resultRGB\"]\n" + kSquare;
+        auto sharp = test::renderRib(kHead + texture + "\n" + shaded, fewSamples());
+        auto blurred = test::renderRib(kHead + texture + " \"float blur\" [0.5]\n" + shaded, fewSamples());
+        CHECK_FALSE(sharp.anyMessageContains("has no parameter"));
+        // Blurred over half the image, the ramp's ends move towards its mean (0.5); its middle stays.
+        for (int x : {0, 15})
+            CHECK(std::fabs(blurred.channel(x, 8, 0) - 0.5f) <
+                  std::fabs(sharp.channel(x, 8, 0) - 0.5f) - 0.2f);
+        CHECK(blurred.channel(8, 8, 0) == Approx(sharp.channel(8, 8, 0)).margin(0.02));
+        CHECK(blurred.channel(8, 8, 2) == Approx(0.25f).margin(1e-3));
     }
     SECTION("a file that does not exist") {
         auto r = test::renderRib(kHead + "Pattern \"PxrTexture\" \"t\" \"string filename\" [\"no/such/maple.tx\"] "

@@ -5,46 +5,6 @@
 
 namespace stockpatterns {
 
-/// The six rows that say how a bump pattern reads its image, written in its
-/// parameter table in this order (its enum must follow the same order).
-#define STOCK_PATTERN_IMAGE_READING_PARAMS                                                                \
-    RixSCParamInfo(RtUString("firstChannel"), k_RixSCInteger),                                            \
-        RixSCParamInfo(RtUString("atlasStyle"), k_RixSCInteger),                                          \
-        RixSCParamInfo(RtUString("invertT"), k_RixSCInteger),                                             \
-        RixSCParamInfo(RtUString("blur"), k_RixSCFloat), /* widens the filter, in texture units */        \
-        RixSCParamInfo(RtUString("lerp"), k_RixSCInteger), /* lerp, filter: the texture system's choice */ \
-        RixSCParamInfo(RtUString("filter"), k_RixSCInteger)
-
-/// How to read the image, from those rows (the first at `firstRow`).
-struct ImageReading {
-    RixTexture::TxParams lookup;
-    bool invertT;
-    float blur;
-};
-
-/// The rows' values, with one warning where an atlas (a UDIM set) is asked
-/// for: `filename` is then read as one image.
-inline ImageReading imageReading(RixShadingContext const* sCtx, int firstRow, char const* pattern,
-                                 RtUString filename) {
-    RtInt const zero = 0, one = 1;
-    RtFloat const sharp = 0.0f;
-    RtInt const *firstChannel, *atlasStyle, *invertT;
-    RtFloat const* blur;
-    sCtx->EvalParam(firstRow, -1, &firstChannel, &zero);
-    sCtx->EvalParam(firstRow + 1, -1, &atlasStyle, &zero);
-    sCtx->EvalParam(firstRow + 2, -1, &invertT, &one);
-    sCtx->EvalParam(firstRow + 3, -1, &blur, &sharp);
-    if (*atlasStyle != 0)
-        if (auto* messages = static_cast<RixMessages*>(sCtx->GetRixInterface(k_RixMessages)))
-            messages->Warning("%s: texture atlases (atlasStyle %d) are not read here; \"%s\" is read as one image",
-                              pattern, *atlasStyle, filename.CStr());
-    ImageReading reading;
-    reading.lookup.firstChannel = *firstChannel;
-    reading.invertT = *invertT != 0;
-    reading.blur = *blur > 0.0f ? *blur : 0.0f;
-    return reading;
-}
-
 /// A pattern whose one output, resultN, is a bent normal per point. Its
 /// ComputeOutputParams starts every point at the surface's own normal and
 /// hands the points to bend(), which bends the ones it can.

@@ -8,6 +8,10 @@
 //   Pattern "PxrManifold2D" "place" "float scaleS" [4] "float scaleT" [4]
 //   Pattern "PxrTexture" "tex" "string filename" ["maple.tx"] "reference struct manifold" ["place:result"]
 //
+// primvarS and primvarT name float primvars to read in place of s and t (a
+// second set of texture coordinates, say); a name the surface does not carry
+// leaves s or t as it is.
+//
 // RenderMan's manifold is a struct (a point Q and its filter radius); here it
 // travels as one point: (s', t', filter width in s't' units).
 #include <cmath>
@@ -18,16 +22,18 @@ namespace {
 
 class PxrManifold2D : public stockpatterns::StockPattern {
 public:
-    enum { k_angle, k_scaleS, k_scaleT, k_offsetS, k_offsetT, k_invertT, k_result };
+    enum { k_angle, k_scaleS, k_scaleT, k_offsetS, k_offsetT, k_invertT, k_primvarS, k_primvarT, k_result };
 
     RixSCParamInfo const* GetParamTable() override {
         static RixSCParamInfo table[] = {
-            RixSCParamInfo(RtUString("angle"), k_RixSCFloat),    // degrees, counter-clockwise
-            RixSCParamInfo(RtUString("scaleS"), k_RixSCFloat),   // repeats across s
+            RixSCParamInfo(RtUString("angle"), k_RixSCFloat),   // degrees, counter-clockwise
+            RixSCParamInfo(RtUString("scaleS"), k_RixSCFloat),  // repeats across s
             RixSCParamInfo(RtUString("scaleT"), k_RixSCFloat),
             RixSCParamInfo(RtUString("offsetS"), k_RixSCFloat),
             RixSCParamInfo(RtUString("offsetT"), k_RixSCFloat),
             RixSCParamInfo(RtUString("invertT"), k_RixSCInteger),  // 1: use 1 - t
+            RixSCParamInfo(RtUString("primvarS"), k_RixSCString),  // "": the surface's s
+            RixSCParamInfo(RtUString("primvarT"), k_RixSCString),
             RixSCParamInfo(RtUString("result"), k_RixSCPoint, k_RixSCOutput),
             RixSCParamInfo()};
         return table;
@@ -50,7 +56,9 @@ public:
         OutputSpecification* out = pool.AllocForPattern<OutputSpecification>(1);
         int count = 0;
         RtPoint3* result = stockpatterns::addVaryingOutput<RtPoint3>(sCtx, out, count, k_result);
-        RtPoint3 const* st = stockpatterns::stManifold(sCtx);
+        RtPoint3* st = stockpatterns::stManifold(sCtx);
+        readCoordinate(sCtx, k_primvarS, st, &RtPoint3::x);
+        readCoordinate(sCtx, k_primvarT, st, &RtPoint3::y);
         for (int i = 0; i < sCtx->numPts; ++i) {
             float s = st[i].x, t = invertT[i] ? 1.0f - st[i].y : st[i].y;
             float radians = angle[i] * 3.14159265f / 180.0f;
@@ -63,6 +71,20 @@ public:
         *numOutputs = count;
         *outputs = out;
         return 0;
+    }
+
+private:
+    /// Replaces one coordinate of `st` by the float primvar the string parameter `id` names, if the surface
+    /// has it.
+    static void readCoordinate(RixShadingContext const* sCtx, int id, RtPoint3* st,
+                               float RtPoint3::*coordinate) {
+        RtUString const noName;
+        RtUString const* name;
+        sCtx->EvalParam(id, -1, &name, &noName);
+        if (name->Empty()) return;
+        RtFloat const* values;
+        if (sCtx->GetPrimVar(*name, &values) == k_RixSCInvalidDetail) return;
+        for (int i = 0; i < sCtx->numPts; ++i) st[i].*coordinate = values[i];
     }
 };
 

@@ -7,9 +7,10 @@
 //
 // Coordinates come from a connected manifold (PxrManifold2D) or else from the
 // surface's s and t. With invertT (on by default, as in RenderMan) t runs up
-// the image: t = 0 is its bottom row. "linearize" undoes the sRGB encoding of
-// 8-bit images made for display, so the colours are the reflectances meant.
-// A file that cannot be read gives missingColor (magenta) and one warning.
+// the image: t = 0 is its bottom row; blur widens the filter (in texture
+// units). "linearize" undoes the sRGB encoding of 8-bit images made for
+// display, so the colours are the reflectances meant. A file that cannot be
+// read gives missingColor (magenta) and one warning.
 #include <cmath>
 
 #include "PatternHelpers.h"
@@ -21,15 +22,14 @@ float srgbToLinear(float c) { return c <= 0.04045f ? c / 12.92f : std::pow((c + 
 class PxrTexture : public stockpatterns::StockPattern {
 public:
     enum {
-        k_filename, k_firstChannel, k_invertT, k_linearize, k_missingColor, k_missingAlpha, k_manifold,
-        k_resultRGB, k_resultR, k_resultG, k_resultB, k_resultA
+        k_filename, k_firstChannel, k_atlasStyle, k_invertT, k_blur, k_lerp, k_filter, k_linearize, k_missingColor,
+        k_missingAlpha, k_manifold, k_resultRGB, k_resultR, k_resultG, k_resultB, k_resultA
     };
 
     RixSCParamInfo const* GetParamTable() override {
         static RixSCParamInfo table[] = {
             RixSCParamInfo(RtUString("filename"), k_RixSCString),
-            RixSCParamInfo(RtUString("firstChannel"), k_RixSCInteger),
-            RixSCParamInfo(RtUString("invertT"), k_RixSCInteger),
+            STOCK_PATTERN_IMAGE_READING_PARAMS,
             RixSCParamInfo(RtUString("linearize"), k_RixSCInteger),
             RixSCParamInfo(RtUString("missingColor"), k_RixSCColor),
             RixSCParamInfo(RtUString("missingAlpha"), k_RixSCFloat),
@@ -47,17 +47,17 @@ public:
                             RtPointer, RixSCParamInfo const*) override {
         int const n = sCtx->numPts;
         RtUString const noFile;
-        RtInt const zero = 0, one = 1;
+        RtInt const zero = 0;
         RtColorRGB const magenta(1.0f, 0.0f, 1.0f);
         RtFloat const opaque = 1.0f;
         RtUString const* filename;
-        RtInt const *firstChannel, *invertT, *linearize;
+        RtInt const* linearize;
         RtColorRGB const* missingColor;
         RtFloat const* missingAlpha;
         // Uniform parameters: one value for the whole batch.
         sCtx->EvalParam(k_filename, -1, &filename, &noFile);
-        sCtx->EvalParam(k_firstChannel, -1, &firstChannel, &zero);
-        sCtx->EvalParam(k_invertT, -1, &invertT, &one);
+        stockpatterns::ImageReading reading =
+            stockpatterns::imageReading(sCtx, k_firstChannel, "PxrTexture", *filename);
         sCtx->EvalParam(k_linearize, -1, &linearize, &zero);
         sCtx->EvalParam(k_missingColor, -1, &missingColor, &magenta);
         sCtx->EvalParam(k_missingAlpha, -1, &missingAlpha, &opaque);
@@ -71,11 +71,10 @@ public:
         RtFloat* b = stockpatterns::addVaryingOutput<RtFloat>(sCtx, out, count, k_resultB);
         RtFloat* a = stockpatterns::addVaryingOutput<RtFloat>(sCtx, out, count, k_resultA);
 
-        RixTexture::TxParams lookup;
-        lookup.firstChannel = *firstChannel;
-        lookup.missingColor = *missingColor;
-        bool const found = stockpatterns::readTexture(sCtx, *filename, lookup, stockpatterns::manifoldOf(sCtx, k_manifold),
-                                                      n, *invertT != 0, 0.0f, rgb);
+        reading.lookup.missingColor = *missingColor;
+        bool const found = stockpatterns::readTexture(sCtx, *filename, reading.lookup,
+                                                      stockpatterns::manifoldOf(sCtx, k_manifold), n,
+                                                      reading.invertT, reading.blur, rgb);
         for (int i = 0; i < n; ++i) {
             if (found && *linearize)
                 rgb[i] = RtColorRGB(srgbToLinear(rgb[i].r), srgbToLinear(rgb[i].g), srgbToLinear(rgb[i].b));
