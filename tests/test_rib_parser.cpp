@@ -519,6 +519,40 @@ TEST_CASE("an archive named from the project folder is found from the scene's an
     CHECK(test::warningsContaining(missing, (fs::absolute(project).lexically_normal() / "rib" / "absent.rib").string()) == 1);
 }
 
+TEST_CASE("an archive's name may name variables, as RenderMan for Maya's material presets write",
+          "[rib][condition]") {
+    // materialSample.rib reads "${MATDIR}/m_shading.rib", MATDIR set by the preset browser.
+    namespace fs = std::filesystem;
+    fs::path const folder = fs::path(test::outputDir()) / "archive-variables";
+    fs::create_directories(folder / "material");
+    std::ofstream(folder / "material" / "m_shading.rib") << "Sphere 1 -1 1 360\n";
+    Diagnostics diagnostics(false);
+    Scene scene = parseRib("Option \"user\" \"string MATDIR\" [\"" + (folder / "material").string() +
+                               "\"]\nWorldBegin\nReadArchive \"${MATDIR}/m_shading.rib\"\n"
+                               "ReadArchive \"$user:MATDIR/m_shading.rib\"\nWorldEnd\n",
+                           diagnostics, "preset.rib");
+    CHECK(scene.shapes.size() == 2u);
+    CHECK(test::warningsContaining(diagnostics, "") == 0);
+}
+
+TEST_CASE(
+    "an empty array (\"int[0] utilityPattern\" [], as RenderMan for Maya writes) is a parameter without "
+    "values",
+    "[rib]") {
+    Diagnostics diagnostics(false);
+    Scene scene = parseRib(
+        "WorldBegin\nBxdf \"PxrDiffuse\" \"d\" \"color diffuseColor\" [0.5 0.5 0.5] "
+        "\"int[0] utilityPattern\" [] \"string[0] names\" []\nSphere 1 -1 1 360\nWorldEnd\n",
+        diagnostics);
+    CHECK(scene.shapes.size() == 1u);
+    CHECK_THAT(ribErrorOf("WorldBegin\nBxdf \"PxrDiffuse\" \"d\" \"int[0] utilityPattern\" [1 2]\n"),
+               Catch::Matchers::StartsWith(
+                   "bad.rib:2:47: Bxdf: parameter \"utilityPattern\" is declared as an array of 0 "
+                   "but has an array of 2 numbers"));
+    CHECK_THAT(ribErrorOf("WorldBegin\nBxdf \"PxrDiffuse\" \"d\" \"int[-1] x\" []\n"),
+               Catch::Matchers::Contains("array length must not be negative in 'int[-1]'"));
+}
+
 TEST_CASE("an archive rendered as a scene is named as the archive, also when its shapes come from an archive it reads",
           "[rib]") {
     // A student project's bottle.rib reads bottle_geometry.rib outside any world: bottle.rib is the

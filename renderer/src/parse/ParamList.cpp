@@ -91,8 +91,9 @@ bool Declarations::parseDeclaration(std::string const& text, ParamDecl& out, std
             error = "bad array length in type '" + type + "'";
             return false;
         }
-        if (out.arraySize < 1) {
-            error = "array length must be at least 1 in '" + type + "'";
+        // 0 is an empty array: RenderMan for Maya writes PxrSurface's unused "int[0] utilityPattern" [].
+        if (out.arraySize < 0) {
+            error = "array length must not be negative in '" + type + "'";
             return false;
         }
         type = type.substr(0, bracket);

@@ -141,6 +141,14 @@ ParamList RequestReader::params() {
             param.decl.type = ParamType::Unknown;
             param.decl.untyped = true;
         }
+        if (param.decl.arraySize == 0) {
+            // An empty array ("int[0] utilityPattern" []): a parameter with no values, of any type.
+            if (!value.numbers.empty() || !value.strings.empty())
+                fail(value.where, "parameter \"" + param.name() + "\" is declared as an array of 0 but has " +
+                                      value.describe());
+            list.add(std::move(param));
+            continue;
+        }
         if (param.decl.type == ParamType::Unknown || param.decl.reference) {
             // Kept as written: an untyped name (used only if someone asks), or a connection ("node:output").
             param.strings = value.strings;

@@ -362,6 +362,10 @@ std::optional<std::string> SceneBuilder::variable(std::string const& name) const
     return environmentVariable(name);
 }
 
+std::string SceneBuilder::expanded(std::string const& text) const {
+    return expandVariables(text, [this](std::string const& name) { return variable(name); });
+}
+
 void SceneBuilder::finishFrame() {
     ++m_framesDone;
     if (m_skipWorld) return;  // read, not built

@@ -139,6 +139,8 @@ private:
     /// Attribute "user" NAME, else Option "user" NAME; a bare NAME is Option "user"
     /// NAME, else the environment variable; "Frame" is the frame number.
     std::optional<std::string> variable(std::string const& name) const;
+    /// `text` with the variables it names ("${RMSPROJ}/rib") replaced by their values (see variable()).
+    std::string expanded(std::string const& text) const;
     // The graphics state (scene/requests/StateRequests.cpp).
     void attributeBegin(RequestReader& in);
     void attributeEnd(RequestReader& in);

@@ -27,7 +27,8 @@ std::string objectHandle(RequestReader& in) {
 }  // namespace
 
 void SceneBuilder::readArchive(RequestReader& in) {
-    std::string name = in.string("archive file name");
+    // "${MATDIR}/m_shading.rib", as RenderMan for Maya's presets write.
+    std::string name = expanded(in.string("archive file name"));
     in.params().warnUnused(m_diagnostics, "ReadArchive");
     readArchiveNamed(name, in.where());
 }

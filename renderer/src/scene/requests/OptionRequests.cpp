@@ -1,15 +1,12 @@
 // Options, the camera and frames: what comes before WorldBegin, and the
 // blocks that make frames.
 #include <algorithm>
-#include <cctype>
 #include <cmath>
-#include <cstdlib>
 #include <filesystem>
 #include <map>
 #include <sstream>
 
 #include "core/PixelFilter.h"
-#include "core/Variables.h"
 #include "scene/SceneBuilder.h"
 
 namespace bxdflab {
@@ -288,9 +285,8 @@ void SceneBuilder::option(RequestReader& in) {
     auto update = [&](std::vector<std::string>& list, std::string const& key) {
         Param const* p = params.take(key);
         if (!p) return;
-        // "${RMSPROJ}" (RenderMan for Maya's exports) is read as a condition reads it.
-        std::string value = expandVariables(params.getString(key, ""),
-                                            [this](std::string const& name) { return variable(name); });
+        // "${RMSPROJ}", as RenderMan for Maya writes.
+        std::string value = expanded(params.getString(key, ""));
         std::vector<std::string> previous = list;
         list.clear();
         // A folder is searched once, where it first appears: "&" twice (or repeated
