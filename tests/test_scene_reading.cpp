@@ -236,6 +236,29 @@ TEST_CASE("Imager background and clamptoalpha, and PxrBackgroundDisplayFilter, f
     CHECK(exposed[3] == 1.0f);
     CHECK(pixel(render("Exposure 2 1"), 0) == V{6, 4, 2, 1});
     CHECK_THROWS_WITH(render("Exposure 1 0"), Catch::Matchers::Contains("test.rib:4:1: Exposure: the gamma must be more than 0"));
+    // RenderMan 21 and later write the exposure (and filter) as the image Display's parameters.
+    CHECK(pixel(render("Display \"x.exr\" \"openexr\" \"rgba\" \"float[2] exposure\" [2 1]"), 0) ==
+          V{6, 4, 2, 1});
+}
+
+TEST_CASE("the image's Display may name its pixel filter, as RenderMan for Maya 21 writes it",
+          "[rib][filter]") {
+    Diagnostics diagnostics(false);
+    Scene scene = test::parseRib(
+        "PixelFilter \"box\" 1 1\nDisplay \"shot\" \"it\" \"rgba\" \"string filter\" [\"gaussian\"] "
+        "\"float[2] filterwidth\" [3 2] \"int[4] quantize\" [0 0 0 0] \"float dither\" [0]\n"
+        "WorldBegin\nWorldEnd\n",
+        diagnostics);
+    CHECK(scene.pixelFilter.name == "gaussian");
+    CHECK(scene.pixelFilter.xwidth == 3.0f);
+    CHECK(scene.pixelFilter.ywidth == 2.0f);
+    // Without widths, the filter keeps the widths in effect; a secondary display's filter is not the image's.
+    Scene kept = test::parseRib(
+        "PixelFilter \"box\" 2 2\nDisplay \"shot\" \"it\" \"rgba\" \"string filter\" [\"triangle\"]\n"
+        "Display \"+depth\" \"it\" \"z\" \"string filter\" [\"sinc\"]\nWorldBegin\nWorldEnd\n",
+        diagnostics);
+    CHECK(kept.pixelFilter.name == "triangle");
+    CHECK(kept.pixelFilter.xwidth == 2.0f);
 }
 
 TEST_CASE("DepthOfField: a thin lens blurs a point by its circle of confusion, and keeps the focal plane sharp",

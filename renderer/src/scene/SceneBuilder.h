@@ -104,6 +104,11 @@ private:
     /// The camera's thin lens; a located error for numbers that make none.
     void setDepthOfField(float fStop, float focalLength, float focalDistance, SourceLocation const& where);
     void exposure(RequestReader& in);
+    /// Exposure's gain and gamma, checked.
+    void setExposure(float gain, float gamma, SourceLocation const& where);
+    /// What the image's Display says of its own filter and exposure (RenderMan 21 and later
+    /// write them there: "string filter", "float[2] filterwidth", "float[2] exposure").
+    void displayFilterAndExposure(ParamList const& params);
     void displayFilter(RequestReader& in);
     void integrator(RequestReader& in);
     void option(RequestReader& in);

@@ -41,6 +41,22 @@ void SceneBuilder::display(RequestReader& in) {
         name.erase(0, 1);
     }
     m_scene.display = {name, type, mode, in.where()};
+    displayFilterAndExposure(params);
+}
+
+void SceneBuilder::displayFilterAndExposure(ParamList const& params) {
+    // The driver's own settings (quantize, dither, compression, ...) are the output file's business: not
+    // read.
+    Param const* filter = params.find("filter");
+    if (filter && filter->decl.type == ParamType::String && !filter->strings.empty()) {
+        Param const* width = params.find("filterwidth");
+        bool const widthGiven = width && width->decl.type == ParamType::Float && width->floats.size() == 2;
+        setPixelFilter(filter->strings[0], widthGiven ? width->floats[0] : m_scene.pixelFilter.xwidth,
+                       widthGiven ? width->floats[1] : m_scene.pixelFilter.ywidth, filter->location);
+    }
+    Param const* exposure = params.find("exposure");
+    if (exposure && exposure->decl.type == ParamType::Float && exposure->floats.size() == 2)
+        setExposure(exposure->floats[0], exposure->floats[1], exposure->location);
 }
 
 void SceneBuilder::format(RequestReader& in) {
@@ -227,8 +243,14 @@ void SceneBuilder::exposure(RequestReader& in) {
     float const gain = in.number("gain");
     float const gamma = in.number("gamma");
     in.finish();
-    if (!(gain >= 0.0f) || !std::isfinite(gain)) in.fail(in.where(), "the gain must be 0 or more");
-    if (!(gamma > 0.0f) || !std::isfinite(gamma)) in.fail(in.where(), "the gamma must be more than 0");
+    setExposure(gain, gamma, in.where());
+}
+
+void SceneBuilder::setExposure(float gain, float gamma, SourceLocation const& where) {
+    if (!(gain >= 0.0f) || !std::isfinite(gain))
+        throw RibError(where, "Exposure: the gain must be 0 or more");
+    if (!(gamma > 0.0f) || !std::isfinite(gamma))
+        throw RibError(where, "Exposure: the gamma must be more than 0");
     m_scene.finish.exposureGain = gain;
     m_scene.finish.exposureGamma = gamma;
 }
