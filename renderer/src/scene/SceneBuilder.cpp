@@ -322,7 +322,7 @@ void SceneBuilder::elseIf(RequestReader& in) {
 }
 
 void SceneBuilder::elseBranch(RequestReader& in) {
-    in.finish();
+    in.skipRemaining();  // Else takes nothing; a stray argument is not worth stopping a file for
     if (m_conditions.empty()) throw RibError(in.where(), "Else without an IfBegin");
     ConditionBlock& block = m_conditions.back();
     if (block.elseSeen)
