@@ -787,6 +787,8 @@ TEST_CASE("conditions: values, comparisons, defined() and regular expressions", 
     CHECK(holds("$user:count < 10"));
     CHECK(holds("$user:count >= 9.0"));
     CHECK(holds("'abc' < 'abd'"));
+    CHECK_FALSE(holds("'nan' == 'inf'"));  // words, not numbers
+    CHECK(holds("'inf' == 'inf'"));
     CHECK(holds("!defined(user:strength) || $user:strength <= 0"));
     CHECK_FALSE(holds("!defined(user:strength) || $user:strength > 0"));
     // ! binds after the comparison it stands before, && before ||.

@@ -3,6 +3,7 @@
 #include <regex.h>
 
 #include <cctype>
+#include <cmath>
 #include <cstdlib>
 
 namespace bxdflab {
@@ -18,7 +19,9 @@ struct Value {
         char const* begin = text.c_str();
         char* end = nullptr;
         out = std::strtod(begin, &end);
-        return end == begin + text.size();
+        // Finite only: "nan" and "inf" are words here, and two NaNs would otherwise compare equal to
+        // anything.
+        return end == begin + text.size() && std::isfinite(out);
     }
     bool holds() const {
         double x = 0.0;
