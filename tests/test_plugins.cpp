@@ -61,6 +61,19 @@ TEST_CASE("a missing plugin names itself and every folder searched", "[plugins][
     CHECK_THAT(message, Contains("plugins/solutions"));
 }
 
+TEST_CASE("a plugin named in another case is found as a file system that ignores case finds it, with a warning",
+          "[plugins]") {
+    // Scenes written on macOS or Windows say "PXRDisney" for PxrDisney.so.
+    auto asSpelled = test::renderRib(withBxdf("Bxdf \"diffuse\" \"s\" \"color diffuseColor\" [0.7 0.7 0.7]"));
+    auto otherCase = test::renderRib(withBxdf("Bxdf \"Diffuse\" \"s\" \"color diffuseColor\" [0.7 0.7 0.7]"));
+    CHECK_FALSE(asSpelled.anyMessageContains("is spelled"));
+    CHECK(otherCase.anyMessageContains("test.rib:11:3: Bxdf plugin \"Diffuse\" is spelled \"diffuse\" on the plugin search path"));
+    for (int y = 0; y < 24; y += 3)
+        for (int x = 0; x < 24; x += 3) CHECK(otherCase.channel(x, y, 0) == asSpelled.channel(x, y, 0));
+    // Only a name that no folder has as spelled: a name that differs in more than case is still not found.
+    CHECK_THAT(renderError(withBxdf("Bxdf \"Difuse\" \"x\"")), Contains("\"Difuse\" not found"));
+}
+
 TEST_CASE("broken plugins are refused with the reason", "[plugins][errors]") {
     struct Case {
         const char* plugin;

@@ -98,6 +98,26 @@ int ShadingPlugin::paramId(std::string const& name) const {
     return -1;
 }
 
+namespace {
+std::string lowerCase(std::string text) {
+    for (char& c : text) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return text;
+}
+
+/// The plugin in `folder` whose name matches `name` but for case (the first in
+/// sorted order, so that the choice does not depend on the directory's order), or empty.
+std::string caseInsensitiveMatch(std::string const& folder, std::string const& name) {
+    std::string const wanted = lowerCase(name) + ".so";
+    std::string best;
+    std::error_code error;
+    for (auto it = fs::directory_iterator(folder, error); !error && it != fs::directory_iterator(); it.increment(error)) {
+        std::string file = it->path().filename().string();
+        if (lowerCase(file) == wanted && it->is_regular_file(error) && (best.empty() || file < best)) best = file;
+    }
+    return best.empty() ? "" : (fs::path(folder) / best).string();
+}
+}  // namespace
+
 std::string PluginLoader::locate(std::string const& name) const {
     if (name.find('/') != std::string::npos) return "";
     for (std::string const& folder : m_searchPath) {
@@ -105,6 +125,10 @@ std::string PluginLoader::locate(std::string const& name) const {
         std::error_code error;  // a name the file system rejects (too long, ...) is simply not found
         if (std::filesystem::is_regular_file(candidate, error)) return candidate.string();
     }
+    // A file system that ignores case (macOS's, Windows') finds "PXRDisney" as PxrDisney.so,
+    // so scenes written there use such names; they are found here too, with a warning from find().
+    for (std::string const& folder : m_searchPath)
+        if (std::string match = caseInsensitiveMatch(folder, name); !match.empty()) return match;
     return "";
 }
 
@@ -115,24 +139,18 @@ std::string PluginLoader::find(std::string const& name, const char* kind, Source
     if (name.find('/') != std::string::npos)
         throw RenderError(prefix + "plugin names may not contain '/': \"" + name + "\"");
     std::string found = locate(name);
-    if (!found.empty()) return found;
+    if (!found.empty()) {
+        std::string spelled = fs::path(found).stem().string();
+        if (spelled != name)
+            m_diagnostics.warn(where, std::string(kind) + " plugin \"" + name + "\" is spelled \"" + spelled +
+                                          "\" on the plugin search path: " + found +
+                                          " is used (a file system that tells case apart, as Linux's, finds it only as \"" +
+                                          spelled + "\")");
+        return found;
+    }
     std::string searched;
     for (auto const& folder : m_searchPath) searched += "\n    " + folder;
-    // A name that differs only in case (the course text's "PxrValidateBxdF") gets the right spelling.
-    std::string suggestion;
-    auto lower = [](std::string text) {
-        for (char& c : text) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-        return text;
-    };
-    std::error_code error;
-    for (auto const& folder : m_searchPath)
-        for (auto it = fs::directory_iterator(folder, error); !error && it != fs::directory_iterator(); it.increment(error)) {
-            std::string file = it->path().filename().string();
-            if (suggestion.empty() && file.size() > 3 && file.compare(file.size() - 3, 3, ".so") == 0 &&
-                lower(file.substr(0, file.size() - 3)) == lower(name))
-                suggestion = " (did you mean \"" + file.substr(0, file.size() - 3) + "\"?)";
-        }
-    throw RenderError(prefix + kind + " plugin \"" + name + "\" not found" + suggestion + ": no " + name +
+    throw RenderError(prefix + kind + " plugin \"" + name + "\" not found: no " + name +
                       ".so in any folder of the plugin search path:" + searched +
                       "\n  (add a folder with --plugin-path, $RIX_PLUGIN_PATH or Option \"searchpath\" \"string rixplugin\")");
 }

@@ -99,9 +99,11 @@ public:
     std::vector<std::string> const& searchPath() const { return m_searchPath; }
 
 private:
-    /// The file name.so in the first folder that has it; throws naming every folder tried.
+    /// The file name.so in the first folder that has it (warning when only its
+    /// case differs); throws naming every folder tried.
     std::string find(std::string const& name, const char* kind, SourceLocation const& where) const;
-    /// The same path, or empty when no folder has it.
+    /// The same path, or empty when no folder has it. A name found in no folder
+    /// as spelled is looked for again ignoring case.
     std::string locate(std::string const& name) const;
     std::vector<std::string> m_searchPath;
     Diagnostics& m_diagnostics;
