@@ -175,28 +175,28 @@ TEST_CASE("classic light shaders: pointlight, spotlight and distantlight light w
     auto uberFar = test::renderRib(
         head + "LightSource \"uberlight\" 1 \"intensity\" [25] \"falloff\" [1] \"falloffdist\" [2]\n" + matte, settings);
     CHECK(mean(uberFar) == Approx(10.0).epsilon(1e-3));
-    auto uberAway = test::renderRib(head + "AttributeBegin\nRotate 180 1 0 0\nLightSource \"uberlight\" 1 \"intensity\" [25]\nAttributeEnd\n" + matte,
+    auto uberAway = test::renderRib(head + "TransformBegin\nRotate 180 1 0 0\nLightSource \"uberlight\" 1 \"intensity\" [25]\nTransformEnd\n" + matte,
                                     settings);
     CHECK(mean(uberAway) == 0.0);
     // MTOR's l_uber numbers its light types: 1 is omni, a point light lighting every way.
-    auto omni = test::renderRib(head + "AttributeBegin\nRotate 180 1 0 0\nLightSource \"l_uber\" 1 \"intensity\" [25] "
-                                       "\"float lighttype\" [1]\nAttributeEnd\n" + matte,
+    auto omni = test::renderRib(head + "TransformBegin\nRotate 180 1 0 0\nLightSource \"l_uber\" 1 \"intensity\" [25] "
+                                       "\"float lighttype\" [1]\nTransformEnd\n" + matte,
                                 settings);
     CHECK(mean(omni) == Approx(25.0).epsilon(1e-3));
     // 3 is directional, and parallelrays makes any of them one: light along +z wherever the surface is
     // (here from 45 degrees, so the surface facing -z gets cos 45).
     for (std::string const kind : {"\"float lighttype\" [3]", "\"float parallelrays\" [1]"}) {
-        auto parallel = test::renderRib(head + "AttributeBegin\nTranslate 30 0 0\nRotate 45 0 1 0\nLightSource \"l_uber\" 1 "
-                                               "\"intensity\" [2] " + kind + "\nAttributeEnd\n" + matte,
+        auto parallel = test::renderRib(head + "TransformBegin\nTranslate 30 0 0\nRotate 45 0 1 0\nLightSource \"l_uber\" 1 "
+                                               "\"intensity\" [2] " + kind + "\nTransformEnd\n" + matte,
                                         settings);
         CHECK(mean(parallel) == Approx(2.0 * std::cos(3.14159265 / 4)).epsilon(1e-3));
     }
     // l_uber's Maya cone: coneAngle is the full angle in degrees (10: 5 degrees off the axis), a
     // surface 4 degrees off the axis is lit, one 6 degrees off is not.
     auto tilted = [&](double degrees) {
-        return mean(test::renderRib(head + "AttributeBegin\nRotate " + std::to_string(degrees) +
+        return mean(test::renderRib(head + "TransformBegin\nRotate " + std::to_string(degrees) +
                                         " 1 0 0\nLightSource \"l_uber\" 1 \"intensity\" [25] \"float coneAngle\" [10] "
-                                        "\"float penumbraAngle\" [0]\nAttributeEnd\n" + matte,
+                                        "\"float penumbraAngle\" [0]\nTransformEnd\n" + matte,
                                     settings));
     };
     CHECK(tilted(4.0) == Approx(25.0).epsilon(1e-3));
@@ -246,6 +246,47 @@ TEST_CASE("a LightSource without its handle is read as Aqsis and Pixie read it: 
                                       named);
     CHECK(withHandle.lights.empty());
     CHECK(test::warningsContaining(named, "has no handle") == 0);
+}
+
+TEST_CASE("a classic light is on the light list of the shapes after it in its attribute block", "[lights]") {
+    // RenderMan's light list is an attribute: a LightSource lights the shapes that follow it until its
+    // block ends. Lights are not linked to shapes here, so a light that any shape has on its list lights
+    // every shape, with a warning; one that no shape has lights nothing, as in RenderMan.
+    std::string const head = "Format 8 8 1\nProjection \"orthographic\"\nScreenWindow -0.01 0.01 -0.01 0.01\n"
+                             "Integrator \"PxrDirectLighting\" \"d\"\nWorldBegin\n";
+    std::string const light = "LightSource \"distantlight\" \"key\" \"intensity\" [0.7]\n";
+    std::string const wall = "Surface \"matte\"\nPolygon \"P\" [-10 -10 5  10 -10 5  10 10 5  -10 10 5]\n";
+    std::string const ball = "AttributeBegin\nTranslate 50 0 0\nSphere 0.1 -0.1 0.1 360\nAttributeEnd\n";  // out of view
+    RenderSettings settings;
+    settings.spp = 4;
+    auto mean = [](test::RenderOutcome const& r) { return test::meanChannel(r, 0, [](int, int) { return true; }); };
+
+    auto before = test::renderRib(head + light + wall + "WorldEnd\n", settings);
+    CHECK(mean(before) == Approx(0.7).epsilon(1e-3));
+    CHECK_FALSE(before.anyMessageContains("light list"));
+
+    // Given inside a block that holds no shape: off for the wall after the block, and so for every shape.
+    auto scoped = test::renderRib(head + "AttributeBegin\n" + light + "AttributeEnd\n" + wall + "WorldEnd\n", settings);
+    CHECK(mean(scoped) == 0.0);
+    CHECK(scoped.anyMessageContains("test.rib:7:1: light \"key\" is not on the light list of every shape"));
+
+    // Given after the wall, for a ball: the wall is lit too, with a warning that counts it.
+    auto after = test::renderRib(head + wall + light + ball + "WorldEnd\n", settings);
+    CHECK(mean(after) == Approx(0.7).epsilon(1e-3));
+    CHECK(after.anyMessageContains("light \"key\" is not on the light list of 1 shapes"));
+
+    // Illuminate puts a light back on the list.
+    auto back = test::renderRib(head + "AttributeBegin\n" + light + "AttributeEnd\nIlluminate \"key\" 1\n" + wall + "WorldEnd\n",
+                                settings);
+    CHECK(mean(back) == Approx(0.7).epsilon(1e-3));
+    CHECK_FALSE(back.anyMessageContains("light list"));
+
+    // A RenderMan light (Light) is not on any list: it lights every shape wherever it is given.
+    auto ris = test::renderRib(head + "AttributeBegin\nLight \"PxrDistantLight\" \"sun\" \"float intensity\" [50000] "
+                                      "\"float angleExtent\" [0]\nAttributeEnd\n" + wall + "WorldEnd\n",
+                               settings);
+    CHECK(mean(ris) > 0.1);
+    CHECK_FALSE(ris.anyMessageContains("light list"));
 }
 
 TEST_CASE("a light shader this renderer does not have is placed by its name, then by its parameters", "[lights]") {
@@ -530,8 +571,8 @@ TEST_CASE("a classic arealight gives what a point light of its intensity would, 
     CHECK(litBy(0.4) == Approx(2.0).epsilon(0.01));
     // Given as a LightSource, with no shape, it is its unit square (here scaled to 0.1), and gives the same.
     std::string const unshaped = "Format 8 8 1\nProjection \"orthographic\"\nScreenWindow -0.01 0.01 -0.01 0.01\n"
-                                 "WorldBegin\nAttributeBegin\nScale 0.1 0.1 0.1\n"
-                                 "LightSource \"arealight\" 1 \"intensity\" [50]\nAttributeEnd\n"
+                                 "WorldBegin\nTransformBegin\nScale 0.1 0.1 0.1\n"
+                                 "LightSource \"arealight\" 1 \"intensity\" [50]\nTransformEnd\n"
                                  "Surface \"matte\"\nPolygon \"P\" [-10 -10 5  10 -10 5  10 10 5  -10 10 5]\nWorldEnd\n";
     auto r = test::renderRib(unshaped, test::withSpp(64));
     CHECK(test::meanChannel(r, 0, [](int, int) { return true; }) == Approx(2.0).epsilon(0.01));
@@ -624,8 +665,8 @@ TEST_CASE("an area light shader without geometry (plausibleArealight) is a light
     // camera looks straight through the light, so the pixels would show L were the light visible.
     auto litBy = [](std::string const& placement, std::string const& parameters, std::string const& blocker = "") {
         std::string rib = "Format 8 8 1\nProjection \"orthographic\"\nScreenWindow -0.01 0.01 -0.01 0.01\nWorldBegin\n"
-                          "AttributeBegin\n" + placement + "LightSource \"plausibleArealight\" \"key\" " + parameters +
-                          "\nAttributeEnd\nSurface \"matte\"\n" + blocker +
+                          "TransformBegin\n" + placement + "LightSource \"plausibleArealight\" \"key\" " + parameters +
+                          "\nTransformEnd\nSurface \"matte\"\n" + blocker +
                           "Polygon \"P\" [-10 -10 5  10 -10 5  10 10 5  -10 10 5]\nWorldEnd\n";
         auto r = test::renderRib(rib, test::withSpp(64));
         CHECK(r.anyMessageContains("plausibleArealight\" is a shader this renderer does not have; it is rendered as a"));

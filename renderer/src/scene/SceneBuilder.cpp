@@ -405,18 +405,31 @@ void SceneBuilder::finishFrame() {
     }
     // Illuminate: a light off for every shape lights nothing and is dropped. A
     // light on for some shapes and off for others lights them all: lights are
-    // not linked to shapes here.
+    // not linked to shapes here. A classic light is off, too, for the shapes
+    // before it and after the attribute block that gave it ended.
     std::vector<std::unique_ptr<Light>> kept;
     for (auto& light : m_scene.lights) {
-        auto use = m_lightUse.find(light->handle);
-        if (use != m_lightUse.end() && use->second.shapesOn == 0) {
-            m_scene.dropped.push_back("light \"" + light->handle + "\" is turned off with Illuminate for every shape");
+        auto found = m_lightUse.find(light->handle);
+        if (found == m_lightUse.end()) {
+            kept.push_back(std::move(light));
             continue;
         }
-        if (use != m_lightUse.end() && use->second.shapesOff > 0)
-            warnOnce("light linking", {}, "light \"" + light->handle + "\" is turned off with Illuminate for " +
-                                              std::to_string(use->second.shapesOff) +
-                                              " shapes but lights them too: lights are not linked to shapes here");
+        LightUse const& use = found->second;
+        int off = use.shapesOff + use.shapesBefore;
+        std::string why = use.listed ? "not on the light list of" : "turned off with Illuminate for";
+        std::string which = use.listed ? " (before its LightSource, after the attribute block that gave it, or where "
+                                         "Illuminate turned it off)"
+                                       : "";
+        if (use.shapesOn == 0 && (off > 0 || use.illuminated)) {
+            std::string what = "light \"" + light->handle + "\" is " + why + " every shape" + which;
+            m_scene.dropped.push_back(what);
+            // Illuminate says so in so many words; a light list that ends before any shape may surprise.
+            if (use.listed) warnOnce("light list", use.where, what + ", so it lights nothing, as in RenderMan");
+            continue;
+        }
+        if (off > 0)
+            warnOnce("light linking", {}, "light \"" + light->handle + "\" is " + why + " " + std::to_string(off) +
+                                              " shapes" + which + " but lights them too: lights are not linked to shapes here");
         kept.push_back(std::move(light));
     }
     m_scene.lights = std::move(kept);

@@ -62,6 +62,9 @@ private:
         bool colorSet = false;
         bool volume = false;  ///< the Bxdf in effect is a volume's (PxrVolume): its shapes are not rendered
         std::set<std::string> lightsOff;  ///< handles turned off with Illuminate for the shapes that follow
+        /// The classic light list: LightSource lights on for the shapes that follow. It is an
+        /// attribute, so a light given inside a block is off after the block ends.
+        std::set<std::string> lightList;
         bool textureCoordinatesSet = false;
         std::array<float, 8> textureCoordinates{{0, 0, 1, 0, 0, 1, 1, 1}};
         SplineBasis uBasis = SplineBasis::bezier(), vBasis = SplineBasis::bezier();
@@ -397,11 +400,17 @@ private:
     };
     std::vector<PortalLight> m_portals;
     std::map<std::string, size_t> m_lightHandles;  ///< handle -> index in the scene's lights
-    /// For each light handle named by Illuminate: how many shapes it is on and off for.
+    /// For each light handle named by Illuminate, and each classic LightSource: how many
+    /// shapes it is on and off for, and (a classic light) how many came before it.
     struct LightUse {
         int shapesOn = 0, shapesOff = 0;
+        bool listed = false;  ///< a classic light: on only for shapes it is on the light list of
+        bool illuminated = false;  ///< named by Illuminate
+        int shapesBefore = 0;
+        SourceLocation where;  ///< a classic light's LightSource
     };
     std::map<std::string, LightUse> m_lightUse;
+    int m_worldShapes = 0;  ///< shapes read in this world so far
 };
 
 /// Parses a RIB file into a new Scene (a convenience for tools and tests):

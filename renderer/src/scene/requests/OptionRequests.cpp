@@ -444,6 +444,7 @@ void SceneBuilder::worldBegin(RequestReader& in) {
     m_firstClassicLight.reset();
     m_lightHandles.clear();
     m_lightUse.clear();
+    m_worldShapes = 0;
     // Lights given before WorldBegin were placed in camera space; the world now knows where that is.
     if (building())
         for (CameraLight const& light : m_cameraLights)

@@ -320,7 +320,15 @@ void SceneBuilder::makeLightFrom(std::string const& request, std::string const& 
     }
     m_lightHandles[handle] = m_scene.lights.size();
     m_scene.lights.push_back(std::move(light));
-    if (request == "LightSource" && type.rfind("Pxr", 0) != 0 && !m_firstClassicLight) m_firstClassicLight = where;
+    if (request == "LightSource" && type.rfind("Pxr", 0) != 0) {
+        if (!m_firstClassicLight) m_firstClassicLight = where;
+        // RenderMan's classic light list: the light is on for the shapes that follow, in this block.
+        state().lightList.insert(handle);
+        LightUse& use = m_lightUse[handle];
+        use.listed = true;
+        use.shapesBefore = m_worldShapes;
+        use.where = where;
+    }
 }
 
 void SceneBuilder::resolvePortals() {
@@ -514,11 +522,14 @@ void SceneBuilder::illuminate(RequestReader& in) {
     int on = in.integer("on or off");
     in.finish();
     // An attribute: it holds for the shapes in the rest of the block.
-    if (on)
+    if (on) {
         state().lightsOff.erase(handle);
-    else
+        state().lightList.insert(handle);
+    } else {
         state().lightsOff.insert(handle);
-    m_lightUse[handle];  // this light's use by shapes is counted from now on
+        state().lightList.erase(handle);
+    }
+    m_lightUse[handle].illuminated = true;  // this light's use by shapes is counted from now on
 }
 
 }  // namespace bxdflab

@@ -109,7 +109,11 @@ void SceneBuilder::addShape(std::unique_ptr<Shape> shape, SourceLocation const& 
         m_scene.dropped.push_back(std::string(shape->kind()) + " at " + where.str() + " is invisible to every ray type");
         return;
     }
-    for (auto& [handle, use] : m_lightUse) ++(state().lightsOff.count(handle) ? use.shapesOff : use.shapesOn);
+    ++m_worldShapes;
+    for (auto& [handle, use] : m_lightUse) {
+        bool on = !state().lightsOff.count(handle) && (!use.listed || state().lightList.count(handle));
+        ++(on ? use.shapesOn : use.shapesOff);
+    }
     // Under an area light the shape glows; else a Bxdf wins over a classic
     // Surface shader (RenderMan's RIS ignores Surface).
     // A shape with its own colours (a "Cs" primvar) and no material gets the
