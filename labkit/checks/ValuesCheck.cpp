@@ -1,7 +1,11 @@
-// values: W, FPdf, RPdf and emission equal the reference's at fixed
-// directions, for every parameter set and sampling mode, to 0.1%; again with
-// the parameters varying from point to point, and where the shading normal
-// is bent away from the geometric one.
+// values: W and emission equal the reference's at fixed directions, for every
+// parameter set and sampling mode, to 0.1%; again with the parameters varying
+// from point to point, and where the shading normal is bent away from the
+// geometric one. FPdf and RPdf are compared too, but pdfs of another valid
+// sampling strategy are accepted (and said): whether the samples follow
+// them is chi2's question, whether RPdf mirrors FPdf reciprocity's. A pdf
+// that is negative or not finite, or zero where the reference samples and W
+// is not black (no sample would ever find that light), is never accepted.
 #include <cmath>
 
 #include "checks/CheckSupport.h"
@@ -32,8 +36,8 @@ CheckOutcome checkValues(CheckContext& c) {
     }
     size_t const perView = localL.size();
 
-    int compared = 0, differing = 0, oneSidedViews = 0;
-    std::string first;
+    int compared = 0, differing = 0, oneSidedViews = 0, pdfsOfTheirOwn = 0;
+    std::string first, firstOwnPdf;
     auto reportAt = [&](std::string const& what, Vec3 const& v, Vec3 const& l, std::string const& params,
                         std::string const& mine, std::string const& theirs, std::string const& where) {
         ++differing;
@@ -54,10 +58,24 @@ CheckOutcome checkValues(CheckContext& c) {
         bool sameW = true;
         for (int k = 0; k < 3; ++k) sameW = sameW && close(m.W[k], t.W[k], tolerance);
         if (!sameW) reportAt("W = f cos(theta_L)", v, l, params, describe(m.W), describe(t.W), where);
-        if (!close(m.FPdf, t.FPdf, tolerance))
-            reportAt("FPdf (sampling mode " + modeName + ")", v, l, params, number(m.FPdf), number(t.FPdf), where);
-        if (!close(m.RPdf, t.RPdf, tolerance))
-            reportAt("RPdf (sampling mode " + modeName + ")", v, l, params, number(m.RPdf), number(t.RPdf), where);
+        auto comparePdf = [&](char const* name, float mine, float theirs) {
+            if (close(mine, theirs, tolerance)) return;
+            std::string const what = std::string(name) + " (sampling mode " + modeName + ")";
+            if (!std::isfinite(mine) || mine < 0.0f) {
+                reportAt(what, v, l, params, number(mine), number(theirs), where);
+                return;
+            }
+            if (theirs > 0.0f && mine == 0.0f && !t.W.IsBlack()) {
+                reportAt(what, v, l, params, number(mine), number(theirs) + ", and W is not black there", where);
+                return;
+            }
+            if (pdfsOfTheirOwn++ == 0)
+                firstOwnPdf = "your " + what + " at V = " + describeDirection(v) + " and L = " + describeDirection(l) +
+                              where + ", " + withParams(params) + ", is " + number(mine) + " where the reference's is " +
+                              number(theirs);
+        };
+        comparePdf("FPdf", m.FPdf, t.FPdf);
+        comparePdf("RPdf", m.RPdf, t.RPdf);
     };
 
     // Each parameter set as given, then differing from point to point as a
@@ -141,10 +159,18 @@ CheckOutcome checkValues(CheckContext& c) {
                           number(100 * tolerance) + "%.";
     if (oneSidedViews)
         details += " Your model is black seen from below (one-sided); the exercise accepts that.";
+    if (pdfsOfTheirOwn)
+        details += " " + std::to_string(pdfsOfTheirOwn) +
+                   " of your pdfs differ from the reference's: a sampling strategy of your own, accepted here; chi2 "
+                   "checks that your samples follow your FPdf. The first: " + firstOwnPdf + ".";
     if (differing)
         return CheckOutcome::fail(std::to_string(differing) + " of " + std::to_string(compared) +
                                       " values differ from the reference's by more than " + number(100 * tolerance) +
                                       "%. The first: " + first,
+                                  details);
+    if (pdfsOfTheirOwn)
+        return CheckOutcome::pass("W and emission match the reference's everywhere; " + std::to_string(pdfsOfTheirOwn) +
+                                      " of your pdfs differ from its (another sampling strategy: chi2 checks it)",
                                   details);
     return CheckOutcome::pass("all " + std::to_string(compared) + " values match the reference's", details);
 }
