@@ -527,12 +527,17 @@ TEST_CASE("an archive's name may name variables, as RenderMan for Maya's materia
     fs::create_directories(folder / "material");
     std::ofstream(folder / "material" / "m_shading.rib") << "Sphere 1 -1 1 360\n";
     Diagnostics diagnostics(false);
-    Scene scene = parseRib("Option \"user\" \"string MATDIR\" [\"" + (folder / "material").string() +
+    Scene scene = parseRib("Option \"ribparse\" \"string varsubst\" [\"\"]\nOption \"ribparse\" \"string varsubst\" "
+                           "[\"$\"]\nOption \"user\" \"string MATDIR\" [\"" + (folder / "material").string() +
                                "\"]\nWorldBegin\nReadArchive \"${MATDIR}/m_shading.rib\"\n"
                                "ReadArchive \"$user:MATDIR/m_shading.rib\"\nWorldEnd\n",
                            diagnostics, "preset.rib");
     CHECK(scene.shapes.size() == 2u);
-    CHECK(test::warningsContaining(diagnostics, "") == 0);
+    CHECK(test::warningsContaining(diagnostics, "") == 0);  // the ribparse options that turn "$" on are read quietly
+    Diagnostics other(false);
+    parseRib("Option \"ribparse\" \"varsubst\" [\"%\"]\nWorldBegin\nWorldEnd\n", other, "percent.rib");
+    CHECK(test::warningsContaining(other, "percent.rib:1:1: Option \"ribparse\" \"varsubst\" [\"%\"]: variables are always "
+                                          "written $NAME or ${NAME} here") == 1);
 }
 
 TEST_CASE(

@@ -300,6 +300,18 @@ void SceneBuilder::option(RequestReader& in) {
         riOptions(params, in.where());
         return;
     }
+    if (category == "ribparse") {
+        // RenderMan for Maya turns "$" substitution off ("") and on ("$") this way; it is always on here.
+        params.typeUntyped({{"varsubst", ParamType::String}}, "Option \"ribparse\"");
+        std::string const marker = params.getString("varsubst", "$");
+        params.take("varsubst");
+        if (marker != "$" && !marker.empty())
+            warnOnce("option ribparse", in.where(),
+                     "Option \"ribparse\" \"varsubst\" [\"" + marker +
+                         "\"]: variables are always written $NAME or ${NAME} here; kept so");
+        params.warnUnused(m_diagnostics, "Option \"ribparse\"");
+        return;
+    }
     if (category != "searchpath") {
         warnOnce("option " + category, in.where(), "Option \"" + category + "\" is not used by this renderer; skipped");
         return;
