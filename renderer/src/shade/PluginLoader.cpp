@@ -1,8 +1,8 @@
 #include "shade/PluginLoader.h"
 
-#include <cctype>
 #include <filesystem>
 
+#include "core/Spelling.h"
 #include "shade/ParamTypes.h"
 #include "shade/RibParameterList.h"
 
@@ -99,37 +99,37 @@ int ShadingPlugin::paramId(std::string const& name) const {
 }
 
 namespace {
-std::string lowerCase(std::string text) {
-    for (char& c : text) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    return text;
-}
-
 /// The plugin in `folder` whose name matches `name` but for case (the first in
 /// sorted order, so that the choice does not depend on the directory's order), or empty.
 std::string caseInsensitiveMatch(std::string const& folder, std::string const& name) {
-    std::string const wanted = lowerCase(name) + ".so";
+    std::string const wanted = lowered(name) + ".so";
     std::string best;
     std::error_code error;
     for (auto it = fs::directory_iterator(folder, error); !error && it != fs::directory_iterator(); it.increment(error)) {
         std::string file = it->path().filename().string();
-        if (lowerCase(file) == wanted && it->is_regular_file(error) && (best.empty() || file < best)) best = file;
+        if (lowered(file) == wanted && it->is_regular_file(error) && (best.empty() || file < best))
+            best = file;
     }
     return best.empty() ? "" : (fs::path(folder) / best).string();
 }
 }  // namespace
 
 std::string PluginLoader::locate(std::string const& name) const {
-    if (name.find('/') != std::string::npos) return "";
+    // Asked once per material: a name is looked for once, the folders' listings read at most once for it.
+    auto known = m_located.find(name);
+    if (known != m_located.end()) return known->second;
+    std::string& found = m_located[name];
+    if (name.find('/') != std::string::npos) return found;
     for (std::string const& folder : m_searchPath) {
         std::filesystem::path candidate = std::filesystem::path(folder) / (name + ".so");
         std::error_code error;  // a name the file system rejects (too long, ...) is simply not found
-        if (std::filesystem::is_regular_file(candidate, error)) return candidate.string();
+        if (std::filesystem::is_regular_file(candidate, error)) return found = candidate.string();
     }
     // A file system that ignores case (macOS's, Windows') finds "PXRDisney" as PxrDisney.so,
     // so scenes written there use such names; they are found here too, with a warning from find().
     for (std::string const& folder : m_searchPath)
-        if (std::string match = caseInsensitiveMatch(folder, name); !match.empty()) return match;
-    return "";
+        if (std::string match = caseInsensitiveMatch(folder, name); !match.empty()) return found = match;
+    return found;
 }
 
 bool PluginLoader::has(std::string const& name) const { return m_plugins.count(name) > 0 || !locate(name).empty(); }

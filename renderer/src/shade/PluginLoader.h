@@ -106,6 +106,7 @@ private:
     /// as spelled is looked for again ignoring case.
     std::string locate(std::string const& name) const;
     std::vector<std::string> m_searchPath;
+    mutable std::map<std::string, std::string> m_located;  ///< locate()'s answers (the folders do not change)
     Diagnostics& m_diagnostics;
     std::map<std::string, std::unique_ptr<ShadingPlugin>> m_plugins;   ///< Bxdfs
     std::map<std::string, std::unique_ptr<ShadingPlugin>> m_patterns;
