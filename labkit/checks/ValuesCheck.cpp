@@ -38,12 +38,17 @@ CheckOutcome checkValues(CheckContext& c) {
 
     int compared = 0, differing = 0, oneSidedViews = 0, pdfsOfTheirOwn = 0;
     std::string first, firstOwnPdf;
+    // "your <what> at V = ... and L = ..., with <params>, is <mine>"
+    auto yoursAt = [&](std::string const& what, Vec3 const& v, Vec3 const& l, std::string const& params,
+                       std::string const& mine, std::string const& where) {
+        return "your " + what + " at V = " + describeDirection(v) + " and L = " + describeDirection(l) +
+               where + ", " + withParams(params) + ", is " + mine;
+    };
     auto reportAt = [&](std::string const& what, Vec3 const& v, Vec3 const& l, std::string const& params,
                         std::string const& mine, std::string const& theirs, std::string const& where) {
         ++differing;
         if (!first.empty()) return;
-        first = "your " + what + " at V = " + describeDirection(v) + " and L = " + describeDirection(l) + where + ", " +
-                withParams(params) + ", is " + mine + "; the reference's is " + theirs + ".";
+        first = yoursAt(what, v, l, params, mine, where) + "; the reference's is " + theirs + ".";
         if (v.z < 0) first += " This view is below the surface.";
         if (l.z < 0) first += " This light direction is below the surface.";
     };
@@ -70,9 +75,8 @@ CheckOutcome checkValues(CheckContext& c) {
                 return;
             }
             if (pdfsOfTheirOwn++ == 0)
-                firstOwnPdf = "your " + what + " at V = " + describeDirection(v) + " and L = " + describeDirection(l) +
-                              where + ", " + withParams(params) + ", is " + number(mine) + " where the reference's is " +
-                              number(theirs);
+                firstOwnPdf = yoursAt(what, v, l, params, number(mine), where) +
+                              " where the reference's is " + number(theirs);
         };
         comparePdf("FPdf", m.FPdf, t.FPdf);
         comparePdf("RPdf", m.RPdf, t.RPdf);
