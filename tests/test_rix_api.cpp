@@ -141,6 +141,23 @@ TEST_CASE("RNG: deterministic, batch and per-point draws agree, stratified per p
     CHECK(RixRNG::Sample2D(other).x != xi[0].x);
 }
 
+TEST_CASE("RNG: fixed values, for tests that feed a sampler chosen numbers", "[api][rng]") {
+    // fixedValue alone: every coordinate of every draw.
+    RixRNG::SampleCtx same{7u, 3u, 0, 0.25f};
+    CHECK(RixRNG::Sample1D(same) == 0.25f);
+    CHECK(RixRNG::Sample2D(same).y == 0.25f);
+    // fixedValue2 sets the second coordinate, fixedValue1D the 1-D draws (a
+    // lobe choice apart from the direction's numbers).
+    RixRNG::SampleCtx apart{7u, 3u, 0, 0.25f, 0.5f, 0.875f};
+    RtFloat2 xi = RixRNG::Sample2D(apart);
+    CHECK(xi.x == 0.25f);
+    CHECK(xi.y == 0.5f);
+    CHECK(RixRNG::Sample1D(apart) == 0.875f);
+    // Without fixedValue the other two are ignored.
+    RixRNG::SampleCtx drawn{7u, 3u, 0, -1.0f, 0.5f, 0.875f};
+    CHECK(RixRNG::Sample1D(drawn) != 0.875f);
+}
+
 TEST_CASE("RNG: the first 2^m samples of a pixel are a (0,m,2)-net for every shape of cell", "[api][rng]") {
     // Scrambled Sobol' points in two dimensions: every box [i/2^a, (i+1)/2^a) x
     // [j/2^(m-a), (j+1)/2^(m-a)) holds exactly one of the first 2^m samples,

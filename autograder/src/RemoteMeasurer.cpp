@@ -136,7 +136,8 @@ std::vector<ProbeResult> RemoteMeasurer::generate(std::string const& params, std
         size_t n = std::min(kBatch, points.size() - first);
         auto payload = pack<wire::GenerateItem>(points, first, n, [&](auto const&, size_t i) {
             SampleSpec const& s = samples[i];
-            return wire::GenerateItem{wire::toWire(points[i]), s.patternid, s.sampleid, s.fixedValue, s.fixedValue2};
+            return wire::GenerateItem{
+                wire::toWire(points[i]), s.patternid, s.sampleid, s.fixedValue, s.fixedValue2, s.fixedValue1D};
         });
         auto reply = exchange(Op::Generate, params, static_cast<uint32_t>(n), payload, static_cast<uint32_t>(n));
         for (size_t i = 0; i < n; ++i) out.push_back(wire::fromWire(wire::itemAt<wire::ResultItem>(reply, i)));

@@ -27,7 +27,9 @@ struct CheckOutcome {
     static CheckOutcome fail(std::string summary, std::string details = {}) {
         return {Status::Failed, std::move(summary), std::move(details)};
     }
-    static CheckOutcome notApplicable(std::string because) { return {Status::NotApplicable, std::move(because), {}}; }
+    static CheckOutcome notApplicable(std::string because, std::string details = {}) {
+        return {Status::NotApplicable, std::move(because), std::move(details)};
+    }
 };
 
 struct CheckContext {

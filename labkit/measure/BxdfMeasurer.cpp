@@ -54,8 +54,8 @@ std::vector<SampleSpec> independentSamples(size_t count, uint32_t seed, uint32_t
     return samples;
 }
 
-std::vector<SampleSpec> fixedSamples(size_t count, RtFloat2 xi) {
-    return std::vector<SampleSpec>(count, SampleSpec{0u, 0u, 0u, xi.x, xi.y});
+std::vector<SampleSpec> fixedSamples(size_t count, RtFloat2 xi, float choice) {
+    return std::vector<SampleSpec>(count, SampleSpec{0u, 0u, 0u, xi.x, xi.y, choice});
 }
 
 }  // namespace bxdflab

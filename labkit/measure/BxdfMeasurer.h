@@ -99,7 +99,8 @@ std::optional<int> takeTogetherMark(std::string& params);
 std::vector<SampleSpec> stratifiedSamples(size_t count, uint32_t seed, uint32_t first = 0);
 /// Every point gets independent uniform numbers (what statistical tests assume).
 std::vector<SampleSpec> independentSamples(size_t count, uint32_t seed, uint32_t first = 0);
-/// Every draw of every point returns xi (1-D draws return xi[0]).
-std::vector<SampleSpec> fixedSamples(size_t count, RtFloat2 xi);
+/// Every draw of every point returns xi; 1-D draws return `choice` if it is
+/// given (>= 0), else xi[0].
+std::vector<SampleSpec> fixedSamples(size_t count, RtFloat2 xi, float choice = -1.0f);
 
 }  // namespace bxdflab

@@ -159,7 +159,8 @@ std::vector<char> answer(Op op, std::string const& params, uint32_t count, std::
             std::vector<SampleSpec> samples;
             for (auto const& item : items<GenerateItem>(payload, 0, count)) {
                 points.push_back(fromWire(item.point));
-                samples.push_back({item.patternid, item.sampleid, 0u, item.fixedValue, item.fixedValue2});
+                samples.push_back({item.patternid, item.sampleid, 0u, item.fixedValue, item.fixedValue2,
+                                   item.fixedValue1D});
             }
             for (auto const& r : m.generate(params, points, samples)) append(out, toWire(r));
             break;

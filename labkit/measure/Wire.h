@@ -64,7 +64,7 @@ struct EvaluateItem {
 struct GenerateItem {
     PointItem point;
     uint32_t patternid, sampleid;
-    float fixedValue, fixedValue2;
+    float fixedValue, fixedValue2, fixedValue1D;
 };
 struct ResultItem {
     float L[3], W[3], FPdf, RPdf;

@@ -34,6 +34,9 @@ public:
         float fixedValue = -1.0f;
         /// With fixedValue: when >= 0, the second coordinate of 2-D draws (else fixedValue).
         float fixedValue2 = -1.0f;
+        /// With fixedValue: when >= 0, what 1-D draws return (else fixedValue), so
+        /// a test can choose a lobe with one number and a direction with another.
+        float fixedValue1D = -1.0f;
 
         /// The same sample in a new, independent pattern (RenderMan's way to give
         /// a sub-computation numbers of its own): `scramble` tells domains apart.
@@ -75,7 +78,7 @@ public:
     }
     /// The next 1-D sample of a context (advances its draw counter).
     static float Sample1D(SampleCtx& ctx) {
-        if (ctx.fixedValue >= 0.0f) return ctx.fixedValue;
+        if (ctx.fixedValue >= 0.0f) return ctx.fixedValue1D >= 0.0f ? ctx.fixedValue1D : ctx.fixedValue;
         uint32_t seed = Hash(ctx.patternid ^ Hash(ctx.draw++ * 0x9e3779b9u + 0x1b873593u));
         uint32_t index = NestedUniformScramble(ctx.sampleid, seed);
         return ToUnitFloat(ReverseBits(LaineKarrasPermutation(index, Hash(seed ^ 0x85ebca6bu))));
