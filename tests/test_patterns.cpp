@@ -318,3 +318,49 @@ TEST_CASE("a primvar named like a parameter gives that parameter per-point value
     CHECK(r.channel(6, 8, 1) == Approx(1.0f));
     CHECK(r.channel(12, 8, 0) == Approx(0.5f));
 }
+
+TEST_CASE("GetParamInfo tells a plugin which inputs are given, connected or left to their default",
+          "[patterns][api]") {
+    // The paraminfo test Bxdf emits (given's info / 2, connected's info / 2,
+    // triple's array length / 4), asked of the parameter list and of the
+    // shading context, or magenta where the two disagree.
+    auto emitted = [](std::string const& params) {
+        auto r = test::renderRib(
+            kHead +
+                "Pattern \"PxrMix\" \"tex\" \"color color1\" [0.2 0.4 0.8] \"float mix\" [0]\n"
+                "Bxdf \"paraminfo\" \"p\" " +
+                params + "\n" + kSquare,
+            fewSamples());
+        return Vec3(r.channel(8, 8, 0), r.channel(8, 8, 1), r.channel(8, 8, 2));
+    };
+    SECTION("nothing given: every input at its default, the array at its declared length") {
+        CHECK(emitted("") == Vec3(0.0f, 0.0f, 0.75f));
+    }
+    SECTION("a value, a connection and an array of two") {
+        Vec3 const c = emitted(
+            "\"float given\" [1] \"reference color connected\" [\"tex:resultRGB\"] \"float[2] triple\" [4 "
+            "5]");
+        CHECK(c.x == Approx(0.5f * k_RixSCParameterListValue));
+        CHECK(c.y == Approx(0.5f * k_RixSCNetworkValue));
+        CHECK(c.z == Approx(0.25f * 2));
+    }
+}
+
+TEST_CASE("a pattern written for RenderMan 22 (OutputSpec, baking methods) asks its own inputs' GetParamInfo",
+          "[patterns][api]") {
+    // connectioninfo outputs a grey of 0, 0.5 or 1 for its input left alone,
+    // given a value, or connected.
+    auto grey = [](std::string const& input) {
+        auto r = test::renderRib(kHead + "Pattern \"PxrMix\" \"tex\" \"color color1\" [0.2 0.4 0.8] \"float mix\" [0]\n"
+                                         "Pattern \"connectioninfo\" \"info\" " +
+                                     input +
+                                     "\n"
+                                     "Bxdf \"PxrConstant\" \"c\" \"reference color emitColor\" [\"info:resultRGB\"]\n" +
+                                     kSquare,
+                                 fewSamples());
+        return r.channel(8, 8, 1);
+    };
+    CHECK(grey("") == Approx(0.0f).margin(1e-6));
+    CHECK(grey("\"color input\" [1 1 1]") == Approx(0.5f));
+    CHECK(grey("\"reference color input\" [\"tex:resultRGB\"]") == Approx(1.0f));
+}

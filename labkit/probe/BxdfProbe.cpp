@@ -109,6 +109,9 @@ protected:
         *result = varied;
         return k_RixSCVarying;
     }
+    int ParamInfo(int id, RixSCType* type, RixSCConnectionInfo* cinfo, int* arrayLength) const override {
+        return m_material.params().describe(id, type, cinfo, arrayLength);
+    }
     void* Allocate(size_t bytes, size_t alignment) const override {
         auto* block = static_cast<unsigned char*>(m_arena.allocate(bytes + kGuardBytes, alignment));
         std::memset(block, kPoisonByte, bytes);

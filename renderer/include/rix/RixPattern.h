@@ -19,6 +19,8 @@
 
 #include "RixShading.h"
 
+class RixBakeContext;
+
 class RixPattern : public RixShadingPlugin {
 public:
     /// One computed output: which parameter of the table it is, and its values.
@@ -27,6 +29,8 @@ public:
         RixSCDetail detail = k_RixSCInvalidDetail;  ///< k_RixSCVarying: numPts values; k_RixSCUniform: one
         RtPointer value = nullptr;               ///< the values, in memory from the context's pool
     };
+    /// The name RenderMan 22 and later give it: either may be written.
+    using OutputSpec = OutputSpecification;
 
     /// Computes the outputs for the context's points. Allocate the
     /// OutputSpecification array and the value arrays from the context's pool:
@@ -41,6 +45,19 @@ public:
     /// `ignoredParamTable` is RenderMan's; this renderer passes nullptr. Return 0.
     virtual int ComputeOutputParams(RixShadingContext const* sCtx, RtInt* numOutputs, OutputSpecification** outputs,
                                     RtPointer instanceData, RixSCParamInfo const* ignoredParamTable) = 0;
+
+    /// RenderMan's texture baking, which this renderer does not do: it never
+    /// calls these, and a pattern written for RenderMan may override them.
+    struct Bake2dSpec;
+    struct Bake3dSpec;
+    virtual bool Bake2dOutput(RixBakeContext const* bakeCtx, Bake2dSpec& spec, RtPointer instanceData) {
+        PIXAR_ARGUSED(bakeCtx); PIXAR_ARGUSED(spec); PIXAR_ARGUSED(instanceData);
+        return false;
+    }
+    virtual bool Bake3dOutput(RixBakeContext const* bakeCtx, Bake3dSpec& spec, RtPointer instanceData) {
+        PIXAR_ARGUSED(bakeCtx); PIXAR_ARGUSED(spec); PIXAR_ARGUSED(instanceData);
+        return false;
+    }
 };
 
 /// Write `RIX_PATTERNCREATE { return new MyPattern(); }` in your plugin.

@@ -28,11 +28,13 @@ enum RixSCType {
 };
 
 /// What a parameter is for. Bxdf inputs read during scattering are
-/// k_RixSCScatterInput; k_RixSCInput is the generic input.
+/// k_RixSCScatterInput; k_RixSCInput is the generic input. (This renderer
+/// reads every input the same way; only k_RixSCOutput marks a pattern's output.)
 enum RixSCAccess {
     k_RixSCInput = 0,
     k_RixSCOutput,
     k_RixSCScatterInput,
+    k_RixSCPresenceInput,
     k_RixSCOpacityInput,
     k_RixSCInteriorInput,
     k_RixSCAnyInput,
@@ -46,6 +48,15 @@ enum RixSCDetail {
     k_RixSCInvalidDetail = 0,  ///< no such parameter / wrong type
     k_RixSCUniform,            ///< one value for every point (result points at 1 value)
     k_RixSCVarying,            ///< one value per point (result points at numPts values)
+};
+
+/// Where a parameter's value comes from (GetParamInfo): a plugin that does
+/// something special when an input is left alone, or connected, asks first.
+enum RixSCConnectionInfo {
+    k_RixSCDefaultValue = 0,    ///< not given: EvalParam answers with your default
+    k_RixSCParameterListValue,  ///< a value written on the RIB statement (uniform)
+    k_RixSCNetworkValue,        ///< connected to a pattern's output (may vary per point)
+    k_RixSCInvalidConnection,
 };
 
 /// Why the renderer calls a plugin's Synchronize.
@@ -101,6 +112,15 @@ public:
     virtual int GetParamId(RtUString name, int* id) const = 0;
     /// Name and type of parameter id; returns 0 on success.
     virtual int GetParamInfo(int id, RtUString* name, RixSCType* type) const = 0;
+    /// RenderMan's form: the type of parameter `id`, where its value comes from
+    /// and, for an array parameter, how many elements it has (-1 when it is not
+    /// an array). Any pointer may be null. Returns 0, or 1 for an unknown id.
+    ///   RixSCType type; RixSCConnectionInfo cinfo;
+    ///   pList->GetParamInfo(k_roughness, &type, &cinfo);
+    ///   if (cinfo == k_RixSCDefaultValue) ...
+    int GetParamInfo(int id, RixSCType* type, RixSCConnectionInfo* cinfo, int* arrayLength = nullptr) const {
+        return ParamInfo(id, type, cinfo, arrayLength);
+    }
 
     // Each EvalParam copies the value of parameter `id` (element `arrayIndex`
     // of an array parameter; pass -1 or 0 for a single value) into *result and
@@ -113,6 +133,7 @@ public:
 
 protected:
     virtual RixSCDetail Eval(int id, int arrayIndex, RixSCType wanted, void* result) const = 0;
+    virtual int ParamInfo(int id, RixSCType* type, RixSCConnectionInfo* cinfo, int* arrayLength) const = 0;
 };
 
 /// Per-context flags: what kind of rays led here.
@@ -191,6 +212,12 @@ public:
                           bool promoteToVarying = false) const {
         return EvalParam(id, arrayIndex, const_cast<T const**>(result), dflt, promoteToVarying);
     }
+    /// How parameter `id` of the plugin being shaded is given (see
+    /// RixSCConnectionInfo), e.g. whether a manifold input is connected before
+    /// reading it. Any pointer may be null; returns 0, or 1 for an unknown id.
+    int GetParamInfo(int id, RixSCType* type, RixSCConnectionInfo* cinfo, int* arrayLength = nullptr) const {
+        return ParamInfo(id, type, cinfo, arrayLength);
+    }
 
     /// A primitive variable ("primvar") of the geometry being shaded: a value
     /// the RIB attaches to a shape, like "color Cs" [1 0 0] on a Sphere, or a
@@ -252,6 +279,7 @@ protected:
     virtual RixSCDetail Param(int id, int arrayIndex, RixSCType wanted, size_t elementSize,
                               void const** result, void const* dflt, bool promote) const = 0;
     virtual void* Allocate(size_t bytes, size_t alignment) const = 0;
+    virtual int ParamInfo(int id, RixSCType* type, RixSCConnectionInfo* cinfo, int* arrayLength) const = 0;
     /// Renderer side of GetPrimVar: numPts values of the type asked for, or k_RixSCInvalidDetail.
     virtual RixSCDetail PrimVar(RtUString const name, RixSCType wanted, void const** result,
                                 RtFloat const** radius) const = 0;

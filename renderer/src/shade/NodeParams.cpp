@@ -130,6 +130,25 @@ NodeParams::NodeParams(std::string const& kind, ShadingPlugin const& plugin, Par
     }
 }
 
+int NodeParams::describe(int id, RixSCType* type, RixSCConnectionInfo* cinfo, int* arrayLength) const {
+    ParamValue const* given = value(id);
+    if (!given) return 1;
+    RixSCParamInfo const& row = (*m_table)[static_cast<size_t>(id)];
+    if (type) *type = row.type;
+    if (cinfo)
+        *cinfo = connection(id) ? k_RixSCNetworkValue
+                 : given->set   ? k_RixSCParameterListValue
+                                : k_RixSCDefaultValue;
+    if (arrayLength) {
+        size_t const values = row.type == k_RixSCString    ? given->strings.size()
+                              : row.type == k_RixSCInteger ? given->ints.size()
+                                                           : given->floats.size();
+        int const elements = static_cast<int>(values) / valuesPerElement(row.type);
+        *arrayLength = row.arraySize < 0 ? -1 : given->set ? elements : row.arraySize;
+    }
+    return 0;
+}
+
 int NodeParameterList::GetParamId(RtUString name, int* id) const {
     for (size_t i = 0; i < m_table.size(); ++i)
         if (m_table[i].name == name && m_params.values()[i].set) {

@@ -58,6 +58,10 @@ public:
         return c.pattern ? &c : nullptr;
     }
     std::vector<ParamValue> const& values() const { return m_values; }
+    /// GetParamInfo's answer for parameter `id` (any pointer may be null):
+    /// its declared type, connected / given / left to the default, and the
+    /// element count of an array parameter (-1 for one that is not).
+    int describe(int id, RixSCType* type, RixSCConnectionInfo* cinfo, int* arrayLength) const;
     /// The name of parameter `id` in the plugin's table ("" for an out-of-range id).
     char const* name(int id) const {
         return id >= 0 && static_cast<size_t>(id) < m_table->size() ? (*m_table)[static_cast<size_t>(id)].name.CStr() : "";
@@ -80,6 +84,9 @@ public:
 
 protected:
     RixSCDetail Eval(int id, int arrayIndex, RixSCType wanted, void* result) const override;
+    int ParamInfo(int id, RixSCType* type, RixSCConnectionInfo* cinfo, int* arrayLength) const override {
+        return m_params.describe(id, type, cinfo, arrayLength);
+    }
 
 private:
     std::vector<RixSCParamInfo> const& m_table;

@@ -53,6 +53,18 @@ inline RixSCType rixTypeFor(ParamType type) {
     }
 }
 
+/// How many numbers (or strings) one element of a parameter of this type holds.
+inline int valuesPerElement(RixSCType type) {
+    switch (type) {
+        case k_RixSCFloat2: return 2;
+        case k_RixSCColor:
+        case k_RixSCNormal:
+        case k_RixSCVector:
+        case k_RixSCPoint: return 3;
+        default: return 1;
+    }
+}
+
 inline bool isGeometricType(RixSCType type) {
     return type == k_RixSCNormal || type == k_RixSCVector || type == k_RixSCPoint;
 }

@@ -24,6 +24,16 @@ int RibParameterList::GetParamInfo(int id, RtUString* name, RixSCType* type) con
     return 0;
 }
 
+int RibParameterList::ParamInfo(int id, RixSCType* type, RixSCConnectionInfo* cinfo, int* arrayLength) const {
+    auto const& all = m_params.all();
+    if (id < 0 || static_cast<size_t>(id) >= all.size()) return 1;
+    Param const& p = all[static_cast<size_t>(id)];
+    if (type) *type = rixTypeFor(p.decl.type);
+    if (cinfo) *cinfo = k_RixSCParameterListValue;  // the list holds only what the RIB wrote
+    if (arrayLength) *arrayLength = p.decl.arraySize > 1 ? p.decl.arraySize : -1;
+    return 0;
+}
+
 RixSCDetail RibParameterList::Eval(int id, int arrayIndex, RixSCType wanted, void* result) const {
     auto const& all = m_params.all();
     if (id < 0 || static_cast<size_t>(id) >= all.size()) return k_RixSCInvalidDetail;

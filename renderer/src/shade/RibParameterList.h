@@ -16,8 +16,9 @@ public:
 
 protected:
     RixSCDetail Eval(int id, int arrayIndex, RixSCType wanted, void* result) const override;
+    int ParamInfo(int id, RixSCType* type, RixSCConnectionInfo* cinfo, int* arrayLength) const override;
 
-private:
+   private:
     ParamList const& m_params;
 };
 

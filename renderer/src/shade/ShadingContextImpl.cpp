@@ -201,6 +201,11 @@ RixSCDetail ShadingContextImpl::Param(int id, int arrayIndex, RixSCType wanted, 
     return evalParam(m_material.params(), id, arrayIndex, wanted, elementSize, result, dflt, promote);
 }
 
+int ShadingContextImpl::ParamInfo(int id, RixSCType* type, RixSCConnectionInfo* cinfo,
+                                  int* arrayLength) const {
+    return m_material.params().describe(id, type, cinfo, arrayLength);
+}
+
 RixSCDetail ShadingContextImpl::evalParam(NodeParams const& node, int id, int arrayIndex, RixSCType wanted,
                                           size_t elementSize, void const** result, void const* dflt,
                                           bool promote) const {
@@ -274,6 +279,9 @@ protected:
         return m_parent.evalParam(m_pattern.params(), id, arrayIndex, wanted, elementSize, result, dflt, promote);
     }
     void* Allocate(size_t bytes, size_t alignment) const override { return m_parent.Allocate(bytes, alignment); }
+    int ParamInfo(int id, RixSCType* type, RixSCConnectionInfo* cinfo, int* arrayLength) const override {
+        return m_pattern.params().describe(id, type, cinfo, arrayLength);
+    }
     RixSCDetail PrimVar(RtUString const name, RixSCType wanted, void const** result,
                         RtFloat const** radius) const override {
         return m_parent.PrimVar(name, wanted, result, radius);

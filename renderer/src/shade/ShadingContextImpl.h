@@ -79,6 +79,7 @@ protected:
     RixSCDetail Param(int id, int arrayIndex, RixSCType wanted, size_t elementSize, void const** result,
                       void const* dflt, bool promote) const override;
     void* Allocate(size_t bytes, size_t alignment) const override { return m_arena.allocate(bytes, alignment); }
+    int ParamInfo(int id, RixSCType* type, RixSCConnectionInfo* cinfo, int* arrayLength) const override;
     RixSCDetail PrimVar(RtUString const name, RixSCType wanted, void const** result, RtFloat const** radius) const override;
 
 private:
