@@ -9,7 +9,7 @@
 // not refused. It reflects nothing.
 #include <new>
 
-#include "RixBxdf.h"
+#include "EmitOnlyBxdf.h"
 
 namespace {
 
@@ -50,41 +50,16 @@ Answers ask(Asker const* asker) {
     return a;
 }
 
-class Emitter : public RixBxdf {
-   public:
+class Emitter : public EmitOnlyBxdf {
+public:
     Emitter(RixShadingContext const* sc, RixBxdfFactory* factory, RtColorRGB emission)
-        : RixBxdf(sc, factory), m_emission(emission) {}
-    RixBXEvaluateDomain GetEvaluateDomain() override { return k_RixBXEmptyDomain; }
-    void GetAggregateLobeTraits(RixBXLobeTraits* lobes) override { lobes->SetNone(); }
+        : EmitOnlyBxdf(sc, factory), m_emission(emission) {}
     bool EmitLocal(RtColorRGB* result) override {
         for (int i = 0; i < shadingCtx->numPts; ++i) result[i] = m_emission;
         return true;
     }
-    void GenerateSample(RixBXTransportTrait, RixBXLobeTraits const*, RixRNG*, RixBXLobeSampled* sampled,
-                        RtVector3* Ln, RixBXLobeWeights&, float* FPdf, float* RPdf, RtColorRGB*) override {
-        for (int i = 0; i < shadingCtx->numPts; ++i) {
-            sampled[i].SetValid(false);
-            Ln[i] = RtVector3(0.0f);
-            FPdf[i] = RPdf[i] = 0.0f;
-        }
-    }
-    void EvaluateSample(RixBXTransportTrait, RixBXLobeTraits const*, RixRNG*, RixBXLobeTraits* evaluated,
-                        RtVector3 const*, RixBXLobeWeights&, float* FPdf, float* RPdf) override {
-        for (int i = 0; i < shadingCtx->numPts; ++i) {
-            evaluated[i].SetNone();
-            FPdf[i] = RPdf[i] = 0.0f;
-        }
-    }
-    void EvaluateSamplesAtIndex(RixBXTransportTrait, RixBXLobeTraits const&, RixRNG*, int, int numSamples,
-                                RixBXLobeTraits* evaluated, RtVector3 const*, RixBXLobeWeights&, float* FPdf,
-                                float* RPdf) override {
-        for (int s = 0; s < numSamples; ++s) {
-            evaluated[s].SetNone();
-            FPdf[s] = RPdf[s] = 0.0f;
-        }
-    }
 
-   private:
+private:
     RtColorRGB m_emission;
 };
 

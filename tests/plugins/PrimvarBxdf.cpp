@@ -3,42 +3,17 @@
 // "string floatPrimvar" as a grey, and reflects nothing. Black where neither exists.
 #include <new>
 
-#include "RixBxdf.h"
+#include "EmitOnlyBxdf.h"
 
 namespace {
 
-class PrimvarEmitter : public RixBxdf {
+class PrimvarEmitter : public EmitOnlyBxdf {
 public:
     PrimvarEmitter(RixShadingContext const* sc, RixBxdfFactory* factory, RtColorRGB const* emission)
-        : RixBxdf(sc, factory), m_emission(emission) {}
-    RixBXEvaluateDomain GetEvaluateDomain() override { return k_RixBXEmptyDomain; }
-    void GetAggregateLobeTraits(RixBXLobeTraits* lobes) override { lobes->SetNone(); }
+        : EmitOnlyBxdf(sc, factory), m_emission(emission) {}
     bool EmitLocal(RtColorRGB* result) override {
         for (int i = 0; i < shadingCtx->numPts; ++i) result[i] = m_emission[i];
         return true;
-    }
-    void GenerateSample(RixBXTransportTrait, RixBXLobeTraits const*, RixRNG*, RixBXLobeSampled* sampled, RtVector3* Ln,
-                        RixBXLobeWeights&, float* FPdf, float* RPdf, RtColorRGB*) override {
-        for (int i = 0; i < shadingCtx->numPts; ++i) {
-            sampled[i].SetValid(false);
-            Ln[i] = RtVector3(0.0f);
-            FPdf[i] = RPdf[i] = 0.0f;
-        }
-    }
-    void EvaluateSample(RixBXTransportTrait, RixBXLobeTraits const*, RixRNG*, RixBXLobeTraits* evaluated, RtVector3 const*,
-                        RixBXLobeWeights&, float* FPdf, float* RPdf) override {
-        for (int i = 0; i < shadingCtx->numPts; ++i) {
-            evaluated[i].SetNone();
-            FPdf[i] = RPdf[i] = 0.0f;
-        }
-    }
-    void EvaluateSamplesAtIndex(RixBXTransportTrait, RixBXLobeTraits const&, RixRNG*, int, int numSamples,
-                                RixBXLobeTraits* evaluated, RtVector3 const*, RixBXLobeWeights&, float* FPdf,
-                                float* RPdf) override {
-        for (int s = 0; s < numSamples; ++s) {
-            evaluated[s].SetNone();
-            FPdf[s] = RPdf[s] = 0.0f;
-        }
     }
 
 private:
