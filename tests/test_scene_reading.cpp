@@ -1210,6 +1210,17 @@ TEST_CASE("primvars reach plugins (GetPrimVar): constant, per-face, per-vertex a
         CHECK(pixel(r, 3, 8) == Vec3(1, 0, 0));
         CHECK(pixel(r, 12, 8) == Vec3(0, 0, 1));
     }
+    SECTION("RenderMan's form with a fill value: the fill where a shape lacks the primvar") {
+        std::string const halves = "Polygon \"P\" [-1 -1 0  0 -1 0  0 1 0  -1 1 0] \"constant color Cs\" [1 0 0]\n"
+                                   "Polygon \"P\" [0 -1 0  1 -1 0  1 1 0  0 1 0]\n";
+        auto r = test::renderRib(head + "Bxdf \"primvar\" \"p\" \"color fill\" [0 0.5 0]\n" + halves, settings);
+        CHECK(pixel(r, 3, 8) == Vec3(1, 0, 0));
+        CHECK(pixel(r, 12, 8) == Vec3(0, 0.5f, 0));
+        auto none = test::renderRib(
+            head + "Bxdf \"primvar\" \"p\" \"string colorPrimvar\" \"absent\" \"color fill\" [0 0.5 0]\n" + halves,
+            settings);
+        CHECK(pixel(none, 3, 8) == Vec3(0, 0.5f, 0));
+    }
     SECTION("four corner values over a quadric's (u, v); none on a second shape") {
         // A disk's u runs around it and v inward from the rim: the corners give v = 0 black, v = 1 white.
         auto r = test::renderRib(head + "Bxdf \"primvar\" \"p\" \"string floatPrimvar\" \"g\"\n"

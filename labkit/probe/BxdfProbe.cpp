@@ -76,10 +76,12 @@ public:
     }
 
 protected:
-    /// Probe points lie on no geometry: they have no primvars.
-    RixSCDetail PrimVar(RtUString const, RixSCType, void const** result, RtFloat const** radius) const override {
-        *result = nullptr;
-        if (radius) *radius = nullptr;
+    /// Probe points lie on no geometry: they have no primvars (a fill value
+    /// is all there is).
+    RixSCDetail PrimVar(RtUString const, RixSCType wanted, void const** result, RtFloat const** radius,
+                        void const* fill) const override {
+        *result = fill ? primvarValues(wanted, fill, numPts, m_arena) : nullptr;
+        if (radius) *radius = fill ? primvarValues(k_RixSCFloat, nullptr, numPts, m_arena) : nullptr;
         return k_RixSCInvalidDetail;
     }
     int Builtin(BuiltinId id, RixSCType wanted, void const** result) const override {

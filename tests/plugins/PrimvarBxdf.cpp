@@ -1,6 +1,8 @@
 // A test Bxdf that shows a primvar: it emits the color primvar named by
 // "string colorPrimvar" (default "Cs"), or, failing that, the float primvar
 // "string floatPrimvar" as a grey, and reflects nothing. Black where neither exists.
+// Given "color fill", it asks for the colour primvar in RenderMan's form with
+// that fill value instead, and emits what that gives at every point.
 #include <new>
 
 #include "EmitOnlyBxdf.h"
@@ -27,6 +29,7 @@ public:
     RixSCParamInfo const* GetParamTable() override {
         static RixSCParamInfo table[] = {RixSCParamInfo(RtUString("colorPrimvar"), k_RixSCString, k_RixSCScatterInput),
                                          RixSCParamInfo(RtUString("floatPrimvar"), k_RixSCString, k_RixSCScatterInput),
+                                         RixSCParamInfo(RtUString("fill"), k_RixSCColor, k_RixSCScatterInput),
                                          RixSCParamInfo()};
         return table;
     }
@@ -39,6 +42,17 @@ public:
         sCtx->EvalParam(1, -1, &floatName, &none, false);
         RixShadingContext::Allocator pool(sCtx);
         RtColorRGB* emission = pool.AllocForBxdf<RtColorRGB>(sCtx->numPts);
+        RixSCType type;
+        RixSCConnectionInfo fillGiven;
+        sCtx->GetParamInfo(2, &type, &fillGiven);
+        if (fillGiven == k_RixSCParameterListValue) {
+            RtColorRGB const* fill;
+            RtColorRGB const* filled;
+            sCtx->EvalParam(2, -1, &fill);
+            sCtx->GetPrimVar(*colorName, *fill, &filled);
+            for (int i = 0; i < sCtx->numPts; ++i) emission[i] = filled[i];
+            return new (pool.AllocForBxdf<PrimvarEmitter>(1)) PrimvarEmitter(sCtx, this, emission);
+        }
         RtColorRGB const* color = nullptr;
         RtFloat const* grey = nullptr;
         if (sCtx->GetPrimVar(*colorName, &color) == k_RixSCInvalidDetail) color = nullptr;

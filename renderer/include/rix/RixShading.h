@@ -136,6 +136,10 @@ protected:
     virtual int ParamInfo(int id, RixSCType* type, RixSCConnectionInfo* cinfo, int* arrayLength) const = 0;
 };
 
+/// T itself, in a place where a template does not deduce it: GetPrimVar takes
+/// T from its result's type, and converts the fill value to it.
+template <typename T> struct RixNotDeduced { typedef T type; };
+
 /// Per-context flags: what kind of rays led here.
 struct RixSCTraits {
     bool eyePath = true;      ///< the path started at the camera
@@ -231,22 +235,33 @@ public:
     ///   RtColorRGB const* Cs;
     ///   if (sCtx->GetPrimVar(RtUString("Cs"), &Cs) != k_RixSCInvalidDetail) ...
     RixSCDetail GetPrimVar(RtUString const name, RtFloat const** result, RtFloat const** radius = nullptr) const {
-        return PrimVar(name, k_RixSCFloat, (void const**)result, radius);
+        return PrimVar(name, k_RixSCFloat, (void const**)result, radius, nullptr);
     }
     RixSCDetail GetPrimVar(RtUString const name, RtFloat2 const** result, RtFloat const** radius = nullptr) const {
-        return PrimVar(name, k_RixSCFloat2, (void const**)result, radius);
+        return PrimVar(name, k_RixSCFloat2, (void const**)result, radius, nullptr);
     }
     RixSCDetail GetPrimVar(RtUString const name, RtColorRGB const** result, RtFloat const** radius = nullptr) const {
-        return PrimVar(name, k_RixSCColor, (void const**)result, radius);
+        return PrimVar(name, k_RixSCColor, (void const**)result, radius, nullptr);
     }
     RixSCDetail GetPrimVar(RtUString const name, RtFloat3 const** result, RtFloat const** radius = nullptr) const {
-        return PrimVar(name, k_RixSCVector, (void const**)result, radius);
+        return PrimVar(name, k_RixSCVector, (void const**)result, radius, nullptr);
     }
     RixSCDetail GetPrimVar(RtUString const name, RtPoint3 const** result, RtFloat const** radius = nullptr) const {
-        return PrimVar(name, k_RixSCPoint, (void const**)result, radius);
+        return PrimVar(name, k_RixSCPoint, (void const**)result, radius, nullptr);
     }
     RixSCDetail GetPrimVar(RtUString const name, RtNormal3 const** result, RtFloat const** radius = nullptr) const {
-        return PrimVar(name, k_RixSCNormal, (void const**)result, radius);
+        return PrimVar(name, k_RixSCNormal, (void const**)result, radius, nullptr);
+    }
+    /// RenderMan's form with a fill value: the same, except that points whose
+    /// shape lacks the primvar get `fill`, and *result is numPts values even
+    /// when no shape has it (then all `fill`, and the answer is
+    /// k_RixSCInvalidDetail), so it can be read without a test:
+    ///   RtFloat2 const* st;
+    ///   sCtx->GetPrimVar(RtUString("st"), RtFloat2(0.0f, 0.0f), &st);
+    template <typename T>
+    RixSCDetail GetPrimVar(RtUString const name, typename RixNotDeduced<T>::type const& fill, T const** result,
+                           RtFloat const** radius = nullptr) const {
+        return PrimVar(name, PrimVarType(static_cast<T const*>(nullptr)), (void const**)result, radius, &fill);
     }
 
     /// Renderer services (RixMessages) while shading.
@@ -280,9 +295,10 @@ protected:
                               void const** result, void const* dflt, bool promote) const = 0;
     virtual void* Allocate(size_t bytes, size_t alignment) const = 0;
     virtual int ParamInfo(int id, RixSCType* type, RixSCConnectionInfo* cinfo, int* arrayLength) const = 0;
-    /// Renderer side of GetPrimVar: numPts values of the type asked for, or k_RixSCInvalidDetail.
+    /// Renderer side of GetPrimVar: numPts values of the type asked for, or
+    /// k_RixSCInvalidDetail; `fill` (null: zeros) where a shape lacks it.
     virtual RixSCDetail PrimVar(RtUString const name, RixSCType wanted, void const** result,
-                                RtFloat const** radius) const = 0;
+                                RtFloat const** radius, void const* fill) const = 0;
 
 private:
     static RixSCType TypeOf(RtFloat const*) { return k_RixSCFloat; }
@@ -294,6 +310,14 @@ private:
     static RixSCType TypeOf(RtFloat3 const*) { return k_RixSCVector; }
     static RixSCType TypeOf(RtUString const*) { return k_RixSCString; }
     static RixSCType TypeOf(RtFloat2 const*) { return k_RixSCFloat2; }
+    // The types a primvar can have (one to three floats).
+    static RixSCType PrimVarType(RtFloat const*) { return k_RixSCFloat; }
+    static RixSCType PrimVarType(RtFloat2 const*) { return k_RixSCFloat2; }
+    static RixSCType PrimVarType(RtColorRGB const*) { return k_RixSCColor; }
+    static RixSCType PrimVarType(RtFloat3 const*) { return k_RixSCVector; }
+    static RixSCType PrimVarType(RtVector3 const*) { return k_RixSCVector; }
+    static RixSCType PrimVarType(RtPoint3 const*) { return k_RixSCPoint; }
+    static RixSCType PrimVarType(RtNormal3 const*) { return k_RixSCNormal; }
 };
 
 /// Base class of every shading plugin factory (Bxdfs derive RixBxdfFactory).

@@ -282,9 +282,9 @@ protected:
     int ParamInfo(int id, RixSCType* type, RixSCConnectionInfo* cinfo, int* arrayLength) const override {
         return m_pattern.params().describe(id, type, cinfo, arrayLength);
     }
-    RixSCDetail PrimVar(RtUString const name, RixSCType wanted, void const** result,
-                        RtFloat const** radius) const override {
-        return m_parent.PrimVar(name, wanted, result, radius);
+    RixSCDetail PrimVar(RtUString const name, RixSCType wanted, void const** result, RtFloat const** radius,
+                        void const* fill) const override {
+        return m_parent.PrimVar(name, wanted, result, radius, fill);
     }
 
 private:
@@ -363,14 +363,22 @@ bool primvarMatches(Primvar const& var, RixSCType wanted) {
 
 }  // namespace
 
+float* primvarValues(RixSCType wanted, void const* fill, int numPts, MemoryArena& arena) {
+    int const components = wanted == k_RixSCFloat ? 1 : wanted == k_RixSCFloat2 ? 2 : 3;
+    float* values = arena.allocArray<float>(static_cast<size_t>(numPts * components));
+    for (int i = 0; i < numPts; ++i)
+        for (int c = 0; c < components; ++c)
+            values[i * components + c] = fill ? static_cast<float const*>(fill)[c] : 0.0f;
+    return values;
+}
+
 RixSCDetail ShadingContextImpl::PrimVar(RtUString const name, RixSCType wanted, void const** result,
-                                        RtFloat const** radius) const {
+                                        RtFloat const** radius, void const* fill) const {
     *result = nullptr;
     if (radius) *radius = nullptr;
     int const components = wanted == k_RixSCFloat ? 1 : wanted == k_RixSCFloat2 ? 2 : 3;
     std::string const wantedName = name.CStr() ? name.CStr() : "";
-    float* values = m_arena.allocArray<float>(static_cast<size_t>(numPts * components));
-    std::fill(values, values + numPts * components, 0.0f);
+    float* values = primvarValues(wanted, fill, numPts, m_arena);
     bool found = false, uniform = true;
     Shape const* first = nullptr;
     for (int i = 0; i < numPts; ++i) {
@@ -385,14 +393,10 @@ RixSCDetail ShadingContextImpl::PrimVar(RtUString const name, RixSCType wanted, 
         uniform = uniform && var->detail == Primvar::Detail::Constant && (!first || first == &shape);
         first = &shape;
     }
-    if (!found) return k_RixSCInvalidDetail;
+    if (!found && !fill) return k_RixSCInvalidDetail;
     *result = values;
-    if (radius) {
-        float* zeros = m_arena.allocArray<float>(static_cast<size_t>(numPts));
-        std::fill(zeros, zeros + numPts, 0.0f);
-        *radius = zeros;
-    }
-    return uniform ? k_RixSCUniform : k_RixSCVarying;
+    if (radius) *radius = primvarValues(k_RixSCFloat, nullptr, numPts, m_arena);
+    return !found ? k_RixSCInvalidDetail : uniform ? k_RixSCUniform : k_RixSCVarying;
 }
 
 }  // namespace bxdflab

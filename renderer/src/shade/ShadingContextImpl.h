@@ -39,6 +39,10 @@ struct ParamQuery {
 RixSCDetail evalUniformParam(NodeParams const& node, ParamQuery const& query, void const** result, int numPts,
                              MemoryArena& arena);
 
+/// numPts values of a primvar's type, each `fill` (or zeros without one):
+/// GetPrimVar's answer before the shapes give theirs.
+float* primvarValues(RixSCType wanted, void const* fill, int numPts, MemoryArena& arena);
+
 /// Whether a builtin is one float per point (the others are three).
 bool isFloatBuiltin(RixShadingContext::BuiltinId id);
 
@@ -80,7 +84,8 @@ protected:
                       void const* dflt, bool promote) const override;
     void* Allocate(size_t bytes, size_t alignment) const override { return m_arena.allocate(bytes, alignment); }
     int ParamInfo(int id, RixSCType* type, RixSCConnectionInfo* cinfo, int* arrayLength) const override;
-    RixSCDetail PrimVar(RtUString const name, RixSCType wanted, void const** result, RtFloat const** radius) const override;
+    RixSCDetail PrimVar(RtUString const name, RixSCType wanted, void const** result, RtFloat const** radius,
+                        void const* fill) const override;
 
 private:
     friend class PatternContext;
