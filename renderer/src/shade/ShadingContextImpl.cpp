@@ -4,6 +4,7 @@
 #include <string>
 
 #include "core/Error.h"
+#include "shade/ParamTypes.h"
 
 namespace bxdflab {
 namespace {
@@ -364,7 +365,7 @@ bool primvarMatches(Primvar const& var, RixSCType wanted) {
 }  // namespace
 
 float* primvarValues(RixSCType wanted, void const* fill, int numPts, MemoryArena& arena) {
-    int const components = wanted == k_RixSCFloat ? 1 : wanted == k_RixSCFloat2 ? 2 : 3;
+    int const components = valuesPerElement(wanted);
     float* values = arena.allocArray<float>(static_cast<size_t>(numPts * components));
     for (int i = 0; i < numPts; ++i)
         for (int c = 0; c < components; ++c)
@@ -376,7 +377,7 @@ RixSCDetail ShadingContextImpl::PrimVar(RtUString const name, RixSCType wanted, 
                                         RtFloat const** radius, void const* fill) const {
     *result = nullptr;
     if (radius) *radius = nullptr;
-    int const components = wanted == k_RixSCFloat ? 1 : wanted == k_RixSCFloat2 ? 2 : 3;
+    int const components = valuesPerElement(wanted);
     std::string const wantedName = name.CStr() ? name.CStr() : "";
     float* values = primvarValues(wanted, fill, numPts, m_arena);
     bool found = false, uniform = true;
