@@ -7,6 +7,7 @@
 #include "RixIntegrator.h"
 #include "RixInterfaces.h"
 #include "RixPattern.h"
+#include "RixPredefinedStrings.hpp"
 #include "RixRNG.h"
 #include "RixShading.h"
 #include "RixShadingUtils.h"

@@ -19,7 +19,8 @@ RECORD = Path("tests/rix-api-version.txt")
 
 def fingerprint(root):
     text = ""
-    for header in sorted((root / "renderer/include/rix").glob("*.h")):
+    folder = root / "renderer/include/rix"
+    for header in sorted(list(folder.glob("*.h")) + list(folder.glob("*.hpp"))):
         code = re.sub(r"/\*.*?\*/", " ", header.read_text(), flags=re.S)
         code = re.sub(r"//[^\n]*", " ", code)
         text += header.name + ":" + " ".join(code.split()) + "\n"

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "RixBxdf.h"
+#include "RixPredefinedStrings.hpp"
 #include "RixShadingUtils.h"
 #include "shade/MemoryArena.h"
 
@@ -38,6 +39,20 @@ TEST_CASE("Rt types: vector algebra, colour arithmetic, interned strings", "[api
     CHECK(product.g == 0.0f);
     CHECK(RtUString("diffuseColor") == RtUString(std::string("diffuseColor").c_str()));
     CHECK(RtUString("a") != RtUString("b"));
+    // As a condition, a string is true when it holds text.
+    CHECK(static_cast<bool>(RtUString("st")));
+    CHECK_FALSE(static_cast<bool>(RtUString("")));
+    CHECK_FALSE(static_cast<bool>(RtUString()));
+}
+
+TEST_CASE("RixPredefinedStrings.hpp: RenderMan's names for primvars and coordinate systems", "[api]") {
+    CHECK(Rix::k_st == RtUString("st"));
+    CHECK(Rix::k_Cs == RtUString("Cs"));
+    CHECK(Rix::k_Pref == RtUString("__Pref"));
+    CHECK(Rix::k_object == RtUString("object"));
+    CHECK(Rix::k_NDC == RtUString("NDC"));
+    CHECK(Rix::k_empty.Empty());
+    CHECK(Rix::k_st.CStr() == RtUString("st").CStr());  // interned: the same text, once
 }
 
 TEST_CASE("RtUString: equal text interns to one pointer, also when threads race to add it", "[api]") {

@@ -61,6 +61,8 @@ public:
     /// The characters, or an empty string for a default-constructed RtUString.
     const char* CStr() const { return m_str ? m_str : ""; }
     bool Empty() const { return m_str == nullptr || m_str[0] == '\0'; }
+    /// True when it holds text: `if (name && ...)` as RenderMan's plugins write it.
+    explicit operator bool() const { return !Empty(); }
     bool operator==(RtUString const& o) const {
         return m_str == o.m_str || std::strcmp(CStr(), o.CStr()) == 0;
     }
