@@ -1221,6 +1221,28 @@ TEST_CASE("primvars reach plugins (GetPrimVar): constant, per-face, per-vertex a
             settings);
         CHECK(pixel(none, 3, 8) == Vec3(0, 0.5f, 0));
     }
+    SECTION("texture coordinates, Rix::k_st, on every surface: its st primvar, TextureCoordinates, else (u, v)") {
+        // A bilinear patch's u runs left to right and v top to bottom; blue is the filter radius (none here).
+        std::string const patch = "Patch \"bilinear\" \"P\" [-1 1 0  1 1 0  -1 -1 0  1 -1 0]\n";
+        auto uv = test::renderRib(head + "Bxdf \"primvar\" \"p\" \"string pairPrimvar\" \"st\"\n" + patch, settings);
+        CHECK(pixel(uv, 1, 8).x == Approx(1.5f / 16).margin(0.02));
+        CHECK(pixel(uv, 14, 8).x == Approx(14.5f / 16).margin(0.02));
+        CHECK(pixel(uv, 8, 1).y == Approx(1.5f / 16).margin(0.02));
+        CHECK(pixel(uv, 8, 14).y == Approx(14.5f / 16).margin(0.02));
+        CHECK(pixel(uv, 8, 8).z == 0.0f);
+        auto mapped = test::renderRib(head + "Bxdf \"primvar\" \"p\" \"string pairPrimvar\" \"st\"\n"
+                                             "TextureCoordinates 1 0  0 0  1 1  0 1\n" + patch,
+                                      settings);
+        CHECK(pixel(mapped, 1, 8).x == Approx(14.5f / 16).margin(0.02));  // s reversed
+        auto given = test::renderRib(head + "Bxdf \"primvar\" \"p\" \"string pairPrimvar\" \"st\"\n"
+                                            "Polygon \"P\" [-1 -1 0  1 -1 0  1 1 0  -1 1 0] "
+                                            "\"facevarying float[2] st\" [0.25 0.5  0.25 0.5  0.25 0.5  0.25 0.5]\n",
+                                     settings);
+        CHECK(pixel(given, 8, 8) == Vec3(0.25f, 0.5f, 0.0f));
+        auto other = test::renderRib(head + "Bxdf \"primvar\" \"p\" \"string pairPrimvar\" \"absent\"\n" + patch,
+                                     settings);
+        CHECK(pixel(other, 8, 8) == Vec3(0.0f));  // another float[2] name: the fill
+    }
     SECTION("four corner values over a quadric's (u, v); none on a second shape") {
         // A disk's u runs around it and v inward from the rim: the corners give v = 0 black, v = 1 white.
         auto r = test::renderRib(head + "Bxdf \"primvar\" \"p\" \"string floatPrimvar\" \"g\"\n"

@@ -77,12 +77,20 @@ public:
 
 protected:
     /// Probe points lie on no geometry: they have no primvars (a fill value
-    /// is all there is).
-    RixSCDetail PrimVar(RtUString const, RixSCType wanted, void const** result, RtFloat const** radius,
+    /// is all there is), except the texture coordinates every surface has,
+    /// "st", which are the builtins s and t, as in the renderer.
+    RixSCDetail PrimVar(RtUString const name, RixSCType wanted, void const** result, RtFloat const** radius,
                         void const* fill) const override {
-        *result = fill ? primvarValues(wanted, fill, numPts, m_arena) : nullptr;
-        if (radius) *radius = fill ? primvarValues(k_RixSCFloat, nullptr, numPts, m_arena) : nullptr;
-        return k_RixSCInvalidDetail;
+        bool const st = wanted == k_RixSCFloat2 && name == RtUString("st");
+        float* values = fill || st ? primvarValues(wanted, fill, numPts, m_arena) : nullptr;
+        *result = values;
+        if (radius) *radius = values ? primvarValues(k_RixSCFloat, nullptr, numPts, m_arena) : nullptr;
+        if (!st) return k_RixSCInvalidDetail;
+        for (int i = 0; i < numPts; ++i) {
+            values[2 * i] = static_cast<float const*>(m_builtins[k_s])[i];
+            values[2 * i + 1] = static_cast<float const*>(m_builtins[k_t])[i];
+        }
+        return k_RixSCVarying;
     }
     int Builtin(BuiltinId id, RixSCType wanted, void const** result) const override {
         *result = nullptr;

@@ -2,10 +2,13 @@
 // "string colorPrimvar" (default "Cs"), or, failing that, the float primvar
 // "string floatPrimvar" as a grey, and reflects nothing. Black where neither exists.
 // Given "color fill", it asks for the colour primvar in RenderMan's form with
-// that fill value instead, and emits what that gives at every point.
+// that fill value instead, and emits what that gives at every point. Given
+// "string pairPrimvar" (a float[2] primvar such as Rix::k_st), it emits its
+// two values as red and green, asked for as RenderMan's patterns ask for st.
 #include <new>
 
 #include "EmitOnlyBxdf.h"
+#include "RixPredefinedStrings.hpp"
 
 namespace {
 
@@ -30,6 +33,7 @@ public:
         static RixSCParamInfo table[] = {RixSCParamInfo(RtUString("colorPrimvar"), k_RixSCString, k_RixSCScatterInput),
                                          RixSCParamInfo(RtUString("floatPrimvar"), k_RixSCString, k_RixSCScatterInput),
                                          RixSCParamInfo(RtUString("fill"), k_RixSCColor, k_RixSCScatterInput),
+                                         RixSCParamInfo(RtUString("pairPrimvar"), k_RixSCString, k_RixSCScatterInput),
                                          RixSCParamInfo()};
         return table;
     }
@@ -42,6 +46,15 @@ public:
         sCtx->EvalParam(1, -1, &floatName, &none, false);
         RixShadingContext::Allocator pool(sCtx);
         RtColorRGB* emission = pool.AllocForBxdf<RtColorRGB>(sCtx->numPts);
+        RtUString const* pairName;
+        sCtx->EvalParam(3, -1, &pairName, &Rix::k_empty, false);
+        if (*pairName) {
+            RtFloat2 const* pair;
+            RtFloat const* radius;
+            sCtx->GetPrimVar(*pairName, RtFloat2(0.0f, 0.0f), &pair, &radius);
+            for (int i = 0; i < sCtx->numPts; ++i) emission[i] = RtColorRGB(pair[i].x, pair[i].y, radius[i]);
+            return new (pool.AllocForBxdf<PrimvarEmitter>(1)) PrimvarEmitter(sCtx, this, emission);
+        }
         RixSCType type;
         RixSCConnectionInfo fillGiven;
         sCtx->GetParamInfo(2, &type, &fillGiven);

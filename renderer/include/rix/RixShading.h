@@ -232,6 +232,8 @@ public:
     /// k_RixSCUniform (the same value at every point) or k_RixSCVarying.
     /// Points on a shape without it get zeros. `radius`, if you pass it,
     /// receives the filter radius of each value (0 here: no filtering).
+    /// Every surface has "st" (as float[2]), as in RenderMan: its st primvar,
+    /// its TextureCoordinates, or else its (u, v), the values of k_s and k_t.
     ///   RtColorRGB const* Cs;
     ///   if (sCtx->GetPrimVar(RtUString("Cs"), &Cs) != k_RixSCInvalidDetail) ...
     RixSCDetail GetPrimVar(RtUString const name, RtFloat const** result, RtFloat const** radius = nullptr) const {
@@ -257,7 +259,7 @@ public:
     /// when no shape has it (then all `fill`, and the answer is
     /// k_RixSCInvalidDetail), so it can be read without a test:
     ///   RtFloat2 const* st;
-    ///   sCtx->GetPrimVar(RtUString("st"), RtFloat2(0.0f, 0.0f), &st);
+    ///   sCtx->GetPrimVar(Rix::k_st, RtFloat2(0.0f, 0.0f), &st);  // RixPredefinedStrings.hpp
     template <typename T>
     RixSCDetail GetPrimVar(RtUString const name, typename RixNotDeduced<T>::type const& fill, T const** result,
                            RtFloat const** radius = nullptr) const {

@@ -376,10 +376,23 @@ float* primvarValues(RixSCType wanted, void const* fill, int numPts, MemoryArena
 RixSCDetail ShadingContextImpl::PrimVar(RtUString const name, RixSCType wanted, void const** result,
                                         RtFloat const** radius, void const* fill) const {
     *result = nullptr;
-    if (radius) *radius = nullptr;
     int const components = valuesPerElement(wanted);
     std::string const wantedName = name.CStr() ? name.CStr() : "";
     float* values = primvarValues(wanted, fill, numPts, m_arena);
+    if (radius) *radius = primvarValues(k_RixSCFloat, nullptr, numPts, m_arena);
+    if (wanted == k_RixSCFloat2 && wantedName == "st") {
+        // Every surface has texture coordinates, as in RenderMan: the builtins
+        // k_s and k_t already are its st primvar, its TextureCoordinates or its (u, v).
+        float const *s, *t;
+        Builtin(k_s, k_RixSCFloat, reinterpret_cast<void const**>(&s));
+        Builtin(k_t, k_RixSCFloat, reinterpret_cast<void const**>(&t));
+        for (int i = 0; i < numPts; ++i) {
+            values[2 * i] = s[i];
+            values[2 * i + 1] = t[i];
+        }
+        *result = values;
+        return k_RixSCVarying;
+    }
     bool found = false, uniform = true;
     Shape const* first = nullptr;
     for (int i = 0; i < numPts; ++i) {
@@ -394,9 +407,11 @@ RixSCDetail ShadingContextImpl::PrimVar(RtUString const name, RixSCType wanted, 
         uniform = uniform && var->detail == Primvar::Detail::Constant && (!first || first == &shape);
         first = &shape;
     }
-    if (!found && !fill) return k_RixSCInvalidDetail;
+    if (!found && !fill) {
+        if (radius) *radius = nullptr;
+        return k_RixSCInvalidDetail;
+    }
     *result = values;
-    if (radius) *radius = primvarValues(k_RixSCFloat, nullptr, numPts, m_arena);
     return !found ? k_RixSCInvalidDetail : uniform ? k_RixSCUniform : k_RixSCVarying;
 }
 
