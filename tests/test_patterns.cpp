@@ -4,6 +4,7 @@
 #include <OpenImageIO/texture.h>
 
 #include <catch2/catch.hpp>
+#include <algorithm>
 #include <cmath>
 
 #include "core/ImageFiles.h"
@@ -363,4 +364,34 @@ TEST_CASE("a pattern written for RenderMan 22 (OutputSpec, baking methods) asks 
     CHECK(grey("") == Approx(0.0f).margin(1e-6));
     CHECK(grey("\"color input\" [1 1 1]") == Approx(0.5f));
     CHECK(grey("\"reference color input\" [\"tex:resultRGB\"]") == Approx(1.0f));
+}
+
+TEST_CASE("a pattern with RenderMan's manifold structs: struct output and input, outputs computed only when read",
+          "[patterns][api]") {
+    // manifold's result is (s, t, 0) * scale, or its connected manifold's Q * scale;
+    // resultS and resultT are its x and y, computed only where GetParamInfo says
+    // something reads them (the other is handed back as k_RixSCInvalidDetail).
+    auto shown = [](std::string const& patterns, std::string const& output) {
+        return test::renderRib(kHead + patterns + "Pattern \"PxrMix\" \"show\" \"color color1\" [0 0 0] "
+                                                  "\"color color2\" [1 1 1] \"reference float mix\" [\"" + output +
+                                   "\"]\nBxdf \"PxrConstant\" \"c\" \"reference color emitColor\" [\"show:resultRGB\"]\n" +
+                                   kSquare,
+                               fewSamples());
+    };
+    std::string const half = "Pattern \"manifold\" \"m1\" \"float scale\" [0.5]\n";
+    auto s = shown(half, "m1:resultS");
+    auto t = shown(half, "m1:resultT");
+    for (int k : {1, 8, 14}) {
+        CHECK(s.channel(k, 8, 0) == Approx(0.5f * pixelU(k)).margin(0.01));
+        CHECK(t.channel(8, k, 0) == Approx(0.5f * pixelV(k)).margin(0.01));
+    }
+    // "reference struct manifold" joins m1's result (its Q) to m2's manifold input.
+    auto chained = shown(half + "Pattern \"manifold\" \"m2\" \"float scale\" [4] "
+                                "\"reference struct manifold\" [\"m1:result\"]\n",
+                         "m2:resultS");
+    for (int k : {1, 8, 14}) CHECK(chained.channel(k, 8, 0) == Approx(std::min(1.0f, 2.0f * pixelU(k))).margin(0.01));
+    // A member by its own name: result.Q is the struct's point.
+    auto member = shown(half + "Pattern \"manifold\" \"m2\" \"reference point manifold.Q\" [\"m1:result.Q\"]\n",
+                        "m2:resultT");
+    CHECK(member.channel(8, 4, 0) == Approx(0.5f * pixelV(4)).margin(0.01));
 }

@@ -42,6 +42,9 @@ public:
     ///   *numOutputs = 1; *outputs = out;
     ///
     /// Read your inputs with sCtx->EvalParam (they may be connected too).
+    /// An output nothing reads may be skipped: sCtx->GetParamInfo(id, &type,
+    /// &cinfo) on an output answers k_RixSCNetworkValue when a connection reads
+    /// it; hand the others back with detail k_RixSCInvalidDetail and no value.
     /// `ignoredParamTable` is RenderMan's; this renderer passes nullptr. Return 0.
     virtual int ComputeOutputParams(RixShadingContext const* sCtx, RtInt* numOutputs, OutputSpecification** outputs,
                                     RtPointer instanceData, RixSCParamInfo const* ignoredParamTable) = 0;

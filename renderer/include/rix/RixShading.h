@@ -25,6 +25,8 @@ enum RixSCType {
     k_RixSCPoint,
     k_RixSCString,
     k_RixSCFloat2,
+    k_RixSCStructBegin,  ///< opens a struct in a parameter table (see RixSCParamInfo)
+    k_RixSCStructEnd,    ///< closes it
 };
 
 /// What a parameter is for. Bxdf inputs read during scattering are
@@ -98,6 +100,21 @@ struct RixSCParamInfo {
     RixSCParamInfo(RtUString paramName, RixSCType paramType,
                    RixSCAccess paramAccess = k_RixSCInput, int length = -1)
         : name(paramName), type(paramType), access(paramAccess), arraySize(length) {}
+    /// A struct's first or last row (`marker` is k_RixSCStructBegin or
+    /// k_RixSCStructEnd), as RenderMan's patterns declare a manifold:
+    ///   RixSCParamInfo(RtUString("PxrManifold"), RtUString("result"), k_RixSCStructBegin, k_RixSCOutput),
+    ///   RixSCParamInfo(RtUString("Q"), k_RixSCPoint, k_RixSCOutput),        // "result.Q"
+    ///   RixSCParamInfo(RtUString("Qradius"), k_RixSCFloat, k_RixSCOutput),  // "result.Qradius"
+    ///   RixSCParamInfo(RtUString("PxrManifold"), RtUString("result"), k_RixSCStructEnd, k_RixSCOutput),
+    /// The rows between are its members; each keeps its own id. A RIB
+    /// connection to the struct ("reference struct manifold" ["node:result"])
+    /// joins its point member, the manifold's Q: here a manifold travels as
+    /// that point (the struct's type name is not kept).
+    RixSCParamInfo(RtUString structType, RtUString structName, RixSCType marker,
+                   RixSCAccess paramAccess = k_RixSCInput)
+        : name(structName), type(marker), access(paramAccess) {
+        PIXAR_ARGUSED(structType);
+    }
     bool IsEndOfTable() const { return type == k_RixSCInvalidType; }
 };
 

@@ -173,6 +173,7 @@ struct Renderer::Impl {
 
 void Renderer::Impl::loadPatterns(std::vector<MaterialDesc> const& usedMaterials) {
     std::vector<char> const reached = patternsReached(usedMaterials, scene.patterns);
+    std::vector<std::set<std::string>> const read = outputsRead(usedMaterials, scene.patterns);
 
     patterns.resize(scene.patterns.size());
     auto patternOf = [this](int index) -> PatternInstance const* { return patterns[static_cast<size_t>(index)].get(); };
@@ -200,7 +201,7 @@ void Renderer::Impl::loadPatterns(std::vector<MaterialDesc> const& usedMaterials
             missing.emplace(desc.plugin, Missing{&desc, 0});
             continue;
         }
-        patterns[i] = std::make_unique<PatternInstance>(desc, *plugin, patternOf, patternCounters, diagnostics);
+        patterns[i] = std::make_unique<PatternInstance>(desc, read[i], *plugin, patternOf, patternCounters, diagnostics);
         if (!textures) {
             textures = openTextures(diagnostics);
             if (textures) textures->setLocator(scene.textureLocator());

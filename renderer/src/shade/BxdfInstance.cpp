@@ -12,7 +12,7 @@ NodeParams::PatternLookup orNone(NodeParams::PatternLookup const& patternOf) {
 
 BxdfInstance::BxdfInstance(MaterialDesc const& material, ShadingPlugin& plugin, Diagnostics& diagnostics,
                            NodeParams::PatternLookup const& patternOf)
-    : NodeInstance("Bxdf", material.handle, material.where, material.params, material.connections, plugin,
+    : NodeInstance("Bxdf", material.handle, material.where, material.params, material.connections, {}, plugin,
                    orNone(patternOf), diagnostics),
       m_hints(plugin.factory()->GetInstanceHints(instanceData())) {}
 

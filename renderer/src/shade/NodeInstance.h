@@ -6,6 +6,7 @@
 #pragma once
 
 #include <map>
+#include <set>
 #include <string>
 
 #include "core/Diagnostics.h"
@@ -29,10 +30,10 @@ public:
 protected:
     /// kind: "Bxdf" or "Pattern", for messages. Matches the parameters (located
     /// errors on a type mismatch, warnings for unknown names) and calls the
-    /// plugin's CreateInstanceData.
+    /// plugin's CreateInstanceData. `outputsRead`: the outputs connections read (a pattern's).
     NodeInstance(char const* kind, std::string const& handle, SourceLocation const& where, ParamList const& params,
-                 std::map<std::string, Connection> const& connections, ShadingPlugin& plugin,
-                 NodeParams::PatternLookup const& patternOf, Diagnostics& diagnostics);
+                 std::map<std::string, Connection> const& connections, std::set<std::string> const& outputsRead,
+                 ShadingPlugin& plugin, NodeParams::PatternLookup const& patternOf, Diagnostics& diagnostics);
     ~NodeInstance();
 
 private:

@@ -8,17 +8,18 @@
 namespace bxdflab {
 namespace {
 
-std::vector<std::string> namesIn(std::vector<RixSCParamInfo> const& table, bool outputs) {
+std::vector<std::string> namesIn(ShadingPlugin const& plugin, bool outputs) {
     std::vector<std::string> names;
-    for (auto const& entry : table)
-        if ((entry.access == k_RixSCOutput) == outputs) names.emplace_back(entry.name.CStr());
+    for (size_t i = 0; i < plugin.paramTable().size(); ++i)
+        if ((plugin.paramTable()[i].access == k_RixSCOutput) == outputs && !plugin.paramNames()[i].empty())
+            names.push_back(plugin.paramNames()[i]);
     return names;
 }
 
 /// What to say about a name a plugin does not have among its inputs (or
 /// outputs): the one it was likely meant to be, then all of them.
-std::string namesHint(std::string const& name, std::vector<RixSCParamInfo> const& table, bool outputs) {
-    std::vector<std::string> const names = namesIn(table, outputs);
+std::string namesHint(std::string const& name, ShadingPlugin const& plugin, bool outputs) {
+    std::vector<std::string> const names = namesIn(plugin, outputs);
     std::string list;
     for (std::string const& known : names) list += (list.empty() ? "" : ", ") + known;
     std::string const meant = closestSpelling(name, names);
@@ -52,13 +53,21 @@ Param typedByPlugin(Param const& written, RixSCParamInfo const& info, std::strin
 }  // namespace
 
 NodeParams::NodeParams(std::string const& kind, ShadingPlugin const& plugin, ParamList const& params,
-                       std::map<std::string, Connection> const& connections, PatternLookup const& patternOf,
+                       std::map<std::string, Connection> const& connections,
+                       std::set<std::string> const& outputsRead, PatternLookup const& patternOf,
                        Diagnostics& diagnostics)
     : m_table(&plugin.paramTable()) {
     auto const& table = plugin.paramTable();
     m_values.resize(table.size());
     m_connections.resize(table.size());
-    for (size_t i = 0; i < table.size(); ++i) m_values[i].type = table[i].type;
+    m_outputRead.resize(table.size());
+    for (size_t i = 0; i < table.size(); ++i) {
+        m_values[i].type = table[i].type;
+        // A struct's members are read when the struct is ("result" reads "result.Q").
+        std::string const& name = plugin.paramNames()[i];
+        m_outputRead[i] = table[i].access == k_RixSCOutput &&
+                          (outputsRead.count(name) || outputsRead.count(name.substr(0, name.find('.'))));
+    }
     std::string const owner = kind + " \"" + plugin.name() + "\"";
 
     for (Param const& written : params.all()) {
@@ -67,7 +76,7 @@ NodeParams::NodeParams(std::string const& kind, ShadingPlugin const& plugin, Par
         if (id < 0 || table[static_cast<size_t>(id)].access == k_RixSCOutput) {
             diagnostics.warn(written.location, owner + " has no " + (id < 0 ? "" : "input ") + "parameter \"" +
                                                    written.name() + "\"; ignored (" +
-                                                   namesHint(written.name(), table, false) + ")");
+                                                   namesHint(written.name(), plugin, false) + ")");
             continue;
         }
         RixSCParamInfo const& info = table[static_cast<size_t>(id)];
@@ -111,7 +120,7 @@ NodeParams::NodeParams(std::string const& kind, ShadingPlugin const& plugin, Par
             if (output < 0 || from.paramTable()[static_cast<size_t>(output)].access != k_RixSCOutput)
                 throw RibError(link.where, owner + " parameter \"" + p.name() + "\": pattern \"" + source->handle() +
                                                "\" (" + from.name() + ") has no output \"" + link.output +
-                                               "\" (" + namesHint(link.output, from.paramTable(), true) + ")");
+                                               "\" (" + namesHint(link.output, from, true) + ")");
             RixSCType outType = from.paramTable()[static_cast<size_t>(output)].type;
             if (!connectable(outType, info.type))
                 throw RibError(link.where, owner + " parameter \"" + p.name() + "\" is a " + ribTypeFor(info.type) +
@@ -136,9 +145,9 @@ int NodeParams::describe(int id, RixSCType* type, RixSCConnectionInfo* cinfo, in
     RixSCParamInfo const& row = (*m_table)[static_cast<size_t>(id)];
     if (type) *type = row.type;
     if (cinfo)
-        *cinfo = connection(id) ? k_RixSCNetworkValue
-                 : given->set   ? k_RixSCParameterListValue
-                                : k_RixSCDefaultValue;
+        *cinfo = connection(id) || m_outputRead[static_cast<size_t>(id)] ? k_RixSCNetworkValue
+                 : given->set                                           ? k_RixSCParameterListValue
+                                                                        : k_RixSCDefaultValue;
     if (arrayLength) {
         size_t const values = row.type == k_RixSCString    ? given->strings.size()
                               : row.type == k_RixSCInteger ? given->ints.size()

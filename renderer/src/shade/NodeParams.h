@@ -6,6 +6,7 @@
 
 #include <functional>
 #include <map>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -42,10 +43,11 @@ public:
 
     /// `kind` is "Bxdf" or "Pattern" (for messages). Throws a located RibError
     /// on a type mismatch or a connection to an output the pattern lacks;
-    /// warns about names the plugin does not have.
+    /// warns about names the plugin does not have. `outputsRead` names the
+    /// node's outputs that connections read (a pattern's; GetParamInfo says so).
     NodeParams(std::string const& kind, ShadingPlugin const& plugin, ParamList const& params,
-               std::map<std::string, Connection> const& connections, PatternLookup const& patternOf,
-               Diagnostics& diagnostics);
+               std::map<std::string, Connection> const& connections, std::set<std::string> const& outputsRead,
+               PatternLookup const& patternOf, Diagnostics& diagnostics);
 
     /// Value of parameter `id` (table order); nullptr for an out-of-range id.
     ParamValue const* value(int id) const {
@@ -59,8 +61,9 @@ public:
     }
     std::vector<ParamValue> const& values() const { return m_values; }
     /// GetParamInfo's answer for parameter `id` (any pointer may be null):
-    /// its declared type, connected / given / left to the default, and the
-    /// element count of an array parameter (-1 for one that is not).
+    /// its declared type, connected / given / left to the default (for an
+    /// output: connected when a connection reads it), and the element count
+    /// of an array parameter (-1 for one that is not).
     int describe(int id, RixSCType* type, RixSCConnectionInfo* cinfo, int* arrayLength) const;
     /// The name of parameter `id` in the plugin's table ("" for an out-of-range id).
     char const* name(int id) const {
@@ -71,6 +74,7 @@ private:
     std::vector<RixSCParamInfo> const* m_table;
     std::vector<ParamValue> m_values;
     std::vector<ParamConnection> m_connections;
+    std::vector<char> m_outputRead;  ///< per row: an output some connection reads
 };
 
 /// The RIB parameters of a node as a RixParameterList (for CreateInstanceData).

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <atomic>
+#include <set>
 #include <string>
 
 #include "RixPattern.h"
@@ -21,8 +22,9 @@ struct PatternCounters {
 
 class PatternInstance : public NodeInstance {
 public:
-    PatternInstance(PatternDesc const& desc, ShadingPlugin& plugin, NodeParams::PatternLookup const& patternOf,
-                    PatternCounters& counters, Diagnostics& diagnostics);
+    /// `outputsRead`: the names of its outputs that connections read.
+    PatternInstance(PatternDesc const& desc, std::set<std::string> const& outputsRead, ShadingPlugin& plugin,
+                    NodeParams::PatternLookup const& patternOf, PatternCounters& counters, Diagnostics& diagnostics);
 
     PatternCounters& counters() const { return m_counters; }
 

@@ -65,14 +65,29 @@ ShadingPlugin::ShadingPlugin(Kind kind, std::string name, std::string path, Diag
     }
     RixSCParamInfo const* table = m_factory->GetParamTable();
     if (!table) fail("GetParamTable returned null (return a table that ends with RixSCParamInfo())");
+    std::string openStruct;  // the struct whose members the rows are, if any
     for (size_t i = 0;; ++i) {
         if (i == kMaxParams)
             fail("the parameter table has no end marker RixSCParamInfo() in its first " + std::to_string(kMaxParams) + " entries");
-        if (table[i].IsEndOfTable()) break;
-        if (table[i].name.Empty() || std::string(ribTypeFor(table[i].type)) == "invalid")
+        RixSCParamInfo const& row = table[i];
+        if (row.IsEndOfTable()) break;
+        std::string const rowName = row.name.CStr();
+        std::string const entry = "parameter table entry " + std::to_string(i) + " (\"" + rowName + "\")";
+        bool const marker = row.type == k_RixSCStructBegin || row.type == k_RixSCStructEnd;
+        if (rowName.empty() || (!marker && std::string(ribTypeFor(row.type)) == "invalid"))
             fail("parameter table entry " + std::to_string(i) + " has an empty name or an invalid type");
-        m_table.push_back(table[i]);
+        if (row.type == k_RixSCStructBegin && !openStruct.empty())
+            fail(entry + " begins a struct inside struct \"" + openStruct + "\" (structs do not nest)");
+        if (row.type == k_RixSCStructEnd && rowName != openStruct)
+            fail(entry + " ends a struct that " +
+                 (openStruct.empty() ? std::string("was never begun") : "is not the open one, \"" + openStruct + "\""));
+        m_names.push_back(row.type == k_RixSCStructEnd                 ? ""
+                          : openStruct.empty() || marker ? rowName
+                                                         : openStruct + "." + rowName);
+        openStruct = row.type == k_RixSCStructBegin ? rowName : row.type == k_RixSCStructEnd ? "" : openStruct;
+        m_table.push_back(row);
     }
+    if (!openStruct.empty()) fail("the parameter table's struct \"" + openStruct + "\" has no k_RixSCStructEnd row");
 }
 
 void ShadingPlugin::destroyFactory() {
@@ -93,8 +108,13 @@ void ShadingPlugin::release() {
 ShadingPlugin::~ShadingPlugin() { release(); }
 
 int ShadingPlugin::paramId(std::string const& name) const {
-    for (size_t i = 0; i < m_table.size(); ++i)
-        if (name == m_table[i].name.CStr()) return static_cast<int>(i);
+    for (size_t i = 0; i < m_table.size(); ++i) {
+        if (name.empty() || name != m_names[i]) continue;
+        if (m_table[i].type == k_RixSCStructBegin)
+            for (size_t member = i + 1; m_table[member].type != k_RixSCStructEnd; ++member)
+                if (m_table[member].type == k_RixSCPoint) return static_cast<int>(member);
+        return static_cast<int>(i);
+    }
     return -1;
 }
 

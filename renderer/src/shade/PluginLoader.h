@@ -36,7 +36,11 @@ public:
     RixPattern* pattern() const { return m_kind == Kind::Pattern ? static_cast<RixPattern*>(m_factory) : nullptr; }
     RixShadingPlugin* plugin() const { return m_factory; }
     std::vector<RixSCParamInfo> const& paramTable() const { return m_table; }
-    /// Index of a parameter in the table, or -1.
+    /// The name RIB gives each row of the table: a struct member's is
+    /// "struct.member"; a struct's closing row has none ("").
+    std::vector<std::string> const& paramNames() const { return m_names; }
+    /// Index of a parameter in the table by its RIB name, or -1. A struct's
+    /// name gives its point member (a manifold travels as its Q here).
     int paramId(std::string const& name) const;
     RixContext& context() { return m_context; }
     /// Messages from this plugin, prefixed with its name.
@@ -56,6 +60,7 @@ private:
     void (*m_destroyBxdf)(RixBxdfFactory*) = nullptr;
     void (*m_destroyPattern)(RixPattern*) = nullptr;
     std::vector<RixSCParamInfo> m_table;
+    std::vector<std::string> m_names;
 };
 
 /// One integrator plugin, created from an Integrator statement's parameters.

@@ -304,9 +304,12 @@ std::string patternFault(PatternInstance const& pattern, std::string const& what
 
 RixPattern::OutputSpecification const* ShadingContextImpl::patternOutput(PatternInstance const& pattern,
                                                                          int output) const {
+    // An output left uncomputed (k_RixSCInvalidDetail, as RenderMan's patterns mark
+    // those nothing reads) is as good as absent: the parameter keeps its own value.
     auto pick = [output](PatternOutputs const& done) -> RixPattern::OutputSpecification const* {
         for (int k = 0; k < done.count; ++k)
-            if (done.outputs[k].paramId == output) return &done.outputs[k];
+            if (done.outputs[k].paramId == output && done.outputs[k].detail != k_RixSCInvalidDetail)
+                return &done.outputs[k];
         return nullptr;
     };
     for (PatternOutputs const& done : m_patternOutputs)
@@ -335,7 +338,9 @@ RixPattern::OutputSpecification const* ShadingContextImpl::patternOutput(Pattern
         auto const& out = outputs[k];
         bool rowOk = out.paramId >= 0 && out.paramId < static_cast<int>(table.size()) &&
                      table[static_cast<size_t>(out.paramId)].access == k_RixSCOutput;
-        if (!rowOk || !out.value || (out.detail != k_RixSCUniform && out.detail != k_RixSCVarying))
+        bool const computed = out.detail != k_RixSCInvalidDetail;
+        if (!rowOk || (computed && !out.value) ||
+            (computed && out.detail != k_RixSCUniform && out.detail != k_RixSCVarying))
             throw PluginFault(patternFault(pattern, "returned output " + std::to_string(k) + " with " +
                                                         (!rowOk ? "paramId " + std::to_string(out.paramId) +
                                                                       ", which is not an output of its table"
