@@ -45,6 +45,14 @@ TEST_CASE("Rt types: vector algebra, colour arithmetic, interned strings", "[api
     CHECK_FALSE(static_cast<bool>(RtUString()));
 }
 
+TEST_CASE("scalar helpers: RixFractional repeats below zero too, angles convert both ways", "[api]") {
+    CHECK(RixFractional(2.25f) == 0.25f);
+    CHECK(RixFractional(-0.25f) == 0.75f);
+    CHECK(RixFractional(3.0f) == 0.0f);
+    CHECK(RixDegreesToRadians(180.0f) == Approx(F_PI));
+    CHECK(RixRadiansToDegrees(F_PIDIV2) == Approx(90.0f));
+}
+
 TEST_CASE("RixPredefinedStrings.hpp: RenderMan's names for primvars and coordinate systems", "[api]") {
     CHECK(Rix::k_st == RtUString("st"));
     CHECK(Rix::k_Cs == RtUString("Cs"));

@@ -26,6 +26,10 @@ PRMAN_INLINE void RixSinCos(float angle, float* sine, float* cosine) {
     *sine = std::sin(angle);
     *cosine = std::cos(angle);
 }
+/// x minus its floor, in [0, 1): where x lies within its repeat (also below 0).
+PRMAN_INLINE float RixFractional(float x) { return x - std::floor(x); }
+PRMAN_INLINE float RixDegreesToRadians(float degrees) { return degrees * (F_PI / 180.0f); }
+PRMAN_INLINE float RixRadiansToDegrees(float radians) { return radians * (180.0f / F_PI); }
 /// Rec. 709 luminance of a linear colour.
 PRMAN_INLINE float RixLuminance(RtColorRGB const& c) { return c.Luminance(); }
 
