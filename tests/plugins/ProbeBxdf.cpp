@@ -7,6 +7,7 @@
 //   PROBE_NEGATIVE_PDF  GenerateSample and EvaluateSample return negative pdfs on odd points
 //   PROBE_UNTERMINATED_TABLE  GetParamTable's table has lost its end marker
 //   PROBE_BAD_TABLE_ENTRY     GetParamTable's table has an entry with no name
+//   PROBE_UNCLOSED_STRUCT     GetParamTable's table begins a struct and never ends it
 //   PROBE_THROWS     GenerateSample throws a std::runtime_error
 //   PROBE_SEGFAULT   GenerateSample writes through a null pointer
 //   PROBE_WILD_JUMP  GenerateSample calls a function pointer that points at no code (as a
@@ -160,6 +161,11 @@ public:
         // Far more entries than any plugin has, and no RixSCParamInfo() at the end.
         static std::vector<RixSCParamInfo> table(5000, RixSCParamInfo(RtUString("gain"), k_RixSCFloat, k_RixSCScatterInput));
         return table.data();
+#elif defined(PROBE_UNCLOSED_STRUCT)
+        static RixSCParamInfo table[] = {
+            RixSCParamInfo(RtUString("PxrManifold"), RtUString("manifold"), k_RixSCStructBegin),
+            RixSCParamInfo(RtUString("Q"), k_RixSCPoint), RixSCParamInfo()};
+        return table;
 #elif defined(PROBE_BAD_TABLE_ENTRY)
         static RixSCParamInfo table[] = {RixSCParamInfo(RtUString("gain"), k_RixSCFloat, k_RixSCScatterInput),
                                          RixSCParamInfo(RtUString(""), k_RixSCFloat, k_RixSCScatterInput),
