@@ -102,8 +102,6 @@ public:
         *outputs = out;
         return 0;
     }
-    bool Bake2dOutput(RixBakeContext const*, Bake2dSpec&, RtPointer) override { return false; }
-    bool Bake3dOutput(RixBakeContext const*, Bake3dSpec&, RtPointer) override { return false; }
 };
 
 }  // namespace
