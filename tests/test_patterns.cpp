@@ -395,3 +395,42 @@ TEST_CASE("a pattern with RenderMan's manifold structs: struct output and input,
                         "m2:resultT");
     CHECK(member.channel(8, 4, 0) == Approx(0.5f * pixelV(4)).margin(0.01));
 }
+
+TEST_CASE("Transform moves points to object space, to a named coordinate system, and leaves unknown spaces alone",
+          "[patterns][api]") {
+    // A square scaled by half and moved 0.25 right: world x = 0.25 + 0.5 * object x.
+    auto shownX = [](std::string const& space, std::string const& before = "") {
+        return test::renderRib(kHead + before + "Pattern \"manifold\" \"m\" \"string space\" [\"" + space +
+                                   "\"]\nPattern \"PxrMix\" \"show\" \"color color1\" [0 0 0] \"color color2\" [1 1 1] "
+                                   "\"reference float mix\" [\"m:resultS\"]\n"
+                                   "Bxdf \"PxrConstant\" \"c\" \"reference color emitColor\" [\"show:resultRGB\"]\n"
+                                   "TransformBegin\nTranslate 0.25 0 0\nScale 0.5 0.5 0.5\n" + kSquare + "TransformEnd\n",
+                               fewSamples());
+    };
+    auto worldX = [](int px) { return -1.0f + 2.0f * (static_cast<float>(px) + 0.5f) / 16.0f; };
+    auto object = shownX("object");
+    for (int px : {11, 13}) CHECK(object.channel(px, 8, 0) == Approx((worldX(px) - 0.25f) / 0.5f).margin(0.01));
+    auto named = shownX("shifted", "TransformBegin\nTranslate 0.5 0 0\nCoordinateSystem \"shifted\"\nTransformEnd\n");
+    for (int px : {12, 13}) CHECK(named.channel(px, 8, 0) == Approx(worldX(px) - 0.5f).margin(0.01));
+    auto unknown = shownX("NDC");  // not known here: P stays in world space
+    for (int px : {11, 13}) CHECK(unknown.channel(px, 8, 0) == Approx(worldX(px)).margin(0.01));
+
+    SECTION("vectors skip the translation, normals take the inverse transpose") {
+        // Squeezed to half its width in x only: object space stretches x by 2 for
+        // positions and directions, and normals, which must stay perpendicular, shrink by 2.
+        auto transformedX = [&](int transformAs) {
+            return test::renderRib(kHead + "Pattern \"manifold\" \"m\" \"string space\" [\"object\"] "
+                                   "\"int transformAs\" [" + std::to_string(transformAs) + "]\n"
+                                   "Pattern \"PxrMix\" \"show\" \"color color1\" [0 0 0] \"color color2\" [1 1 1] "
+                                   "\"reference float mix\" [\"m:resultS\"]\n"
+                                   "Bxdf \"PxrConstant\" \"c\" \"reference color emitColor\" [\"show:resultRGB\"]\n"
+                                   "TransformBegin\nTranslate 0.25 0 0\nScale 0.5 1 1\n" + kSquare + "TransformEnd\n",
+                                   fewSamples());
+        };
+        auto vectors = transformedX(1), normals = transformedX(2);
+        for (int px : {9, 10}) {
+            CHECK(vectors.channel(px, 8, 0) == Approx(2.0f * worldX(px)).margin(0.01));
+            CHECK(normals.channel(px, 8, 0) == Approx(0.5f * worldX(px)).margin(0.01));
+        }
+    }
+}

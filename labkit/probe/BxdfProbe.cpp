@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "RixBxdfScratch.h"
+#include "RixPredefinedStrings.hpp"
 #include "scene/SceneBuilder.h"
 #include "shade/BxdfInstance.h"
 #include "shade/MemoryArena.h"
@@ -52,7 +53,7 @@ public:
         auto* Vn = arena.allocArray<RtVector3>(n);
         auto* dPdu = arena.allocArray<RtVector3>(n);
         auto* dPdv = arena.allocArray<RtVector3>(n);
-        float* scalars[8];
+        float* scalars[9];
         for (auto& s : scalars) s = arena.allocArray<float>(n);
         for (size_t i = 0; i < n; ++i) {
             ProbePoint const& p = points[i];
@@ -63,11 +64,12 @@ public:
             dPdu[i] = toRt(p.dPdu);
             dPdv[i] = toRt(glm::cross(p.N, p.dPdu));
             Tn[i] = toRt(safeNormalize(p.dPdu - p.N * glm::dot(p.N, p.dPdu)));
-            float values[8] = {1.0f, 0.5f, 0.5f, 0.0f, 0.0f, 0.5f, 0.5f, 0.0f};  // VLen u v du dv s t biasR
-            for (int k = 0; k < 8; ++k) scalars[k][i] = values[k];
+            float values[9] = {1.0f, 0.5f, 0.5f, 0.0f, 0.0f, 0.5f, 0.5f, 0.0f, 0.0f};  // VLen u v du dv s t biasR PRadius
+            for (int k = 0; k < 9; ++k) scalars[k][i] = values[k];
         }
         void* table[k_numBuiltins] = {P, Nn, Ngn, Tn, Vn, scalars[0], scalars[1], scalars[2],
-                                      scalars[3], scalars[4], dPdu, dPdv, scalars[5], scalars[6], scalars[7]};
+                                      scalars[3], scalars[4], dPdu, dPdv, scalars[5], scalars[6], scalars[7],
+                                      P, scalars[8]};
         static_assert(std::size(table) == k_numBuiltins, "one entry per builtin");
         std::copy(std::begin(table), std::end(table), m_builtins);
     }
@@ -91,6 +93,16 @@ protected:
             values[2 * i + 1] = static_cast<float const*>(m_builtins[k_t])[i];
         }
         return k_RixSCVarying;
+    }
+    /// Probe points lie on no shape, at the world's origin: "object" space is
+    /// the world too, and so is "current"; other spaces are unknown here.
+    int TransformValues(TransformInterpretation, RtUString const fromSpace, RtUString const toSpace, RtFloat3*,
+                        RtFloat*) const override {
+        auto isWorld = [](RtUString const& space) {
+            return space == Rix::k_current || space == Rix::k_world || space == Rix::k_object ||
+                   space == RtUString("common");
+        };
+        return isWorld(fromSpace) && isWorld(toSpace) ? 0 : 1;
     }
     int Builtin(BuiltinId id, RixSCType wanted, void const** result) const override {
         *result = nullptr;

@@ -4,7 +4,9 @@
 // the same kind, and two float outputs it computes only when GetParamInfo says
 // something reads them (the others are handed back as k_RixSCInvalidDetail).
 //
-//   Q = (s, t, 0) * scale, or the connected manifold's Q * scale
+//   Q = (s, t, 0) * scale, or the connected manifold's Q * scale, or, given
+//       "string space", Po moved to that coordinate system (Transform) * scale,
+//       as a point, or as a vector or a normal with "int transformAs" 1 or 2
 //   resultS = Q.x, resultT = Q.y
 #include "RixPattern.h"
 #include "RixPredefinedStrings.hpp"
@@ -23,6 +25,8 @@ enum {
     kManifoldQ,
     kManifoldQradius,
     kManifoldEnd,
+    kSpace,
+    kTransformAs,
 };
 
 class ManifoldPattern : public RixPattern {
@@ -44,6 +48,8 @@ public:
             RixSCParamInfo(RtUString("Q"), k_RixSCPoint),
             RixSCParamInfo(RtUString("Qradius"), k_RixSCFloat),
             RixSCParamInfo(manifold, input, k_RixSCStructEnd),
+            RixSCParamInfo(RtUString("space"), k_RixSCString),
+            RixSCParamInfo(RtUString("transformAs"), k_RixSCInteger),
             RixSCParamInfo()};
         return table;
     }
@@ -59,8 +65,24 @@ public:
         RtFloat* Qradius = pool.AllocForPattern<RtFloat>(n);
         RixSCType type;
         RixSCConnectionInfo cinfo;
+        RtUString const* space;
+        sCtx->EvalParam(kSpace, -1, &space, &Rix::k_empty);
         sCtx->GetParamInfo(kManifoldQ, &type, &cinfo);
-        if (cinfo == k_RixSCNetworkValue) {
+        if (*space) {
+            RtPoint3 const* Po;
+            RtFloat const* footprint;
+            sCtx->GetBuiltinVar(RixShadingContext::k_Po, &Po);
+            sCtx->GetBuiltinVar(RixShadingContext::k_PRadius, &footprint);
+            for (int i = 0; i < n; ++i) {
+                Q[i] = Po[i];
+                Qradius[i] = footprint[i];
+            }
+            RtInt const asPoints = RixShadingContext::k_AsPoints;
+            RtInt const* transformAs;
+            sCtx->EvalParam(kTransformAs, -1, &transformAs, &asPoints);
+            auto const interpretation = static_cast<RixShadingContext::TransformInterpretation>(*transformAs);
+            sCtx->Transform(interpretation, Rix::k_current, *space, Q, Qradius);  // 1: left as is
+        } else if (cinfo == k_RixSCNetworkValue) {
             RtPoint3 const* given;
             RtFloat const* givenRadius;
             RtPoint3 const origin(0.0f, 0.0f, 0.0f);

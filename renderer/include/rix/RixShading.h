@@ -189,6 +189,8 @@ public:
         k_t,         ///< RtFloat: texture coordinate t ("st" primvar, else v)
         k_biasR,     ///< RtFloat: how far along Ngn a ray leaving P starts so that it cannot hit
                      ///< the surface it leaves again (P's floating-point error; integrators use it)
+        k_Po,        ///< RtPoint3: P before displacement (the same as P here: nothing is displaced)
+        k_PRadius,   ///< RtFloat: radius of the ray's footprint at P (the pixel's spread at P's distance)
         k_numBuiltins
     };
 
@@ -283,6 +285,25 @@ public:
         return PrimVar(name, PrimVarType(static_cast<T const*>(nullptr)), (void const**)result, radius, &fill);
     }
 
+    /// How Transform treats the values it is given.
+    enum TransformInterpretation {
+        k_AsPoints = 0,  ///< positions: the whole transform
+        k_AsVectors,     ///< directions: no translation
+        k_AsNormals,     ///< normals: the inverse transpose, so they stay perpendicular to the surface
+    };
+    /// Moves numPts values from one coordinate system to another, in place:
+    /// "current" and "world" (where shading happens here: the same space),
+    /// "object" (each point's own shape), "camera", or a system the RIB named
+    /// with CoordinateSystem or ScopedCoordinateSystem (Rix::k_object and the
+    /// others in RixPredefinedStrings.hpp name them). `radius`, if given, is
+    /// scaled as lengths are. Returns 0, or 1 (values untouched) for a space
+    /// this renderer does not know ("screen", "NDC" and "raster" among them).
+    ///   sCtx->Transform(RixShadingContext::k_AsPoints, Rix::k_current, Rix::k_object, Q, Qradius);
+    int Transform(TransformInterpretation interpretation, RtUString const fromSpace, RtUString const toSpace,
+                  RtFloat3* values, RtFloat* radius = nullptr) const {
+        return TransformValues(interpretation, fromSpace, toSpace, values, radius);
+    }
+
     /// Renderer services (RixMessages) while shading.
     virtual RixInterface* GetRixInterface(RixInterfaceId id) const = 0;
 
@@ -318,6 +339,9 @@ protected:
     /// k_RixSCInvalidDetail; `fill` (null: zeros) where a shape lacks it.
     virtual RixSCDetail PrimVar(RtUString const name, RixSCType wanted, void const** result,
                                 RtFloat const** radius, void const* fill) const = 0;
+    /// Renderer side of Transform.
+    virtual int TransformValues(TransformInterpretation interpretation, RtUString const fromSpace,
+                                RtUString const toSpace, RtFloat3* values, RtFloat* radius) const = 0;
 
 private:
     static RixSCType TypeOf(RtFloat const*) { return k_RixSCFloat; }

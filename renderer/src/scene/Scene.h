@@ -126,6 +126,9 @@ struct Scene : SceneOptions {
     /// parameter of the same name takes its values from the primvar.
     std::set<std::string> primvarNames;
     std::vector<std::unique_ptr<Light>> lights;
+    /// The coordinate systems named by CoordinateSystem and ScopedCoordinateSystem
+    /// (the last definition of each name), as transforms to world space.
+    std::map<std::string, Mat4> coordinateSystems;
     /// Things dropped at load, e.g. "light 'fill' has zero intensity" (for the stats).
     std::vector<std::string> dropped;
     /// Textures the scene names that were not found when it was read (and said so, with the RIB line).

@@ -1,6 +1,8 @@
 #include "shade/ShadingContextImpl.h"
 
+#include <cmath>
 #include <cstring>
+#include <optional>
 #include <string>
 
 #include "core/Error.h"
@@ -30,7 +32,8 @@ bool isFloatBuiltin(RixShadingContext::BuiltinId id) {
         case RixShadingContext::k_dv:
         case RixShadingContext::k_s:
         case RixShadingContext::k_t:
-        case RixShadingContext::k_biasR: return true;
+        case RixShadingContext::k_biasR:
+        case RixShadingContext::k_PRadius: return true;
         default: return false;
     }
 }
@@ -101,6 +104,7 @@ void ShadingContextImpl::computeSurfaceGroup() const {
         biasR[i] = glm::dot(glm::abs(b.Ng), b.pError);
     }
     m_builtins[k_P] = P;
+    m_builtins[k_Po] = P;  // nothing is displaced
     m_builtins[k_Nn] = Nn;
     m_builtins[k_Ngn] = Ngn;
     m_builtins[k_biasR] = biasR;
@@ -134,13 +138,16 @@ void ShadingContextImpl::computeParameterGroup() const {
 void ShadingContextImpl::computeView() const {
     auto* Vn = m_arena.allocArray<RtVector3>(static_cast<size_t>(numPts));
     auto* VLen = m_arena.allocArray<float>(static_cast<size_t>(numPts));
+    auto* PRadius = m_arena.allocArray<float>(static_cast<size_t>(numPts));
     for (int i = 0; i < numPts; ++i) {
         float len = glm::length(m_hits[i].dir);
         Vn[i] = toRt(-m_hits[i].dir / len);
         VLen[i] = m_hits[i].t * len;
+        PRadius[i] = VLen[i] * m_pixelSpread;  // the ray cone's radius at P, as du and dv take it
     }
     m_builtins[k_Vn] = Vn;
     m_builtins[k_VLen] = VLen;
+    m_builtins[k_PRadius] = PRadius;
 }
 
 void ShadingContextImpl::computeTangentGroup() const {
@@ -180,7 +187,8 @@ int ShadingContextImpl::Builtin(BuiltinId id, RixSCType wanted, void const** res
     if (!m_builtins[id]) {
         switch (id) {
             case k_Vn:
-            case k_VLen: computeView(); break;
+            case k_VLen:
+            case k_PRadius: computeView(); break;
             case k_Tn:
             case k_dPdu:
             case k_dPdv:
@@ -287,6 +295,10 @@ protected:
                         void const* fill) const override {
         return m_parent.PrimVar(name, wanted, result, radius, fill);
     }
+    int TransformValues(TransformInterpretation interpretation, RtUString const fromSpace, RtUString const toSpace,
+                        RtFloat3* values, RtFloat* radius) const override {
+        return m_parent.TransformValues(interpretation, fromSpace, toSpace, values, radius);
+    }
 
 private:
     ShadingContextImpl const& m_parent;
@@ -339,8 +351,8 @@ RixPattern::OutputSpecification const* ShadingContextImpl::patternOutput(Pattern
         bool rowOk = out.paramId >= 0 && out.paramId < static_cast<int>(table.size()) &&
                      table[static_cast<size_t>(out.paramId)].access == k_RixSCOutput;
         bool const computed = out.detail != k_RixSCInvalidDetail;
-        if (!rowOk || (computed && !out.value) ||
-            (computed && out.detail != k_RixSCUniform && out.detail != k_RixSCVarying))
+        bool const detailOk = out.detail == k_RixSCUniform || out.detail == k_RixSCVarying;
+        if (!rowOk || (computed && (!out.value || !detailOk)))
             throw PluginFault(patternFault(pattern, "returned output " + std::to_string(k) + " with " +
                                                         (!rowOk ? "paramId " + std::to_string(out.paramId) +
                                                                       ", which is not an output of its table"
@@ -418,6 +430,49 @@ RixSCDetail ShadingContextImpl::PrimVar(RtUString const name, RixSCType wanted, 
     }
     *result = values;
     return !found ? k_RixSCInvalidDetail : uniform ? k_RixSCUniform : k_RixSCVarying;
+}
+
+namespace {
+
+/// The transform from coordinate system `space` to world space for points of
+/// `shape`, or nothing for a space this renderer does not know.
+std::optional<Mat4> spaceToWorld(std::string const& space, Scene const& scene, Shape const& shape) {
+    if (space == "current" || space == "world" || space == "common") return Mat4(1.0f);
+    if (space == "object") return shape.objectToWorld;
+    if (space == "camera") return glm::inverse(scene.camera.worldToCamera);
+    auto named = scene.coordinateSystems.find(space);
+    if (named != scene.coordinateSystems.end()) return named->second;
+    return std::nullopt;
+}
+
+}  // namespace
+
+int ShadingContextImpl::TransformValues(TransformInterpretation interpretation, RtUString const fromSpace,
+                                        RtUString const toSpace, RtFloat3* values, RtFloat* radius) const {
+    std::string const from = fromSpace.CStr(), to = toSpace.CStr();
+    if (numPts == 0) return 0;
+    Shape const& firstShape = *m_scene.shapes[m_hits[0].geomID];
+    if (!spaceToWorld(from, m_scene, firstShape) || !spaceToWorld(to, m_scene, firstShape)) return 1;
+    // A batch is mostly one shape: the matrices are worked out again only when it changes.
+    Shape const* matricesOf = nullptr;
+    Mat4 fromTo(1.0f);
+    Mat3 forNormals(1.0f);
+    float lengthScale = 1.0f;
+    for (int i = 0; i < numPts; ++i) {
+        Shape const& shape = *m_scene.shapes[m_hits[i].geomID];
+        if (&shape != matricesOf) {
+            fromTo = glm::inverse(*spaceToWorld(to, m_scene, shape)) * *spaceToWorld(from, m_scene, shape);
+            forNormals = glm::transpose(glm::inverse(Mat3(fromTo)));
+            lengthScale = std::cbrt(std::abs(glm::determinant(Mat3(fromTo))));  // a radius: the mean scale
+            matricesOf = &shape;
+        }
+        Vec3 const v = toVec3(values[i]);
+        values[i] = toRt(interpretation == k_AsPoints    ? transformPoint(fromTo, v)
+                         : interpretation == k_AsVectors ? Mat3(fromTo) * v
+                                                         : forNormals * v);
+        if (radius) radius[i] *= lengthScale;
+    }
+    return 0;
 }
 
 }  // namespace bxdflab

@@ -84,6 +84,8 @@ protected:
                       void const* dflt, bool promote) const override;
     void* Allocate(size_t bytes, size_t alignment) const override { return m_arena.allocate(bytes, alignment); }
     int ParamInfo(int id, RixSCType* type, RixSCConnectionInfo* cinfo, int* arrayLength) const override;
+    int TransformValues(TransformInterpretation interpretation, RtUString const fromSpace, RtUString const toSpace,
+                        RtFloat3* values, RtFloat* radius) const override;
     RixSCDetail PrimVar(RtUString const name, RixSCType wanted, void const** result, RtFloat const** radius,
                         void const* fill) const override;
 

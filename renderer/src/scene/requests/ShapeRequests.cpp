@@ -99,6 +99,7 @@ void SceneBuilder::addShape(std::unique_ptr<Shape> shape, SourceLocation const& 
     shape->oneSided = !state().twoSided && kind != "Curves" && kind != "Points";
     shape->name = state().name;
     shape->where = where;
+    shape->objectToWorld = state().transform;
     // Polygons under an area light are the light (seen by the rays its visibility allows).
     if (meshAsLight(*shape)) return;
     if (state().volume) {

@@ -113,12 +113,14 @@ void SceneBuilder::coordinateSystem(RequestReader& in) {
     std::string name = in.string("coordinate system name");
     in.finish();
     m_namedSpaces[name] = state().transform;
+    m_scene.coordinateSystems[name] = state().transform;
 }
 
 void SceneBuilder::scopedCoordinateSystem(RequestReader& in) {
     std::string name = in.string("coordinate system name");
     in.finish();
     state().scopedSpaces[name] = state().transform;
+    m_scene.coordinateSystems[name] = state().transform;
 }
 
 void SceneBuilder::coordSysTransform(RequestReader& in) {

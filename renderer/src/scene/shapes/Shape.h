@@ -137,6 +137,8 @@ public:
     bool oneSided = false;
     std::string name;  ///< Attribute "identifier" "name"
     SourceLocation where;
+    /// The transform in effect where the shape was written: its "object" space.
+    Mat4 objectToWorld{1.0f};
 
 protected:
     /// Once the shape's primvars are in place: an "st" (or "s" and "t") among
