@@ -905,4 +905,8 @@ TEST_CASE("a missing archive, sky image or texture is a warning naming what was 
         CHECK((missing[i].find('\n') == std::string::npos) == (i >= 3));
     }
     CHECK_THAT(missing[4], Catch::Matchers::Contains("(looked for as the archives above)"));
+    // Each place once: the folder of the file that names it is the one the renderer runs in here.
+    bool const namesBoth = missing[0].find("\n    a1\n") != std::string::npos &&
+                           missing[0].find("\n    ./a1\n") != std::string::npos;
+    CHECK_FALSE(namesBoth);
 }

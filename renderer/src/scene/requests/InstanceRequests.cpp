@@ -63,13 +63,18 @@ void SceneBuilder::readArchiveNamed(std::string const& name, SourceLocation cons
     // A relative name is looked for beside the file that names it, in the
     // folder the renderer runs in (as RenderMan does), then on the search path.
     std::vector<fs::path> candidates;
+    auto addCandidate = [&candidates](fs::path const& candidate) {  // each place once ("./a.rib" is "a.rib")
+        for (fs::path const& earlier : candidates)
+            if (earlier.lexically_normal() == candidate.lexically_normal()) return;
+        candidates.push_back(candidate);
+    };
     fs::path const path(fileName);
     if (path.is_absolute()) {
         candidates.push_back(path);
     } else {
-        candidates.push_back(fs::path(currentDirectory()) / path);
-        candidates.push_back(path);
-        for (std::string const& folder : m_archiveSearchPath) candidates.push_back(fs::path(folder) / path);
+        addCandidate(fs::path(currentDirectory()) / path);
+        addCandidate(path);
+        for (std::string const& folder : m_archiveSearchPath) addCandidate(fs::path(folder) / path);
     }
     std::string tried;
     auto exists = [](fs::path const& candidate) {
