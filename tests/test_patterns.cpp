@@ -40,6 +40,21 @@ TEST_CASE("a connected parameter takes the pattern's value at every point", "[pa
         for (int x : {0, 5, 11, 15})
             for (int y : {2, 13}) CHECK(r.channel(x, y, 0) == Approx(pixelU(x)).margin(0.01));
     }
+    SECTION("PxrVariable: what is not displaced or moving equals what is") {
+        auto shown = [](std::string const& variable) {
+            return test::renderRib(kHead + "Pattern \"PxrVariable\" \"x\" \"string variable\" [\"" + variable +
+                                       "\"]\nBxdf \"PxrConstant\" \"c\" \"reference color emitColor\" [\"x:resultRGB\"]\n"
+                                       "Rotate 30 0 1 0\n" + kSquare,
+                                   fewSamples());
+        };
+        auto P = shown("P"), Po = shown("Po"), Nn = shown("Nn"), Non = shown("Non"), dPdtime = shown("dPdtime");
+        for (int c = 0; c < 3; ++c) {
+            CHECK(Po.channel(3, 8, c) == Approx(P.channel(3, 8, c)));
+            CHECK(Non.channel(8, 8, c) == Approx(Nn.channel(8, 8, c)));
+            CHECK(dPdtime.channel(8, 8, c) == 0.0f);
+        }
+        CHECK(Nn.channel(8, 8, 0) != 0.0f);  // the tilted square's normal has an x part to compare
+    }
     SECTION("PxrMix of a uniform colour and a connected one, through a manifold-free chain") {
         auto r = test::renderRib(kHead + "Pattern \"PxrVariable\" \"v\" \"string variable\" [\"v\"]\n"
                                          "Pattern \"PxrMix\" \"m\" \"color color1\" [1 0 0] "

@@ -31,6 +31,9 @@ typedef const char* RtConstString;
 /// Makes a symbol visible outside the shared object (plugins are built with
 /// hidden visibility, so only the create/destroy entry points are exported).
 #define PRMANEXPORT __attribute__((visibility("default")))
+/// A parameter the plugin may ignore (the create functions' `hint`): no
+/// -Wunused-parameter warning whether or not it writes PIXAR_ARGUSED(hint).
+#define RIX_MAYBE_UNUSED __attribute__((unused))
 
 /// The version of the plugin ABI these headers describe (class layouts and
 /// virtual tables). Every plugin that includes them exports it, and the

@@ -185,6 +185,6 @@ public:
 };
 
 /// Write `RIX_BXDFPLUGINCREATE { return new MyFactory(); }` in your plugin.
-#define RIX_BXDFPLUGINCREATE extern "C" PRMANEXPORT RixBxdfFactory* CreateRixBxdfFactory(const char* hint)
+#define RIX_BXDFPLUGINCREATE extern "C" PRMANEXPORT RixBxdfFactory* CreateRixBxdfFactory(const char* hint RIX_MAYBE_UNUSED)
 /// Write `RIX_BXDFPLUGINDESTROY { delete static_cast<MyFactory*>(bxdf); }` in your plugin.
 #define RIX_BXDFPLUGINDESTROY extern "C" PRMANEXPORT void DestroyRixBxdfFactory(RixBxdfFactory* bxdf)

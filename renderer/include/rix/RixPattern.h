@@ -64,6 +64,6 @@ public:
 };
 
 /// Write `RIX_PATTERNCREATE { return new MyPattern(); }` in your plugin.
-#define RIX_PATTERNCREATE extern "C" PRMANEXPORT RixPattern* CreateRixPattern(const char* hint)
+#define RIX_PATTERNCREATE extern "C" PRMANEXPORT RixPattern* CreateRixPattern(const char* hint RIX_MAYBE_UNUSED)
 /// Write `RIX_PATTERNDESTROY { delete static_cast<MyPattern*>(pattern); }` in your plugin.
 #define RIX_PATTERNDESTROY extern "C" PRMANEXPORT void DestroyRixPattern(RixPattern* pattern)

@@ -191,6 +191,8 @@ public:
                      ///< the surface it leaves again (P's floating-point error; integrators use it)
         k_Po,        ///< RtPoint3: P before displacement (the same as P here: nothing is displaced)
         k_PRadius,   ///< RtFloat: radius of the ray's footprint at P (the pixel's spread at P's distance)
+        k_Non,       ///< RtNormal3: unit shading normal before displacement (the same as Nn here)
+        k_dPdtime,   ///< RtVector3: how P moves over the shutter (zero here: the scene holds still)
         k_numBuiltins
     };
 

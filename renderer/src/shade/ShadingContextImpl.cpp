@@ -1,5 +1,6 @@
 #include "shade/ShadingContextImpl.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <optional>
@@ -106,6 +107,7 @@ void ShadingContextImpl::computeSurfaceGroup() const {
     m_builtins[k_P] = P;
     m_builtins[k_Po] = P;  // nothing is displaced
     m_builtins[k_Nn] = Nn;
+    m_builtins[k_Non] = Nn;  // nothing is displaced
     m_builtins[k_Ngn] = Ngn;
     m_builtins[k_biasR] = biasR;
     m_counters.surfacePoints.fetch_add(static_cast<uint64_t>(numPts), std::memory_order_relaxed);
@@ -198,6 +200,12 @@ int ShadingContextImpl::Builtin(BuiltinId id, RixSCType wanted, void const** res
             case k_v:
             case k_s:
             case k_t: computeParameterGroup(); break;
+            case k_dPdtime: {  // nothing moves while the shutter is open: P's motion is zero
+                auto* still = m_arena.allocArray<RtVector3>(static_cast<size_t>(numPts));
+                std::fill(still, still + numPts, RtVector3(0.0f));
+                m_builtins[id] = still;
+                break;
+            }
             default: computeSurfaceGroup(); break;
         }
     }

@@ -1,10 +1,12 @@
 // PxrVariable — hands a geometric quantity of the shade points (a builtin:
-// P, Nn, Ngn, Tn, Vn, dPdu, dPdv, u, v, s, t, du, dv, VLen) to the network,
+// P, Nn, Ngn, Tn, Vn, dPdu, dPdv, u, v, s, t, du, dv, VLen, Po, Non, PRadius,
+// dPdtime) to the network,
 // e.g. to colour a surface by its normal while debugging:
 //
 //   Pattern "PxrVariable" "normal" "string variable" ["Nn"]
 //   Bxdf "PxrDiffuse" "d" "reference color diffuseColor" ["normal:resultRGB"]
 #include <cstring>
+#include <string>
 
 #include "PatternHelpers.h"
 
@@ -17,13 +19,15 @@ struct NamedBuiltin {
 };
 
 NamedBuiltin const kBuiltins[] = {
-    {"P", RixShadingContext::k_P, false},       {"Nn", RixShadingContext::k_Nn, false},
-    {"Ngn", RixShadingContext::k_Ngn, false},   {"Tn", RixShadingContext::k_Tn, false},
-    {"Vn", RixShadingContext::k_Vn, false},     {"dPdu", RixShadingContext::k_dPdu, false},
-    {"dPdv", RixShadingContext::k_dPdv, false}, {"u", RixShadingContext::k_u, true},
-    {"v", RixShadingContext::k_v, true},        {"s", RixShadingContext::k_s, true},
-    {"t", RixShadingContext::k_t, true},        {"du", RixShadingContext::k_du, true},
-    {"dv", RixShadingContext::k_dv, true},      {"VLen", RixShadingContext::k_VLen, true},
+    {"P", RixShadingContext::k_P, false},         {"Nn", RixShadingContext::k_Nn, false},
+    {"Ngn", RixShadingContext::k_Ngn, false},     {"Tn", RixShadingContext::k_Tn, false},
+    {"Vn", RixShadingContext::k_Vn, false},       {"dPdu", RixShadingContext::k_dPdu, false},
+    {"dPdv", RixShadingContext::k_dPdv, false},   {"u", RixShadingContext::k_u, true},
+    {"v", RixShadingContext::k_v, true},          {"s", RixShadingContext::k_s, true},
+    {"t", RixShadingContext::k_t, true},          {"du", RixShadingContext::k_du, true},
+    {"dv", RixShadingContext::k_dv, true},        {"VLen", RixShadingContext::k_VLen, true},
+    {"Po", RixShadingContext::k_Po, false},       {"Non", RixShadingContext::k_Non, false},
+    {"PRadius", RixShadingContext::k_PRadius, true}, {"dPdtime", RixShadingContext::k_dPdtime, false},
 };
 
 class PxrVariable : public stockpatterns::StockPattern {
@@ -49,8 +53,9 @@ public:
             if (std::strcmp(b.name, variable->CStr()) == 0) chosen = &b;
         if (!chosen) {
             auto* msg = static_cast<RixMessages*>(sCtx->GetRixInterface(k_RixMessages));
-            msg->Warning("PxrVariable: no variable \"%s\" (P, Nn, Ngn, Tn, Vn, dPdu, dPdv, u, v, s, t, du, dv, VLen); "
-                         "using Nn", variable->CStr());
+            std::string known;
+            for (NamedBuiltin const& b : kBuiltins) known += (known.empty() ? "" : ", ") + std::string(b.name);
+            msg->Warning("PxrVariable: no variable \"%s\" (%s); using Nn", variable->CStr(), known.c_str());
             chosen = &kBuiltins[1];
         }
         float const* values;
