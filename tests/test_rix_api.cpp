@@ -5,9 +5,11 @@
 #include <set>
 #include <string>
 #include <thread>
+#include <type_traits>
 #include <vector>
 
 #include "RixBxdf.h"
+#include "RixPattern.h"
 #include "RixPredefinedStrings.hpp"
 #include "RixShadingUtils.h"
 #include "shade/MemoryArena.h"
@@ -61,6 +63,37 @@ TEST_CASE("RixPredefinedStrings.hpp: RenderMan's names for primvars and coordina
     CHECK(Rix::k_NDC == RtUString("NDC"));
     CHECK(Rix::k_empty.Empty());
     CHECK(Rix::k_st.CStr() == RtUString("st").CStr());  // interned: the same text, once
+}
+
+namespace {
+// Written as public plugins are, for RenderMan 22 (CreateInstanceData returns
+// int) and 23 onwards (void) alike: prmanapi.h's version picks the branch.
+class EitherVersionPattern : public RixPattern {
+public:
+    int Init(RixContext&, RtUString const) override { return 0; }
+    void Finalize(RixContext&) override {}
+    void Synchronize(RixContext&, RixSCSyncMsg, RixParameterList const*) override {}
+    RixSCParamInfo const* GetParamTable() override { return nullptr; }
+    int ComputeOutputParams(RixShadingContext const*, RtInt*, OutputSpec**, RtPointer,
+                            RixSCParamInfo const*) override {
+        return 1;
+    }
+#if _PRMANAPI_VERSION_MAJOR_ >= 23
+    void CreateInstanceData(RixContext&, RtUString const, RixParameterList const*, InstanceData*) override {}
+#else
+    int CreateInstanceData(RixContext&, RtUString const, RixParameterList const*, InstanceData*) { return 0; }
+#endif
+};
+}  // namespace
+
+TEST_CASE("prmanapi.h: the RenderMan version the headers follow, for plugins that switch on it", "[api]") {
+    CHECK(_PRMANAPI_VERSION_MAJOR_ == 24);
+    CHECK(_PRMANAPI_VERSION_ == _PRMANAPI_VERSION_MAJOR_);
+    CHECK(std::string(_PRMANAPI_VERSION_STR_) == "24.0");
+    using Create = decltype(&EitherVersionPattern::CreateInstanceData);
+    using OfThisApi = void (EitherVersionPattern::*)(RixContext&, RtUString, RixParameterList const*,
+                                                      RixShadingPlugin::InstanceData*);
+    CHECK(std::is_same<Create, OfThisApi>::value);  // the branch taken is the one that overrides
 }
 
 TEST_CASE("RtUString: equal text interns to one pointer, also when threads race to add it", "[api]") {

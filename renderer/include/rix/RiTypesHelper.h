@@ -20,6 +20,8 @@
 #include <stdexcept>  // with <string>: what plugin code often uses without including it
 #include <string>
 
+#include "prmanapi.h"  // _PRMANAPI_VERSION_MAJOR_ and the others, as in RenderMan
+
 typedef float RtFloat;
 typedef int RtInt;
 typedef void* RtPointer;
