@@ -85,6 +85,7 @@ TEST_CASE("broken plugins are refused with the reason", "[plugins][errors]") {
         {"probe_unterminated_table", "has no end marker RixSCParamInfo() in its first 1024 entries"},
         {"probe_bad_table_entry", "parameter table entry 1 has an empty name"},
         {"probe_unclosed_struct", "the parameter table's struct \"manifold\" has no k_RixSCStructEnd row"},
+        {"probe_instance_table", "a parameter table of its own in CreateInstanceData (InstanceData::paramtable)"},
         {"probe_stale_api", "was built against Rix API version 1, this renderer provides version"},
     }));
     CAPTURE(c.plugin);

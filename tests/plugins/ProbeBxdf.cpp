@@ -8,6 +8,7 @@
 //   PROBE_UNTERMINATED_TABLE  GetParamTable's table has lost its end marker
 //   PROBE_BAD_TABLE_ENTRY     GetParamTable's table has an entry with no name
 //   PROBE_UNCLOSED_STRUCT     GetParamTable's table begins a struct and never ends it
+//   PROBE_INSTANCE_TABLE      CreateInstanceData hands an instance a table of its own (with data to free)
 //   PROBE_THROWS     GenerateSample throws a std::runtime_error
 //   PROBE_SEGFAULT   GenerateSample writes through a null pointer
 //   PROBE_WILD_JUMP  GenerateSample calls a function pointer that points at no code (as a
@@ -188,6 +189,14 @@ public:
         return new (pool.AllocForBxdf<Probe>(1)) Probe(sCtx, this);
     }
     void EndScatter(RixBxdf*) override {}
+#ifdef PROBE_INSTANCE_TABLE
+    void CreateInstanceData(RixContext&, RtUString const, RixParameterList const*, InstanceData* instance) override {
+        static RixSCParamInfo table[] = {RixSCParamInfo(RtUString("gain"), k_RixSCFloat), RixSCParamInfo()};
+        instance->paramtable = table;
+        instance->data = new int(1);
+        instance->freefunc = [](void* data) { delete static_cast<int*>(data); };
+    }
+#endif
 };
 
 }  // namespace

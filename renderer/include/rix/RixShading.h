@@ -371,10 +371,17 @@ public:
     /// Per-instance data made in CreateInstanceData and handed back to
     /// BeginScatter as `instanceData`. If you allocate it, set freefunc so the
     /// renderer can release it when the render ends.
+    /// What an interactive session must refresh after an edit (RenderMan reads
+    /// InstanceData::synchronizeHints; this renderer has no interactive edits).
+    enum SynchronizeHints : uint32_t { k_None = 0u, k_All = 0xFFFFFFFFu };
     struct InstanceData {
         void* data = nullptr;
         size_t datalen = 0;
         void (*freefunc)(void*) = nullptr;
+        /// RenderMan lets an instance replace GetParamTable's table with its own.
+        /// Not here: leave it null (a plugin that sets it is refused, with that reason).
+        RixSCParamInfo const* paramtable = nullptr;
+        uint32_t synchronizeHints = k_None;  ///< kept for RenderMan code; nothing reads it here
     };
 
     virtual ~RixShadingPlugin() = default;

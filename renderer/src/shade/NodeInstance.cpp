@@ -1,5 +1,7 @@
 #include "shade/NodeInstance.h"
 
+#include "core/Error.h"
+
 namespace bxdflab {
 
 NodeInstance::NodeInstance(char const* kind, std::string const& handle, SourceLocation const& where,
@@ -12,6 +14,13 @@ NodeInstance::NodeInstance(char const* kind, std::string const& handle, SourceLo
       m_params(kind, plugin, params, connections, outputsRead, patternOf, diagnostics) {
     NodeParameterList list(plugin.paramTable(), m_params);
     plugin.plugin()->CreateInstanceData(plugin.context(), RtUString(m_handle.c_str()), &list, &m_instance);
+    if (m_instance.paramtable) {  // the destructor will not run: free what the plugin made first
+        if (m_instance.freefunc && m_instance.data) m_instance.freefunc(m_instance.data);
+        throw RibError(where, std::string(kind) + " \"" + handle + "\": plugin \"" + plugin.name() + "\" (" +
+                                  plugin.path() + ") gave it a parameter table of its own in CreateInstanceData "
+                                  "(InstanceData::paramtable), which this renderer does not support; every "
+                                  "instance uses the table GetParamTable returns");
+    }
 }
 
 NodeInstance::~NodeInstance() {
