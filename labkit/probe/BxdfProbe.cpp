@@ -4,9 +4,9 @@
 #include <cmath>
 #include <cstring>
 #include <optional>
+#include <string>
 
 #include "RixBxdfScratch.h"
-#include "RixPredefinedStrings.hpp"
 #include "scene/SceneBuilder.h"
 #include "shade/BxdfInstance.h"
 #include "shade/MemoryArena.h"
@@ -101,8 +101,8 @@ protected:
     int TransformValues(TransformInterpretation, RtUString const fromSpace, RtUString const toSpace, RtFloat3*,
                         RtFloat*) const override {
         auto isWorld = [](RtUString const& space) {
-            return space == Rix::k_current || space == Rix::k_world || space == Rix::k_object ||
-                   space == RtUString("common");
+            std::string const name = space.CStr() ? space.CStr() : "";
+            return namesWorldSpace(name) || name == "object";
         };
         return isWorld(fromSpace) && isWorld(toSpace) ? 0 : 1;
     }

@@ -404,7 +404,10 @@ RixSCDetail ShadingContextImpl::PrimVar(RtUString const name, RixSCType wanted, 
     int const components = valuesPerElement(wanted);
     std::string const wantedName = name.CStr() ? name.CStr() : "";
     float* values = primvarValues(wanted, fill, numPts, m_arena);
-    if (radius) *radius = primvarValues(k_RixSCFloat, nullptr, numPts, m_arena);
+    // Primvars here have no filter width: a radius asked for is zero, made only once there is a value.
+    auto zeroRadius = [&] {
+        if (radius) *radius = primvarValues(k_RixSCFloat, nullptr, numPts, m_arena);
+    };
     if (wanted == k_RixSCFloat2 && wantedName == "st") {
         // Every surface has texture coordinates, as in RenderMan: the builtins
         // k_s and k_t already are its st primvar, its TextureCoordinates or its (u, v).
@@ -416,6 +419,7 @@ RixSCDetail ShadingContextImpl::PrimVar(RtUString const name, RixSCType wanted, 
             values[2 * i + 1] = t[i];
         }
         *result = values;
+        zeroRadius();
         return k_RixSCVarying;
     }
     bool found = false, uniform = true;
@@ -437,7 +441,12 @@ RixSCDetail ShadingContextImpl::PrimVar(RtUString const name, RixSCType wanted, 
         return k_RixSCInvalidDetail;
     }
     *result = values;
+    zeroRadius();
     return !found ? k_RixSCInvalidDetail : uniform ? k_RixSCUniform : k_RixSCVarying;
+}
+
+bool namesWorldSpace(std::string const& space) {
+    return space == "current" || space == "world" || space == "common";
 }
 
 namespace {
@@ -445,7 +454,7 @@ namespace {
 /// The transform from coordinate system `space` to world space for points of
 /// `shape`, or nothing for a space this renderer does not know.
 std::optional<Mat4> spaceToWorld(std::string const& space, Scene const& scene, Shape const& shape) {
-    if (space == "current" || space == "world" || space == "common") return Mat4(1.0f);
+    if (namesWorldSpace(space)) return Mat4(1.0f);
     if (space == "object") return shape.objectToWorld;
     if (space == "camera") return glm::inverse(scene.camera.worldToCamera);
     auto named = scene.coordinateSystems.find(space);

@@ -11,6 +11,7 @@
 #pragma once
 
 #include <atomic>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -45,6 +46,10 @@ float* primvarValues(RixSCType wanted, void const* fill, int numPts, MemoryArena
 
 /// Whether a builtin is one float per point (the others are three).
 bool isFloatBuiltin(RixShadingContext::BuiltinId id);
+
+/// Whether a coordinate-system name means world space, where shading happens
+/// here ("current", "world", "common").
+bool namesWorldSpace(std::string const& space);
 
 struct BuiltinCounters {
     std::atomic<uint64_t> surfacePoints{0};  ///< points whose surface group was computed

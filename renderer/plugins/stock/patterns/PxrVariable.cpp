@@ -1,7 +1,6 @@
-// PxrVariable — hands a geometric quantity of the shade points (a builtin:
-// P, Nn, Ngn, Tn, Vn, dPdu, dPdv, u, v, s, t, du, dv, VLen, Po, Non, PRadius,
-// dPdtime) to the network,
-// e.g. to colour a surface by its normal while debugging:
+// PxrVariable — hands a geometric quantity of the shade points (one of the
+// builtins named in kBuiltins below) to the network, e.g. to colour a surface
+// by its normal while debugging:
 //
 //   Pattern "PxrVariable" "normal" "string variable" ["Nn"]
 //   Bxdf "PxrDiffuse" "d" "reference color diffuseColor" ["normal:resultRGB"]
