@@ -11,5 +11,6 @@
 #include "RixRNG.h"
 #include "RixShading.h"
 #include "RixShadingUtils.h"
+#include "bxdf/PxrSurfaceOpacity.h"
 
 int main() { return 0; }

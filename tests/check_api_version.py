@@ -20,10 +20,10 @@ RECORD = Path("tests/rix-api-version.txt")
 def fingerprint(root):
     text = ""
     folder = root / "renderer/include/rix"
-    for header in sorted(list(folder.glob("*.h")) + list(folder.glob("*.hpp"))):
+    for header in sorted(list(folder.rglob("*.h")) + list(folder.rglob("*.hpp"))):
         code = re.sub(r"/\*.*?\*/", " ", header.read_text(), flags=re.S)
         code = re.sub(r"//[^\n]*", " ", code)
-        text += header.name + ":" + " ".join(code.split()) + "\n"
+        text += header.relative_to(folder).as_posix() + ":" + " ".join(code.split()) + "\n"
     return hashlib.sha256(text.encode()).hexdigest()
 
 

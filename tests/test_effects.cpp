@@ -85,9 +85,13 @@ TEST_CASE("lights with zero intensity and objects invisible to all rays are drop
     CHECK(skipped(r.stats, "invisible to every ray type"));
 }
 
-TEST_CASE("opacity work is skipped for trivially opaque Bxdfs", "[effects]") {
+TEST_CASE("presence work is skipped when no Bxdf computes it", "[effects]") {
     auto r = test::renderRib(sceneWith("Bxdf \"diffuse\" \"d\"", kDiskLight));
-    CHECK(skipped(r.stats, "opacity"));
+    CHECK(skipped(r.stats, "presence"));
+    CHECK(r.stats.presencePoints == 0u);
+    // PxrDiffuse's presence left at 1 asks for nothing either.
+    auto full = test::renderRib(sceneWith("Bxdf \"PxrDiffuse\" \"d\" \"float presence\" [1]", kDiskLight));
+    CHECK(skipped(full.stats, "presence"));
 }
 
 TEST_CASE("PxrDefault lights an unlit scene with a headlight and samples no Bxdf", "[effects]") {

@@ -66,6 +66,16 @@ TEST_CASE("a connected parameter takes the pattern's value at every point", "[pa
             CHECK(r.channel(7, y, 0) == Approx(0.75f + 0.25f * pixelV(y)).margin(0.01));
             CHECK(r.channel(7, y, 1) == Approx(0.25f * pixelV(y)).margin(0.01));
         }
+        // Its green channel alone (resultG, a float) as another mix's amount: grey of that value.
+        auto green = test::renderRib(kHead + "Pattern \"PxrVariable\" \"v\" \"string variable\" [\"v\"]\n"
+                                             "Pattern \"PxrMix\" \"m\" \"color color1\" [1 0 0] "
+                                             "\"reference color color2\" [\"v:resultRGB\"] \"float mix\" [0.25]\n"
+                                             "Pattern \"PxrMix\" \"grey\" \"color color1\" [0 0 0] "
+                                             "\"reference float mix\" [\"m:resultG\"]\n"
+                                             "Bxdf \"PxrConstant\" \"c\" \"reference color emitColor\" [\"grey:resultRGB\"]\n" +
+                                         kSquare,
+                                     fewSamples());
+        for (int y : {1, 8, 14}) CHECK(green.channel(7, y, 0) == Approx(0.25f * pixelV(y)).margin(0.01));
     }
     SECTION("PxrPrimvar hands a mesh's per-vertex colour on") {
         auto r = test::renderRib(kHead + "Pattern \"PxrPrimvar\" \"cs\" \"string varname\" [\"Cs\"]\n"
@@ -289,9 +299,10 @@ TEST_CASE("bad networks: located errors for wrong handles, outputs and types, wa
     }
     SECTION("an output the pattern does not have") {
         fails("Pattern \"PxrMix\" \"m\"\nBxdf \"PxrConstant\" \"c\" \"reference color emitColor\" [\"m:resultColour\"]\n",
-              "has no output \"resultColour\" (its outputs: resultRGB)");
+              "has no output \"resultColour\" (its outputs: resultRGB, resultR, resultG, resultB)");
         fails("Pattern \"PxrMix\" \"m\"\nBxdf \"PxrConstant\" \"c\" \"reference color emitColor\" [\"m:resultRBG\"]\n",
-              "has no output \"resultRBG\" (did you mean \"resultRGB\"? its outputs: resultRGB)");
+              "has no output \"resultRBG\" (did you mean \"resultRGB\"? its outputs: resultRGB, resultR, resultG, "
+              "resultB)");
     }
     SECTION("a float output into a colour") {
         fails("Pattern \"PxrTexture\" \"t\"\nBxdf \"PxrConstant\" \"c\" \"reference color emitColor\" [\"t:resultR\"]\n",

@@ -1142,18 +1142,31 @@ TEST_CASE("a PxrSurface with no diffuse and a coloured specular face (an exporte
     CHECK(centre("\"float diffuseGain\" [0] \"color specularFaceColor\" [3 3 3]").x <= 1.01f);
 }
 
-TEST_CASE("a stand-in says that it renders a cut-out (presence below 1 or textured) opaque", "[rib][plugins]") {
-    auto told = [](std::string const& params, std::string const& pattern = "") {
+TEST_CASE("a stand-in keeps a cut-out (presence below 1 or textured), but for glass, which says it renders it opaque",
+          "[rib][plugins]") {
+    auto render = [](std::string const& material, std::string const& params, std::string const& pattern = "") {
         std::string rib = "Format 8 8 1\nProjection \"perspective\" \"fov\" [30]\nWorldBegin\nTranslate 0 0 5\n" + pattern +
-                          "Bxdf \"PxrSurface\" \"leaf\" " + params + "\nSphere 1 -1 1 360\nWorldEnd\n";
-        return test::renderRib(rib, test::withSpp(1)).anyMessageContains(
-            "Bxdf \"PxrSurface\" \"leaf\": its presence (a cut-out) is not rendered by the stand-in; the surface is opaque");
+                          "Bxdf \"" + material + "\" \"leaf\" " + params + "\nSphere 1 -1 1 360\nWorldEnd\n";
+        return test::renderRib(rib, test::withSpp(1));
     };
-    CHECK(told("\"float presence\" [0.5]"));
-    CHECK(told("\"reference float presence\" [\"alpha:resultR\"]",
-               "Pattern \"PxrMix\" \"alpha\" \"color color1\" [1 0 0]\n"));
-    CHECK_FALSE(told("\"float presence\" [1]"));
-    CHECK_FALSE(told("\"color diffuseColor\" [1 0 0]"));
+    auto opaque = [](test::RenderOutcome const& r, std::string const& material) {
+        return r.anyMessageContains("Bxdf \"" + material +
+                                    "\" \"leaf\": its presence (a cut-out) is not rendered by the stand-in; the "
+                                    "surface is opaque");
+    };
+    auto half = render("PxrSurface", "\"float presence\" [0.5]");
+    CHECK_FALSE(opaque(half, "PxrSurface"));
+    CHECK(half.stats.presencePoints > 0u);
+    auto textured = render("PxrSurface", "\"reference float presence\" [\"alpha:resultR\"]",
+                           "Pattern \"PxrMix\" \"alpha\" \"color color1\" [1 0 0]\n");
+    CHECK_FALSE(opaque(textured, "PxrSurface"));
+    CHECK(textured.stats.presencePoints > 0u);
+    auto diffuse = render("PxrLMDiffuse", "\"float presence\" [0]");
+    CHECK(diffuse.stats.presencePoints > 0u);
+    CHECK(diffuse.stats.image.litFraction == 0.0);  // nothing left to see
+    auto full = render("PxrSurface", "\"float presence\" [1]");
+    CHECK(full.stats.presencePoints == 0u);
+    CHECK(opaque(render("PxrGlass", "\"float presence\" [0.5]"), "PxrGlass"));
 }
 
 TEST_CASE("a PxrSurface stand-in glows as PxrSurface does: glowGain x glowColor, plain or textured, off by default",

@@ -156,14 +156,22 @@ public:
     /// The integrator is done with the Bxdf (its memory is reclaimed with the context).
     virtual void EndScatter(RixBxdf* bxdf) = 0;
 
-    // Features this renderer does not use; the defaults do nothing, so plugins
-    // may override them with null implementations or leave them out.
+    /// Presence (cut-outs). Called only for instances whose GetInstanceHints
+    /// include k_ComputesPresence, with mode k_RixSCPresenceQuery, for a batch
+    /// of points that rays have hit: return a RixOpacity (allocated from the
+    /// context's pool, like a Bxdf) whose GetPresence says how present each
+    /// point is, or null for "fully present". A ray that meets an absent point
+    /// goes on as if the surface were not there. See RixOpacity below.
     virtual RixOpacity* BeginOpacity(RixShadingContext const* sCtx, RixSCShadingMode mode,
                                      void* parentData, RtPointer instanceData) {
         PIXAR_ARGUSED(sCtx); PIXAR_ARGUSED(mode); PIXAR_ARGUSED(parentData); PIXAR_ARGUSED(instanceData);
         return nullptr;
     }
+    /// The renderer is done with the RixOpacity (RixOpacity::Release calls this).
     virtual void EndOpacity(RixOpacity* opacity) { PIXAR_ARGUSED(opacity); }
+
+    // Features this renderer does not use; the defaults do nothing, so plugins
+    // may override them with null implementations or leave them out.
     virtual RixVolumeIntegrator* BeginInterior(RixShadingContext const* sCtx, RixSCShadingMode mode,
                                                void* parentData, RtPointer instanceData) {
         PIXAR_ARGUSED(sCtx); PIXAR_ARGUSED(mode); PIXAR_ARGUSED(parentData); PIXAR_ARGUSED(instanceData);
@@ -182,6 +190,35 @@ public:
         PIXAR_ARGUSED(instanceData);
         PIXAR_ARGUSED(paramIds);
     }
+};
+
+/// How present a batch's points are, made by RixBxdfFactory::BeginOpacity.
+/// Presence is the chance that a ray meeting the point stops there: 1 fully
+/// present, 0 absent (a hole in a leaf's texture), values between for soft,
+/// antialiased edges. The renderer draws one random number per hit, so a
+/// point of presence 0.3 stops 30% of the rays that reach it, whatever their
+/// kind (camera, indirect or shadow); the others go on to what lies behind.
+/// Presence does not change how a present point scatters light.
+class RixOpacity {
+public:
+    RixOpacity(RixShadingContext const* sCtx, RixBxdfFactory* factory) : shadingCtx(sCtx), bxdfFactory(factory) {}
+    virtual ~RixOpacity() {}
+    RixBxdfFactory* GetBxdfFactory() { return bxdfFactory; }
+    RixShadingContext const* GetShadingCtx() { return shadingCtx; }
+
+    /// Writes shadingCtx->numPts presence values in [0, 1] to `result`, or
+    /// returns false to say "every point is fully present" (result unread).
+    virtual bool GetPresence(float* result) = 0;
+    /// Coloured opacity for shadow rays: this renderer does not call it
+    /// (Bxdfs that ask for it get a warning, and their shadows are opaque).
+    virtual bool GetOpacity(RtColorRGB* result) = 0;
+    virtual void Release() {
+        if (bxdfFactory) bxdfFactory->EndOpacity(this);
+    }
+
+protected:
+    RixShadingContext const* shadingCtx;
+    RixBxdfFactory* bxdfFactory;
 };
 
 /// Write `RIX_BXDFPLUGINCREATE { return new MyFactory(); }` in your plugin.

@@ -1,7 +1,8 @@
 // PxrDiffuse — the stock Lambertian material that RIBs from other courses and
-// tools name ("color diffuseColor", default 0.5 grey). It is also the
+// tools name ("color diffuseColor", default 0.5 grey; "float presence",
+// default 1, cuts the surface out where it is below 1). It is also the
 // material of surfaces that have no Bxdf. The scattering is the chapter 6
-// diffuse solution's; only the factory (name and default) differs.
+// diffuse solution's; only the factory (name and defaults) differs.
 #include <new>
 
 #include "Diffuse.h"
@@ -9,10 +10,13 @@
 
 namespace {
 
-class PxrDiffuseFactory : public stockbxdfs::StockBxdfFactory {
+class PxrDiffuseFactory : public stockbxdfs::StockBxdfWithPresence {
 public:
+    enum { k_diffuseColor, k_presence };
+    PxrDiffuseFactory() : StockBxdfWithPresence(k_presence) {}
     RixSCParamInfo const* GetParamTable() override {
         static RixSCParamInfo table[] = {RixSCParamInfo(RtUString("diffuseColor"), k_RixSCColor, k_RixSCScatterInput),
+                                         RixSCParamInfo(RtUString("presence"), k_RixSCFloat, k_RixSCPresenceInput),
                                          RixSCParamInfo()};
         return table;
     }
@@ -24,7 +28,7 @@ public:
     RixBxdf* BeginScatter(RixShadingContext const* sCtx, RixBXLobeTraits const&, RixSCShadingMode, void*,
                           RtPointer) override {
         RtColorRGB const* color;
-        sCtx->EvalParam(0, -1, &color, &m_default, true);
+        sCtx->EvalParam(k_diffuseColor, -1, &color, &m_default, true);
         RixShadingContext::Allocator pool(sCtx);
         return new (pool.AllocForBxdf<Diffuse>(1)) Diffuse(sCtx, this, color);
     }

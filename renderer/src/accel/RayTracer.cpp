@@ -180,11 +180,22 @@ void RayTracer::passBackFaces(HitRecord& hit, RayCounts& counts) const {
     for (int layer = 0; layer < 64 && hit.hit(); ++layer) {
         Shape const& shape = *m_shapes[hit.geomID];
         if (!shape.oneSided || glm::dot(shape.basics(hit).Ng, hit.dir) <= 0.0f) return;
-        // On past the back, from just beyond it (relative to t, as t's rounding is).
-        float const tnear = hit.t * (1.0f + 1e-5f) + 1e-7f;
-        hit = intersect(hit.org, hit.dir, tnear, kInfinity, RayKind::Camera, counts);
+        hit = beyond(hit, kInfinity, RayKind::Camera, counts);
     }
     hit.forget();
+}
+
+HitRecord RayTracer::beyond(HitRecord const& hit, float tfar, RayKind kind, RayCounts& counts) const {
+    // From just beyond the hit (relative to t, as t's rounding is).
+    float const tnear = hit.t * (1.0f + 1e-5f) + 1e-7f;
+    if (!(tnear < tfar)) return HitRecord{hit.org, hit.dir};
+    return intersect(hit.org, hit.dir, tnear, tfar, kind, counts);
+}
+
+HitRecord RayTracer::continuePast(HitRecord const& hit, float tfar, RayKind kind, RayCounts& counts) const {
+    HitRecord next = beyond(hit, tfar, kind, counts);
+    if (kind == RayKind::Camera && m_anyOneSided) passBackFaces(next, counts);
+    return next;
 }
 
 bool RayTracer::occluded(Vec3 const& org, Vec3 const& dir, float tnear, float tfar, RayCounts& counts) const {

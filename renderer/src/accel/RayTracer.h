@@ -63,6 +63,10 @@ public:
     /// most of their traversal), each within (0, infinity). hits[i] as intersect() gives it.
     void intersectCoherent(Vec3 const* org, Vec3 const* dir, int count, RayKind kind, HitRecord* hits,
                            RayCounts& counts) const;
+    /// The next hit along hit's ray beyond hit itself (and before tfar): where
+    /// a ray goes on when the surface it met lets it through. Camera rays pass
+    /// one-sided backs here too.
+    HitRecord continuePast(HitRecord const& hit, float tfar, RayKind kind, RayCounts& counts) const;
     /// True if anything blocks the segment (tnear, tfar).
     bool occluded(Vec3 const& org, Vec3 const& dir, float tnear, float tfar, RayCounts& counts) const;
     /// Many shadow rays at once (a stream, as Embree's rtcOccluded1M traces
@@ -96,6 +100,8 @@ private:
     /// Camera hits on the back of a one-sided shape (Sides 1) are passed
     /// through: the ray goes on to what lies behind.
     void passBackFaces(HitRecord& hit, RayCounts& counts) const;
+    /// The nearest hit along hit's ray past hit, before tfar (a miss if none).
+    HitRecord beyond(HitRecord const& hit, float tfar, RayKind kind, RayCounts& counts) const;
 
     RTCDevice m_device = nullptr;
     RTCScene m_camera = nullptr, m_indirect = nullptr, m_shadow = nullptr;

@@ -51,8 +51,8 @@ public:
     int count() const { return m_count; }
     Vec3 const& from(int k) const { return m_from[k]; }
     /// blocked[k]: something lies in the way of ray k.
-    void trace(RayTracer const& tracer, bool* blocked, RayCounts& counts) const {
-        tracer.occludedStream(m_from, m_dir, m_reach, m_count, blocked, counts);
+    void trace(PresenceTracer const& tracer, bool* blocked, RayCounts& counts, MemoryArena& arena) const {
+        tracer.occludedStream(m_from, m_dir, m_reach, m_count, blocked, counts, arena);
     }
 
 private:
@@ -80,7 +80,7 @@ bool IntegratorServices::Unoccluded(RixShadingContext const& ctx, int i, RtVecto
     if (!(distance > 0.0f)) return true;  // nothing can lie on an empty segment
     RayStarts starts(ctx);
     Vec3 const d = toVec3(dir), from = starts.at(i, d);
-    return !m_tracer.occluded(from, d, 0.0f, shadowReach(distance), m_counts) &&
+    return !m_tracer.occluded(from, d, 0.0f, shadowReach(distance), m_counts, m_arena) &&
            !lightEmitsAcross(from, d, starts.lightReach(i, from, distance), -d);
 }
 
@@ -100,7 +100,7 @@ void IntegratorServices::Unoccluded(RixShadingContext const& ctx, int count, int
         stream.add(starts.at(indices[k], d), d, distances[k]);
     }
     bool* blocked = m_arena.allocArray<bool>(static_cast<size_t>(std::max(1, stream.count())));
-    stream.trace(m_tracer, blocked, m_counts);
+    stream.trace(m_tracer, blocked, m_counts, m_arena);
     for (int k = 0; k < count; ++k) {
         if (ray[k] < 0) {
             clear[k] = true;
@@ -133,7 +133,8 @@ bool IntegratorServices::lightEmitsAcross(Vec3 const& from, Vec3 const& dir, flo
 RixLightHit IntegratorServices::VisibleLight(RixShadingContext const& ctx, int i, RtVector3 const& dir) {
     Vec3 d = toVec3(dir), from = RayStarts(ctx).at(i, d);
     RixLightHit light = lightAlong(from, d, kInfinity);
-    if (light.hit && m_tracer.occluded(from, d, 0.0f, shadowReach(light.distance), m_counts)) light.hit = false;
+    if (light.hit && m_tracer.occluded(from, d, 0.0f, shadowReach(light.distance), m_counts, m_arena))
+        light.hit = false;
     return light;
 }
 
@@ -153,7 +154,7 @@ void IntegratorServices::VisibleLights(RixShadingContext const& ctx, int count, 
         stream.add(start, d, hits[k].distance);
     }
     bool* blocked = m_arena.allocArray<bool>(size);
-    stream.trace(m_tracer, blocked, m_counts);
+    stream.trace(m_tracer, blocked, m_counts, m_arena);
     for (int r = 0; r < stream.count(); ++r)
         if (blocked[r]) hits[hitOf[r]].hit = false;
     m_arena.release(mark);
@@ -167,8 +168,12 @@ void IntegratorServices::TraceIndirect(RixShadingContext const& ctx, int count, 
     RayStarts starts(ctx);
     for (int k = 0; k < count; ++k) {
         Vec3 d = glm::normalize(toVec3(dirs[k]));
-        Vec3 from = starts.at(indices[k], d);
-        HitRecord hit = m_tracer.intersect(from, d, 0.0f, kInfinity, RayKind::Indirect, m_counts);
+        hits[k] = m_tracer.tracer().intersect(starts.at(indices[k], d), d, 0.0f, kInfinity, RayKind::Indirect, m_counts);
+    }
+    m_tracer.passAbsent(hits, count, nullptr, RayKind::Indirect, m_counts, m_arena);
+    for (int k = 0; k < count; ++k) {
+        HitRecord& hit = hits[k];
+        Vec3 const from = hit.org, d = hit.dir;
         // Rays that reach a light first, or that the integrator does not want shaded, end here.
         bool endsAtLight = false;
         if (lightHits) {
@@ -180,7 +185,6 @@ void IntegratorServices::TraceIndirect(RixShadingContext const& ctx, int count, 
             endsAtLight = lightEmitsAcross(from, d, hit.hit() ? hit.t : kInfinity, d);
         }
         if (endsAtLight || !shade[k]) hit.forget();
-        hits[k] = hit;
     }
     m_shader.shade(hits, samples, count, m_arena, [&](ShadeGroup& group) {
         RixShadeBatch batch{group.ctx, group.bxdf, group.rng, group.source};
@@ -233,7 +237,7 @@ void IntegratorServices::TraceEmitted(int count, RixLightEmission const* rays, R
         if (!rays[k].valid || !isFinite(from) || glm::dot(d, d) == 0.0f) continue;  // nothing leaves this light
         // A light may sit on a surface (a lamp on a ceiling): start just off the light.
         float const start = 1e-5f * (1.0f + std::max({std::fabs(from.x), std::fabs(from.y), std::fabs(from.z)}));
-        hits[k] = m_tracer.intersect(from, d, start, kInfinity, RayKind::Indirect, m_counts);
+        hits[k] = m_tracer.intersect(from, d, start, kInfinity, RayKind::Indirect, m_counts, m_arena);
         // Like a light subpath's later rays, it ends at a light where a camera path would
         // (looked for from the same start, off the light it leaves).
         if (hits[k].hit() && lightEmitsAcross(from + start * d, d, hits[k].t - start, d)) hits[k].forget();
@@ -263,7 +267,8 @@ RixCameraConnection IntegratorServices::ConnectCamera(RixShadingContext const& c
     out.pdfArea = directionPdf * std::fabs(glm::dot(toVec3(Ngn[i]), toEye)) / distSq;
     // A pixel averages camera rays spread evenly over its share of the image plane.
     out.importance = directionPdf * static_cast<float>(m_camera->pixelCount()) / distSq;
-    out.hit = !testVisibility || !m_tracer.occluded(RayStarts(ctx).at(i, toEye), toEye, 0.0f, shadowReach(distance), m_counts);
+    out.hit = !testVisibility ||
+              !m_tracer.occluded(RayStarts(ctx).at(i, toEye), toEye, 0.0f, shadowReach(distance), m_counts, m_arena);
     // A light the camera sees in front of the point hides it, as it does from camera rays:
     // the pixel shows the light (or its dark back), never what lies behind.
     if (out.hit && testVisibility && m_cameraLights) {

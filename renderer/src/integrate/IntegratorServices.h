@@ -12,6 +12,7 @@
 #include "integrate/SplatTarget.h"
 #include "scene/Camera.h"
 #include "shade/BatchShader.h"
+#include "shade/PresenceTracer.h"
 #include "scene/Scene.h"
 
 namespace bxdflab {
@@ -28,7 +29,7 @@ struct EffectReport : RixEffects {
 
 class IntegratorServices final : public RixIntegratorContext {
 public:
-    IntegratorServices(RayTracer const& tracer, std::vector<Light const*> lights, BatchShader const& shader,
+    IntegratorServices(PresenceTracer const& tracer, std::vector<Light const*> lights, BatchShader const& shader,
                        MemoryArena& arena)
         : m_tracer(tracer), m_lights(std::move(lights)), m_shader(shader), m_arena(arena) {
         for (Light const* light : m_lights) m_finiteLights |= !light->isDelta() && !light->isInfinite();
@@ -83,7 +84,7 @@ private:
     /// where that path would be, so every strategy sees the same segments clear.
     bool lightEmitsAcross(Vec3 const& from, Vec3 const& dir, float maxDistance, Vec3 const& toward) const;
 
-    RayTracer const& m_tracer;
+    PresenceTracer const& m_tracer;  ///< every query sees through cut-outs
     std::vector<Light const*> m_lights;
     bool m_finiteLights = false;  ///< some light has a shape a ray can meet
     BatchShader const& m_shader;

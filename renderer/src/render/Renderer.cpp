@@ -29,6 +29,7 @@
 #include "shade/MemoryArena.h"
 #include "shade/PatternInstance.h"
 #include "shade/PluginSearchPath.h"
+#include "shade/PresenceTracer.h"
 #include "shade/ShadingContextImpl.h"
 #include "shade/StandInMaterials.h"
 
@@ -153,6 +154,7 @@ struct Renderer::Impl {
     std::vector<Light const*> cameraLights;   // lights the camera sees directly
     ShadingCounters counters;
     std::unique_ptr<BatchShader> shader;
+    std::unique_ptr<PresenceTracer> rays;  // the tracer, seeing through cut-outs
     std::atomic<uint64_t> nonFinite{0};
     std::atomic<uint64_t> invalidPdf{0};
 
@@ -343,17 +345,21 @@ Renderer::Renderer(Scene& scene, RenderSettings settings, Diagnostics& diagnosti
     warnIfNothingInFront(*r.tracer, scene, diagnostics);
     r.shader = std::make_unique<BatchShader>(scene, r.materials, r.camera->pixelSpread(), r.counters, diagnostics,
                                              r.textures.get());
+    r.rays = std::make_unique<PresenceTracer>(*r.tracer, *r.shader);
 
     // What this render will and will not simulate.
     EffectReport& effects = m_stats.effects;
     r.integrator->DescribeEffects(static_cast<int>(r.shadingLights.size()), effects);
-    bool opaque = true;
-    for (auto const& m : r.materials) opaque = opaque && m->hints() == RixBxdfFactory::k_TriviallyOpaque;
-    if (opaque)
-        effects.skip("opacity and presence", "every Bxdf is trivially opaque");
+    if (r.rays->active())
+        effects.simulate("presence (cut-outs): rays pass the points a Bxdf's RixOpacity says are absent");
     else
-        diagnostics.warn("a Bxdf asks for presence/opacity/interior computation, which this renderer does not do; "
-                         "surfaces are treated as opaque");
+        effects.skip("presence", "no Bxdf computes it (k_ComputesPresence)");
+    for (auto const& m : r.materials) {
+        if (!(m->hints() & ~RixBxdfFactory::k_ComputesPresence)) continue;
+        diagnostics.warn("plugin \"" + m->plugin().name() + "\" (Bxdf \"" + m->handle() + "\" at " + m->where().str() +
+                         ") asks for coloured opacity or interior computation, which this renderer does not do; "
+                         "its shadows are opaque and it has no interior");
+    }
     for (std::string const& dropped : scene.dropped) effects.skip("dropped at load", dropped);
     if (r.tracer->passesBackFaces()) effects.simulate("one-sided surfaces (Sides 1): camera rays pass their backs");
 
@@ -423,6 +429,7 @@ void Renderer::Impl::renderTile(int tileX, int tileY, int spp, Film& film, Worke
             }
         tracer->intersectCoherent(w.rayOrigins.data(), w.rayDirections.data(), count, RayKind::Camera, w.hits.data(),
                                   counts);
+        rays->passAbsent(w.hits.data(), count, nullptr, RayKind::Camera, counts, w.arena);
 
         // Lights the camera sees directly, in front of any geometry.
         for (int i = 0; i < count; ++i) {
@@ -456,7 +463,7 @@ void Renderer::Impl::renderTile(int tileX, int tileY, int spp, Film& film, Worke
 }
 
 void Renderer::Impl::shadeChunk(Worker& w, int count, Film& film) {
-    IntegratorServices services(*tracer, shadingLights, *shader, w.arena);
+    IntegratorServices services(*rays, shadingLights, *shader, w.arena);
     if (integrator->WantsLightTracing()) services.connectCamera(*camera, film, cameraLights);
     services.shade(w.hits.data(), w.samples.data(), count, [&](ShadeGroup& group) {
         int n = group.ctx.numPts;
@@ -478,7 +485,8 @@ Film Renderer::render() {
     int spp = m_stats.spp;
     // The stats describe this render alone, however many came before it.
     r.tracer->counters().reset();
-    for (auto* counter : {&r.counters.shadePoints, &r.counters.batches, &r.counters.builtins.surfacePoints,
+    for (auto* counter : {&r.counters.shadePoints, &r.counters.batches, &r.counters.presencePoints,
+                          &r.counters.builtins.surfacePoints,
                           &r.counters.builtins.parameterPoints, &r.counters.builtins.tangentPoints, &r.patternCounters.evaluations,
                           &r.patternCounters.points, &r.nonFinite, &r.invalidPdf})
         *counter = 0;
@@ -507,6 +515,7 @@ Film Renderer::render() {
     m_stats.indirectRays = rays.indirect.load();
     m_stats.shadePoints = r.counters.shadePoints.load();
     m_stats.batches = r.counters.batches.load();
+    m_stats.presencePoints = r.counters.presencePoints.load();
     m_stats.surfacePoints = r.counters.builtins.surfacePoints.load();
     m_stats.parameterPoints = r.counters.builtins.parameterPoints.load();
     m_stats.tangentPoints = r.counters.builtins.tangentPoints.load();
@@ -552,6 +561,7 @@ nlohmann::json RenderStats::toJson(Diagnostics const& diagnostics) const {
         {"rays", {{"camera", cameraRays}, {"shadow", shadowRays}, {"indirect", indirectRays}}},
         {"shade_points", shadePoints},
         {"batches", batches},
+        {"presence_points", presencePoints},
         {"builtins",
          {{"surface_points", surfacePoints}, {"parameter_points", parameterPoints}, {"tangent_points", tangentPoints}}},
         {"patterns", {{"evaluations", patternEvaluations}, {"points", patternPoints}, {"texture_lookups", textureLookups}}},

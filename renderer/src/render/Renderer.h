@@ -34,6 +34,7 @@ struct RenderStats {
     int threads = 0, spp = 0, width = 0, height = 0;
     uint64_t cameraRays = 0, shadowRays = 0, indirectRays = 0;
     uint64_t shadePoints = 0, batches = 0;
+    uint64_t presencePoints = 0;  ///< hits a Bxdf was asked how present they are (cut-outs)
     uint64_t surfacePoints = 0, parameterPoints = 0, tangentPoints = 0;  ///< points each builtin group was computed for
     uint64_t patternEvaluations = 0, patternPoints = 0, textureLookups = 0;  ///< shading networks' work
     uint64_t nonFiniteSamples = 0;

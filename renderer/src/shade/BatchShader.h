@@ -2,7 +2,8 @@
 // instance (a counting sort that keeps their order), and for each group
 // builds its RixShadingContext, asks the plugin for its Bxdf (BeginScatter),
 // hands the batch to a visitor, and ends it (EndScatter). Camera hits and
-// every bounce of the path tracer go through here.
+// every bounce of the path tracer go through here; so do the presence
+// queries of cut-out surfaces (BeginOpacity), batched the same way.
 #pragma once
 
 #include <atomic>
@@ -32,6 +33,7 @@ struct ShadingCounters {
     BuiltinCounters builtins;
     std::atomic<uint64_t> shadePoints{0};
     std::atomic<uint64_t> batches{0};
+    std::atomic<uint64_t> presencePoints{0};  ///< hits whose presence a Bxdf was asked for
 };
 
 class BatchShader {
@@ -47,8 +49,21 @@ public:
     /// is released when its group ends.
     void shade(HitRecord const* hits, RixRNG::SampleCtx const* samples, int count, MemoryArena& arena,
                Visitor const& visit) const;
+    /// presence[i]: how present the point hits[i] is (RixOpacity::GetPresence,
+    /// in [0, 1]); 1 for a miss and for every Bxdf that does not compute presence.
+    void presence(HitRecord const* hits, int count, MemoryArena& arena, float* presence) const;
+    /// Whether some Bxdf of the scene computes presence (k_ComputesPresence).
+    bool anyPresence() const;
 
 private:
+    /// The hits by material: order[starts[m]..starts[m + 1]) are the indices
+    /// of material m's hits, in input order (order lives in the arena).
+    struct Groups {
+        std::vector<int> starts;
+        int* order = nullptr;
+    };
+    Groups group(HitRecord const* hits, int count, MemoryArena& arena) const;
+
     Scene const& m_scene;
     std::vector<std::unique_ptr<BxdfInstance>> const& m_materials;
     float m_pixelSpread;

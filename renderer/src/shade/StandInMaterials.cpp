@@ -179,9 +179,16 @@ std::optional<StandIn> standInFor(MaterialDesc const& material, std::vector<Patt
         if (color && !connected) out.add(colorParam("diffuseColor", *color));
         s.note = color || connected ? "PxrDiffuse in its colour" : "PxrDiffuse";
     }
-    // Presence (PxrSurface's cut-out opacity, RenderMan 21's too): no stand-in renders it.
+    // Presence (PxrSurface's cut-out opacity, RenderMan 21's too): PxrDisney and PxrDiffuse carry
+    // it over, value or pattern; the glass stand-in does not.
     std::optional<float> const presence = floatOf(in, "presence");
-    s.cutOut = material.connections.count("presence") > 0 || (presence && *presence < 1.0f);
+    bool const cutOut = material.connections.count("presence") > 0 || (presence && *presence < 1.0f);
+    if (cutOut && s.material.plugin != "StockGlass") {
+        if (!carryConnection(material, "presence", s.material, "presence", Vec3(1.0f)) && presence)
+            out.add(floatParam("presence", std::clamp(*presence, 0.0f, 1.0f)));
+    } else {
+        s.cutOut = cutOut;
+    }
     // A normal map or bump pattern stays on the surface (PxrDisney has bumpNormal; PxrDiffuse does not).
     if (s.material.plugin == "PxrDisney") carryConnection(material, "bumpNormal", s.material, "bumpNormal", Vec3(0.0f));
     return s;

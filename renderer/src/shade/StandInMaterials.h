@@ -15,7 +15,7 @@ namespace bxdflab {
 struct StandIn {
     MaterialDesc material;  ///< the stock plugin and the parameters carried over
     std::string note;       ///< what is lost, for the warning
-    bool cutOut = false;    ///< the material's presence is below 1 or textured: a cut-out the stand-in renders opaque
+    bool cutOut = false;    ///< a cut-out (presence below 1 or textured) the stand-in renders opaque (glass)
 };
 
 /// The stand-in for `material`, or nothing when its plugin is not one of

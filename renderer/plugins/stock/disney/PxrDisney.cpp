@@ -7,12 +7,13 @@
 
 namespace {
 
-class PxrDisneyFactory : public stockbxdfs::StockBxdfFactory {
+class PxrDisneyFactory : public stockbxdfs::StockBxdfWithPresence {
 public:
     enum ParamId {
         k_baseColor, k_emitColor, k_subsurface, k_metallic, k_specular, k_specularTint, k_roughness,
-        k_anisotropic, k_sheen, k_sheenTint, k_clearcoat, k_clearcoatGloss, k_bumpNormal
+        k_anisotropic, k_sheen, k_sheenTint, k_clearcoat, k_clearcoatGloss, k_bumpNormal, k_presence
     };
+    PxrDisneyFactory() : StockBxdfWithPresence(k_presence) {}
 
     RixSCParamInfo const* GetParamTable() override {
         static RixSCParamInfo table[] = {
@@ -30,6 +31,8 @@ public:
             RixSCParamInfo(RtUString("clearcoatGloss"), k_RixSCFloat, k_RixSCScatterInput),
             // A bent normal to shade with (PxrNormalMap's resultN); used only when connected.
             RixSCParamInfo(RtUString("bumpNormal"), k_RixSCNormal, k_RixSCScatterInput),
+            // 1: present; below 1 or connected: a cut-out (see StockBxdfWithPresence).
+            RixSCParamInfo(RtUString("presence"), k_RixSCFloat, k_RixSCPresenceInput),
             RixSCParamInfo()};
         return table;
     }

@@ -1,5 +1,7 @@
-// PxrMix — blends two colours: resultRGB = (1 - mix) * color1 + mix * color2.
-// Any of the three may be connected, e.g. two textures mixed by a mask:
+// PxrMix — blends two colours: resultRGB = (1 - mix) * color1 + mix * color2,
+// and each of its channels as resultR, resultG and resultB (a float, e.g. for
+// a presence). Any of the three inputs may be connected, e.g. two textures
+// mixed by a mask:
 //
 //   Pattern "PxrMix" "blend" "reference color color1" ["bark:resultRGB"]
 //       "reference color color2" ["moss:resultRGB"] "reference float mix" ["mask:resultR"]
@@ -11,7 +13,7 @@ namespace {
 
 class PxrMix : public stockpatterns::StockPattern {
 public:
-    enum { k_color1, k_color2, k_mix, k_clampMix, k_resultRGB };
+    enum { k_color1, k_color2, k_mix, k_clampMix, k_resultRGB, k_resultR, k_resultG, k_resultB };
 
     RixSCParamInfo const* GetParamTable() override {
         static RixSCParamInfo table[] = {RixSCParamInfo(RtUString("color1"), k_RixSCColor),
@@ -19,6 +21,9 @@ public:
                                          RixSCParamInfo(RtUString("mix"), k_RixSCFloat),
                                          RixSCParamInfo(RtUString("clampMix"), k_RixSCInteger),
                                          RixSCParamInfo(RtUString("resultRGB"), k_RixSCColor, k_RixSCOutput),
+                                         RixSCParamInfo(RtUString("resultR"), k_RixSCFloat, k_RixSCOutput),
+                                         RixSCParamInfo(RtUString("resultG"), k_RixSCFloat, k_RixSCOutput),
+                                         RixSCParamInfo(RtUString("resultB"), k_RixSCFloat, k_RixSCOutput),
                                          RixSCParamInfo()};
         return table;
     }
@@ -38,12 +43,18 @@ public:
         sCtx->EvalParam(k_clampMix, -1, &clampMix, &clampOn);
 
         RixShadingContext::Allocator pool(sCtx);
-        OutputSpecification* out = pool.AllocForPattern<OutputSpecification>(1);
+        OutputSpecification* out = pool.AllocForPattern<OutputSpecification>(4);
         int count = 0;
         RtColorRGB* result = stockpatterns::addVaryingOutput<RtColorRGB>(sCtx, out, count, k_resultRGB);
+        RtFloat* red = stockpatterns::addVaryingOutput<RtFloat>(sCtx, out, count, k_resultR);
+        RtFloat* green = stockpatterns::addVaryingOutput<RtFloat>(sCtx, out, count, k_resultG);
+        RtFloat* blue = stockpatterns::addVaryingOutput<RtFloat>(sCtx, out, count, k_resultB);
         for (int i = 0; i < sCtx->numPts; ++i) {
             float m = *clampMix ? std::clamp(mix[i], 0.0f, 1.0f) : mix[i];
             result[i] = color1[i] * (1.0f - m) + color2[i] * m;
+            red[i] = result[i].r;
+            green[i] = result[i].g;
+            blue[i] = result[i].b;
         }
         *numOutputs = count;
         *outputs = out;
