@@ -249,6 +249,18 @@ TEST_CASE("shading basis is orthonormal for any tangent, including degenerate on
     checkOrthonormal(down, TX, TY);
 }
 
+TEST_CASE("CreateOrthonormalBasis: a right-handed frame around any unit vector, the poles included", "[api][hard]") {
+    // RenderMan's RtFloat3 member, which studio Bxdfs sample around the normal with.
+    auto n = GENERATE(RtNormal3(0, 0, 1), RtNormal3(0, 0, -1), RtNormal3(0.0f, 0.6f, 0.8f), RtNormal3(1, 0, 0),
+                      RtNormal3(0.0f, 1e-4f, -1.0f), RtNormal3(-0.48f, 0.6f, -0.64f));
+    RtNormal3 const N = Normalize(n);
+    RtVector3 s, t;
+    N.CreateOrthonormalBasis(s, t);
+    checkOrthonormal(N, s, t);
+    RtFloat3 const handed = s.Cross(t);
+    CHECK(handed.Dot(N) == Approx(1.0f).margin(1e-5));
+}
+
 TEST_CASE("hemisphere samplers: unit directions above the surface, also at xi = 0 and 1 - 2^-24", "[api][hard]") {
     RtNormal3 N(0.0f, 0.0f, 1.0f);
     float const last = 1.0f - 0x1p-24f;

@@ -13,6 +13,7 @@
 
 #include <alloca.h>
 #include <atomic>
+#include <cassert>  // RenderMan's headers bring assert; plugin code uses it without including it
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -157,6 +158,17 @@ public:
         }
     }
     bool IsZero() const { return x == 0.0f && y == 0.0f && z == 0.0f; }
+    /// For a unit vector: two more unit vectors s and t such that (s, t, this)
+    /// is a right-handed orthonormal basis, e.g. a tangent frame around a
+    /// normal to sample directions in. Continuous wherever this vector points
+    /// (Duff et al., "Building an Orthonormal Basis, Revisited", 2017).
+    void CreateOrthonormalBasis(RtFloat3& s, RtFloat3& t) const {
+        float const sign = std::copysign(1.0f, z);
+        float const a = -1.0f / (sign + z);
+        float const b = x * y * a;
+        s = RtFloat3(1.0f + sign * x * x * a, sign * b, -sign * x);
+        t = RtFloat3(b, sign + y * y * a, -y);
+    }
 
     RtFloat3& operator+=(RtFloat3 const& o) { x += o.x; y += o.y; z += o.z; return *this; }
     RtFloat3& operator-=(RtFloat3 const& o) { x -= o.x; y -= o.y; z -= o.z; return *this; }

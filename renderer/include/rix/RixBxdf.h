@@ -66,6 +66,9 @@ enum RixBXTransportTrait {
 class RixBxdfFactory;
 class RixOpacity;
 class RixVolumeIntegrator;
+/// RenderMan 25's post-lighting stage: named so that factories written for it
+/// (BeginPostLighting returning null) compile; this renderer never calls them.
+class RixPostLighting;
 
 /// One batch's scattering function. Built by the factory in BeginScatter, in
 /// memory from the shading context's pool: it must not own heap memory (its

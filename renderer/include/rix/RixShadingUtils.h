@@ -38,7 +38,7 @@ PRMAN_INLINE float RixLuminance(RtColorRGB const& c) { return c.Luminance(); }
 /// Builds an orthonormal frame (TX, TY, N) around the unit normal N, with TX
 /// as close to the tangent T as possible. Robust when T is zero, not unit
 /// length, or parallel to N: then an arbitrary but continuous TX is chosen
-/// (Duff et al., "Building an Orthonormal Basis, Revisited", 2017).
+/// (N.CreateOrthonormalBasis's first vector).
 /// TY = N x TX.
 PRMAN_INLINE void RixComputeShadingBasis(RtNormal3 const& N, RtVector3 const& T, RtVector3& TX, RtVector3& TY) {
     RtVector3 tangent = T - N * N.Dot(T);  // Gram-Schmidt: remove the normal part
@@ -46,10 +46,8 @@ PRMAN_INLINE void RixComputeShadingBasis(RtNormal3 const& N, RtVector3 const& T,
     if (lenSq > 1e-12f && lenSq > 1e-8f * T.LengthSq()) {
         TX = tangent / std::sqrt(lenSq);
     } else {
-        float sign = std::copysign(1.0f, N.z);
-        float a = -1.0f / (sign + N.z);
-        float b = N.x * N.y * a;
-        TX = RtVector3(1.0f + sign * N.x * N.x * a, sign * b, -sign * N.x);
+        RtFloat3 unused;
+        N.CreateOrthonormalBasis(TX, unused);
     }
     TY = N.Cross(TX);
 }
