@@ -94,6 +94,23 @@ TEST_CASE("broken plugins are refused with the reason", "[plugins][errors]") {
     CHECK_THAT(message, Contains(c.reason));
 }
 
+TEST_CASE("two plugins that share a factory class name and so one parameter table are refused, naming both",
+          "[plugins][errors]") {
+    // Each alone renders its own parameter.
+    auto a = test::renderRib(withBxdf("Bxdf \"sameclass_a\" \"a\" \"color glow_a\" [1 0 0]"));
+    CHECK(a.channel(12, 12, 0) == 1.0f);
+    // Together, the second hands back the first one's table: refused, at the statement that named it.
+    std::string both = withBxdf("Bxdf \"sameclass_a\" \"a\" \"color glow_a\" [1 0 0]\n"
+                                "AttributeBegin\nBxdf \"sameclass_b\" \"b\" \"color glow_b\" [0 1 0]\n"
+                                "Sphere 0.5 -0.5 0.5 360\nAttributeEnd");
+    std::string message = renderError(both);
+    CHECK_THAT(message, Contains("plugin \"sameclass_b\""));
+    CHECK_THAT(message, Contains("GetParamTable returned the table of another plugin"));
+    CHECK_THAT(message, Contains("sameclass_a.so"));
+    CHECK_THAT(message, Contains("BxdfFactory::GetParamTable()"));
+    CHECK_THAT(message, Contains("test.rib:"));
+}
+
 TEST_CASE("a file that is not a shared object is refused with its path and the reason", "[plugins][errors]") {
     namespace fs = std::filesystem;
     fs::path dir = fs::path(test::outputDir()) / "corrupt-plugin";

@@ -65,6 +65,16 @@ ShadingPlugin::ShadingPlugin(Kind kind, std::string name, std::string path, Diag
     }
     RixSCParamInfo const* table = m_factory->GetParamTable();
     if (!table) fail("GetParamTable returned null (return a table that ends with RixSCParamInfo())");
+    // Two plugins whose factories share a class name and write GetParamTable inside the class: GCC makes
+    // that function's static table one object for the whole process (STB_GNU_UNIQUE, even across RTLD_LOCAL),
+    // so the second plugin hands back the first one's table and its parameters would be read wrongly.
+    if (SharedObject::Elsewhere other = m_library.inAnotherPlugin(table); !other.file.empty())
+        fail("GetParamTable returned the table of another plugin, " + other.file +
+             (other.symbol.empty() ? "" : " (" + other.symbol + ")") +
+             ": the two define a class of the same name with GetParamTable written in the class, and the "
+             "compiler makes that function's static table one object for the whole program. Give each "
+             "plugin's classes their own names (or put them in an anonymous namespace), or build the plugins "
+             "with -fvisibility=hidden or -fno-gnu-unique");
     std::string openStruct;  // the struct whose members the rows are, if any
     for (size_t i = 0;; ++i) {
         if (i == kMaxParams)
@@ -175,19 +185,29 @@ std::string PluginLoader::find(std::string const& name, const char* kind, Source
                       "\n  (add a folder with --plugin-path, $RIX_PLUGIN_PATH or Option \"searchpath\" \"string rixplugin\")");
 }
 
+std::unique_ptr<ShadingPlugin> PluginLoader::load(ShadingPlugin::Kind kind, std::string const& name,
+                                                  SourceLocation const& where) {
+    std::string const path = find(name, kind == ShadingPlugin::Kind::Bxdf ? "Bxdf" : "Pattern", where);
+    try {
+        return std::make_unique<ShadingPlugin>(kind, name, path, m_diagnostics);
+    } catch (RibError const&) {
+        throw;
+    } catch (RenderError const& refused) {
+        if (!where.known()) throw;
+        throw RibError(where, refused.what());  // the statement that asked for the plugin, first
+    }
+}
+
 ShadingPlugin& PluginLoader::bxdf(std::string const& name, SourceLocation const& where) {
     auto found = m_plugins.find(name);
     if (found != m_plugins.end()) return *found->second;
-    auto plugin = std::make_unique<ShadingPlugin>(ShadingPlugin::Kind::Bxdf, name, find(name, "Bxdf", where), m_diagnostics);
-    return *m_plugins.emplace(name, std::move(plugin)).first->second;
+    return *m_plugins.emplace(name, load(ShadingPlugin::Kind::Bxdf, name, where)).first->second;
 }
 
 ShadingPlugin& PluginLoader::pattern(std::string const& name, SourceLocation const& where) {
     auto found = m_patterns.find(name);
     if (found != m_patterns.end()) return *found->second;
-    auto plugin =
-        std::make_unique<ShadingPlugin>(ShadingPlugin::Kind::Pattern, name, find(name, "Pattern", where), m_diagnostics);
-    return *m_patterns.emplace(name, std::move(plugin)).first->second;
+    return *m_patterns.emplace(name, load(ShadingPlugin::Kind::Pattern, name, where)).first->second;
 }
 
 std::unique_ptr<IntegratorPlugin> PluginLoader::integrator(std::string const& name, ParamList const& params,

@@ -110,6 +110,9 @@ private:
     /// The same path, or empty when no folder has it. A name found in no folder
     /// as spelled is looked for again ignoring case.
     std::string locate(std::string const& name) const;
+    /// Finds and loads a Bxdf or pattern plugin; a plugin refused on loading is
+    /// reported at the statement that named it.
+    std::unique_ptr<ShadingPlugin> load(ShadingPlugin::Kind kind, std::string const& name, SourceLocation const& where);
     std::vector<std::string> m_searchPath;
     mutable std::map<std::string, std::string> m_located;  ///< locate()'s answers (the folders do not change)
     Diagnostics& m_diagnostics;

@@ -3,6 +3,9 @@
 #include <dlfcn.h>
 #include <link.h>
 
+#include <cxxabi.h>
+
+#include <cstdlib>
 #include <cstring>
 
 #include "core/CrashReport.h"
@@ -35,6 +38,27 @@ void* SharedObject::ownSymbol(const char* name) const {
     if (!address || dlinfo(m_handle, RTLD_DI_LINKMAP, &self) != 0 || !self || !dladdr(address, &where)) return nullptr;
     // dladdr names the object that contains the address by the same link-map name.
     return where.dli_fname && self->l_name && std::strcmp(where.dli_fname, self->l_name) == 0 ? address : nullptr;
+}
+
+SharedObject::Elsewhere SharedObject::inAnotherPlugin(void const* address) const {
+    link_map* self = nullptr;
+    Dl_info where;
+    if (!address || dlinfo(m_handle, RTLD_DI_LINKMAP, &self) != 0 || !self || !dladdr(address, &where) ||
+        !where.dli_fname || (self->l_name && std::strcmp(where.dli_fname, self->l_name) == 0))
+        return {};
+    // Only a plugin counts: a table kept in a helper library the plugin links is its own affair.
+    void* other = dlopen(where.dli_fname, RTLD_NOW | RTLD_NOLOAD);
+    if (!other) return {};
+    bool const plugin = dlsym(other, "CreateRixBxdfFactory") || dlsym(other, "CreateRixPattern");
+    dlclose(other);
+    if (!plugin) return {};
+    std::string symbol = where.dli_sname ? where.dli_sname : "";
+    int status = 0;
+    if (char* readable = abi::__cxa_demangle(symbol.c_str(), nullptr, nullptr, &status)) {
+        if (status == 0) symbol = readable;
+        std::free(readable);
+    }
+    return {where.dli_fname, symbol};
 }
 
 }  // namespace bxdflab

@@ -19,6 +19,14 @@ public:
     /// libraries it depends on, nor the program that loaded it), or nullptr.
     void* ownSymbol(const char* name) const;
 
+    /// Where `address` lies when it is in another loaded plugin (a shared
+    /// object that exports a Rix plugin's create function), not this one:
+    /// that plugin's file and the symbol there (demangled); empty otherwise.
+    struct Elsewhere {
+        std::string file, symbol;
+    };
+    Elsewhere inAnotherPlugin(void const* address) const;
+
 private:
     void* m_handle = nullptr;
 };
