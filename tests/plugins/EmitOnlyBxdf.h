@@ -1,6 +1,6 @@
 // A base for test Bxdfs that only emit, to show a value on screen: it
 // reflects nothing (every sample invalid, every evaluation empty); the
-// plugin gives EmitLocal.
+// plugin gives EmitLocal, or uses ColourEmitter for a colour per point.
 #pragma once
 
 #include "RixBxdf.h"
@@ -33,4 +33,19 @@ public:
             FPdf[s] = RPdf[s] = 0.0f;
         }
     }
+};
+
+/// An EmitOnlyBxdf that emits one given colour per point (the array must
+/// live as long as the batch: allocate it from the context's pool).
+class ColourEmitter : public EmitOnlyBxdf {
+public:
+    ColourEmitter(RixShadingContext const* sc, RixBxdfFactory* factory, RtColorRGB const* emission)
+        : EmitOnlyBxdf(sc, factory), m_emission(emission) {}
+    bool EmitLocal(RtColorRGB* result) override {
+        for (int i = 0; i < shadingCtx->numPts; ++i) result[i] = m_emission[i];
+        return true;
+    }
+
+private:
+    RtColorRGB const* m_emission;
 };

@@ -12,19 +12,6 @@
 
 namespace {
 
-class PrimvarEmitter : public EmitOnlyBxdf {
-public:
-    PrimvarEmitter(RixShadingContext const* sc, RixBxdfFactory* factory, RtColorRGB const* emission)
-        : EmitOnlyBxdf(sc, factory), m_emission(emission) {}
-    bool EmitLocal(RtColorRGB* result) override {
-        for (int i = 0; i < shadingCtx->numPts; ++i) result[i] = m_emission[i];
-        return true;
-    }
-
-private:
-    RtColorRGB const* m_emission;
-};
-
 class PrimvarFactory : public RixBxdfFactory {
 public:
     int Init(RixContext&, RtUString const) override { return 0; }
@@ -53,7 +40,7 @@ public:
             RtFloat const* radius;
             sCtx->GetPrimVar(*pairName, RtFloat2(0.0f, 0.0f), &pair, &radius);
             for (int i = 0; i < sCtx->numPts; ++i) emission[i] = RtColorRGB(pair[i].x, pair[i].y, radius[i]);
-            return new (pool.AllocForBxdf<PrimvarEmitter>(1)) PrimvarEmitter(sCtx, this, emission);
+            return new (pool.AllocForBxdf<ColourEmitter>(1)) ColourEmitter(sCtx, this, emission);
         }
         RixSCType type;
         RixSCConnectionInfo fillGiven;
@@ -64,7 +51,7 @@ public:
             sCtx->EvalParam(2, -1, &fill);
             sCtx->GetPrimVar(*colorName, *fill, &filled);
             for (int i = 0; i < sCtx->numPts; ++i) emission[i] = filled[i];
-            return new (pool.AllocForBxdf<PrimvarEmitter>(1)) PrimvarEmitter(sCtx, this, emission);
+            return new (pool.AllocForBxdf<ColourEmitter>(1)) ColourEmitter(sCtx, this, emission);
         }
         RtColorRGB const* color = nullptr;
         RtFloat const* grey = nullptr;
@@ -72,7 +59,7 @@ public:
         if (!floatName->Empty() && sCtx->GetPrimVar(*floatName, &grey) == k_RixSCInvalidDetail) grey = nullptr;
         for (int i = 0; i < sCtx->numPts; ++i)
             emission[i] = color ? color[i] : grey ? RtColorRGB(grey[i]) : RtColorRGB(0.0f);
-        return new (pool.AllocForBxdf<PrimvarEmitter>(1)) PrimvarEmitter(sCtx, this, emission);
+        return new (pool.AllocForBxdf<ColourEmitter>(1)) ColourEmitter(sCtx, this, emission);
     }
     void EndScatter(RixBxdf*) override {}
 };

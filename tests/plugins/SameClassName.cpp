@@ -8,19 +8,6 @@
 
 #include "EmitOnlyBxdf.h"
 
-class GlowBxdf : public EmitOnlyBxdf {
-public:
-    GlowBxdf(RixShadingContext const* sc, RixBxdfFactory* factory, RtColorRGB const* glow)
-        : EmitOnlyBxdf(sc, factory), m_glow(glow) {}
-    bool EmitLocal(RtColorRGB* result) override {
-        for (int i = 0; i < shadingCtx->numPts; ++i) result[i] = m_glow[i];
-        return true;
-    }
-
-private:
-    RtColorRGB const* m_glow;
-};
-
 class BxdfFactory : public RixBxdfFactory {
 public:
     int Init(RixContext&, RtUString const) override { return 0; }
@@ -36,7 +23,7 @@ public:
         RtColorRGB const* glow;
         sCtx->EvalParam(0, -1, &glow, &black, true);
         RixShadingContext::Allocator pool(sCtx);
-        return new (pool.AllocForBxdf<GlowBxdf>(1)) GlowBxdf(sCtx, this, glow);
+        return new (pool.AllocForBxdf<ColourEmitter>(1)) ColourEmitter(sCtx, this, glow);
     }
     void EndScatter(RixBxdf*) override {}
 };
