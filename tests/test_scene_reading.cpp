@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "accel/RayTracer.h"
+#include "scene/Camera.h"
 #include "scene/SceneBuilder.h"
 #include "scene/lights/MeshLight.h"
 #include "scene/shapes/Quadrics.h"
@@ -370,6 +371,30 @@ TEST_CASE("Option Ri and Attribute Ri, as RenderMan 21 and later write requests,
     // A holdout is not modelled, and says so.
     test::parseRib("WorldBegin\nAttribute \"Ri\" \"int Matte\" [1]\nSphere 1 -1 1 360\n", quiet);
     CHECK(test::warningsContaining(quiet, "\"Matte\" [1] (a holdout) is not modelled") == 1);
+}
+
+TEST_CASE("FrameAspectRatio shapes the default screen window; the image keeps the Format's size", "[rib]") {
+    // The screen-x where a perspective ray through the right edge of the middle row crosses z = 1 (fov 90).
+    auto rightEdge = [](std::string const& options) {
+        Diagnostics diagnostics(false);
+        Scene scene = test::parseRib(options + "Projection \"perspective\" \"fov\" [90]\nWorldBegin\n", diagnostics);
+        Camera camera(scene.camera, scene.xres, scene.yres, scene.pixelAspect);
+        Vec3 org, dir;
+        camera.generateRay(static_cast<float>(scene.xres), 0.5f * static_cast<float>(scene.yres), org, dir);
+        return dir.x / dir.z;
+    };
+    CHECK(rightEdge("Format 64 32 1\n") == Approx(2.0f));
+    CHECK(rightEdge("Format 64 32 1\nFrameAspectRatio 2\n") == Approx(2.0f));  // what the books' files write
+    CHECK(rightEdge("Format 64 32 1\nFrameAspectRatio 1\n") == Approx(1.0f));  // a square frame stretched wide
+    CHECK(rightEdge("Format 64 32 1\nOption \"Ri\" \"float FrameAspectRatio\" [1.5]\n") == Approx(1.5f));
+    CHECK(rightEdge("Format 64 32 1\nFrameAspectRatio 1\nScreenWindow -3 3 -1 1\n") == Approx(3.0f));  // a window wins
+    Diagnostics diagnostics(false);
+    try {
+        test::parseRib("FrameAspectRatio 0\nWorldBegin\n", diagnostics, "bad.rib");
+        FAIL("a ratio of 0 was accepted");
+    } catch (RibError const& e) {
+        CHECK_THAT(e.what(), Catch::Contains("bad.rib:1:1") && Catch::Contains("more than 0"));
+    }
 }
 
 TEST_CASE("Sides 1 hides the back of a surface from the camera, and from no other ray", "[rib]") {

@@ -17,8 +17,11 @@ Camera::Camera(CameraDesc const& desc, int xres, int yres, float pixelAspect)
     if (desc.hasScreenWindow) {
         for (int i = 0; i < 4; ++i) m_screen[i] = desc.screenWindow[i];
     } else {
-        // The shorter axis spans [-1, 1]; the longer one keeps the aspect ratio.
-        float aspect = static_cast<float>(xres) * pixelAspect / static_cast<float>(yres);
+        // The shorter axis spans [-1, 1]; the longer one keeps the frame's aspect ratio, which is the
+        // image's unless FrameAspectRatio says otherwise (the image is then stretched to fit, as the
+        // RenderMan Interface specifies).
+        float aspect = desc.frameAspectRatio > 0.0f ? desc.frameAspectRatio
+                                                    : static_cast<float>(xres) * pixelAspect / static_cast<float>(yres);
         float sx = aspect >= 1.0f ? aspect : 1.0f, sy = aspect >= 1.0f ? 1.0f : 1.0f / aspect;
         m_screen[0] = -sx;
         m_screen[1] = sx;

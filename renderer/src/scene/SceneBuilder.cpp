@@ -32,6 +32,7 @@ std::map<std::string, SceneBuilder::Handler> const& SceneBuilder::handlers() {
         {"Format", &SceneBuilder::format},
         {"Projection", &SceneBuilder::projection},
         {"ScreenWindow", &SceneBuilder::screenWindow},
+        {"FrameAspectRatio", &SceneBuilder::frameAspectRatio},
         {"PixelSamples", &SceneBuilder::pixelSamples},
         {"PixelFilter", &SceneBuilder::pixelFilter},
         {"Hider", &SceneBuilder::hider},

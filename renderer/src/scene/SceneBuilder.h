@@ -96,6 +96,8 @@ private:
     void setFormat(float xres, float yres, float pixelAspect);
     void projection(RequestReader& in);
     void screenWindow(RequestReader& in);
+    void frameAspectRatio(RequestReader& in);
+    void setFrameAspectRatio(float ratio, SourceLocation const& where);
     void setScreenWindow(std::vector<float> const& window);
     void pixelSamples(RequestReader& in);
     void pixelFilter(RequestReader& in);

@@ -159,6 +159,18 @@ void SceneBuilder::setScreenWindow(std::vector<float> const& window) {
     std::copy(window.begin(), window.end(), m_scene.camera.screenWindow);
 }
 
+void SceneBuilder::frameAspectRatio(RequestReader& in) {
+    float const ratio = in.number("frameaspectratio");
+    in.finish();
+    setFrameAspectRatio(ratio, in.where());
+}
+
+void SceneBuilder::setFrameAspectRatio(float ratio, SourceLocation const& where) {
+    if (!(ratio > 0.0f) || !std::isfinite(ratio))
+        throw RibError(where, "FrameAspectRatio: the ratio of width to height must be a number more than 0");
+    m_scene.camera.frameAspectRatio = ratio;
+}
+
 void SceneBuilder::pixelSamples(RequestReader& in) {
     std::vector<float> v = in.numbers(2, "xsamples ysamples");
     in.finish();
@@ -375,6 +387,8 @@ void SceneBuilder::riOptions(ParamList const& params, SourceLocation const& wher
                            "Option \"Ri\" \"ScreenWindow\" takes four numbers (left right bottom top) that span an area");
         setScreenWindow(*window);
     }
+    if (Param const* p = params.take("FrameAspectRatio"))
+        setFrameAspectRatio(params.getFloat("FrameAspectRatio", 0.0f), p->location);
     // Ray tracing needs no near and far planes; the frame number is a label; the shutter
     // matters only to motion blocks, which are warned about where they are.
     params.ignore("Clipping");
@@ -391,8 +405,7 @@ void SceneBuilder::riOptions(ParamList const& params, SourceLocation const& wher
                        widths && widths->size() == 2 ? (*widths)[0] : 2.0f,
                        widths && widths->size() == 2 ? (*widths)[1] : 2.0f, p->location);
     }
-    // The rest are requests this renderer skips when written out (PixelVariance,
-    // FrameAspectRatio, Exposure, ...).
+    // The rest are requests this renderer skips when written out (PixelVariance, Exposure, ...).
     for (auto const& p : params.all())
         if (!p.used)
             warnOnce("option Ri " + p.name(), p.location,
