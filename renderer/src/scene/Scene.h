@@ -26,7 +26,8 @@ struct CameraDesc {
     float fov = 90.0f;  ///< degrees, across the shorter image axis
     bool hasScreenWindow = false;
     float screenWindow[4] = {-1.0f, 1.0f, -1.0f, 1.0f};  ///< left right bottom top
-    /// FrameAspectRatio: width over height of the default screen window (0: the Format's, pixel aspect included).
+    /// FrameAspectRatio: width over height of the default screen window (0 or less: the Format's, pixel aspect
+    /// included).
     float frameAspectRatio = 0.0f;
     /// DepthOfField fstop focallength focaldistance: a thin lens of diameter
     /// focallength / fstop, sharp on the plane z = focaldistance. fstop 0 (or

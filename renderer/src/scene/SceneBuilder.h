@@ -97,7 +97,7 @@ private:
     void projection(RequestReader& in);
     void screenWindow(RequestReader& in);
     void frameAspectRatio(RequestReader& in);
-    void setFrameAspectRatio(float ratio, SourceLocation const& where);
+    void setFrameAspectRatio(float ratio);
     void setScreenWindow(std::vector<float> const& window);
     void pixelSamples(RequestReader& in);
     void pixelFilter(RequestReader& in);

@@ -162,13 +162,12 @@ void SceneBuilder::setScreenWindow(std::vector<float> const& window) {
 void SceneBuilder::frameAspectRatio(RequestReader& in) {
     float const ratio = in.number("frameaspectratio");
     in.finish();
-    setFrameAspectRatio(ratio, in.where());
+    setFrameAspectRatio(ratio);
 }
 
-void SceneBuilder::setFrameAspectRatio(float ratio, SourceLocation const& where) {
-    if (!(ratio > 0.0f) || !std::isfinite(ratio))
-        throw RibError(where, "FrameAspectRatio: the ratio of width to height must be a number more than 0");
-    m_scene.camera.frameAspectRatio = ratio;
+void SceneBuilder::setFrameAspectRatio(float ratio) {
+    // RenderMan writes -1 for "the Format's" (Option "Ri" "float FrameAspectRatio" [-1]).
+    m_scene.camera.frameAspectRatio = std::max(ratio, 0.0f);
 }
 
 void SceneBuilder::pixelSamples(RequestReader& in) {
@@ -387,8 +386,7 @@ void SceneBuilder::riOptions(ParamList const& params, SourceLocation const& wher
                            "Option \"Ri\" \"ScreenWindow\" takes four numbers (left right bottom top) that span an area");
         setScreenWindow(*window);
     }
-    if (Param const* p = params.take("FrameAspectRatio"))
-        setFrameAspectRatio(params.getFloat("FrameAspectRatio", 0.0f), p->location);
+    if (params.take("FrameAspectRatio")) setFrameAspectRatio(params.getFloat("FrameAspectRatio", 0.0f));
     // Ray tracing needs no near and far planes; the frame number is a label; the shutter
     // matters only to motion blocks, which are warned about where they are.
     params.ignore("Clipping");
