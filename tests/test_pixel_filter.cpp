@@ -1,7 +1,8 @@
-// PixelFilter: samples are drawn from the filter and a pixel is their
-// weighted mean, so a pixel next to a sharp edge sees the filter's share of
-// the bright side (negative where the filter is), each pixel stays an
-// estimate of its own, and a filter that cannot be applied says so.
+// PixelFilter: samples are drawn from the filter and a pixel is their mean
+// (under negative lobes, the positive lobes' mean less the negative lobes'),
+// so a pixel next to a sharp edge sees the filter's share of the bright side
+// (negative where the filter is), each pixel stays an estimate of its own,
+// and a filter that cannot be applied says so.
 #include <catch2/catch.hpp>
 #include <cmath>
 
@@ -60,10 +61,28 @@ TEST_CASE("a pixel filter is what a pixel beside an edge sees of it", "[film][fi
         // The cubic's integral from 1.5 to 2 is -1/76.8; the whole kernel integrates to 1.
         CHECK(r.channel(6, 1, 0) == Approx(-0.0130).margin(0.004));
         CHECK(r.channel(9, 1, 0) == Approx(1.0130).margin(0.004));
-        // A pixel is the weighted mean of its samples, so where the image is flat the lobe's
+        // Each lobe's samples are averaged apart, so where the image is flat the lobe's
         // samples, counted below 0, add no noise even at a few samples.
         auto few = render(edgeScene("PixelFilter \"catmull-rom\" 4 4\n"), 16);
         for (int x : {12, 15}) CHECK(few.channel(x, 1, 0) == Approx(1.0f).epsilon(1e-6));
+    }
+    SECTION("catmull-rom 3 3 at 1 to 4 samples: no pixel goes black where the image is flat, and none beyond "
+            "what the lobes can give") {
+        // The lobes' shares of the filter: 1.118 positive, 0.118 negative. A mean of signed weights
+        // left a pixel whose samples split evenly between the lobes black (a sixth of them at 2
+        // samples), and let one negative sample on the dark side raise the rest by half.
+        for (int spp : {1, 2, 3, 4}) {
+            INFO(spp << " samples");
+            auto r = render(edgeScene("PixelFilter \"catmull-rom\" 3 3\n"), spp);
+            for (int y = 0; y < 4; ++y) {
+                for (int x = 11; x < 16; ++x) CHECK(r.channel(x, y, 0) == Approx(1.0f).epsilon(1e-6));
+                for (int x = 0; x < 5; ++x) CHECK(r.channel(x, y, 0) == 0.0f);
+                for (int x = 5; x < 11; ++x) {
+                    CHECK(r.channel(x, y, 0) >= -0.119f);
+                    CHECK(r.channel(x, y, 0) <= 1.119f);
+                }
+            }
+        }
     }
     SECTION("box 1 1, written out, is the image of a scene that names no filter, bit for bit") {
         CHECK(render(edgeScene("PixelFilter \"box\" 1 1\n"), 16).rgba == render(edgeScene(""), 16).rgba);

@@ -30,6 +30,10 @@ public:
     Vec2 sample(float u1, float u2, float& weight) const;
     /// The one-pixel box: samples stay in their pixel with weight 1.
     bool isUnitBox() const { return m_unitBox; }
+    /// Whether the filter goes below 0 anywhere (then some samples' weights are negative).
+    bool hasNegativeLobes() const { return absoluteWeight() != 1.0f; }
+    /// Every sample's |weight|: the integral of |filter| over the integral of the filter.
+    float absoluteWeight() const { return m_x.scale * m_y.scale; }
 
 private:
     /// One direction of the (separable) filter, tabulated in cells across

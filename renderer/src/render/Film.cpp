@@ -11,15 +11,38 @@ Film::Film(int width, int height)
     : m_width(width), m_height(height), m_pixels(static_cast<size_t>(width) * static_cast<size_t>(height)) {}
 
 void Film::addSample(int x, int y, RtColorRGB const& radiance, float alpha, float weight) {
-    Pixel& p = m_pixels[static_cast<size_t>(y) * static_cast<size_t>(m_width) + static_cast<size_t>(x)];
-    for (int c = 0; c < 3; ++c) {
-        double v = radiance[c];
-        p.sum[c] += weight * v;
-        p.sumSq[c] += v * v;
+    size_t const index = static_cast<size_t>(y) * static_cast<size_t>(m_width) + static_cast<size_t>(x);
+    Pixel& p = m_pixels[index];
+    for (int c = 0; c < 3; ++c) p.sumSq[c] += static_cast<double>(radiance[c]) * radiance[c];
+    ++p.allSamples;
+    if (weight < 0.0f && !m_negative.empty()) {
+        NegativeLobes& n = m_negative[index];
+        for (int c = 0; c < 3; ++c) n.sum[c] += radiance[c];
+        n.alpha += alpha;
+        ++n.count;
+        return;
     }
-    p.alpha += weight * alpha;
-    p.weight += weight;
+    for (int c = 0; c < 3; ++c) p.sum[c] += radiance[c];
+    p.alpha += alpha;
     ++p.count;
+}
+
+void Film::enableNegativeLobes(float absoluteWeight) {
+    // integral f+ + integral f- = absoluteWeight and integral f+ - integral f- = 1.
+    m_positiveShare = 0.5 * (static_cast<double>(absoluteWeight) + 1.0);
+    m_negativeShare = 0.5 * (static_cast<double>(absoluteWeight) - 1.0);
+    m_negative.assign(m_pixels.size(), NegativeLobes());
+}
+
+double Film::resolve(double positiveSum, int positiveCount, double negativeSum, int negativeCount) const {
+    // Each lobe's mean estimates the image under that lobe alone, so a bright sample in a
+    // negative lobe takes away its lobe's small share, never as much as a positive one adds
+    // (which a mean of signed weights would let it do). A lobe no sample fell in stands in
+    // for by the other's mean.
+    if (negativeCount == 0) return positiveSum / positiveCount;
+    double const negativeMean = negativeSum / negativeCount;
+    double const positiveMean = positiveCount > 0 ? positiveSum / positiveCount : negativeMean;
+    return m_positiveShare * positiveMean - m_negativeShare * negativeMean;
 }
 
 namespace {
@@ -51,14 +74,16 @@ std::vector<float> Film::rgba() const {
     uint64_t const paths = m_splatPaths.load();
     for (size_t i = 0; i < m_pixels.size(); ++i) {
         Pixel const& p = m_pixels[i];
-        if (p.count == 0 || p.weight == 0.0) continue;
+        if (p.allSamples == 0) continue;
+        NegativeLobes const none;
+        NegativeLobes const& n = m_negative.empty() ? none : m_negative[i];
         for (int c = 0; c < 3; ++c) {
             double splat = m_splats && paths > 0 ? static_cast<double>(m_splats[3 * i + static_cast<size_t>(c)].load()) *
                                                        kSplatUnit / static_cast<double>(paths)
                                                  : 0.0;
-            out[4 * i + static_cast<size_t>(c)] = static_cast<float>(p.sum[c] / p.weight + splat);
+            out[4 * i + static_cast<size_t>(c)] = static_cast<float>(resolve(p.sum[c], p.count, n.sum[c], n.count) + splat);
         }
-        out[4 * i + 3] = static_cast<float>(p.alpha / p.weight);
+        out[4 * i + 3] = static_cast<float>(resolve(p.alpha, p.count, n.alpha, n.count));
         m_finish.apply(&out[4 * i]);
     }
     return out;
@@ -68,11 +93,14 @@ std::vector<float> Film::varianceOfMean() const {
     std::vector<float> out(m_pixels.size() * 3, 0.0f);
     for (size_t i = 0; i < m_pixels.size(); ++i) {
         Pixel const& p = m_pixels[i];
-        if (p.count < 2 || p.weight == 0.0) continue;
+        if (p.allSamples < 2) continue;
+        NegativeLobes const none;
+        NegativeLobes const& n = m_negative.empty() ? none : m_negative[i];
+        // Under negative lobes, the spread of all samples about the pixel's value: an estimate, not exact.
         for (int c = 0; c < 3; ++c) {
-            double mean = p.sum[c] / p.weight;
-            double variance = std::max(0.0, (p.sumSq[c] - p.count * mean * mean) / (p.count - 1));
-            out[3 * i + static_cast<size_t>(c)] = static_cast<float>(variance / p.count);
+            double mean = resolve(p.sum[c], p.count, n.sum[c], n.count);
+            double variance = std::max(0.0, (p.sumSq[c] - p.allSamples * mean * mean) / (p.allSamples - 1));
+            out[3 * i + static_cast<size_t>(c)] = static_cast<float>(variance / p.allSamples);
         }
     }
     return out;

@@ -1,8 +1,10 @@
 // The image being rendered. Each pixel averages its own samples (drawn around
 // it from the pixel filter, a box one pixel wide unless the scene names
-// another, and weighted by its sign), so every pixel is an independent Monte
-// Carlo estimate and its sample variance is meaningful: the autograder
-// compares renders pixel by pixel with it (under the default box).
+// another), so every pixel is an independent Monte Carlo estimate and its
+// sample variance is meaningful: the autograder compares renders pixel by
+// pixel with it (under the default box). Under a filter with negative lobes
+// (catmull-rom, sinc, mitchell) a pixel is its positive lobes' mean less its
+// negative lobes' mean, each weighted by its lobes' share of the filter.
 #pragma once
 
 #include <atomic>
@@ -23,15 +25,19 @@ public:
     Film(int width, int height);
     Film(Film&& other) noexcept
         : m_width(other.m_width), m_height(other.m_height), m_pixels(std::move(other.m_pixels)),
-          m_splats(std::move(other.m_splats)), m_splatPaths(other.m_splatPaths.load()), m_finish(other.m_finish) {}
+          m_negative(std::move(other.m_negative)), m_positiveShare(other.m_positiveShare),
+          m_negativeShare(other.m_negativeShare), m_splats(std::move(other.m_splats)), m_splatPaths(other.m_splatPaths.load()), m_finish(other.m_finish) {}
     int width() const override { return m_width; }
     int height() const override { return m_height; }
 
-    /// Adds one sample to pixel (x, y), counting `weight` times (the pixel
-    /// filter's: below 0 in a negative lobe); a pixel is the weighted mean of
-    /// its samples. Samples must arrive in a fixed order per pixel for renders
-    /// to be bit-for-bit reproducible.
+    /// Adds one sample to pixel (x, y); `weight` is the pixel filter's (below 0
+    /// in a negative lobe). Samples must arrive in a fixed order per pixel for
+    /// renders to be bit-for-bit reproducible.
     void addSample(int x, int y, RtColorRGB const& radiance, float alpha, float weight = 1.0f);
+    /// Before rendering with a filter that has negative lobes: `absoluteWeight`
+    /// is the integral of |filter| over the integral of the filter (each sample's
+    /// |weight|), from which the lobes' shares of the filter follow.
+    void enableNegativeLobes(float absoluteWeight);
 
     /// Light tracing (PxrVCM): light subpaths joined to the camera add to
     /// whichever pixel they land in, from any thread. Those additions are
@@ -50,15 +56,27 @@ public:
     std::vector<float> varianceOfMean() const;
 
 private:
+    /// The samples drawn in the filter's positive lobes (all of them under a
+    /// filter that never goes below 0); sumSq over every sample.
     struct Pixel {
         double sum[3] = {0, 0, 0};
         double sumSq[3] = {0, 0, 0};
         double alpha = 0;
-        double weight = 0;  ///< the samples' filter weights, summed (their count under a box)
+        int count = 0;       ///< samples in positive lobes
+        int allSamples = 0;  ///< in any lobe
+    };
+    /// The samples drawn in negative lobes, kept only under such a filter.
+    struct NegativeLobes {
+        double sum[3] = {0, 0, 0};
+        double alpha = 0;
         int count = 0;
     };
+    /// A pixel's value for one channel from its lobes' sums (the positive ones alone under most filters).
+    double resolve(double positiveSum, int positiveCount, double negativeSum, int negativeCount) const;
     int m_width, m_height;
     std::vector<Pixel> m_pixels;
+    std::vector<NegativeLobes> m_negative;  ///< empty unless enableNegativeLobes was called
+    double m_positiveShare = 1.0, m_negativeShare = 0.0;  ///< the lobes' integrals, which differ by 1
     std::shared_ptr<std::atomic<int64_t>[]> m_splats;  ///< 3 per pixel, in units of kSplatUnit
     std::atomic<uint64_t> m_splatPaths{0};
     ImageFinish m_finish;

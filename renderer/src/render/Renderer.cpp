@@ -494,6 +494,7 @@ Film Renderer::render() {
     Film film(r.scene.xres, r.scene.yres);
     film.setFinish(r.scene.finish);
     if (r.integrator->WantsLightTracing()) film.enableSplats();
+    if (r.pixelFilter.hasNegativeLobes()) film.enableNegativeLobes(r.pixelFilter.absoluteWeight());
     int size = tileSizeFor(r.settings.tileSize, spp);
     int tilesX = (r.scene.xres + size - 1) / size, tilesY = (r.scene.yres + size - 1) / size;
     int tiles = tilesX * tilesY;
