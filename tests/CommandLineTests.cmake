@@ -102,6 +102,11 @@ add_test(NAME cli.framebuffer_display COMMAND rixrender --quiet --spp 1 ${CMAKE_
 set_tests_properties(cli.framebuffer_display PROPERTIES WORKING_DIRECTORY ${CLI_OUT}
   PASS_REGULAR_EXPRESSION "framebuffer; the image was written to framebuffer-test.exr")
 # TIFF output keeps linear floats.
+# A shadow-map pass: the depth map it asks for is named as not made, and the image goes to a file the renderer
+# can write, said before the render ends rather than failing after it.
+add_test(NAME cli.shadow_map_pass COMMAND rixrender --quiet --spp 1 ${CMAKE_CURRENT_SOURCE_DIR}/scenes/shadow-pass.rib)
+set_tests_properties(cli.shadow_map_pass PROPERTIES WORKING_DIRECTORY ${CLI_OUT}
+  PASS_REGULAR_EXPRESSION "shadow-pass.rib:3:1: Display .* asks for a depth map.*does not write; the image was written to shadow-pass-test.z.exr")
 add_test(NAME cli.tiff_output COMMAND rixrender --quiet --spp 1 -o ch06.tif ${PROJECT_SOURCE_DIR}/scenes/ch06/diffuse.rib)
 set_tests_properties(cli.tiff_output PROPERTIES WORKING_DIRECTORY ${CLI_OUT} PASS_REGULAR_EXPRESSION "wrote ch06.tif")
 

@@ -14,6 +14,7 @@
 #include "film/OiioImageFiles.h"
 #include "core/CrashReport.h"
 #include "core/Diagnostics.h"
+#include "core/ImageFiles.h"
 #include "film/RawImage.h"
 #include "render/Renderer.h"
 #include "parse/RibParser.h"
@@ -25,10 +26,12 @@ using namespace bxdflab;
 namespace {
 
 /// The image file a Display statement names. Framebuffer displays ("it")
-/// have nowhere to show the image here, so it goes to a file of that name.
+/// have nowhere to show the image here, so it goes to a file of that name;
+/// a name without an extension, or with one this renderer does not write (a
+/// shadow map's ".z", a texture's ".tex"), gets the display type's.
 std::string outputFor(DisplayDesc const& display) {
     fs::path name(display.name.empty() ? "rixrender" : display.name);
-    if (name.has_extension()) return name.string();
+    if (name.has_extension() && isWritableImageName(name.string())) return name.string();
     std::string type = display.type;
     std::string extension = type == "tiff" ? ".tif" : type == "png" ? ".png" : ".exr";
     return name.string() + extension;
@@ -154,6 +157,12 @@ int main(int argc, char** argv) {
                 std::fprintf(stderr, "rixrender: wrote the raw image to descriptor %d\n", rawFd);
             else if (scene.display.type == "it" || scene.display.type == "framebuffer")
                 std::fprintf(stderr, "rixrender: Display \"%s\" is a framebuffer; the image was written to %s\n",
+                             scene.display.name.c_str(), imagePath.c_str());
+            else if (output.empty() && fs::path(scene.display.name).has_extension() &&
+                     !isWritableImageName(scene.display.name))
+                std::fprintf(stderr,
+                             "rixrender: Display \"%s\" names a file type this renderer does not write; the image was "
+                             "written to %s\n",
                              scene.display.name.c_str(), imagePath.c_str());
             else
                 std::fprintf(stderr, "rixrender: wrote %s\n", imagePath.c_str());

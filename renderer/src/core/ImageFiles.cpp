@@ -1,6 +1,9 @@
 #include "core/ImageFiles.h"
 
+#include <algorithm>
 #include <atomic>
+#include <cctype>
+#include <filesystem>
 
 #include "core/Error.h"
 #include "core/GitLfs.h"
@@ -21,6 +24,25 @@ ImageFiles const& imageFiles() {
 std::unique_ptr<TextureService> openTextures(Diagnostics& diagnostics) {
     ImageFiles const* files = g_files;
     return files ? files->openTextures(diagnostics) : nullptr;
+}
+
+namespace {
+std::string lowerExtension(std::string const& path) {
+    std::string extension = std::filesystem::path(path).extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return extension;
+}
+}  // namespace
+
+bool isEightBitImageName(std::string const& path) {
+    std::string const extension = lowerExtension(path);
+    return extension == ".png" || extension == ".jpg" || extension == ".jpeg";
+}
+
+bool isWritableImageName(std::string const& path) {
+    std::string const extension = lowerExtension(path);
+    return isEightBitImageName(path) || extension == ".exr" || extension == ".tif" || extension == ".tiff";
 }
 
 void writeImage(std::string const& path, std::vector<float> const& pixels, int width, int height, int channels) {

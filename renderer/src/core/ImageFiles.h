@@ -57,6 +57,12 @@ ImageFiles const& imageFiles();
 /// The installed implementation's texture service, or null when the program has none.
 std::unique_ptr<TextureService> openTextures(Diagnostics& diagnostics);
 
+/// Whether `path` names an image format writeImage writes, by its extension (any case):
+/// .exr, .tif or .tiff (floats), .png, .jpg or .jpeg (8 bits, sRGB).
+bool isWritableImageName(std::string const& path);
+/// Whether that format stores 8 bits per channel (and is written without alpha, through sRGB).
+bool isEightBitImageName(std::string const& path);
+
 /// Shorthand for imageFiles().write(...).
 void writeImage(std::string const& path, std::vector<float> const& pixels, int width, int height, int channels);
 

@@ -4,8 +4,6 @@
 #include <OpenImageIO/imagebufalgo.h>
 #include <OpenImageIO/imageio.h>
 
-#include <algorithm>
-#include <cctype>
 #include <filesystem>
 
 #include "core/Error.h"
@@ -48,13 +46,10 @@ public:
 
     void write(std::string const& path, std::vector<float> const& pixels, int width, int height,
                int channels) const override {
-        std::string extension = std::filesystem::path(path).extension().string();
-        std::transform(extension.begin(), extension.end(), extension.begin(),
-                       [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-        bool eightBit = extension == ".png" || extension == ".jpg" || extension == ".jpeg";
-        if (!eightBit && extension != ".exr" && extension != ".tif" && extension != ".tiff")
-            throw RenderError("cannot write \"" + path + "\": unknown image format \"" + extension +
-                              "\" (use .exr, .tif, .png or .jpg)");
+        if (!isWritableImageName(path))
+            throw RenderError("cannot write \"" + path + "\": unknown image format \"" +
+                              std::filesystem::path(path).extension().string() + "\" (use .exr, .tif, .png or .jpg)");
+        bool const eightBit = isEightBitImageName(path);
         OIIO::ImageSpec spec(width, height, channels, OIIO::TypeDesc::FLOAT);
         OIIO::ImageBuf image(spec);
         image.set_pixels(OIIO::ROI::All(), OIIO::TypeDesc::FLOAT, pixels.data());

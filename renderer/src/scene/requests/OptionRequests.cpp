@@ -41,6 +41,11 @@ void SceneBuilder::display(RequestReader& in) {
         name.erase(0, 1);
     }
     m_scene.display = {name, type, mode, in.where()};
+    // A depth map is a shadow-map pass's output; shadows here are traced, from the scene itself.
+    if (mode == "z")
+        warnOnce("depth display", in.where(),
+                 "Display \"" + name + "\" \"" + type + "\" \"z\" asks for a depth map (for shadow maps, which this "
+                 "renderer does not use: it traces shadows); the shaded image is written instead");
     displayFilterAndExposure(params);
 }
 
