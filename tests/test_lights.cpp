@@ -175,6 +175,20 @@ TEST_CASE("classic light shaders: pointlight, spotlight and distantlight light w
     auto uberFar = test::renderRib(
         head + "LightSource \"uberlight\" 1 \"intensity\" [25] \"falloff\" [1] \"falloffdist\" [2]\n" + matte, settings);
     CHECK(mean(uberFar) == Approx(10.0).epsilon(1e-3));
+    // MTOR's l_uber writes falloffdist 0 beside a Maya decay rate: falloff 1 is then 1 / d.
+    auto mayaDecay = test::renderRib(
+        head + "LightSource \"l_uber\" 1 \"float intensity\" [25] \"float falloff\" [1] \"float falloffdist\" [0]\n" + matte,
+        settings);
+    CHECK(mean(mayaDecay) == Approx(5.0).epsilon(1e-3));
+    // Its point light's six cube-face shadow maps (spx ... snz) mean it casts shadows; empty names do not.
+    for (std::string const map : {"a.tex", ""}) {
+        Diagnostics quiet(false);
+        Scene withMaps = test::parseRib("WorldBegin\nLightSource \"l_uber\" 1 \"float lighttype\" [1] \"string spx\" [\"" +
+                                            map + "\"]\n",
+                                        quiet);
+        REQUIRE(withMaps.lights.size() == 1u);
+        CHECK(withMaps.lights[0]->castsShadows == !map.empty());
+    }
     auto uberAway = test::renderRib(head + "TransformBegin\nRotate 180 1 0 0\nLightSource \"uberlight\" 1 \"intensity\" [25]\nTransformEnd\n" + matte,
                                     settings);
     CHECK(mean(uberAway) == 0.0);

@@ -134,3 +134,29 @@ TEST_CASE("indirect rays pass a cut-out too", "[presence]") {
     CHECK(middle(solid) < 0.9 * middle(open));  // the card hides part of the ceiling
     CHECK(middle(absent) == Approx(middle(open)).epsilon(1e-6));
 }
+
+TEST_CASE("a classic Opacity below 1 shows what lies behind, and lets that share of the light through",
+          "[presence][rib]") {
+    // Surface "constant" shows Cs Os; a quarter present with Cs Os / 0.25 where it is, it composites as
+    // 0.25 of green over 0.75 of the red wall.
+    auto quarter = test::renderRib(cardBeforeWall("Color [0 1 0]\n  Opacity [0.25 0.25 0.25]\n  Surface \"constant\""));
+    CHECK(meanRed(quarter, true) == Approx(0.75).margin(0.02));
+    CHECK(test::meanChannel(quarter, 1, inCard) == Approx(0.25).margin(0.02));
+    CHECK_FALSE(quarter.anyMessageContains("Opacity"));  // a grey opacity is rendered as it is meant
+    // A shader this renderer does not have stands in as PxrDiffuse, and shows through as the shader would.
+    auto unknown = test::renderRib(cardBeforeWall("Opacity [0.5 0.5 0.5]\n  Surface \"glassy\""));
+    CHECK(meanRed(unknown, true) == Approx(0.5).margin(0.02));
+    // Shadows: half the light passes a card of Opacity 0.5.
+    auto open = test::renderRib(floorUnderCard(""));
+    auto half = test::renderRib(floorUnderCard("Opacity [0.5 0.5 0.5]\n  Surface \"matte\""));
+    auto solid = test::renderRib(floorUnderCard("Surface \"matte\""));
+    auto underCard = [](int x, int y) { return x >= 10 && x < 14 && y >= 10 && y < 14; };
+    double const lit = test::meanChannel(open, 0, underCard);
+    REQUIRE(lit > 0.1);
+    CHECK(test::meanChannel(solid, 0, underCard) < 0.01 * lit);
+    CHECK(test::meanChannel(half, 0, underCard) == Approx(0.5 * lit).margin(0.05 * lit));
+    // A coloured Opacity shows through by its mean, and says so.
+    auto tinted = test::renderRib(cardBeforeWall("Opacity [0 0.5 1]\n  Surface \"constant\""));
+    CHECK(meanRed(tinted, true) == Approx(0.5).margin(0.02));
+    CHECK(tinted.anyMessageContains("test.rib:11:3: Opacity with unequal colours is rendered as their mean"));
+}

@@ -20,6 +20,14 @@
 // primvars when it has them ("color Cs" per vertex, say), else the Color and
 // Opacity in effect (surfaceColor, surfaceOpacity).
 //
+// An Opacity below 1 makes the surface present with probability p, the mean
+// of the Opacity's colours, and its colour where present Cs Os / p: on average
+// Os of the shaded surface over 1 - p of what lies behind, which is the
+// classic shaders' Ci = Os Cs ... composited (exactly so for a grey Opacity;
+// a coloured one shows what is behind in grey, not tinted). Shadows pass the
+// same share. A shape's own "Os" primvar darkens it as before, without showing
+// through.
+//
 // The classic shaders' specular() is a Blinn lobe max(0, N.H)^(1/roughness),
 // with no cosine and no normalisation. Here the glossy lobe is the chapter 6
 // Phong lobe around the mirror direction, unnormalised and divided by pi:
@@ -90,8 +98,31 @@ public:
         g_plasticTraits = RixBXLobeTraits(g_plasticDiffuseLobe) | RixBXLobeTraits(g_plasticSpecularLobe);
     }
 
+    void CreateInstanceData(RixContext&, RtUString const, RixParameterList const* params,
+                            InstanceData* instance) override {
+        RixSCType type;
+        RixSCConnectionInfo given = k_RixSCDefaultValue;
+        if (params->GetParamInfo(k_surfaceOpacity, &type, &given) != 0 || given != k_RixSCParameterListValue) return;
+        RtColorRGB opacity(1.0f);
+        params->EvalParam(k_surfaceOpacity, -1, &opacity);
+        // Any non-null pointer marks the instance as showing through; nothing to free.
+        if (presenceOf(opacity) < 1.0f) instance->data = this;
+    }
+    int GetInstanceHints(RtPointer instanceData) const override {
+        return instanceData ? k_ComputesPresence : k_TriviallyOpaque;
+    }
+    RixOpacity* BeginOpacity(RixShadingContext const* sCtx, RixSCShadingMode, void*, RtPointer) override {
+        RtColorRGB const white(1.0f);
+        RtColorRGB const* Os;
+        sCtx->EvalParam(k_surfaceOpacity, -1, &Os, &white, false);
+        RixShadingContext::Allocator pool(sCtx);
+        float* presence = pool.AllocForBxdf<float>(1);
+        *presence = presenceOf(*Os);
+        return new (pool.AllocForBxdf<PxrSurfaceOpacity>(1)) PxrSurfaceOpacity(sCtx, this, presence, nullptr, true);
+    }
+
     RixBxdf* BeginScatter(RixShadingContext const* sCtx, RixBXLobeTraits const&, RixSCShadingMode, void*,
-                          RtPointer) override {
+                          RtPointer instanceData) override {
         // Every parameter but the texture's colour is uniform: the scene reader writes one value per material.
         RtUString const* name;
         RtColorRGB const *Cs, *Os, *ambient, *specularColor;
@@ -123,11 +154,14 @@ public:
         if (sCtx->GetPrimVar(RtUString("Os"), &OsVarying) == k_RixSCInvalidDetail) OsVarying = nullptr;
         RixShadingContext::Allocator pool(sCtx);
         int const n = sCtx->numPts;
+        // Where the surface is present only sometimes, it carries the rest of its Opacity's weight.
+        float const present = instanceData ? presenceOf(*Os) : 1.0f;
+        RtColorRGB const opacity = present > 0.0f ? *Os / present : *Os;
         RtColorRGB* color = pool.AllocForBxdf<RtColorRGB>(n);
         // A reflectance below 0 means nothing to light; where a file's Cs holds other data for its own
         // shader (negative values), the stand-in reflects none of that channel rather than light below black.
         for (int i = 0; i < n; ++i) {
-            color[i] = (CsVarying ? CsVarying[i] : *Cs) * (OsVarying ? OsVarying[i] : *Os) * textureColor[i];
+            color[i] = (CsVarying ? CsVarying[i] : *Cs) * (OsVarying ? OsVarying[i] : opacity) * textureColor[i];
             color[i] = RtColorRGB(std::max(color[i].r, 0.0f), std::max(color[i].g, 0.0f),
                                   std::max(color[i].b, 0.0f));
         }
@@ -163,6 +197,10 @@ public:
     }
 
 private:
+    /// How often a surface of this Opacity is there: the mean of its colours, within [0, 1].
+    static float presenceOf(RtColorRGB const& opacity) {
+        return RixMin(RixMax((opacity.r + opacity.g + opacity.b) / 3.0f, 0.0f), 1.0f);
+    }
     static Shader shaderNamed(char const* name) {
         if (!std::strcmp(name, "constant")) return Shader::Constant;
         if (!std::strcmp(name, "defaultsurface")) return Shader::Default;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <filesystem>
 #include <map>
+#include <set>
 
 #include "core/Spelling.h"
 #include "scene/lights/AreaLights.h"
@@ -270,7 +271,9 @@ std::unique_ptr<Light> makeClassicLight(std::string const& shader, ParamList con
         beam = std::max(number("beamdistribution", 0.0f), 0.0f);
         coneGiven = true;
         falloffPower = std::max(number("falloff", 0.0f), 0.0f);
-        falloffReference = std::max(number("falloffdist", 1.0f), 1e-6f);
+        // MTOR's l_uber writes "falloffdist" 0 with a Maya decay rate in "falloff": 1 / d^falloff.
+        float const reference = number("falloffdist", 1.0f);
+        falloffReference = reference > 0.0f ? reference : 1.0f;
     }
     if (kind != "pointlight" && kind != "spotlight" && kind != "distantlight") {
         guess = "skipped";  // until it is placed
@@ -327,12 +330,14 @@ std::unique_ptr<Light> makeClassicLight(std::string const& shader, ParamList con
     Vec3 c = kPi * intensity * lightColor;
     light->color = RtColorRGB(c.x, c.y, c.z);
     // A classic light casts shadows only when its shader is given a shadow map or told to trace them
-    // ("shadowname" "raytrace", uberlight's "raytraceshadow" 1); BMRT's Attribute "light" "shadows"
-    // "on" is the caller's to add.
+    // ("shadowname" "raytrace", uberlight's "raytraceshadow" 1; MTOR's l_uber names a point light's six
+    // cube-face maps "spx" ... "snz"); BMRT's Attribute "light" "shadows" "on" is the caller's to add.
     light->castsShadows = false;
+    static std::set<std::string> const cubeFaceMaps = {"spx", "spy", "spz", "snx", "sny", "snz"};
     for (auto const& p : params.all()) {
         std::string const option = lowered(p.name());
-        bool const map = option.find("shadow") != std::string::npos && !p.strings.empty() && !p.strings[0].empty();
+        bool const map = (option.find("shadow") != std::string::npos || cubeFaceMaps.count(option)) &&
+                         !p.strings.empty() && !p.strings[0].empty();
         bool const traced = option.find("raytrace") != std::string::npos && !p.floats.empty() && p.floats[0] != 0.0f;
         if (map || traced) light->castsShadows = true;
     }

@@ -235,13 +235,17 @@ void SceneBuilder::madeTexture(RequestReader& in, bool wrapModes) {
 }
 
 int SceneBuilder::classicMaterial() {
-    // One material per shader and colour: the classic shaders read Cs and Os.
+    // One material per shader, colour and opacity: the classic shaders read Cs and Os.
     MaterialDesc material = *state().surface;
-    material.params.add(colorParam("surfaceColor", state().color));
-    material.params.add(colorParam("surfaceOpacity", state().opacity));
+    Vec3 const c = state().color, o = state().opacity;
+    material.params.add(colorParam("surfaceColor", c));
+    material.params.add(colorParam("surfaceOpacity", o));
     material.params.add(colorParam("ambient", m_ambient));
-    material.handle += " (Color " + std::to_string(state().color.x) + " " + std::to_string(state().color.y) + " " +
-                       std::to_string(state().color.z) + ")";
+    material.handle += " (Color " + std::to_string(c.x) + " " + std::to_string(c.y) + " " + std::to_string(c.z) +
+                       (o == Vec3(1.0f) ? std::string()
+                                        : ", Opacity " + std::to_string(o.x) + " " + std::to_string(o.y) + " " +
+                                              std::to_string(o.z)) +
+                       ")";
     std::string key = "classic " + material.handle + " at " + material.where.str();
     auto found = m_defaultMaterials.find(key);
     if (found != m_defaultMaterials.end()) return found->second;
@@ -265,16 +269,24 @@ int SceneBuilder::primvarColorMaterial() {
 
 int SceneBuilder::defaultMaterial() {
     // RenderMan shades surfaces without a Bxdf with the stock PxrDiffuse; the
-    // legacy `Color` attribute, when set, is its colour.
+    // legacy `Color` attribute, when set, is its colour, and an `Opacity` below 1
+    // (a classic shader this renderer does not have) its presence, as the
+    // classic shaders it stands in for would show through.
     Vec3 c = state().color;
     bool colored = state().colorSet;
-    std::string key = colored ? std::to_string(c.x) + " " + std::to_string(c.y) + " " + std::to_string(c.z) : "";
+    Vec3 const o = state().opacity;
+    float const presence = std::clamp((o.x + o.y + o.z) / 3.0f, 0.0f, 1.0f);
+    std::string const colour =
+        colored ? " (Color " + std::to_string(c.x) + " " + std::to_string(c.y) + " " + std::to_string(c.z) + ")" : "";
+    std::string const cutOut = presence < 1.0f ? " (presence " + std::to_string(presence) + ")" : "";
+    std::string const key = colour + cutOut;
     auto found = m_defaultMaterials.find(key);
     if (found != m_defaultMaterials.end()) return found->second;
     MaterialDesc material;
     material.plugin = "PxrDiffuse";
-    material.handle = colored ? "default material (Color " + key + ")" : "default material";
+    material.handle = "default material" + key;
     if (colored) material.params.add(colorParam("diffuseColor", c));
+    if (presence < 1.0f) material.params.add(floatParam("presence", presence));
     int index = static_cast<int>(m_scene.materials.size());
     m_scene.materials.push_back(std::move(material));
     m_defaultMaterials[key] = index;

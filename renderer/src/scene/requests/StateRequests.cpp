@@ -223,8 +223,11 @@ void SceneBuilder::opacity(RequestReader& in) {
     std::vector<float> c = in.numbers(3, "red green blue");
     in.finish();
     state().opacity = Vec3(c[0], c[1], c[2]);
-    if (c[0] < 1.0f || c[1] < 1.0f || c[2] < 1.0f)
-        warnOnce("opacity", in.where(), "Opacity below 1 is not rendered: surfaces are opaque");
+    // Classic surface shaders show through (ClassicSurface's presence); a Bxdf ignores Opacity, as in RenderMan.
+    if (c[0] != c[1] || c[1] != c[2])
+        warnOnce("opacity", in.where(),
+                 "Opacity with unequal colours is rendered as their mean: a classic surface shows what lies behind "
+                 "it in grey, not tinted");
 }
 
 void SceneBuilder::reverseOrientation(RequestReader& in) {
