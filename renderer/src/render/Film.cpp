@@ -37,8 +37,8 @@ void Film::enableNegativeLobes(float absoluteWeight) {
 double Film::resolve(double positiveSum, int positiveCount, double negativeSum, int negativeCount) const {
     // Each lobe's mean estimates the image under that lobe alone, so a bright sample in a
     // negative lobe takes away its lobe's small share, never as much as a positive one adds
-    // (which a mean of signed weights would let it do). A lobe no sample fell in stands in
-    // for by the other's mean.
+    // (which a mean of signed weights would let it do). Where no sample fell in one kind of
+    // lobe, the other kind's mean stands in for it.
     if (negativeCount == 0) return positiveSum / positiveCount;
     double const negativeMean = negativeSum / negativeCount;
     double const positiveMean = positiveCount > 0 ? positiveSum / positiveCount : negativeMean;
@@ -81,7 +81,8 @@ std::vector<float> Film::rgba() const {
             double splat = m_splats && paths > 0 ? static_cast<double>(m_splats[3 * i + static_cast<size_t>(c)].load()) *
                                                        kSplatUnit / static_cast<double>(paths)
                                                  : 0.0;
-            out[4 * i + static_cast<size_t>(c)] = static_cast<float>(resolve(p.sum[c], p.count, n.sum[c], n.count) + splat);
+            double const own = resolve(p.sum[c], p.count, n.sum[c], n.count);
+            out[4 * i + static_cast<size_t>(c)] = static_cast<float>(own + splat);
         }
         out[4 * i + 3] = static_cast<float>(resolve(p.alpha, p.count, n.alpha, n.count));
         m_finish.apply(&out[4 * i]);

@@ -26,7 +26,8 @@ public:
     Film(Film&& other) noexcept
         : m_width(other.m_width), m_height(other.m_height), m_pixels(std::move(other.m_pixels)),
           m_negative(std::move(other.m_negative)), m_positiveShare(other.m_positiveShare),
-          m_negativeShare(other.m_negativeShare), m_splats(std::move(other.m_splats)), m_splatPaths(other.m_splatPaths.load()), m_finish(other.m_finish) {}
+          m_negativeShare(other.m_negativeShare), m_splats(std::move(other.m_splats)),
+          m_splatPaths(other.m_splatPaths.load()), m_finish(other.m_finish) {}
     int width() const override { return m_width; }
     int height() const override { return m_height; }
 
