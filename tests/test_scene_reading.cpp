@@ -373,7 +373,7 @@ TEST_CASE("Option Ri and Attribute Ri, as RenderMan 21 and later write requests,
     CHECK(test::warningsContaining(quiet, "\"Matte\" [1] (a holdout) is not modelled") == 1);
 }
 
-TEST_CASE("FrameAspectRatio shapes the default screen window; the image keeps the Format's size", "[rib]") {
+TEST_CASE("FrameAspectRatio shapes the default screen window, and the image keeps the Format's size", "[rib]") {
     // The screen-x where a perspective ray through the right edge of the middle row crosses z = 1 (fov 90).
     auto rightEdge = [](std::string const& options) {
         Diagnostics diagnostics(false);
