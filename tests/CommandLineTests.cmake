@@ -103,7 +103,7 @@ set_tests_properties(cli.framebuffer_display PROPERTIES WORKING_DIRECTORY ${CLI_
   PASS_REGULAR_EXPRESSION "framebuffer; the image was written to framebuffer-test.exr")
 # TIFF output keeps linear floats.
 # A shadow-map pass: the depth map it asks for is named as not made, and the image goes to a file the renderer
-# can write, said before the render ends rather than failing after it.
+# can write, with a message saying where (it used to fail once the render was done).
 add_test(NAME cli.shadow_map_pass COMMAND rixrender --quiet --spp 1 ${CMAKE_CURRENT_SOURCE_DIR}/scenes/shadow-pass.rib)
 set_tests_properties(cli.shadow_map_pass PROPERTIES WORKING_DIRECTORY ${CLI_OUT}
   PASS_REGULAR_EXPRESSION "shadow-pass.rib:3:1: Display .* asks for a depth map.*does not write; the image was written to shadow-pass-test.z.exr")
