@@ -264,8 +264,7 @@ TEST_CASE("a LightSource without its handle is read as Aqsis and Pixie read it: 
 
 TEST_CASE("a classic light is on the light list of the shapes after it in its attribute block", "[lights]") {
     // RenderMan's light list is an attribute: a LightSource lights the shapes that follow it until its
-    // block ends. Lights are not linked to shapes here, so a light that any shape has on its list lights
-    // every shape, with a warning; one that no shape has lights nothing, as in RenderMan.
+    // block ends, and not the shapes before it; one that no shape has lights nothing, with a warning.
     std::string const head = "Format 8 8 1\nProjection \"orthographic\"\nScreenWindow -0.01 0.01 -0.01 0.01\n"
                              "Integrator \"PxrDirectLighting\" \"d\"\nWorldBegin\n";
     std::string const light = "LightSource \"distantlight\" \"key\" \"intensity\" [0.7]\n";
@@ -284,10 +283,11 @@ TEST_CASE("a classic light is on the light list of the shapes after it in its at
     CHECK(mean(scoped) == 0.0);
     CHECK(scoped.anyMessageContains("test.rib:7:1: light \"key\" is not on the light list of every shape"));
 
-    // Given after the wall, for a ball: the wall is lit too, with a warning that counts it.
+    // Given after the wall, for a ball: the ball is lit and the wall is not (Houdini's shadow-map passes
+    // write their lights this way).
     auto after = test::renderRib(head + wall + light + ball + "WorldEnd\n", settings);
-    CHECK(mean(after) == Approx(0.7).epsilon(1e-3));
-    CHECK(after.anyMessageContains("light \"key\" is not on the light list of 1 shapes"));
+    CHECK(mean(after) == 0.0);
+    CHECK_FALSE(after.anyMessageContains("light list"));
 
     // Illuminate puts a light back on the list.
     auto back = test::renderRib(head + "AttributeBegin\n" + light + "AttributeEnd\nIlluminate \"key\" 1\n" + wall + "WorldEnd\n",
@@ -301,6 +301,71 @@ TEST_CASE("a classic light is on the light list of the shapes after it in its at
                                settings);
     CHECK(mean(ris) > 0.1);
     CHECK_FALSE(ris.anyMessageContains("light list"));
+}
+
+TEST_CASE("Illuminate links lights to shapes: a light turned off for a shape lights the other shapes alone",
+          "[lights]") {
+    // A rect light facing two halves of a wall; the left half turns it off. Every integrator that samples
+    // lights and Bxdfs (MIS) must leave the left half black and light the right half as if nothing were off.
+    auto render = [](std::string const& integrator, std::string const& leftAttributes) {
+        std::string rib = "Format 16 16 1\nProjection \"perspective\" \"fov\" [20]\nIntegrator \"" + integrator +
+                          "\" \"i\"\nWorldBegin\n  AttributeBegin\n  Attribute \"visibility\" \"int camera\" [0]\n"
+                          "  Translate 0 0 3\n  Light \"PxrRectLight\" \"panel\" \"float intensity\" [2]\n"
+                          "  AttributeEnd\n"
+                          "  Bxdf \"diffuse\" \"white\" \"color diffuseColor\" [1 1 1]\n  AttributeBegin\n" +
+                          leftAttributes +
+                          "  Polygon \"P\" [-4 -4 5  0 -4 5  0 4 5  -4 4 5]\n  AttributeEnd\n"
+                          "  Polygon \"P\" [0 -4 5  4 -4 5  4 4 5  0 4 5]\nWorldEnd\n";
+        return test::renderRib(rib, test::withSpp(16));
+    };
+    auto left = [](int x, int) { return x < 8; };
+    auto right = [](int x, int) { return x >= 8; };
+    for (std::string integrator : {"PxrDirectLighting", "PxrPathTracer", "PxrVCM"}) {
+        CAPTURE(integrator);
+        auto linked = render(integrator, "  Illuminate \"panel\" 0\n");
+        auto unlinked = render(integrator, "");
+        CHECK(test::meanChannel(unlinked, 0, left) > 0.02);
+        CHECK(test::meanChannel(linked, 0, left) == 0.0);
+        CHECK(test::meanChannel(linked, 0, right) == Approx(test::meanChannel(unlinked, 0, right)).epsilon(1e-4));
+    }
+}
+
+TEST_CASE("Attribute lighting subset and excludesubset link lights by handle or by grouping membership",
+          "[lights]") {
+    // Which of two lights (key, in the groups "keys" and "rims", and fill) light a sphere given after them.
+    auto litBy = [](std::string const& sphereAttributes) {
+        Diagnostics diagnostics(false);
+        Scene scene = test::parseRib("WorldBegin\nAttributeBegin\nAttribute \"grouping\" \"string membership\" "
+                                     "[\"keys rims\"]\nLight \"PxrDistantLight\" \"key\"\nAttributeEnd\n"
+                                     "Light \"PxrDistantLight\" \"fill\"\n" + sphereAttributes +
+                                         "Sphere 1 -1 1 360\n",
+                                     diagnostics);
+        CHECK(test::warningsContaining(diagnostics, "not used") == 0);
+        REQUIRE(scene.lights.size() == 2u);
+        REQUIRE(scene.shapes.size() == 1u);
+        int const link = scene.shapes[0]->lightLink;
+        std::string lit;
+        for (size_t l = 0; l < scene.lights.size(); ++l)
+            if (link < 0 || scene.lightLinks[static_cast<size_t>(link)][l]) lit += " " + scene.lights[l]->handle;
+        return lit;
+    };
+    CHECK(litBy("") == " key fill");
+    CHECK(litBy("Attribute \"lighting\" \"string excludesubset\" [\"fill\"]\n") == " key");
+    CHECK(litBy("Attribute \"lighting\" \"string subset\" [\"rims\"]\n") == " key");
+    CHECK(litBy("Attribute \"lighting\" \"string subset\" [\"fill,keys\"]\n") == " key fill");
+    CHECK(litBy("Attribute \"lighting\" \"string subset\" [\"keys\"] \"string excludesubset\" [\"key\"]\n") == "");
+    // What exporters write when nothing is linked.
+    CHECK(litBy("Attribute \"lighting\" \"int mute\" [0] \"string subset\" [\"\"] \"string excludesubset\" [\"\"]\n") ==
+          " key fill");
+
+    // A muted light emits nothing: it is left out.
+    Diagnostics diagnostics(false);
+    Scene muted = test::parseRib("WorldBegin\nAttributeBegin\nAttribute \"lighting\" \"int mute\" [1]\n"
+                                 "Light \"PxrDistantLight\" \"key\"\nAttributeEnd\n"
+                                 "Light \"PxrDistantLight\" \"fill\"\n",
+                                 diagnostics);
+    REQUIRE(muted.lights.size() == 1u);
+    CHECK(muted.lights[0]->handle == "fill");
 }
 
 TEST_CASE("a light shader this renderer does not have is placed by its name, then by its parameters", "[lights]") {

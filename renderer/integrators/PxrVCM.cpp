@@ -255,6 +255,7 @@ private:
             rng.DrawSamples2D(xi);
             for (int i = 0; i < n; ++i) {
                 sample[i] = ictx.SampleLight(light, level.vertex[i].P, xi[i]);
+                if (!ictx.Illuminates(light, ctx, i)) sample[i].radiance = RtColorRGB(0.0f);  // light linking
                 q.Ln[i] = sample[i].wi;
             }
             q.evaluate(bxdf, rng, ictx);
@@ -456,6 +457,9 @@ private:
                 float distSq = (vertex[j].P - y0.P).LengthSq();
                 float nextEvent = path.deltaLight[i] ? 1.0f : e.pdfLightSample * e.cosine / distSq;
                 path.neeOverEmit[i] = remapZero(nextEvent) / remapZero(y0.pdfFwd);
+                // Light linking: a light subpath whose first surface the light does not light carries
+                // nothing, as next-event estimation and the camera paths that reach the light from there do.
+                if (!ictx.Illuminates(path.lightIndex[i], ctx, j)) carried[j] = RtColorRGB(0.0f);
             }
         }
         if (!batch.bxdf.GetAllLobeTraits().HasAny()) return;

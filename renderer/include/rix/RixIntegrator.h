@@ -85,6 +85,10 @@ public:
     /// The lights next-event estimation should sample.
     virtual int GetNumLights() const = 0;
     virtual RixLightSample SampleLight(int light, RtPoint3 const& P, RtFloat2 const& xi) const = 0;
+    /// Light linking: does this light light point i of ctx? A RIB file can turn a light off for
+    /// some shapes (Illuminate, or a classic light's attribute block); skip it at their points.
+    /// VisibleLight(s) and TraceIndirect already give such a light no radiance there.
+    virtual bool Illuminates(int light, RixShadingContext const& ctx, int i) const = 0;
 
     /// A shadow ray: is the way from point i of ctx toward dir, up to distance, clear? A light
     /// whose lit face lies in the way blocks it, as it ends a path that meets it. A distance of 0

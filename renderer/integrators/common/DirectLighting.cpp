@@ -64,6 +64,7 @@ void addLightSamples(RixShadingContext const& ctx, RixBxdf& bxdf, RixRNG& rng, R
             rng.DrawSamples2D(xi);
             for (int i = 0; i < n; ++i) {
                 lightSample[i] = ictx.SampleLight(light, P[i], xi[i]);
+                if (!ictx.Illuminates(light, ctx, i)) lightSample[i].radiance = RtColorRGB(0.0f);  // light linking
                 q.Ln[i] = lightSample[i].wi;
             }
             q.evaluate(bxdf, rng, ictx);

@@ -76,6 +76,30 @@ RixLightSample IntegratorServices::SampleLight(int light, RtPoint3 const& P, RtF
     return out;
 }
 
+bool IntegratorServices::Illuminates(int light, RixShadingContext const& ctx, int i) const {
+    if (!m_linkedScene) return true;
+    for (auto batch = m_batches.rbegin(); batch != m_batches.rend(); ++batch) {
+        if (*batch != &ctx) continue;
+        int const link = m_linkedScene->shapes[(*batch)->hit(i).geomID]->lightLink;
+        return link < 0 || m_linkedScene->lightLinks[static_cast<size_t>(link)][static_cast<size_t>(light)];
+    }
+    return true;  // not a batch these services shade
+}
+
+void IntegratorServices::shade(HitRecord const* hits, RixRNG::SampleCtx const* samples, int count,
+                               BatchShader::Visitor const& visit) {
+    shadeBatches(hits, samples, count, visit);
+}
+
+void IntegratorServices::shadeBatches(HitRecord const* hits, RixRNG::SampleCtx const* samples, int count,
+                                      BatchShader::Visitor const& visit) {
+    m_shader.shade(hits, samples, count, m_arena, [&](ShadeGroup& group) {
+        m_batches.push_back(&group.ctx);
+        visit(group);
+        m_batches.pop_back();
+    });
+}
+
 bool IntegratorServices::Unoccluded(RixShadingContext const& ctx, int i, RtVector3 const& dir, float distance) {
     if (!(distance > 0.0f)) return true;  // nothing can lie on an empty segment
     RayStarts starts(ctx);
@@ -135,6 +159,7 @@ RixLightHit IntegratorServices::VisibleLight(RixShadingContext const& ctx, int i
     RixLightHit light = lightAlong(from, d, kInfinity);
     if (light.hit && m_tracer.occluded(from, d, 0.0f, shadowReach(light.distance), m_counts, m_arena))
         light.hit = false;
+    unlinkedSendNothing(ctx, i, light);
     return light;
 }
 
@@ -157,6 +182,7 @@ void IntegratorServices::VisibleLights(RixShadingContext const& ctx, int count, 
     stream.trace(m_tracer, blocked, m_counts, m_arena);
     for (int r = 0; r < stream.count(); ++r)
         if (blocked[r]) hits[hitOf[r]].hit = false;
+    for (int k = 0; k < count; ++k) unlinkedSendNothing(ctx, indices[k], hits[k]);
     m_arena.release(mark);
 }
 
@@ -179,6 +205,7 @@ void IntegratorServices::TraceIndirect(RixShadingContext const& ctx, int count, 
         if (lightHits) {
             lightHits[k] = lightAlong(from, d, hit.hit() ? hit.t : kInfinity);
             endsAtLight = lightHits[k].hit;
+            unlinkedSendNothing(ctx, indices[k], lightHits[k]);  // it still ends there
         } else {
             // It crosses the segment a camera path would cross the other way, and ends
             // where that path would: at a light that emits along the ray.
@@ -186,7 +213,7 @@ void IntegratorServices::TraceIndirect(RixShadingContext const& ctx, int count, 
         }
         if (endsAtLight || !shade[k]) hit.forget();
     }
-    m_shader.shade(hits, samples, count, m_arena, [&](ShadeGroup& group) {
+    shadeBatches(hits, samples, count, [&](ShadeGroup& group) {
         RixShadeBatch batch{group.ctx, group.bxdf, group.rng, group.source};
         visit(batch);
     });
@@ -242,7 +269,7 @@ void IntegratorServices::TraceEmitted(int count, RixLightEmission const* rays, R
         // (looked for from the same start, off the light it leaves).
         if (hits[k].hit() && lightEmitsAcross(from + start * d, d, hits[k].t - start, d)) hits[k].forget();
     }
-    m_shader.shade(hits, samples, count, m_arena, [&](ShadeGroup& group) {
+    shadeBatches(hits, samples, count, [&](ShadeGroup& group) {
         RixShadeBatch batch{group.ctx, group.bxdf, group.rng, group.source};
         visit(batch);
     });

@@ -37,6 +37,7 @@ public:
 
     int GetNumLights() const override { return static_cast<int>(m_lights.size()); }
     RixLightSample SampleLight(int light, RtPoint3 const& P, RtFloat2 const& xi) const override;
+    bool Illuminates(int light, RixShadingContext const& ctx, int i) const override;
     bool Unoccluded(RixShadingContext const& ctx, int i, RtVector3 const& dir, float distance) override;
     RixLightHit VisibleLight(RixShadingContext const& ctx, int i, RtVector3 const& dir) override;
     void Unoccluded(RixShadingContext const& ctx, int count, int const* indices, RtVector3 const* dirs,
@@ -67,10 +68,12 @@ public:
     void CountNonFinite() override { ++m_nonFinite; }
     void CountInvalidPdf() override { ++m_invalidPdf; }
 
+    /// Light linking: the scene whose shapes say which of these lights (the scene's own, in its
+    /// order) light them. Without it every light lights every point (a headlight, say).
+    void linkLights(Scene const& scene) { m_linkedScene = scene.lightLinks.empty() ? nullptr : &scene; }
+
     /// Shades hits as batches grouped by Bxdf (camera hits use this too).
-    void shade(HitRecord const* hits, RixRNG::SampleCtx const* samples, int count, BatchShader::Visitor const& visit) {
-        m_shader.shade(hits, samples, count, m_arena, visit);
-    }
+    void shade(HitRecord const* hits, RixRNG::SampleCtx const* samples, int count, BatchShader::Visitor const& visit);
     RayCounts& rayCounts() { return m_counts; }
     uint64_t takeNonFinite() { return std::exchange(m_nonFinite, 0); }
     uint64_t takeInvalidPdf() { return std::exchange(m_invalidPdf, 0); }
@@ -83,6 +86,13 @@ private:
     /// a dark back; shadow rays (toward = -dir) and light subpaths (toward = dir) are stopped
     /// where that path would be, so every strategy sees the same segments clear.
     bool lightEmitsAcross(Vec3 const& from, Vec3 const& dir, float maxDistance, Vec3 const& toward) const;
+    /// Shades hits, and hands each batch to visit while remembering its hits (for Illuminates).
+    void shadeBatches(HitRecord const* hits, RixRNG::SampleCtx const* samples, int count,
+                      BatchShader::Visitor const& visit);
+    /// A light reached from point i of ctx that does not light it sends it nothing.
+    void unlinkedSendNothing(RixShadingContext const& ctx, int i, RixLightHit& hit) const {
+        if (hit.hit && !Illuminates(hit.light, ctx, i)) hit.radiance = RtColorRGB(0.0f);
+    }
 
     PresenceTracer const& m_tracer;  ///< every query sees through cut-outs
     std::vector<Light const*> m_lights;
@@ -92,6 +102,9 @@ private:
     Camera const* m_camera = nullptr;
     SplatTarget* m_film = nullptr;
     std::vector<Light const*> const* m_cameraLights = nullptr;
+    Scene const* m_linkedScene = nullptr;
+    /// The batches being integrated, innermost last (a batch's context knows the shapes it shades).
+    std::vector<ShadingContextImpl const*> m_batches;
     RayCounts m_counts;
     uint64_t m_nonFinite = 0;
     uint64_t m_invalidPdf = 0;

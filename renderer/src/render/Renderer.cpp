@@ -465,6 +465,7 @@ void Renderer::Impl::renderTile(int tileX, int tileY, int spp, Film& film, Worke
 void Renderer::Impl::shadeChunk(Worker& w, int count, Film& film) {
     IntegratorServices services(*rays, shadingLights, *shader, w.arena);
     if (integrator->WantsLightTracing()) services.connectCamera(*camera, film, cameraLights);
+    if (!headlight) services.linkLights(scene);
     services.shade(w.hits.data(), w.samples.data(), count, [&](ShadeGroup& group) {
         int n = group.ctx.numPts;
         w.groupRadiance.assign(static_cast<size_t>(n), RtColorRGB(0.0f));

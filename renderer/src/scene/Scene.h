@@ -129,6 +129,8 @@ struct Scene : SceneOptions {
     /// parameter of the same name takes its values from the primvar.
     std::set<std::string> primvarNames;
     std::vector<std::unique_ptr<Light>> lights;
+    /// Light linking: lightLinks[k][l] says whether light l lights the shapes whose lightLink is k.
+    std::vector<std::vector<bool>> lightLinks;
     /// The coordinate systems named by CoordinateSystem and ScopedCoordinateSystem
     /// (the last definition of each name), as transforms to world space.
     std::map<std::string, Mat4> coordinateSystems;

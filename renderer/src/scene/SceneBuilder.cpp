@@ -404,10 +404,10 @@ void SceneBuilder::finishFrame() {
                            "PxrDirectLighting and its lights, as RenderMan before RIS did (Integrator \"PxrDefault\" "
                            "\"d\" before WorldBegin lights it from the camera, as RIS does)");
     }
-    // Illuminate: a light off for every shape lights nothing and is dropped. A
-    // light on for some shapes and off for others lights them all: lights are
-    // not linked to shapes here. A classic light is off, too, for the shapes
-    // before it and after the attribute block that gave it ended.
+    // Illuminate: a light off for every shape lights nothing and is dropped; one on
+    // for some shapes and off for others lights only the first (linkLights). A
+    // classic light is off, too, for the shapes before it and after the attribute
+    // block that gave it ended.
     std::vector<std::unique_ptr<Light>> kept;
     for (auto& light : m_scene.lights) {
         auto found = m_lightUse.find(light->handle);
@@ -428,12 +428,10 @@ void SceneBuilder::finishFrame() {
             if (use.listed) warnOnce("light list", use.where, what + ", so it lights nothing, as in RenderMan");
             continue;
         }
-        if (off > 0)
-            warnOnce("light linking", {}, "light \"" + light->handle + "\" is " + why + " " + std::to_string(off) +
-                                              " shapes" + which + " but lights them too: lights are not linked to shapes here");
         kept.push_back(std::move(light));
     }
     m_scene.lights = std::move(kept);
+    linkLights();
     if (!m_sink) {
         m_keptFrame = true;  // the frame stays in the scene; later worlds are read without being built
         m_keptOptions = m_scene;
@@ -447,6 +445,7 @@ void SceneBuilder::finishFrame() {
     m_scene.shapes.clear();
     m_scene.primvarNames.clear();
     m_scene.lights.clear();
+    m_scene.lightLinks.clear();
     m_scene.dropped.clear();
     m_defaultMaterials.clear();
     m_emissiveMaterials.clear();
@@ -454,6 +453,41 @@ void SceneBuilder::finishFrame() {
     for (auto& a : m_attributes) a.material = -1;
     for (auto& f : m_frames)
         for (auto& a : f.attributes) a.material = -1;
+}
+
+void SceneBuilder::linkLights() {
+    // Each distinct set of lights that are off becomes one entry of lightLinks; a shape every
+    // light lights needs none, which keeps the common case (no Illuminate) free.
+    std::vector<int> linkOf(m_lightsOff.size(), -1);
+    for (size_t key = 0; key < m_lightsOff.size(); ++key) {
+        LightsOff const& off = m_lightsOff[key];
+        std::vector<bool> lit(m_scene.lights.size(), true);
+        bool someOff = false;
+        for (size_t l = 0; l < lit.size(); ++l) {
+            Light const& light = *m_scene.lights[l];
+            auto use = m_lightUse.find(light.handle);
+            bool const listed = use != m_lightUse.end() && use->second.listed;
+            bool const givenLater = listed && use->second.listedOrder >= off.listedBefore;
+            bool const turnedOff = std::binary_search(off.handles.begin(), off.handles.end(), light.handle);
+            // A "lighting" subset names lights by handle or by group.
+            auto named = [&light](std::vector<std::string> const& names) {
+                return std::any_of(names.begin(), names.end(), [&light](std::string const& name) {
+                    return name == light.handle ||
+                           std::find(light.groups.begin(), light.groups.end(), name) != light.groups.end();
+                });
+            };
+            bool const outsideSubset = (!off.subset.empty() && !named(off.subset)) || named(off.exclude);
+            if (givenLater || turnedOff || outsideSubset) {
+                lit[l] = false;
+                someOff = true;
+            }
+        }
+        if (!someOff) continue;
+        linkOf[key] = static_cast<int>(m_scene.lightLinks.size());
+        m_scene.lightLinks.push_back(std::move(lit));
+    }
+    for (auto& shape : m_scene.shapes)
+        if (shape->lightLink >= 0) shape->lightLink = linkOf[static_cast<size_t>(shape->lightLink)];
 }
 
 Scene loadScene(std::string const& path, Diagnostics& diagnostics, LoadOptions options) {

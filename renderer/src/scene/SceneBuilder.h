@@ -13,6 +13,7 @@
 #include <memory>
 #include <set>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "core/Diagnostics.h"
@@ -65,6 +66,11 @@ private:
         /// The classic light list: LightSource lights on for the shapes that follow. It is an
         /// attribute, so a light given inside a block is off after the block ends.
         std::set<std::string> lightList;
+        /// Attribute "lighting" "subset" and "excludesubset": the lights (by handle or group) that light
+        /// the shapes that follow, when not empty, and those that do not. "grouping" "membership": the
+        /// groups a light given here belongs to.
+        std::vector<std::string> lightingSubset, lightingExclude, membership;
+        bool lightMute = false;  ///< Attribute "lighting" "mute": a light given here emits nothing
         bool textureCoordinatesSet = false;
         std::array<float, 8> textureCoordinates{{0, 0, 1, 0, 0, 1, 1, 1}};
         SplineBasis uBasis = SplineBasis::bezier(), vBasis = SplineBasis::bezier();
@@ -409,10 +415,27 @@ private:
         bool listed = false;  ///< a classic light: on only for shapes it is on the light list of
         bool illuminated = false;  ///< named by Illuminate
         int shapesBefore = 0;
+        int listedOrder = -1;  ///< a classic light: how many classic lights came before it in this world
         SourceLocation where;  ///< a classic light's LightSource
     };
     std::map<std::string, LightUse> m_lightUse;
     int m_worldShapes = 0;  ///< shapes read in this world so far
+    int m_listedLights = 0;  ///< classic lights given in this world so far
+    /// Light linking, as a shape is read: the handles that are off for it (sorted), how many
+    /// classic lights had been given (the later ones are off for it too), and its "lighting" subsets.
+    /// Each distinct set is kept once; a shape's lightLink indexes this list until the world ends
+    /// (see linkLights).
+    struct LightsOff {
+        std::vector<std::string> handles;
+        int listedBefore = 0;
+        std::vector<std::string> subset, exclude;
+        auto key() const { return std::tie(handles, listedBefore, subset, exclude); }
+        bool operator<(LightsOff const& other) const { return key() < other.key(); }
+    };
+    std::vector<LightsOff> m_lightsOff;
+    std::map<LightsOff, int> m_lightsOffIndex;
+    /// At the world's end, with the lights that are kept: each shape's Scene::lightLinks entry.
+    void linkLights();
 };
 
 /// Parses a RIB file into a new Scene (a convenience for tools and tests):

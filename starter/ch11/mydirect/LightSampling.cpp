@@ -20,6 +20,8 @@ void sampleLights(RixShadingContext const& ctx, RixBxdf& bxdf, RixRNG& rng, RixI
             rng.DrawSamples2D(xi);
             for (int i = 0; i < n; ++i) {
                 light[i] = ictx.SampleLight(l, P[i], xi[i]);
+                // Light linking: a light the file turned off for this point's shape sends it nothing.
+                if (!ictx.Illuminates(l, ctx, i)) light[i].radiance = RtColorRGB(0.0f);
                 q.Ln[i] = light[i].wi;
             }
             q.evaluate(bxdf, rng, ictx);

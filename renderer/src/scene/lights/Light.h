@@ -87,6 +87,9 @@ public:
     bool castsShadows = true;  ///< false for classic lights given no shadow map or ray-traced shadows
     Visibility visibility;
     std::string handle;
+    /// Attribute "grouping" "membership": the groups a shape's "lighting" subsets may name it by
+    /// (besides its handle).
+    std::vector<std::string> groups;
 };
 
 /// What a ray sees of the lights: the nearest light it hits.

@@ -473,6 +473,9 @@ void SceneBuilder::worldBegin(RequestReader& in) {
     m_lightHandles.clear();
     m_lightUse.clear();
     m_worldShapes = 0;
+    m_listedLights = 0;
+    m_lightsOff.clear();
+    m_lightsOffIndex.clear();
     // Lights given before WorldBegin were placed in camera space; the world now knows where that is.
     if (building())
         for (CameraLight const& light : m_cameraLights)

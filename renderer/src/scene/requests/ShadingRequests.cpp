@@ -323,7 +323,12 @@ void SceneBuilder::makeLightFrom(std::string const& request, std::string const& 
         if (state().classicLightShadows) light->castsShadows = true;
     }
     light->handle = handle;
+    light->groups = state().membership;
     light->visibility = state().visibility;
+    if (state().lightMute) {
+        m_scene.dropped.push_back("light \"" + handle + "\" (" + type + ") is muted (Attribute \"lighting\" \"mute\")");
+        return;
+    }
     // A classic light shader was never geometry: the camera did not see even an area light's shape.
     if (request == "LightSource") light->visibility.camera = false;
     if (light->color.IsBlack()) {
@@ -339,6 +344,7 @@ void SceneBuilder::makeLightFrom(std::string const& request, std::string const& 
         LightUse& use = m_lightUse[handle];
         use.listed = true;
         use.shapesBefore = m_worldShapes;
+        use.listedOrder = m_listedLights++;
         use.where = where;
     }
 }

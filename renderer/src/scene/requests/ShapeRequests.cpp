@@ -111,10 +111,15 @@ void SceneBuilder::addShape(std::unique_ptr<Shape> shape, SourceLocation const& 
         return;
     }
     ++m_worldShapes;
+    LightsOff off{{}, m_listedLights, state().lightingSubset, state().lightingExclude};
     for (auto& [handle, use] : m_lightUse) {
         bool on = !state().lightsOff.count(handle) && (!use.listed || state().lightList.count(handle));
         ++(on ? use.shapesOn : use.shapesOff);
+        if (!on) off.handles.push_back(handle);  // in handle order: the map is sorted
     }
+    auto [known, added] = m_lightsOffIndex.emplace(off, static_cast<int>(m_lightsOff.size()));
+    if (added) m_lightsOff.push_back(std::move(off));
+    shape->lightLink = known->second;
     // Under an area light the shape glows; else a Bxdf wins over a classic
     // Surface shader (RenderMan's RIS ignores Surface).
     // A shape with its own colours (a "Cs" primvar) and no material gets the

@@ -7,6 +7,26 @@
 #include "scene/SceneBuilder.h"
 
 namespace bxdflab {
+namespace {
+
+/// The names in a "subset" or "membership" string (or strings): separated by spaces or commas.
+std::vector<std::string> groupNames(Param const& param) {
+    std::vector<std::string> names;
+    for (std::string const& text : param.strings) {
+        std::string name;
+        for (char c : text + " ") {
+            if (c != ' ' && c != ',') {
+                name += c;
+            } else if (!name.empty()) {
+                names.push_back(name);
+                name.clear();
+            }
+        }
+    }
+    return names;
+}
+
+}  // namespace
 
 void SceneBuilder::beginBlock(RequestReader& in, Block block) {
     in.finish();
@@ -199,6 +219,14 @@ void SceneBuilder::attribute(RequestReader& in) {
             p.used = true;
             if (std::optional<std::string> value = p.firstValueText()) state().user[p.name()] = *value;
         }
+    } else if (category == "lighting") {
+        // Light linking, RenderMan 22 on: "subset" lists the lights (handles or "grouping" groups) that light
+        // the shapes that follow (none: all of them), "excludesubset" those that do not.
+        if (Param const* subset = params.take("subset")) state().lightingSubset = groupNames(*subset);
+        if (Param const* exclude = params.take("excludesubset")) state().lightingExclude = groupNames(*exclude);
+        state().lightMute = params.getInt("mute", state().lightMute) != 0;
+    } else if (category == "grouping") {
+        if (Param const* membership = params.take("membership")) state().membership = groupNames(*membership);
     } else if (category == "identifier") {
         if (Param const* name = params.take("name")) state().name = name->strings.empty() ? state().name : name->strings[0];
         for (auto const& p : params.all()) p.used = true;  // shadinggroup, id: labels only

@@ -126,6 +126,9 @@ public:
     }
 
     int material = -1;  ///< index into Scene::materials
+    /// Light linking (Illuminate, classic light lists): the Scene::lightLinks entry that says which
+    /// lights light this shape, or -1 when every light does.
+    int lightLink = -1;
     PrimvarSet primvars;
     /// TextureCoordinates s1 t1 s2 t2 s3 t3 s4 t4: (s, t) at the corners (u, v) =
     /// (0,0) (1,0) (0,1) (1,1) of a parametric surface, interpolated between.
