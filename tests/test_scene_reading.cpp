@@ -392,6 +392,34 @@ TEST_CASE("FrameAspectRatio shapes the default screen window, and the image keep
     CHECK(rightEdge("Format 64 32 1\nOption \"Ri\" \"float FrameAspectRatio\" [-1]\n") == Approx(2.0f));
 }
 
+TEST_CASE("Clipping: camera rays see only what lies between the near and far planes", "[rib]") {
+    // A red wall 2 units in front of the camera and a blue one 6 units away, both filling the view; a camera
+    // turned and scaled, so that the planes are measured in camera space. The mean red and blue of the image.
+    auto seen = [](std::string const& options) {
+        std::string rib = "Format 8 8 1\nProjection \"perspective\" \"fov\" [30]\n" + options +
+                          "Integrator \"PxrDirectLighting\" \"d\"\nRotate 30 0 1 0\nScale 2 2 2\nWorldBegin\n"
+                          "Rotate -30 0 1 0\n"
+                          "AttributeBegin\nBxdf \"PxrConstant\" \"near\" \"color emitColor\" [1 0 0]\n"
+                          "Polygon \"P\" [-5 -5 1  5 -5 1  5 5 1  -5 5 1]\nAttributeEnd\n"
+                          "Bxdf \"PxrConstant\" \"far\" \"color emitColor\" [0 0 1]\n"
+                          "Polygon \"P\" [-50 -50 3  50 -50 3  50 50 3  -50 50 3]\nWorldEnd\n";
+        auto r = test::renderRib(rib, test::withSpp(4));
+        auto all = [](int, int) { return true; };
+        return std::make_pair(test::meanChannel(r, 0, all), test::meanChannel(r, 2, all));
+    };
+    using Seen = std::pair<double, double>;
+    CHECK(seen("") == Seen(1.0, 0.0));
+    CHECK(seen("Clipping 0.1 4\n") == Seen(1.0, 0.0));
+    CHECK(seen("Clipping 3 100\n") == Seen(0.0, 1.0));
+    CHECK(seen("Clipping 3 5\n") == Seen(0.0, 0.0));  // nothing between
+    CHECK(seen("Option \"Ri\" \"float[2] Clipping\" [3 1e30]\n") == Seen(0.0, 1.0));
+    // Planes the wrong way round are skipped, with a warning.
+    Diagnostics diagnostics(false);
+    Scene scene = test::parseRib("Clipping 5 1\nWorldBegin\n", diagnostics);
+    CHECK(test::warningsContaining(diagnostics, "Clipping takes two distances") == 1);
+    CHECK(scene.camera.clipNear == 0.0f);
+}
+
 TEST_CASE("Sides 1 hides the back of a surface from the camera, and from no other ray", "[rib]") {
     // Two quads side by side in front of a green wall, wound opposite ways: whatever the
     // winding rule, one shows the camera its outside and the other its back.

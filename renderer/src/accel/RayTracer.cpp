@@ -157,12 +157,13 @@ HitRecord RayTracer::intersect(Vec3 const& org, Vec3 const& dir, float tnear, fl
 }
 
 void RayTracer::intersectCoherent(Vec3 const* org, Vec3 const* dir, int count, RayKind kind, HitRecord* hits,
-                                  RayCounts& counts) const {
+                                  RayCounts& counts, float const* tnear, float const* tfar) const {
     thread_local std::vector<RTCRayHit> rays;
     rays.resize(static_cast<size_t>(count));
     for (int i = 0; i < count; ++i) {
-        rays[static_cast<size_t>(i)] = makeRayHit(org[i], dir[i], 0.0f, kInfinity);
-        if (m_observer) m_observer->traced(org[i], dir[i], 0.0f, kInfinity, kind, false);
+        float const from = tnear ? tnear[i] : 0.0f, to = tfar ? tfar[i] : kInfinity;
+        rays[static_cast<size_t>(i)] = makeRayHit(org[i], dir[i], from, to);
+        if (m_observer) m_observer->traced(org[i], dir[i], from, to, kind, false);
     }
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);

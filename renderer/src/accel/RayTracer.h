@@ -60,9 +60,10 @@ public:
     HitRecord intersect(Vec3 const& org, Vec3 const& dir, float tnear, float tfar, RayKind kind, RayCounts& counts) const;
     /// The nearest hits of many coherent rays at once (a stream, as Embree's
     /// rtcIntersect1M traces them: camera rays of neighbouring pixels share
-    /// most of their traversal), each within (0, infinity). hits[i] as intersect() gives it.
+    /// most of their traversal), each within (0, infinity), or (tnear[i], tfar[i]) when those are
+    /// given. hits[i] as intersect() gives it.
     void intersectCoherent(Vec3 const* org, Vec3 const* dir, int count, RayKind kind, HitRecord* hits,
-                           RayCounts& counts) const;
+                           RayCounts& counts, float const* tnear = nullptr, float const* tfar = nullptr) const;
     /// The next hit along hit's ray beyond hit itself (and before tfar): where
     /// a ray goes on when the surface it met lets it through. Camera rays pass
     /// one-sided backs here too.

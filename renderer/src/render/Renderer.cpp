@@ -64,6 +64,7 @@ struct Worker {
     MemoryArena arena;
     std::vector<HitRecord> hits;
     std::vector<Vec3> rayOrigins, rayDirections;
+    std::vector<float> rayNear, rayFar;  ///< where Clipping's planes cut the camera rays (when they do)
     std::vector<RixRNG::SampleCtx> samples;
     std::vector<RtColorRGB> radiance, groupRadiance;
     std::vector<float> alpha;
@@ -427,9 +428,22 @@ void Renderer::Impl::renderTile(int tileX, int tileY, int spp, Film& film, Worke
                     }
                 }
             }
+        float const* clipNear = nullptr;
+        float const* clipFar = nullptr;
+        if (camera->clips()) {
+            w.rayNear.resize(static_cast<size_t>(count));
+            w.rayFar.resize(static_cast<size_t>(count));
+            for (size_t i = 0; i < static_cast<size_t>(count); ++i)
+                camera->clipRange(w.rayDirections[i], w.rayNear[i], w.rayFar[i]);
+            clipNear = w.rayNear.data();
+            clipFar = w.rayFar.data();
+        }
         tracer->intersectCoherent(w.rayOrigins.data(), w.rayDirections.data(), count, RayKind::Camera, w.hits.data(),
-                                  counts);
-        rays->passAbsent(w.hits.data(), count, nullptr, RayKind::Camera, counts, w.arena);
+                                  counts, clipNear, clipFar);
+        rays->passAbsent(w.hits.data(), count, clipFar, RayKind::Camera, counts, w.arena);
+        if (clipFar)  // a one-sided back passed on the way may have let the ray on past the far plane
+            for (size_t i = 0; i < static_cast<size_t>(count); ++i)
+                if (w.hits[i].hit() && w.hits[i].t > w.rayFar[i]) w.hits[i].forget();
 
         // Lights the camera sees directly, in front of any geometry.
         for (int i = 0; i < count; ++i) {

@@ -12,8 +12,11 @@ Camera::Camera(CameraDesc const& desc, int xres, int yres, float pixelAspect)
       m_xres(xres),
       m_yres(yres),
       m_lensRadius(desc.lensRadius()),
-      m_focalDistance(desc.focalDistance) {
+      m_focalDistance(desc.focalDistance),
+      m_clipNear(desc.clipNear),
+      m_clipFar(desc.clipFar) {
     m_position = transformPoint(m_cameraToWorld, Vec3(0.0f));
+    m_depthAlong = Vec3(m_worldToCamera[0][2], m_worldToCamera[1][2], m_worldToCamera[2][2]);
     if (desc.hasScreenWindow) {
         for (int i = 0; i < 4; ++i) m_screen[i] = desc.screenWindow[i];
     } else {
@@ -74,6 +77,18 @@ void Camera::generateRay(float rasterX, float rasterY, RtFloat2 const& lens, Vec
     Vec3 const onLens = r * std::cos(phi) * m_lensX + r * std::sin(phi) * m_lensY;
     org = m_position + onLens;
     dir = glm::normalize(onFocalPlane - onLens);
+}
+
+void Camera::clipRange(Vec3 const& dir, float& tnear, float& tfar) const {
+    // Every camera ray starts on the plane z = 0 (at the eye, on the lens, or on the orthographic
+    // image plane), so its camera-space depth grows by `along` per unit of t.
+    float const along = glm::dot(m_depthAlong, dir);
+    if (!(along > 0.0f)) {
+        tnear = tfar = 0.0f;  // parallel to the planes: never between them
+        return;
+    }
+    tnear = m_clipNear / along;
+    tfar = m_clipFar / along;
 }
 
 bool Camera::project(Vec3 const& P, float& rasterX, float& rasterY, Vec3& toEye, float& distance,

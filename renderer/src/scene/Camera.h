@@ -17,6 +17,10 @@ public:
     /// With a lens (hasLens()): the ray from the lens point `lens` (two numbers
     /// in [0, 1)) through the point of the focal plane the pinhole ray meets.
     void generateRay(float rasterX, float rasterY, RtFloat2 const& lens, Vec3& org, Vec3& dir) const;
+    /// Clipping: whether near and far planes cut camera rays short, and where a ray in direction
+    /// dir (from the camera's origin or lens) crosses them.
+    bool clips() const { return m_clipNear > 0.0f || m_clipFar < kInfinity; }
+    void clipRange(Vec3 const& dir, float& tnear, float& tfar) const;
     /// Whether DepthOfField gave the camera a lens of some size.
     bool hasLens() const { return m_lensRadius > 0.0f; }
     /// Makes the camera a pinhole whatever its DepthOfField said.
@@ -55,6 +59,8 @@ private:
     Vec3 m_rasterOrigin, m_perRasterX, m_perRasterY;
     Vec3 m_orthographicDirection;
     float m_lensRadius, m_focalDistance;  ///< camera space
+    float m_clipNear, m_clipFar;          ///< camera space
+    Vec3 m_depthAlong;                    ///< camera-space z of a world-space direction: dot(m_depthAlong, dir)
     Vec3 m_lensX, m_lensY;                ///< the lens's axes in world space, of the lens's radius
 };
 

@@ -33,6 +33,9 @@ struct CameraDesc {
     /// focallength / fstop, sharp on the plane z = focaldistance. fstop 0 (or
     /// infinite, RenderMan's default, or the 1e38 exporters write for it) is a pinhole.
     float fStop = 0.0f, focalLength = 0.0f, focalDistance = 0.0f;
+    /// Clipping near far: camera rays see only what lies between the planes z = near and z = far of
+    /// camera space. The defaults clip nothing in front of the camera.
+    float clipNear = 0.0f, clipFar = kInfinity;
     /// The lens's radius in camera space (0: a pinhole).
     float lensRadius() const {
         return projection == "perspective" && fStop > 0.0f && fStop < 1e30f ? 0.5f * focalLength / fStop : 0.0f;

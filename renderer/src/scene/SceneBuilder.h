@@ -104,6 +104,8 @@ private:
     void screenWindow(RequestReader& in);
     void frameAspectRatio(RequestReader& in);
     void setFrameAspectRatio(float ratio);
+    /// Clipping (the request, or Option "Ri" "Clipping"): the near and far planes of camera rays.
+    void setClipping(std::vector<float> const& planes, SourceLocation const& where, std::string const& what);
     void setScreenWindow(std::vector<float> const& window);
     void pixelSamples(RequestReader& in);
     void pixelFilter(RequestReader& in);

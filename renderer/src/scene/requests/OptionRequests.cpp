@@ -392,9 +392,12 @@ void SceneBuilder::riOptions(ParamList const& params, SourceLocation const& wher
         setScreenWindow(*window);
     }
     if (params.take("FrameAspectRatio")) setFrameAspectRatio(params.getFloat("FrameAspectRatio", 0.0f));
-    // Ray tracing needs no near and far planes; the frame number is a label; the shutter
-    // matters only to motion blocks, which are warned about where they are.
-    params.ignore("Clipping");
+    if (Param const* p = params.take("Clipping")) {
+        std::vector<float> const* planes = params.getFloats("Clipping", ParamType::Float);
+        setClipping(planes ? *planes : std::vector<float>{}, p->location, "Option \"Ri\" \"Clipping\"");
+    }
+    // The frame number is a label; the shutter matters only to motion blocks, which are warned
+    // about where they are.
     params.ignore("Frame");
     params.ignore("Shutter");
     if (params.has("CropWindow")) {
@@ -495,9 +498,19 @@ void SceneBuilder::worldEnd(RequestReader& in) {
 }
 
 void SceneBuilder::clipping(RequestReader& in) {
-    // Ray tracing needs no near and far planes; accepted for compatibility.
-    in.numbers(2, "near far");
+    std::vector<float> planes = in.numbers(2, "near far");
     in.finish();
+    setClipping(planes, in.where(), "Clipping");
+}
+
+void SceneBuilder::setClipping(std::vector<float> const& planes, SourceLocation const& where, std::string const& what) {
+    // The RenderMan Interface asks for 0 < near < far (far may be infinite); the planes clip camera rays only.
+    if (planes.size() != 2 || !(planes[0] >= 0.0f) || !(planes[1] > planes[0])) {
+        warnOnce("clipping", where, what + " takes two distances, near and far, with 0 <= near < far; skipped");
+        return;
+    }
+    m_scene.camera.clipNear = planes[0];
+    m_scene.camera.clipFar = planes[1];
 }
 
 void SceneBuilder::cropWindow(RequestReader& in) {
