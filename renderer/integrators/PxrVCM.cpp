@@ -249,24 +249,13 @@ private:
         std::vector<RixLightSample> sampleStorage(static_cast<size_t>(n));
         RtFloat2* xi = xiStorage.data();
         RixLightSample* sample = sampleStorage.data();
+        std::vector<RtPoint3> P(static_cast<size_t>(n));
+        for (int i = 0; i < n; ++i) P[i] = level.vertex[i].P;
         ShadowRays shadow(pool, n);
         for (int light = 0; light < ictx.GetNumLights(); ++light) {
             bool const emits = ictx.CanEmit(light);
-            rng.DrawSamples2D(xi);
-            for (int i = 0; i < n; ++i) {
-                sample[i] = ictx.SampleLight(light, level.vertex[i].P, xi[i]);
-                if (!ictx.Illuminates(light, ctx, i)) sample[i].radiance = RtColorRGB(0.0f);  // light linking
-                q.Ln[i] = sample[i].wi;
-            }
-            q.evaluate(bxdf, rng, ictx);
-            // A shadow ray for every point the light would add to, all traced at once.
-            shadow.count = 0;
-            for (int i = 0; i < n; ++i) {
-                RixLightSample const& ls = sample[i];
-                if (!(ls.pdf > 0.0f) || ls.radiance.IsBlack()) continue;
-                RtColorRGB f = q.W.SumAtPoint(i);
-                if (!f.IsBlack()) shadow.add(i, ls.wi, ls.shadows ? ls.distance : 0.0f, f);
-            }
+            sampleLight(ctx, bxdf, rng, ictx, light, P.data(), xi, sample, q, shadow);
+            // The shadow rays of all points at once.
             ictx.Unoccluded(ctx, shadow.count, shadow.point, shadow.dir, shadow.distance, shadow.clear);
             for (int k = 0; k < shadow.count; ++k) {
                 if (!shadow.clear[k]) continue;

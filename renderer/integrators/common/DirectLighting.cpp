@@ -44,6 +44,26 @@ bool addEmission(RixShadingContext const& ctx, RixBxdf& bxdf, RixIntegratorConte
     return bxdf.GetAllLobeTraits().HasAny();
 }
 
+void sampleLight(RixShadingContext const& ctx, RixBxdf& bxdf, RixRNG& rng, RixIntegratorContext& ictx, int light,
+                 RtPoint3 const* P, RtFloat2* xi, RixLightSample* sample, RixBxdfScratch& q, ShadowRays& shadow) {
+    int const n = ctx.numPts;
+    rng.DrawSamples2D(xi);
+    for (int i = 0; i < n; ++i) {
+        sample[i] = ictx.SampleLight(light, P[i], xi[i]);
+        if (!ictx.Illuminates(light, ctx, i)) sample[i].radiance = RtColorRGB(0.0f);  // light linking
+        q.Ln[i] = sample[i].wi;
+    }
+    q.evaluate(bxdf, rng, ictx);
+    shadow.count = 0;
+    for (int i = 0; i < n; ++i) {
+        RixLightSample const& ls = sample[i];
+        if (!(ls.pdf > 0.0f) || ls.radiance.IsBlack()) continue;
+        RtColorRGB const f = q.W.SumAtPoint(i);
+        if (f.IsBlack()) continue;
+        shadow.add(i, ls.wi, ls.shadows ? ls.distance : 0.0f, f);
+    }
+}
+
 void addLightSamples(RixShadingContext const& ctx, RixBxdf& bxdf, RixRNG& rng, RixIntegratorContext& ictx,
                      int numLightSamples, int numBxdfSamples, RtColorRGB const* throughput, RtColorRGB* radiance) {
     int const n = ctx.numPts;
@@ -61,22 +81,8 @@ void addLightSamples(RixShadingContext const& ctx, RixBxdf& bxdf, RixRNG& rng, R
     // light it reflects toward the viewer.
     for (int light = 0; light < ictx.GetNumLights(); ++light) {
         for (int s = 0; s < numLightSamples; ++s) {
-            rng.DrawSamples2D(xi);
-            for (int i = 0; i < n; ++i) {
-                lightSample[i] = ictx.SampleLight(light, P[i], xi[i]);
-                if (!ictx.Illuminates(light, ctx, i)) lightSample[i].radiance = RtColorRGB(0.0f);  // light linking
-                q.Ln[i] = lightSample[i].wi;
-            }
-            q.evaluate(bxdf, rng, ictx);
-            // A shadow ray for every point the light would add to, all traced at once.
-            shadow.count = 0;
-            for (int i = 0; i < n; ++i) {
-                RixLightSample const& ls = lightSample[i];
-                if (!(ls.pdf > 0.0f) || ls.radiance.IsBlack()) continue;
-                RtColorRGB const f = q.W.SumAtPoint(i);
-                if (f.IsBlack()) continue;
-                shadow.add(i, ls.wi, ls.shadows ? ls.distance : 0.0f, f);
-            }
+            sampleLight(ctx, bxdf, rng, ictx, light, P, xi, lightSample, q, shadow);
+            // The shadow rays of all points at once.
             ictx.Unoccluded(ctx, shadow.count, shadow.point, shadow.dir, shadow.distance, shadow.clear);
             for (int k = 0; k < shadow.count; ++k) {
                 if (!shadow.clear[k]) continue;

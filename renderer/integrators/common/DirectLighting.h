@@ -34,6 +34,14 @@ struct ShadowRays {
     bool* clear;
 };
 
+/// One sample on `light` for every point of a batch, as next-event estimation
+/// takes it: draws xi, sets sample[i] to a point on the light seen from P[i]
+/// (with no radiance where light linking turns the light off for point i),
+/// evaluates the Bxdf toward it into q, and fills `shadow` with a ray for each
+/// point the light would add to, ready for Unoccluded.
+void sampleLight(RixShadingContext const& ctx, RixBxdf& bxdf, RixRNG& rng, RixIntegratorContext& ictx, int light,
+                 RtPoint3 const* P, RtFloat2* xi, RixLightSample* sample, RixBxdfScratch& q, ShadowRays& shadow);
+
 /// Next-event estimation for a batch: adds to radiance[i] the light arriving
 /// straight from the lights and reflected toward the viewer, times
 /// throughput[i] (or 1 when throughput is null), from numLightSamples samples
