@@ -20,6 +20,7 @@ set(RIX_SCENE_SOURCES
   parse/RequestNames.cpp
   parse/ZipMember.cpp
   scene/SceneBuilder.cpp
+  scene/DisplayChannels.cpp
   scene/PatternReach.cpp
   scene/requests/OptionRequests.cpp
   scene/requests/StateRequests.cpp

@@ -102,11 +102,18 @@ add_test(NAME cli.framebuffer_display COMMAND rixrender --quiet --spp 1 ${CMAKE_
 set_tests_properties(cli.framebuffer_display PROPERTIES WORKING_DIRECTORY ${CLI_OUT}
   PASS_REGULAR_EXPRESSION "framebuffer; the image was written to framebuffer-test.exr")
 # TIFF output keeps linear floats.
-# A shadow-map pass: the depth map it asks for is named as not made, and the image goes to a file the renderer
-# can write, with a message saying where (it used to fail once the render was done).
-add_test(NAME cli.shadow_map_pass COMMAND rixrender --quiet --spp 1 ${CMAKE_CURRENT_SOURCE_DIR}/scenes/shadow-pass.rib)
+# A shadow-map pass: its depth map goes to a file the renderer can write, with a message saying where (it
+# used to fail once the render was done), and holds depth alone.
+add_test(NAME cli.shadow_map_pass
+         COMMAND sh -c "$<TARGET_FILE:rixrender> --quiet --spp 1 ${CMAKE_CURRENT_SOURCE_DIR}/scenes/shadow-pass.rib && oiiotool --info -v shadow-pass-test.z.exr")
 set_tests_properties(cli.shadow_map_pass PROPERTIES WORKING_DIRECTORY ${CLI_OUT}
-  PASS_REGULAR_EXPRESSION "shadow-pass.rib:3:1: Display .* asks for a depth map.*does not write; the image was written to shadow-pass-test.z.exr")
+  PASS_REGULAR_EXPRESSION "does not write; the image was written to shadow-pass-test.z.exr.*1 channel.*channel list: Z\n")
+# Further displays ("+name"): with -o, each goes beside the image, named after both, with the channels its
+# mode asks for; a further framebuffer is skipped with a warning.
+add_test(NAME cli.further_displays
+         COMMAND sh -c "mkdir -p displays && $<TARGET_FILE:rixrender> --quiet --spp 1 -o displays/beauty.exr ${CMAKE_CURRENT_SOURCE_DIR}/scenes/displays.rib && oiiotool --info -v displays/beauty.normal.exr displays/beauty.depth.tif")
+set_tests_properties(cli.further_displays PROPERTIES WORKING_DIRECTORY ${CLI_OUT}
+  PASS_REGULAR_EXPRESSION "displays.rib:7:1: Display \"\\+preview\" \"framebuffer\" would show a further image in a window.*wrote displays/beauty.exr\nrixrender: wrote displays/beauty.normal.exr\nrixrender: wrote displays/beauty.depth.tif.*channel list: N.x, N.y, N.z.*beauty.depth.tif : +16 x +16, 1 channel, float tiff")
 add_test(NAME cli.tiff_output COMMAND rixrender --quiet --spp 1 -o ch06.tif ${PROJECT_SOURCE_DIR}/scenes/ch06/diffuse.rib)
 set_tests_properties(cli.tiff_output PROPERTIES WORKING_DIRECTORY ${CLI_OUT} PASS_REGULAR_EXPRESSION "wrote ch06.tif")
 

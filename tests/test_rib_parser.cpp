@@ -375,7 +375,29 @@ TEST_CASE("Display \"+name\" adds an output to the image in effect, and with non
     Scene withAov =
         parseRib("Display \"beauty.exr\" \"file\" \"rgba\"\nDisplay \"+z.exr\" \"file\" \"z\"\nWorldBegin\nWorldEnd\n", diagnostics);
     CHECK(withAov.display.name == "beauty.exr");
-    CHECK(test::warningsContaining(diagnostics, "secondary Display \"+z.exr\" (AOV output) is not supported") == 1);
+    REQUIRE(withAov.moreDisplays.size() == 1);
+    CHECK(withAov.moreDisplays[0].name == "z.exr");
+    CHECK(withAov.moreDisplays[0].mode == "z");
+    CHECK(diagnostics.entries().empty());
+    // A shader's output variable is not made here: a further display of one is skipped, and the image's own
+    // display of one writes the shaded image; a further framebuffer has no window to show in; a display
+    // without "+" replaces all of them.
+    Scene skipped = parseRib("Display \"a.exr\" \"file\" \"rgba\"\nDisplay \"+b.exr\" \"file\" \"color myval\"\n"
+                             "Display \"+c.exr\" \"framebuffer\" \"N\"\nDisplay \"+d.exr\" \"file\" \"Ci,a,z\"\n"
+                             "WorldBegin\nWorldEnd\n",
+                             diagnostics);
+    REQUIRE(skipped.moreDisplays.size() == 1);
+    CHECK(skipped.moreDisplays[0].name == "d.exr");
+    CHECK(test::warningsContaining(diagnostics, "Display \"+b.exr\" mode \"color myval\": \"myval\" is not an output "
+                                                "this renderer makes") == 1);
+    CHECK(test::warningsContaining(diagnostics, "Display \"+c.exr\" \"framebuffer\" would show a further image") == 1);
+    Scene replaced = parseRib("Display \"a.exr\" \"file\" \"rgba\"\nDisplay \"+b.exr\" \"file\" \"N\"\n"
+                              "Display \"c.exr\" \"file\" \"myval\"\nWorldBegin\nWorldEnd\n",
+                              diagnostics);
+    CHECK(replaced.display.name == "c.exr");
+    CHECK(replaced.display.mode == "rgba");
+    CHECK(replaced.moreDisplays.empty());
+    CHECK(test::warningsContaining(diagnostics, "the shaded image is written instead") == 1);
 }
 
 TEST_CASE("transforms compose the RenderMan way: the last one applies first", "[rib]") {

@@ -16,9 +16,9 @@ public:
     ImagePixels read(std::string const& path, std::string const& what) const override {
         return loaded().read(path, what);
     }
-    void write(std::string const& path, std::vector<float> const& pixels, int width, int height,
-               int channels) const override {
-        loaded().write(path, pixels, width, height, channels);
+    void write(std::string const& path, std::vector<float> const& pixels, int width, int height, int channels,
+               std::vector<std::string> const& names) const override {
+        loaded().write(path, pixels, width, height, channels, names);
     }
     std::unique_ptr<TextureService> openTextures(Diagnostics& diagnostics) const override {
         return loaded().openTextures(diagnostics);

@@ -18,6 +18,7 @@
 #include "film/RawImage.h"
 #include "render/Renderer.h"
 #include "parse/RibParser.h"
+#include "scene/DisplayChannels.h"
 #include "scene/SceneBuilder.h"
 
 namespace fs = std::filesystem;
@@ -35,6 +36,27 @@ std::string outputFor(DisplayDesc const& display) {
     std::string type = display.type;
     std::string extension = type == "tiff" ? ".tif" : type == "png" ? ".png" : ".exr";
     return name.string() + extension;
+}
+
+/// Where a further ("+name") display goes when -o moved the image: beside it, named after both, so that
+/// nothing is written outside the folder -o chose ("out/a.exr" and "+normal.exr": "out/a.normal.exr").
+std::string besideImage(std::string const& imagePath, DisplayDesc const& display) {
+    fs::path image(imagePath), own(outputFor(display));
+    return (image.parent_path() / (image.stem().string() + "." + own.stem().string() + own.extension().string()))
+        .string();
+}
+
+/// Writes one display's image of a rendered film: RGBA for the shaded colour ("rgb", "rgba", "Ci"), else the
+/// channels its mode asks for.
+void writeDisplay(std::string const& path, DisplayDesc const& display, Film const& film) {
+    DisplayLayout const layout = displayLayout(display.mode);
+    if (layout.channels.empty() || (layout.shadedOnly() && layout.channels.front().quantity == Quantity::Color)) {
+        writeImage(path, film.rgba(), film.width(), film.height(), 4);
+        return;
+    }
+    std::vector<std::string> names;
+    for (DisplayChannel const& channel : layout.channels) names.push_back(channel.name);
+    writeImage(path, film.channels(layout), film.width(), film.height(), static_cast<int>(names.size()), names);
 }
 
 /// "out.exr" for frame 7 is "out.0007.exr": a file of several frames writes one image each.
@@ -132,7 +154,15 @@ int main(int argc, char** argv) {
             Film film = renderer.render();
             if (rawFd >= 0 && !writeRawImage(rawFd, film))
                 throw RenderError("cannot write the raw image to descriptor " + std::to_string(rawFd));
-            if (!imagePath.empty()) writeImage(imagePath, film.rgba(), film.width(), film.height(), 4);
+            std::vector<std::string> morePaths;
+            if (!imagePath.empty()) {
+                writeDisplay(imagePath, scene.display, film);
+                for (DisplayDesc const& display : scene.moreDisplays) {
+                    morePaths.push_back(output.empty() ? outputFor(display) : besideImage(imagePath, display));
+                    checkWritable(morePaths.back());
+                    writeDisplay(morePaths.back(), display, film);
+                }
+            }
             if (!variance.empty())
                 writeImage(numbered(variance, number), film.varianceOfMean(), film.width(), film.height(), 3);
 
@@ -166,6 +196,7 @@ int main(int argc, char** argv) {
                              scene.display.name.c_str(), imagePath.c_str());
             else
                 std::fprintf(stderr, "rixrender: wrote %s\n", imagePath.c_str());
+            for (std::string const& path : morePaths) std::fprintf(stderr, "rixrender: wrote %s\n", path.c_str());
             ++rendered;
         };
         Scene scene;

@@ -45,8 +45,9 @@ bool isWritableImageName(std::string const& path) {
     return isEightBitImageName(path) || extension == ".exr" || extension == ".tif" || extension == ".tiff";
 }
 
-void writeImage(std::string const& path, std::vector<float> const& pixels, int width, int height, int channels) {
-    imageFiles().write(path, pixels, width, height, channels);
+void writeImage(std::string const& path, std::vector<float> const& pixels, int width, int height, int channels,
+                std::vector<std::string> const& names) {
+    imageFiles().write(path, pixels, width, height, channels, names);
 }
 
 std::string notAnImageBecause(std::string const& path) {

@@ -41,9 +41,11 @@ public:
     /// "PxrDomeLight: cannot read lightColorMap") and the reason.
     virtual ImagePixels read(std::string const& path, std::string const& what) const = 0;
     /// Writes floats; the format follows the extension (.exr .tif keep floats,
-    /// .png .jpg become 8-bit sRGB without alpha). Throws RenderError.
+    /// .png .jpg become 8-bit sRGB of the first three channels, or of the one).
+    /// `names` names the channels (empty: the format's own names, R G B A).
+    /// Throws RenderError.
     virtual void write(std::string const& path, std::vector<float> const& pixels, int width, int height,
-                       int channels) const = 0;
+                       int channels, std::vector<std::string> const& names) const = 0;
     /// A texture service for pattern plugins (warnings about unreadable
     /// files go to `diagnostics`); null when the program reads no images.
     virtual std::unique_ptr<TextureService> openTextures(Diagnostics& diagnostics) const = 0;
@@ -64,7 +66,8 @@ bool isWritableImageName(std::string const& path);
 bool isEightBitImageName(std::string const& path);
 
 /// Shorthand for imageFiles().write(...).
-void writeImage(std::string const& path, std::vector<float> const& pixels, int width, int height, int channels);
+void writeImage(std::string const& path, std::vector<float> const& pixels, int width, int height, int channels,
+                std::vector<std::string> const& names = {});
 
 /// Why an image file that cannot be decoded may be no image at all: a
 /// repository cloned without Git LFS holds small text pointers in place of

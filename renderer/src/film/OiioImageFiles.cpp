@@ -4,6 +4,7 @@
 #include <OpenImageIO/imagebufalgo.h>
 #include <OpenImageIO/imageio.h>
 
+#include <algorithm>
 #include <filesystem>
 
 #include "core/Error.h"
@@ -44,20 +45,30 @@ public:
         return image;
     }
 
-    void write(std::string const& path, std::vector<float> const& pixels, int width, int height,
-               int channels) const override {
+    void write(std::string const& path, std::vector<float> const& pixels, int width, int height, int channels,
+               std::vector<std::string> const& names) const override {
         if (!isWritableImageName(path))
             throw RenderError("cannot write \"" + path + "\": unknown image format \"" +
                               std::filesystem::path(path).extension().string() + "\" (use .exr, .tif, .png or .jpg)");
         bool const eightBit = isEightBitImageName(path);
         OIIO::ImageSpec spec(width, height, channels, OIIO::TypeDesc::FLOAT);
+        if (static_cast<int>(names.size()) == channels) {
+            spec.channelnames = names;
+            // Which channels hold alpha and depth, for readers that look for them by role.
+            auto role = [&names](char const* name) {
+                return static_cast<int>(std::find(names.begin(), names.end(), name) - names.begin());
+            };
+            spec.alpha_channel = role("A") < channels ? role("A") : -1;
+            spec.z_channel = role("Z") < channels ? role("Z") : -1;
+        }
         OIIO::ImageBuf image(spec);
         image.set_pixels(OIIO::ROI::All(), OIIO::TypeDesc::FLOAT, pixels.data());
         OIIO::TypeDesc storage = OIIO::TypeDesc::FLOAT;
         if (eightBit) {
             // 8-bit images are for looking at: no alpha (viewers would show the
             // empty background as white), colour through the sRGB transfer curve.
-            if (channels == 4) image = OIIO::ImageBufAlgo::channels(image, 3, {0, 1, 2});
+            if (channels > 3) image = OIIO::ImageBufAlgo::channels(image, 3, {0, 1, 2});
+            else if (channels == 2) image = OIIO::ImageBufAlgo::channels(image, 1, {0});
             OIIO::ImageBuf encoded;
             if (!OIIO::ImageBufAlgo::colorconvert(encoded, image, "linear", "sRGB", false))
                 throw RenderError("cannot convert \"" + path + "\" to sRGB: " + encoded.geterror());

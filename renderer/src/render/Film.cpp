@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "core/Error.h"
+#include "core/Math.h"
 
 namespace bxdflab {
 
@@ -87,6 +89,47 @@ std::vector<float> Film::rgba() const {
         out[4 * i + 3] = static_cast<float>(resolve(p.alpha, p.count, n.alpha, n.count));
         m_finish.apply(&out[4 * i]);
     }
+    return out;
+}
+
+void Film::enableSurface(SurfaceRecord const& record) {
+    m_surface = record;
+    m_surfaceSums.assign(m_pixels.size() * static_cast<size_t>(record.width()), 0.0);
+    m_nearest.assign(record.needsDepth() ? m_pixels.size() : 0, kInfinity);
+}
+
+void Film::addSurface(int x, int y, float depth, float const* values) {
+    size_t const index = static_cast<size_t>(y) * static_cast<size_t>(m_width) + static_cast<size_t>(x);
+    if (!m_nearest.empty()) m_nearest[index] = std::min(m_nearest[index], depth);
+    size_t const width = static_cast<size_t>(m_surface.width());
+    for (size_t k = 0; k < width; ++k) m_surfaceSums[index * width + k] += values[k];
+}
+
+std::vector<float> Film::channels(DisplayLayout const& layout) const {
+    size_t const count = layout.channels.size();
+    std::vector<float> out(m_pixels.size() * count, 0.0f);
+    std::vector<float> const shaded = rgba();
+    size_t const width = static_cast<size_t>(m_surface.width());
+    for (size_t i = 0; i < m_pixels.size(); ++i)
+        for (size_t c = 0; c < count; ++c) {
+            DisplayChannel const& channel = layout.channels[c];
+            float& value = out[i * count + c];
+            size_t const component = static_cast<size_t>(channel.component);
+            if (channel.quantity == Quantity::Color) {
+                value = shaded[4 * i + component];
+            } else if (channel.quantity == Quantity::Alpha) {
+                value = shaded[4 * i + 3];
+            } else if (channel.quantity == Quantity::Depth) {
+                float const nearest = m_nearest.empty() ? kInfinity : m_nearest[i];
+                value = nearest < kInfinity ? nearest : std::numeric_limits<float>::max();
+            } else {
+                int const offset = m_surface.offset(channel.quantity);
+                int const samples = m_pixels[i].allSamples;
+                if (offset >= 0 && samples > 0)
+                    value = static_cast<float>(m_surfaceSums[i * width + static_cast<size_t>(offset) + component] /
+                                               samples);
+            }
+        }
     return out;
 }
 

@@ -17,6 +17,7 @@
 #include "core/ImageFiles.h"
 #include "core/ImageFinish.h"
 #include "integrate/SplatTarget.h"
+#include "scene/DisplayChannels.h"
 
 namespace bxdflab {
 
@@ -27,7 +28,8 @@ public:
         : m_width(other.m_width), m_height(other.m_height), m_pixels(std::move(other.m_pixels)),
           m_negative(std::move(other.m_negative)), m_positiveShare(other.m_positiveShare),
           m_negativeShare(other.m_negativeShare), m_splats(std::move(other.m_splats)),
-          m_splatPaths(other.m_splatPaths.load()), m_finish(other.m_finish) {}
+          m_splatPaths(other.m_splatPaths.load()), m_finish(other.m_finish), m_surface(other.m_surface),
+          m_surfaceSums(std::move(other.m_surfaceSums)), m_nearest(std::move(other.m_nearest)) {}
     int width() const override { return m_width; }
     int height() const override { return m_height; }
 
@@ -49,10 +51,23 @@ public:
     void addSplat(int x, int y, RtColorRGB const& value) override;
     void countSplatPaths(uint64_t paths) override { m_splatPaths.fetch_add(paths, std::memory_order_relaxed); }
 
+    /// Displays that read the surface the camera saw (z, P, N, ...): call before
+    /// rendering with what they need; each camera sample then adds its record.
+    void enableSurface(SurfaceRecord const& record);
+    SurfaceRecord const& surfaceRecord() const { return m_surface; }
+    /// One camera sample's surface values (surfaceRecord().width() floats, zero
+    /// where the ray saw no surface) and camera-space depth (kInfinity for none).
+    void addSurface(int x, int y, float depth, float const* values);
+
     /// What rgba() does to each pixel last (a background, a clamp): the scene's Imager.
     void setFinish(ImageFinish const& finish) { m_finish = finish; }
     /// Per-pixel mean as RGBA floats (row-major from the top left), finished.
     std::vector<float> rgba() const;
+    /// One display's image: its layout's channels per pixel, row-major from the
+    /// top left. Colour and alpha are rgba()'s; surface values are each pixel's
+    /// mean over its samples (0 where none saw a surface), and depth is the
+    /// nearest sample's (the largest float where no sample saw a surface).
+    std::vector<float> channels(DisplayLayout const& layout) const;
     /// Per-pixel variance of the mean (sample variance / n) as RGB floats.
     std::vector<float> varianceOfMean() const;
 
@@ -81,6 +96,9 @@ private:
     std::shared_ptr<std::atomic<int64_t>[]> m_splats;  ///< 3 per pixel, in units of kSplatUnit
     std::atomic<uint64_t> m_splatPaths{0};
     ImageFinish m_finish;
+    SurfaceRecord m_surface;
+    std::vector<double> m_surfaceSums;  ///< m_surface.width() per pixel
+    std::vector<float> m_nearest;       ///< per pixel, when a display asks for depth
 };
 
 }  // namespace bxdflab

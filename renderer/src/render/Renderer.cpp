@@ -69,6 +69,7 @@ struct Worker {
     std::vector<RtColorRGB> radiance, groupRadiance;
     std::vector<float> alpha;
     std::vector<float> filterWeight;  ///< each camera sample's weight under the pixel filter
+    std::vector<float> depth, surface;  ///< what displays of the surface (z, P, N, ...) record, per sample
 };
 
 class ProgressBar {
@@ -156,6 +157,7 @@ struct Renderer::Impl {
     ShadingCounters counters;
     std::unique_ptr<BatchShader> shader;
     std::unique_ptr<PresenceTracer> rays;  // the tracer, seeing through cut-outs
+    SurfaceRecord surfaceRecord;           // what displays of the surface need from each camera hit
     std::atomic<uint64_t> nonFinite{0};
     std::atomic<uint64_t> invalidPdf{0};
 
@@ -172,6 +174,8 @@ struct Renderer::Impl {
     std::vector<ShadingPlugin*> usedPlugins() const;
     void renderTile(int tileX, int tileY, int spp, Film& film, Worker& worker);
     void shadeChunk(Worker& worker, int count, Film& film);
+    /// What displays of the surface need from each camera sample's hit (before shading).
+    void recordSurfaces(Worker& worker, int count, SurfaceRecord const& record) const;
 };
 
 void Renderer::Impl::loadPatterns(std::vector<MaterialDesc> const& usedMaterials) {
@@ -363,6 +367,11 @@ Renderer::Renderer(Scene& scene, RenderSettings settings, Diagnostics& diagnosti
     }
     for (std::string const& dropped : scene.dropped) effects.skip("dropped at load", dropped);
     if (r.tracer->passesBackFaces()) effects.simulate("one-sided surfaces (Sides 1): camera rays pass their backs");
+    std::vector<DisplayLayout> layouts = {displayLayout(scene.display.mode)};
+    for (DisplayDesc const& display : scene.moreDisplays) layouts.push_back(displayLayout(display.mode));
+    r.surfaceRecord = SurfaceRecord(layouts);
+    if (r.surfaceRecord.any())
+        effects.simulate("displays of the surface the camera sees (depth, position, normals, parameters)");
 
     m_stats.integrator = r.integratorPlugin->name();
     m_stats.width = scene.xres;
@@ -457,6 +466,7 @@ void Renderer::Impl::renderTile(int tileX, int tileY, int spp, Film& film, Worke
             if (hit.hit()) w.alpha[static_cast<size_t>(i)] = 1.0f;
         }
 
+        if (film.surfaceRecord().any()) recordSurfaces(w, count, film.surfaceRecord());
         shadeChunk(w, count, film);
 
         // Into the film, in the fixed sample order; non-finite values are counted and dropped.
@@ -471,9 +481,51 @@ void Renderer::Impl::renderTile(int tileX, int tileY, int spp, Film& film, Worke
                     }
                     film.addSample(x, y, value, w.alpha[static_cast<size_t>(k)],
                                    w.filterWeight[static_cast<size_t>(k)]);
+                    if (film.surfaceRecord().any())
+                        film.addSurface(x, y, w.depth[static_cast<size_t>(k)],
+                                        w.surface.data() + static_cast<size_t>(k * film.surfaceRecord().width()));
                 }
     }
     tracer->counters().add(counts);
+}
+
+void Renderer::Impl::recordSurfaces(Worker& w, int count, SurfaceRecord const& record) const {
+    size_t const width = static_cast<size_t>(record.width());
+    w.depth.assign(static_cast<size_t>(count), kInfinity);
+    w.surface.assign(static_cast<size_t>(count) * width, 0.0f);
+    auto put = [&](float* values, Quantity quantity, Vec3 const& value) {
+        int const offset = record.offset(quantity);
+        if (offset >= 0)
+            for (int c = 0; c < 3; ++c) values[offset + c] = value[c];
+    };
+    auto putOne = [&](float* values, Quantity quantity, float value) {
+        int const offset = record.offset(quantity);
+        if (offset >= 0) values[offset] = value;
+    };
+    bool const basics = record.offset(Quantity::P) >= 0 || record.offset(Quantity::N) >= 0 ||
+                        record.offset(Quantity::Ng) >= 0;
+    bool const parameters = record.offset(Quantity::S) >= 0 || record.offset(Quantity::T) >= 0 ||
+                            record.offset(Quantity::U) >= 0 || record.offset(Quantity::V) >= 0;
+    for (size_t i = 0; i < static_cast<size_t>(count); ++i) {
+        HitRecord const& hit = w.hits[i];
+        if (!hit.hit()) continue;
+        w.depth[i] = camera->depthAlong(hit.dir, hit.t);
+        float* values = w.surface.data() + i * width;
+        Shape const& shape = *scene.shapes[hit.geomID];
+        if (basics) {
+            SurfaceBasics const at = shape.basics(hit);
+            put(values, Quantity::P, camera->pointToCamera(at.P));
+            put(values, Quantity::N, camera->normalToCamera(at.N));
+            put(values, Quantity::Ng, camera->normalToCamera(at.Ng));
+        }
+        if (parameters) {
+            SurfaceParameters const at = shape.parameters(hit);
+            putOne(values, Quantity::S, at.s);
+            putOne(values, Quantity::T, at.t);
+            putOne(values, Quantity::U, at.u);
+            putOne(values, Quantity::V, at.v);
+        }
+    }
 }
 
 void Renderer::Impl::shadeChunk(Worker& w, int count, Film& film) {
@@ -510,6 +562,7 @@ Film Renderer::render() {
     film.setFinish(r.scene.finish);
     if (r.integrator->WantsLightTracing()) film.enableSplats();
     if (r.pixelFilter.hasNegativeLobes()) film.enableNegativeLobes(r.pixelFilter.absoluteWeight());
+    if (r.surfaceRecord.any()) film.enableSurface(r.surfaceRecord);
     int size = tileSizeFor(r.settings.tileSize, spp);
     int tilesX = (r.scene.xres + size - 1) / size, tilesY = (r.scene.yres + size - 1) / size;
     int tiles = tilesX * tilesY;

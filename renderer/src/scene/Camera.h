@@ -21,6 +21,11 @@ public:
     /// dir (from the camera's origin or lens) crosses them.
     bool clips() const { return m_clipNear > 0.0f || m_clipFar < kInfinity; }
     void clipRange(Vec3 const& dir, float& tnear, float& tfar) const;
+    /// Camera-space depth (z) of the point at distance t along a camera ray in direction dir.
+    float depthAlong(Vec3 const& dir, float t) const { return glm::dot(m_depthAlong, dir) * t; }
+    /// A world-space point, and a world-space normal (unit length), in camera space.
+    Vec3 pointToCamera(Vec3 const& P) const { return transformPoint(m_worldToCamera, P); }
+    Vec3 normalToCamera(Vec3 const& N) const { return safeNormalize(transformNormal(m_cameraToWorld, N)); }
     /// Whether DepthOfField gave the camera a lens of some size.
     bool hasLens() const { return m_lensRadius > 0.0f; }
     /// Makes the camera a pinhole whatever its DepthOfField said.

@@ -115,6 +115,7 @@ struct SceneOptions {
     PixelFilterDesc pixelFilter;
     CameraDesc camera;
     DisplayDesc display;
+    std::vector<DisplayDesc> moreDisplays;  ///< "+name" Displays: further images of the same render (AOVs)
     ImageFinish finish;  ///< Imager and DisplayFilter
     IntegratorDesc integrator;
     std::vector<std::string> pluginSearchPath;  ///< from Option "searchpath" "rixplugin"

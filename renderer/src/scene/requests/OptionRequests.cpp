@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "core/PixelFilter.h"
+#include "scene/DisplayChannels.h"
 #include "scene/SceneBuilder.h"
 
 namespace bxdflab {
@@ -30,22 +31,35 @@ void SceneBuilder::display(RequestReader& in) {
     std::string type = in.string("display type");
     std::string mode = in.string("display mode");
     ParamList params = in.params();
-    if (!name.empty() && name[0] == '+') {
-        // "+" adds a display to those in effect; with none yet (as Blender's RIBMosaic
-        // writes every frame's), it is the image.
-        if (m_scene.display.where.known()) {
-            warnOnce("secondary Display", in.where(),
-                     "secondary Display \"" + name + "\" (AOV output) is not supported; skipped");
+    // "+" adds a display to those in effect; with none yet (as Blender's RIBMosaic writes every
+    // frame's), it is the image. Without it, a display replaces all of them.
+    bool const added = !name.empty() && name[0] == '+';
+    if (added) name.erase(0, 1);
+    bool const further = added && m_scene.display.where.known();
+    DisplayLayout const layout = displayLayout(mode);
+    if (!layout.unknown.empty()) {
+        // Shader outputs (arbitrary output variables) need a shading language this renderer does not have.
+        std::string const problem = std::string("Display \"") + (added ? "+" : "") + name + "\" mode \"" + mode +
+                                    "\": \"" + layout.unknown + "\" is not an output this renderer makes (it makes " +
+                                    displayModeNames() + ")";
+        if (further) {
+            warnOnce("display mode " + layout.unknown, in.where(), problem + "; skipped");
             return;
         }
-        name.erase(0, 1);
+        warnOnce("display mode " + layout.unknown, in.where(), problem + "; the shaded image is written instead");
+        mode = "rgba";
+    }
+    if (further) {
+        if (type == "framebuffer" || type == "it")
+            warnOnce("further framebuffer", in.where(),
+                     "Display \"+" + name + "\" \"" + type + "\" would show a further image in a window, which this "
+                     "renderer does not open; skipped");
+        else
+            m_scene.moreDisplays.push_back({name, type, mode, in.where()});
+        return;
     }
     m_scene.display = {name, type, mode, in.where()};
-    // A depth map is a shadow-map pass's output; shadows here are traced, from the scene itself.
-    if (mode == "z")
-        warnOnce("depth display", in.where(),
-                 "Display \"" + name + "\" \"" + type + "\" \"z\" asks for a depth map (for shadow maps, which this "
-                 "renderer does not use: it traces shadows); the shaded image is written instead");
+    m_scene.moreDisplays.clear();
     displayFilterAndExposure(params);
 }
 
