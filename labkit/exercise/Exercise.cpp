@@ -95,6 +95,7 @@ Exercise loadExercise(std::string const& courseRoot, std::string const& manifest
         e.emitsOnly = j.value("emitsOnly", false);
         e.anisotropic = j.value("anisotropic", false);
         e.reciprocal = j.value("reciprocal", true);
+        e.notReciprocalBecause = j.value("notReciprocalBecause", std::string());
         e.conservesEnergy = j.value("conservesEnergy", true);
         if (j.contains("transmission")) {
             nlohmann::json const& t = j.at("transmission");

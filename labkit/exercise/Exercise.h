@@ -62,6 +62,7 @@ struct Exercise {
     bool emitsOnly = false;      ///< no lobes: only EmitLocal
     bool anisotropic = false;    ///< depends on the tangent direction (views at several azimuths)
     bool reciprocal = true;      ///< f(V, L) = f(L, V)
+    std::string notReciprocalBecause;  ///< why not, for the report, where reciprocal is false
     bool conservesEnergy = true; ///< directional albedo <= 1 for white parameters
     std::vector<NotApplicable> notApplicable;  ///< checks skipped for this model, with the reason
 
