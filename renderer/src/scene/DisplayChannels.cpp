@@ -17,6 +17,7 @@ struct NamedQuantity {
 std::vector<NamedQuantity> const& namedQuantities() {
     static std::vector<NamedQuantity> const table = {
         {"Ci", Quantity::Color, {"R", "G", "B"}},
+        {"alpha", Quantity::Alpha, {"A"}},
         {"P", Quantity::P, {"P.x", "P.y", "P.z"}},
         {"N", Quantity::N, {"N.x", "N.y", "N.z"}},
         {"Nn", Quantity::N, {"Nn.x", "Nn.y", "Nn.z"}},
@@ -45,10 +46,6 @@ bool addChannels(std::string const& name, std::vector<DisplayChannel>& out) {
             for (int c = 0; c < 3; ++c) out.push_back({Quantity::Color, c, std::string(1, "RGB"[c])});
         if (match[2].matched) out.push_back({Quantity::Alpha, 0, "A"});
         if (match[3].matched) out.push_back({Quantity::Depth, 0, "Z"});
-        return true;
-    }
-    if (name == "alpha") {
-        out.push_back({Quantity::Alpha, 0, "A"});
         return true;
     }
     for (NamedQuantity const& named : namedQuantities())
@@ -88,7 +85,7 @@ DisplayLayout displayLayout(std::string const& mode) {
 }
 
 std::string displayModeNames() {
-    std::string names = "rgb, rgba, a, z (and their combinations such as rgbaz), alpha";
+    std::string names = "rgb, rgba, a, z (and their combinations such as rgbaz)";
     for (NamedQuantity const& named : namedQuantities()) names += std::string(", ") + named.name;
     return names;
 }
