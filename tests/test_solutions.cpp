@@ -349,9 +349,17 @@ TEST_CASE("varying parameters follow a point moved one place later in its batch"
     std::string const params = "\"float gloss\" [40]";
     for (int firstShare : {-1, 0, 7}) {
         std::string marked = varyingParams(params, firstShare);
-        REQUIRE(takeVaryingMark(marked) == firstShare);
+        std::optional<VaryingMark> const mark = takeVaryingMark(marked);
+        REQUIRE(mark.has_value());
+        CHECK(mark->firstShare == firstShare);
+        CHECK_FALSE(mark->coloursOnly);
         CHECK(marked == params);
     }
+    std::string colours = varyingColours(params);
+    std::optional<VaryingMark> const coloursMark = takeVaryingMark(colours);
+    REQUIRE(coloursMark.has_value());
+    CHECK(coloursMark->coloursOnly);
+    CHECK(colours == params);
     std::string other = "# each value varies from point to point, starting at share x\n" + params;
     CHECK_FALSE(takeVaryingMark(other).has_value());
     CHECK(other.size() > params.size());

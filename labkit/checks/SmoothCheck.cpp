@@ -5,7 +5,8 @@
 // single direction). The mean weight W / FPdf each way carries, which is all
 // a renderer sees of a discrete lobe, equals the reference's within five
 // standard errors (plus 0.2%), at views from outside and inside, one of them
-// beyond the critical angle (total internal reflection).
+// beyond the critical angle (total internal reflection), and again with the
+// colours differing from point to point.
 #include <cmath>
 #include <tuple>
 
@@ -92,9 +93,14 @@ CheckOutcome checkSmooth(CheckContext& c) {
     double const dn = static_cast<double>(n);
     std::string details;
     int views = 0;
-    for (std::string const& base : {e.params, e.colorParams}) {
-        std::string const params = base + " " + e.smoothParams;
-        double const ior = e.ior(params);
+    // The colour set also with its colours differing from point to point, as a texture makes them (a
+    // sample weighted by another point's colour shows only then); the index stays, so the directions
+    // are known.
+    for (auto const& [base, coloursVary] : {std::pair<std::string, bool>{e.params, false}, {e.colorParams, false},
+                                            {e.colorParams, true}}) {
+        std::string const smooth = base + " " + e.smoothParams;
+        std::string const params = coloursVary ? varyingColours(smooth) : smooth;
+        double const ior = e.ior(smooth);
         for (double theta : {0.0, 40.0, 75.0, 89.0, 150.0, 130.0}) {
             ++views;
             Vec3 const localV = direction(theta, 20);
@@ -107,7 +113,10 @@ CheckOutcome checkSmooth(CheckContext& c) {
             glm::dvec3 const M(-localV.x, -localV.y, localV.z), T(Ts.x, Ts.y, flip * Ts.z);
             std::string const where = "with the viewer at " + describeDirection(localV) + " (" +
                                       (localV.z < 0 ? "inside" : "outside") + "), " + withParams(base) +
-                                      " made smooth by " + e.smoothParams;
+                                      " made smooth by " + e.smoothParams +
+                                      (coloursVary ? " (its colours varying from point to point, as a texture makes "
+                                                     "them)"
+                                                   : "");
 
             auto samples = stratifiedSamples(n, c.seed + 17u + static_cast<uint32_t>(views));
             Sorted mine = sortSamples(c.plugin.generate(params, std::vector<ProbePoint>(n, point), samples), f, M,

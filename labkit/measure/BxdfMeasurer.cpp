@@ -7,6 +7,7 @@ namespace bxdflab {
 namespace {
 
 char const kVaryingMark[] = "# each value varies from point to point, starting at share ";
+char const kColoursVaryingMark[] = "# each colour varies from point to point, starting at share ";
 char const kTogetherMark[] = "# asked by two threads at once, rounds: ";
 
 std::string withMark(std::string const& mark, int number, std::string const& params) {
@@ -31,7 +32,13 @@ std::string varyingParams(std::string const& params, int firstShare) {
     return withMark(kVaryingMark, firstShare, params);
 }
 
-std::optional<int> takeVaryingMark(std::string& params) { return takeMark(kVaryingMark, params); }
+std::string varyingColours(std::string const& params) { return withMark(kColoursVaryingMark, 0, params); }
+
+std::optional<VaryingMark> takeVaryingMark(std::string& params) {
+    if (std::optional<int> const share = takeMark(kVaryingMark, params)) return VaryingMark{*share, false};
+    if (std::optional<int> const share = takeMark(kColoursVaryingMark, params)) return VaryingMark{*share, true};
+    return std::nullopt;
+}
 
 std::string askedTogether(std::string const& params, int rounds) { return withMark(kTogetherMark, rounds, params); }
 

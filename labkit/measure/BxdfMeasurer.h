@@ -79,9 +79,16 @@ public:
 /// values it had before. The mark is a RIB comment, so the set stays a valid
 /// parameter list.
 std::string varyingParams(std::string const& params, int firstShare = 0);
-/// Removes varyingParams()'s mark from `params`; its firstShare when it was
-/// there.
-std::optional<int> takeVaryingMark(std::string& params);
+/// The same for colours alone: floats and vectors (a refractive index that
+/// fixes where light goes, say) stay as given.
+std::string varyingColours(std::string const& params);
+/// What varyingParams() or varyingColours() asked for.
+struct VaryingMark {
+    int firstShare = 0;
+    bool coloursOnly = false;
+};
+/// Removes either function's mark from `params`; what it asked for, when it was there.
+std::optional<VaryingMark> takeVaryingMark(std::string& params);
 
 /// `params` asked of two instances of the plugin on two threads at once, for
 /// `rounds` rounds: evaluate() and generate() give the first half of the

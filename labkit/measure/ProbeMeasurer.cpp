@@ -90,9 +90,9 @@ BxdfProbe& ProbeMeasurer::probe(std::string const& params) {
     if (!slot) {
         try {
             std::string ribParams = params;
-            std::optional<int> const firstShare = takeVaryingMark(ribParams);
+            std::optional<VaryingMark> const varying = takeVaryingMark(ribParams);
             slot = std::make_unique<BxdfProbe>(m_plugin, ribParams, m_searchPath, m_diagnostics, false, m_observer);
-            if (firstShare) slot->setParamsVaryPerPoint(true, *firstShare);
+            if (varying) slot->setParamsVaryPerPoint(true, varying->firstShare, varying->coloursOnly);
         } catch (std::exception const& e) {
             m_probes.erase(params);
             throw MeasurementError(MeasurementError::Kind::PluginError, "loading the plugin", e.what());

@@ -42,8 +42,9 @@ constexpr unsigned char kPoisonByte = 0xFF;
 class ProbeShadingContext final : public RixShadingContext {
 public:
     ProbeShadingContext(BxdfInstance const& material, std::vector<ProbePoint> const& points, MemoryArena& arena,
-                        RixInterface* messages, std::optional<int> firstShare)
-        : m_material(material), m_arena(arena), m_messages(messages), m_firstShare(firstShare) {
+                        RixInterface* messages, std::optional<int> firstShare, bool coloursOnly)
+        : m_material(material), m_arena(arena), m_messages(messages), m_firstShare(firstShare),
+          m_coloursOnly(coloursOnly) {
         numPts = static_cast<int>(points.size());
         auto n = static_cast<size_t>(numPts);
         auto* P = arena.allocArray<RtPoint3>(n);
@@ -117,8 +118,8 @@ protected:
                       void const* dflt, bool promote) const override {
         RixSCDetail detail = evalUniformParam(m_material.params(), {id, arrayIndex, wanted, elementSize, dflt, promote},
                                               result, numPts, m_arena);
-        bool const scaled = wanted == k_RixSCFloat || wanted == k_RixSCColor;
-        bool const turned = wanted == k_RixSCVector || wanted == k_RixSCNormal;
+        bool const scaled = wanted == k_RixSCColor || (wanted == k_RixSCFloat && !m_coloursOnly);
+        bool const turned = !m_coloursOnly && (wanted == k_RixSCVector || wanted == k_RixSCNormal);
         if (!m_firstShare || !promote || !*result || !(scaled || turned)) return detail;
         size_t const floats = elementSize / sizeof(float), count = floats * static_cast<size_t>(numPts);
         auto const* same = static_cast<float const*>(*result);
@@ -159,6 +160,7 @@ private:
     MemoryArena& m_arena;
     RixInterface* m_messages;
     std::optional<int> m_firstShare;  ///< set: parameters vary per point, point 0 taking this share
+    bool m_coloursOnly;               ///< only colours vary
     void* m_builtins[k_numBuiltins] = {};
     mutable std::vector<unsigned char*> m_guards;
 };
@@ -202,7 +204,7 @@ struct BxdfProbe::Impl {
     template <typename Body>
     void withBxdf(std::vector<ProbePoint> const& points, Body&& body) {
         arena.reset();
-        ProbeShadingContext ctx(*instance, points, arena, &instance->plugin().messages(), firstShare);
+        ProbeShadingContext ctx(*instance, points, arena, &instance->plugin().messages(), firstShare, coloursOnly);
         RixBxdfFactory* factory = instance->plugin().factory();
         announce("BeginScatter");
         RixBxdf* bxdf = factory->BeginScatter(&ctx, RixBXLobeTraits::All(), k_RixSCScatterQuery, nullptr,
@@ -228,6 +230,7 @@ struct BxdfProbe::Impl {
     }
     char const* lastCall = "";
     std::optional<int> firstShare;  ///< set while parameters vary per point
+    bool coloursOnly = false;       ///< ...and then only the colours
 };
 
 BxdfProbe::BxdfProbe(std::string const& plugin, std::string const& ribParams, std::vector<std::string> const& searchPath,
@@ -255,8 +258,9 @@ BxdfProbe::~BxdfProbe() {
 
 void BxdfProbe::setCallObserver(CallObserver observer) { m_impl->observer = observer; }
 
-void BxdfProbe::setParamsVaryPerPoint(bool vary, int firstShare) {
+void BxdfProbe::setParamsVaryPerPoint(bool vary, int firstShare, bool coloursOnly) {
     m_impl->firstShare = vary ? std::optional<int>(firstShare) : std::nullopt;
+    m_impl->coloursOnly = coloursOnly;
 }
 
 float BxdfProbe::varyingShare(int i) {

@@ -85,8 +85,8 @@ public:
     /// texture makes it: point i gets share s = varyingShare(i + firstShare) of
     /// a float or colour, and a vector turned by adding 1 - s of its components
     /// in turn. (A batch moved one place later with firstShare - 1 keeps every
-    /// point's values.)
-    void setParamsVaryPerPoint(bool vary, int firstShare = 0);
+    /// point's values.) With coloursOnly, floats and vectors stay as given.
+    void setParamsVaryPerPoint(bool vary, int firstShare = 0, bool coloursOnly = false);
     /// A share in [0.85, 1], different for neighbouring points.
     static float varyingShare(int i);
 
