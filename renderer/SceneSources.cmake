@@ -28,6 +28,8 @@ set(RIX_SCENE_SOURCES
   scene/requests/ShapeRequests.cpp
   scene/requests/InstanceRequests.cpp
   scene/requests/FreeformRequests.cpp
+  scene/Motion.cpp
+  scene/shapes/Shape.cpp
   scene/shapes/Quadric.cpp
   scene/shapes/Sphere.cpp
   scene/shapes/Cylinder.cpp

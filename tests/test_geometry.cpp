@@ -24,7 +24,7 @@ Scene sceneWith(std::string const& rib) {
 
 HitRecord trace(RayTracer const& tracer, Vec3 org, Vec3 dir) {
     RayCounts counts;
-    return tracer.intersect(org, glm::normalize(dir), 0.0f, kInfinity, RayKind::Camera, counts);
+    return tracer.intersect(org, glm::normalize(dir), 0.0f, kInfinity, 0.0f, RayKind::Camera, counts);
 }
 
 /// Numbers in [0, 1) from a small linear congruential generator: the tests
@@ -272,10 +272,11 @@ TEST_CASE("shadow rays traced as a stream answer as one at a time", "[geometry]"
     RayCounts counts;
     std::vector<char> blocked(org.size());
     std::unique_ptr<bool[]> streamed(new bool[org.size()]);
-    tracer.occludedStream(org.data(), dir.data(), reach.data(), static_cast<int>(org.size()), streamed.get(), counts);
+    tracer.occludedStream(org.data(), dir.data(), reach.data(), nullptr, static_cast<int>(org.size()), streamed.get(),
+                          counts);
     int blockedCount = 0;
     for (size_t k = 0; k < org.size(); ++k) {
-        bool single = tracer.occluded(org[k], dir[k], 0.0f, reach[k], counts);
+        bool single = tracer.occluded(org[k], dir[k], 0.0f, reach[k], 0.0f, counts);
         CHECK(streamed[k] == single);
         blockedCount += single;
     }

@@ -55,7 +55,7 @@ public:
         auto* dPdu = arena.allocArray<RtVector3>(n);
         auto* dPdv = arena.allocArray<RtVector3>(n);
         auto* dPdtime = arena.allocArray<RtVector3>(n);
-        float* scalars[9];
+        float* scalars[10];
         for (auto& s : scalars) s = arena.allocArray<float>(n);
         for (size_t i = 0; i < n; ++i) {
             ProbePoint const& p = points[i];
@@ -67,12 +67,13 @@ public:
             dPdv[i] = toRt(glm::cross(p.N, p.dPdu));
             Tn[i] = toRt(safeNormalize(p.dPdu - p.N * glm::dot(p.N, p.dPdu)));
             dPdtime[i] = RtVector3(0.0f, 0.0f, 0.0f);
-            float values[9] = {1.0f, 0.5f, 0.5f, 0.0f, 0.0f, 0.5f, 0.5f, 0.0f, 0.0f};  // VLen u v du dv s t biasR PRadius
-            for (int k = 0; k < 9; ++k) scalars[k][i] = values[k];
+            // VLen u v du dv s t biasR PRadius time
+            float values[10] = {1.0f, 0.5f, 0.5f, 0.0f, 0.0f, 0.5f, 0.5f, 0.0f, 0.0f, 0.0f};
+            for (int k = 0; k < 10; ++k) scalars[k][i] = values[k];
         }
         void* table[k_numBuiltins] = {P, Nn, Ngn, Tn, Vn, scalars[0], scalars[1], scalars[2],
                                       scalars[3], scalars[4], dPdu, dPdv, scalars[5], scalars[6], scalars[7],
-                                      P, scalars[8], Nn, dPdtime};
+                                      P, scalars[8], Nn, dPdtime, scalars[9]};
         static_assert(std::size(table) == k_numBuiltins, "one entry per builtin");
         std::copy(std::begin(table), std::end(table), m_builtins);
     }

@@ -192,7 +192,9 @@ public:
         k_Po,        ///< RtPoint3: P before displacement (the same as P here: nothing is displaced)
         k_PRadius,   ///< RtFloat: radius of the ray's footprint at P (the pixel's spread at P's distance)
         k_Non,       ///< RtNormal3: unit shading normal before displacement (the same as Nn here)
-        k_dPdtime,   ///< RtVector3: how P moves over the shutter (zero here: the scene holds still)
+        k_dPdtime,   ///< RtVector3: how fast P moves, per unit of time (the whole shutter is one unit;
+                     ///< zero where nothing moves)
+        k_time,      ///< RtFloat: when the point was seen: 0 as the shutter opens, 1 as it closes
         k_numBuiltins
     };
 

@@ -18,10 +18,13 @@ void quadricBounds(const RTCBoundsFunctionArguments* args) {
     auto const* quadric = static_cast<Quadric const*>(args->geometryUserPtr);
     Vec3 lo, hi;
     quadric->boundsLocal(lo, hi);
+    // A moving quadric is bounded at each step of its motion (Embree blends the boxes between).
+    Mat4 const toWorld = quadric->motion ? quadric->motion->steps[args->timeStep] * quadric->objectToWorld()
+                                         : quadric->objectToWorld();
     Vec3 worldLo(kInfinity), worldHi(-kInfinity);
     for (int corner = 0; corner < 8; ++corner) {
         Vec3 p((corner & 1) ? hi.x : lo.x, (corner & 2) ? hi.y : lo.y, (corner & 4) ? hi.z : lo.z);
-        Vec3 w = transformPoint(quadric->objectToWorld(), p);
+        Vec3 w = transformPoint(toWorld, p);
         worldLo = glm::min(worldLo, w);
         worldHi = glm::max(worldHi, w);
     }
@@ -41,9 +44,14 @@ struct LocalRay {
     DVec3 org, dir;
 };
 
-LocalRay toObjectSpace(glm::dmat4 const& m, RTCRayN* ray, unsigned n, unsigned i) {
+/// Ray i of a packet in the quadric's object space. A moving quadric is first carried back to
+/// where it stood when the shutter opened, at the ray's time.
+LocalRay toObjectSpace(Quadric const& quadric, RTCRayN* ray, unsigned n, unsigned i) {
     DVec3 org(RTCRayN_org_x(ray, n, i), RTCRayN_org_y(ray, n, i), RTCRayN_org_z(ray, n, i));
     DVec3 dir(RTCRayN_dir_x(ray, n, i), RTCRayN_dir_y(ray, n, i), RTCRayN_dir_z(ray, n, i));
+    glm::dmat4 const& worldToObject = quadric.worldToObjectExact();
+    if (!quadric.motion) return {DVec3(worldToObject * glm::dvec4(org, 1.0)), glm::dmat3(worldToObject) * dir};
+    glm::dmat4 const m = worldToObject * glm::inverse(glm::dmat4(quadric.motion->at(RTCRayN_time(ray, n, i))));
     return {DVec3(m * glm::dvec4(org, 1.0)), glm::dmat3(m) * dir};
 }
 
@@ -51,10 +59,9 @@ void quadricIntersect(const RTCIntersectFunctionNArguments* args) {
     auto const* quadric = static_cast<Quadric const*>(args->geometryUserPtr);
     RTCRayN* ray = RTCRayHitN_RayN(args->rayhit, args->N);
     RTCHitN* hit = RTCRayHitN_HitN(args->rayhit, args->N);
-    glm::dmat4 const& worldToObject = quadric->worldToObjectExact();
     for (unsigned i = 0; i < args->N; ++i) {
         if (args->valid[i] != -1) continue;
-        LocalRay local = toObjectSpace(worldToObject, ray, args->N, i);
+        LocalRay local = toObjectSpace(*quadric, ray, args->N, i);
         auto found = quadric->intersectLocal(local.org, local.dir, RTCRayN_tnear(ray, args->N, i),
                                              RTCRayN_tfar(ray, args->N, i));
         if (!found) continue;
@@ -72,10 +79,9 @@ void quadricIntersect(const RTCIntersectFunctionNArguments* args) {
 
 void quadricOccluded(const RTCOccludedFunctionNArguments* args) {
     auto const* quadric = static_cast<Quadric const*>(args->geometryUserPtr);
-    glm::dmat4 const& worldToObject = quadric->worldToObjectExact();
     for (unsigned i = 0; i < args->N; ++i) {
         if (args->valid[i] != -1) continue;
-        LocalRay local = toObjectSpace(worldToObject, args->ray, args->N, i);
+        LocalRay local = toObjectSpace(*quadric, args->ray, args->N, i);
         if (quadric->hitsLocal(local.org, local.dir, RTCRayN_tnear(args->ray, args->N, i),
                                RTCRayN_tfar(args->ray, args->N, i)))
             RTCRayN_tfar(args->ray, args->N, i) = -kInfinity;
@@ -106,11 +112,50 @@ void copyBuffer(RTCGeometry geometry, RTCBufferType type, RTCFormat format, std:
     std::memcpy(buffer, values.data(), values.size() * sizeof(T));
 }
 
-RTCGeometry pointGeometry(RTCDevice device, RTCGeometryType type, std::vector<Vec4> const& points) {
+/// How many evenly spaced moments of the shutter a shape's vertices are given at: 1 when it holds
+/// still, else those of its transformation motion or of its deformation.
+unsigned motionStepCount(Shape const& shape) {
+    if (shape.deformation()) return static_cast<unsigned>(shape.deformation()->steps.size());
+    return shape.motion ? static_cast<unsigned>(shape.motion->steps.size()) : 1u;
+}
+
+/// Shutter time of step `step` of `count`.
+float stepTime(unsigned step, unsigned count) {
+    return count > 1 ? static_cast<float>(step) / static_cast<float>(count - 1) : 0.0f;
+}
+
+/// Sets the vertex buffers of a geometry with `count` vertices (each starting with its position),
+/// and `padding` zero vertices after them: one buffer for a shape that holds still, else one at
+/// each step of its motion. fill(vertices) writes the vertices as the shape was made; a deforming
+/// shape's points at each step replace their positions, a moving shape's positions are moved there.
+template <typename Vertex, typename Fill>
+void setMovingVertices(RTCGeometry geometry, Shape const& shape, unsigned steps, RTCFormat format, size_t count,
+                       size_t padding, Fill const& fill) {
+    if (steps > 1) rtcSetGeometryTimeStepCount(geometry, steps);
+    for (unsigned step = 0; step < steps; ++step) {
+        auto* vertices = static_cast<Vertex*>(
+            rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, step, format, sizeof(Vertex), count + padding));
+        float const time = stepTime(step, steps);
+        fill(vertices);
+        for (size_t i = count; i < count + padding; ++i) vertices[i] = Vertex(0.0f);
+        if (PointSteps const* deformation = shape.deformation()) {
+            for (size_t i = 0; i < count; ++i)
+                for (int k = 0; k < 3; ++k) vertices[i][k] = deformation->steps[step][i][k];
+            continue;
+        }
+        if (!shape.motion) continue;
+        Mat4 const move = shape.motion->at(time);
+        for (size_t i = 0; i < count; ++i) {
+            Vec3 const moved = transformPoint(move, Vec3(vertices[i]));
+            for (int k = 0; k < 3; ++k) vertices[i][k] = moved[k];
+        }
+    }
+}
+
+RTCGeometry pointGeometry(RTCDevice device, RTCGeometryType type, Shape const& shape, std::vector<Vec4> const& points) {
     RTCGeometry geometry = rtcNewGeometry(device, type);
-    void* buffer = rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT4, sizeof(Vec4),
-                                           points.size());
-    std::memcpy(buffer, points.data(), points.size() * sizeof(Vec4));
+    setMovingVertices<Vec4>(geometry, shape, motionStepCount(shape), RTC_FORMAT_FLOAT4, points.size(), 0,
+                            [&](Vec4* vertices) { std::copy(points.begin(), points.end(), vertices); });
     return geometry;
 }
 
@@ -118,13 +163,32 @@ RTCGeometry pointGeometry(RTCDevice device, RTCGeometryType type, std::vector<Ve
 /// surfaces evaluate their exact surface with.
 class EmbreeEvaluator final : public SurfaceEvaluator {
 public:
-    explicit EmbreeEvaluator(RTCGeometry geometry) : m_geometry(geometry) { rtcRetainGeometry(m_geometry); }
+    /// `steps`: how many moments of the shutter the geometry's vertices were given at.
+    EmbreeEvaluator(RTCGeometry geometry, unsigned steps) : m_geometry(geometry), m_steps(steps) {
+        rtcRetainGeometry(m_geometry);
+    }
     ~EmbreeEvaluator() override { rtcReleaseGeometry(m_geometry); }
     EmbreeEvaluator(EmbreeEvaluator const&) = delete;
     EmbreeEvaluator& operator=(EmbreeEvaluator const&) = delete;
-    void evaluate(unsigned primID, float u, float v, float* value, float* dPdu, float* dPdv,
+    void evaluate(unsigned primID, float u, float v, float time, float* value, float* dPdu, float* dPdv,
                   unsigned count) const override {
-        rtcInterpolate1(m_geometry, primID, u, v, RTC_BUFFER_TYPE_VERTEX, 0, value, dPdu, dPdv, count);
+        if (m_steps < 2 || time <= 0.0f) {
+            rtcInterpolate1(m_geometry, primID, u, v, RTC_BUFFER_TYPE_VERTEX, 0, value, dPdu, dPdv, count);
+            return;
+        }
+        // Each step's vertices are a buffer slot of their own: blend the two around `time`.
+        size_t step;
+        float f;
+        shutterStep(time, m_steps, step, f);
+        float later[3][4];
+        rtcInterpolate1(m_geometry, primID, u, v, RTC_BUFFER_TYPE_VERTEX, static_cast<unsigned>(step), value, dPdu,
+                        dPdv, count);
+        rtcInterpolate1(m_geometry, primID, u, v, RTC_BUFFER_TYPE_VERTEX, static_cast<unsigned>(step + 1), later[0],
+                        dPdu ? later[1] : nullptr, dPdv ? later[2] : nullptr, count);
+        float* const outputs[3] = {value, dPdu, dPdv};
+        for (int k = 0; k < 3; ++k)
+            if (outputs[k])
+                for (unsigned c = 0; c < count; ++c) outputs[k][c] = (1.0f - f) * outputs[k][c] + f * later[k][c];
     }
     void evaluateAttribute(unsigned slot, unsigned primID, float u, float v, float* value,
                            unsigned count) const override {
@@ -133,6 +197,7 @@ public:
 
 private:
     RTCGeometry m_geometry;
+    unsigned m_steps;
 };
 
 class GeometryBuilder final : public ShapeVisitor {
@@ -143,10 +208,9 @@ public:
     void visit(TriangleMesh const& mesh) override {
         MeshData const& data = mesh.data();
         m_geometry = rtcNewGeometry(m_device, RTC_GEOMETRY_TYPE_TRIANGLE);
-        // Embree may read 16 bytes at the last vertex; the extra padding keeps that in bounds.
-        auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
-            m_geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), data.P.size() + 1));
-        std::memcpy(vertices, data.P.data(), data.P.size() * sizeof(Vec3));
+        // Embree may read 16 bytes at the last vertex; one vertex of padding keeps that in bounds.
+        setMovingVertices<Vec3>(m_geometry, mesh, motionStepCount(mesh), RTC_FORMAT_FLOAT3, data.P.size(), 1,
+                                [&](Vec3* vertices) { std::copy(data.P.begin(), data.P.end(), vertices); });
         auto* indices = static_cast<unsigned*>(rtcSetNewGeometryBuffer(
             m_geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), data.triangleCount()));
         std::memcpy(indices, data.indices.data(), data.indices.size() * sizeof(unsigned));
@@ -154,14 +218,16 @@ public:
     }
 
     void visit(Quadric const& quadric) override {
-        std::optional<Vec4> ball = m_embreeSpheres ? quadric.placedSphere() : std::nullopt;
+        // Embree's sphere primitive does not move; a moving sphere is intersected by its own code.
+        std::optional<Vec4> ball = m_embreeSpheres && !quadric.motion ? quadric.placedSphere() : std::nullopt;
         if (ball) {
-            m_geometry = pointGeometry(m_device, RTC_GEOMETRY_TYPE_SPHERE_POINT, {*ball});
+            m_geometry = pointGeometry(m_device, RTC_GEOMETRY_TYPE_SPHERE_POINT, quadric, {*ball});
             rtcCommitGeometry(m_geometry);
             return;
         }
         m_geometry = rtcNewGeometry(m_device, RTC_GEOMETRY_TYPE_USER);
         rtcSetGeometryUserPrimitiveCount(m_geometry, 1);
+        if (quadric.motion) rtcSetGeometryTimeStepCount(m_geometry, motionStepCount(quadric));
         rtcSetGeometryUserData(m_geometry, const_cast<Quadric*>(&quadric));
         rtcSetGeometryBoundsFunction(m_geometry, quadricBounds, nullptr);
         rtcSetGeometryIntersectFunction(m_geometry, quadricIntersect);
@@ -172,16 +238,17 @@ public:
     void visit(Curves const& curves) override {
         CurveData const& data = curves.data();
         m_geometry = pointGeometry(
-            m_device, data.cubic ? RTC_GEOMETRY_TYPE_ROUND_BEZIER_CURVE : RTC_GEOMETRY_TYPE_ROUND_LINEAR_CURVE, data.points);
+            m_device, data.cubic ? RTC_GEOMETRY_TYPE_ROUND_BEZIER_CURVE : RTC_GEOMETRY_TYPE_ROUND_LINEAR_CURVE, curves,
+            data.points);
         void* index = rtcSetNewGeometryBuffer(m_geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT, sizeof(unsigned),
                                               data.segments.size());
         std::memcpy(index, data.segments.data(), data.segments.size() * sizeof(unsigned));
         rtcCommitGeometry(m_geometry);
-        curves.attach(std::make_shared<EmbreeEvaluator>(m_geometry));
+        curves.attach(std::make_shared<EmbreeEvaluator>(m_geometry, motionStepCount(curves)));
     }
 
     void visit(Points const& points) override {
-        m_geometry = pointGeometry(m_device, RTC_GEOMETRY_TYPE_SPHERE_POINT, points.spheres());
+        m_geometry = pointGeometry(m_device, RTC_GEOMETRY_TYPE_SPHERE_POINT, points, points.spheres());
         rtcCommitGeometry(m_geometry);
     }
 
@@ -192,11 +259,10 @@ public:
         copyBuffer(m_geometry, RTC_BUFFER_TYPE_INDEX, RTC_FORMAT_UINT, data.indices);
         // Embree reads each vertex as four floats and checks all four are finite:
         // a 16-byte stride with a zero fourth float keeps those reads inside the data.
-        std::vector<Vec4> padded(data.P.size());
-        for (size_t i = 0; i < padded.size(); ++i) padded[i] = Vec4(data.P[i], 0.0f);
-        void* vertices = rtcSetNewGeometryBuffer(m_geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
-                                                 sizeof(Vec4), padded.size());
-        std::memcpy(vertices, padded.data(), padded.size() * sizeof(Vec4));
+        setMovingVertices<Vec4>(m_geometry, surface, motionStepCount(surface), RTC_FORMAT_FLOAT3, data.P.size(), 0,
+                                [&](Vec4* vertices) {
+                                    for (size_t i = 0; i < data.P.size(); ++i) vertices[i] = Vec4(data.P[i], 0.0f);
+                                });
         copyBuffer(m_geometry, RTC_BUFFER_TYPE_EDGE_CREASE_INDEX, RTC_FORMAT_UINT2, data.creaseEdges, 2);
         copyBuffer(m_geometry, RTC_BUFFER_TYPE_EDGE_CREASE_WEIGHT, RTC_FORMAT_FLOAT, data.creaseWeights);
         copyBuffer(m_geometry, RTC_BUFFER_TYPE_VERTEX_CREASE_INDEX, RTC_FORMAT_UINT, data.corners);
@@ -214,7 +280,7 @@ public:
         setPrimvars(data, mode);
         rtcSetGeometryTessellationRate(m_geometry, kTessellationRate);
         rtcCommitGeometry(m_geometry);
-        surface.attach(std::make_shared<EmbreeEvaluator>(m_geometry));
+        surface.attach(std::make_shared<EmbreeEvaluator>(m_geometry, motionStepCount(surface)));
     }
 
 private:

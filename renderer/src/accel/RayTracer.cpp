@@ -31,7 +31,7 @@ void check(RTCDevice device, const char* what) {
                           (g_lastEmbreeError.empty() ? "error " + std::to_string(static_cast<int>(code)) : g_lastEmbreeError));
 }
 
-RTCRay makeRay(Vec3 const& org, Vec3 const& dir, float tnear, float tfar) {
+RTCRay makeRay(Vec3 const& org, Vec3 const& dir, float tnear, float tfar, float time) {
     RTCRay ray;
     ray.org_x = org.x;
     ray.org_y = org.y;
@@ -40,7 +40,7 @@ RTCRay makeRay(Vec3 const& org, Vec3 const& dir, float tnear, float tfar) {
     ray.dir_x = dir.x;
     ray.dir_y = dir.y;
     ray.dir_z = dir.z;
-    ray.time = 0.0f;
+    ray.time = time;
     ray.tfar = tfar;
     ray.mask = 0xffffffffu;
     ray.id = 0;
@@ -113,9 +113,9 @@ RTCScene RayTracer::embreeScene(RayKind kind) const {
 
 namespace {
 
-RTCRayHit makeRayHit(Vec3 const& org, Vec3 const& dir, float tnear, float tfar) {
+RTCRayHit makeRayHit(Vec3 const& org, Vec3 const& dir, float tnear, float tfar, float time) {
     RTCRayHit rayhit;
-    rayhit.ray = makeRay(org, dir, tnear, tfar);
+    rayhit.ray = makeRay(org, dir, tnear, tfar, time);
     rayhit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
     rayhit.hit.primID = RTC_INVALID_GEOMETRY_ID;
     rayhit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
@@ -128,6 +128,7 @@ HitRecord toHitRecord(Vec3 const& org, Vec3 const& dir, RTCRayHit const& rayhit)
     HitRecord hit;
     hit.org = org;
     hit.dir = dir;
+    hit.time = rayhit.ray.time;
     if (rayhit.hit.geomID != RTC_INVALID_GEOMETRY_ID) {
         hit.geomID = rayhit.hit.geomID;
         hit.primID = rayhit.hit.primID;
@@ -145,11 +146,11 @@ uint64_t& counterOf(RayCounts& counts, RayKind kind) {
 
 }  // namespace
 
-HitRecord RayTracer::intersect(Vec3 const& org, Vec3 const& dir, float tnear, float tfar, RayKind kind,
+HitRecord RayTracer::intersect(Vec3 const& org, Vec3 const& dir, float tnear, float tfar, float time, RayKind kind,
                                RayCounts& counts) const {
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
-    RTCRayHit rayhit = makeRayHit(org, dir, tnear, tfar);
+    RTCRayHit rayhit = makeRayHit(org, dir, tnear, tfar, time);
     if (m_observer) m_observer->traced(org, dir, tnear, tfar, kind, false);
     rtcIntersect1(embreeScene(kind), &context, &rayhit);
     ++counterOf(counts, kind);
@@ -157,12 +158,12 @@ HitRecord RayTracer::intersect(Vec3 const& org, Vec3 const& dir, float tnear, fl
 }
 
 void RayTracer::intersectCoherent(Vec3 const* org, Vec3 const* dir, int count, RayKind kind, HitRecord* hits,
-                                  RayCounts& counts, float const* tnear, float const* tfar) const {
+                                  RayCounts& counts, float const* tnear, float const* tfar, float const* time) const {
     thread_local std::vector<RTCRayHit> rays;
     rays.resize(static_cast<size_t>(count));
     for (int i = 0; i < count; ++i) {
         float const from = tnear ? tnear[i] : 0.0f, to = tfar ? tfar[i] : kInfinity;
-        rays[static_cast<size_t>(i)] = makeRayHit(org[i], dir[i], from, to);
+        rays[static_cast<size_t>(i)] = makeRayHit(org[i], dir[i], from, to, time ? time[i] : 0.0f);
         if (m_observer) m_observer->traced(org[i], dir[i], from, to, kind, false);
     }
     RTCIntersectContext context;
@@ -189,8 +190,12 @@ void RayTracer::passBackFaces(HitRecord& hit, RayCounts& counts) const {
 HitRecord RayTracer::beyond(HitRecord const& hit, float tfar, RayKind kind, RayCounts& counts) const {
     // From just beyond the hit (relative to t, as t's rounding is).
     float const tnear = hit.t * (1.0f + 1e-5f) + 1e-7f;
-    if (!(tnear < tfar)) return HitRecord{hit.org, hit.dir};
-    return intersect(hit.org, hit.dir, tnear, tfar, kind, counts);
+    if (!(tnear < tfar)) {
+        HitRecord miss{hit.org, hit.dir};
+        miss.time = hit.time;
+        return miss;
+    }
+    return intersect(hit.org, hit.dir, tnear, tfar, hit.time, kind, counts);
 }
 
 HitRecord RayTracer::continuePast(HitRecord const& hit, float tfar, RayKind kind, RayCounts& counts) const {
@@ -199,23 +204,24 @@ HitRecord RayTracer::continuePast(HitRecord const& hit, float tfar, RayKind kind
     return next;
 }
 
-bool RayTracer::occluded(Vec3 const& org, Vec3 const& dir, float tnear, float tfar, RayCounts& counts) const {
+bool RayTracer::occluded(Vec3 const& org, Vec3 const& dir, float tnear, float tfar, float time,
+                         RayCounts& counts) const {
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
-    RTCRay ray = makeRay(org, dir, tnear, tfar);
+    RTCRay ray = makeRay(org, dir, tnear, tfar, time);
     if (m_observer) m_observer->traced(org, dir, tnear, tfar, RayKind::Shadow, true);
     rtcOccluded1(m_shadow, &context, &ray);
     ++counts.shadow;
     return ray.tfar < 0.0f;
 }
 
-void RayTracer::occludedStream(Vec3 const* org, Vec3 const* dir, float const* tfar, int count, bool* blocked,
-                               RayCounts& counts) const {
+void RayTracer::occludedStream(Vec3 const* org, Vec3 const* dir, float const* tfar, float const* time, int count,
+                               bool* blocked, RayCounts& counts) const {
     if (count <= 0) return;
     thread_local std::vector<RTCRay> rays;
     rays.resize(static_cast<size_t>(count));
     for (int i = 0; i < count; ++i) {
-        rays[static_cast<size_t>(i)] = makeRay(org[i], dir[i], 0.0f, tfar[i]);
+        rays[static_cast<size_t>(i)] = makeRay(org[i], dir[i], 0.0f, tfar[i], time ? time[i] : 0.0f);
         if (m_observer) m_observer->traced(org[i], dir[i], 0.0f, tfar[i], RayKind::Shadow, true);
     }
     RTCIntersectContext context;

@@ -55,26 +55,31 @@ public:
     RayTracer(RayTracer const&) = delete;
     RayTracer& operator=(RayTracer const&) = delete;
 
+    /// Rays carry a time: 0 as the shutter opens, 1 as it closes (what moving shapes are placed by).
+    /// A ray leaving a surface keeps the time of the ray that reached it.
+
     /// Nearest hit along the ray within (tnear, tfar); hit.geomID is
     /// RTC_INVALID_GEOMETRY_ID on a miss.
-    HitRecord intersect(Vec3 const& org, Vec3 const& dir, float tnear, float tfar, RayKind kind, RayCounts& counts) const;
+    HitRecord intersect(Vec3 const& org, Vec3 const& dir, float tnear, float tfar, float time, RayKind kind,
+                        RayCounts& counts) const;
     /// The nearest hits of many coherent rays at once (a stream, as Embree's
     /// rtcIntersect1M traces them: camera rays of neighbouring pixels share
     /// most of their traversal), each within (0, infinity), or (tnear[i], tfar[i]) when those are
-    /// given. hits[i] as intersect() gives it.
+    /// given, at time[i] (else 0). hits[i] as intersect() gives it.
     void intersectCoherent(Vec3 const* org, Vec3 const* dir, int count, RayKind kind, HitRecord* hits,
-                           RayCounts& counts, float const* tnear = nullptr, float const* tfar = nullptr) const;
+                           RayCounts& counts, float const* tnear = nullptr, float const* tfar = nullptr,
+                           float const* time = nullptr) const;
     /// The next hit along hit's ray beyond hit itself (and before tfar): where
     /// a ray goes on when the surface it met lets it through. Camera rays pass
-    /// one-sided backs here too.
+    /// one-sided backs here too. The ray keeps hit's time.
     HitRecord continuePast(HitRecord const& hit, float tfar, RayKind kind, RayCounts& counts) const;
     /// True if anything blocks the segment (tnear, tfar).
-    bool occluded(Vec3 const& org, Vec3 const& dir, float tnear, float tfar, RayCounts& counts) const;
+    bool occluded(Vec3 const& org, Vec3 const& dir, float tnear, float tfar, float time, RayCounts& counts) const;
     /// Many shadow rays at once (a stream, as Embree's rtcOccluded1M traces
     /// them, without a call per ray): blocked[i] as occluded() gives it for
-    /// the segment (0, tfar[i]) of ray i.
-    void occludedStream(Vec3 const* org, Vec3 const* dir, float const* tfar, int count, bool* blocked,
-                        RayCounts& counts) const;
+    /// the segment (0, tfar[i]) of ray i at time[i] (null: all at 0).
+    void occludedStream(Vec3 const* org, Vec3 const* dir, float const* tfar, float const* time, int count,
+                        bool* blocked, RayCounts& counts) const;
 
     RayCounters& counters() const { return m_counters; }
     /// True when some shape the camera sees is one-sided (Sides 1), so camera

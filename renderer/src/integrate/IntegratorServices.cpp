@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "accel/RayTracer.h"
+#include "integrate/ShutterTime.h"
 
 namespace bxdflab {
 namespace {
@@ -11,16 +12,19 @@ namespace {
 /// Shadow rays stop just short of the light, so a surface touching it does not count.
 float shadowReach(float distance) { return std::isinf(distance) ? kInfinity : distance * (1.0f - 1e-4f); }
 
-/// Where rays leaving the points of a batch start: pushed off each surface.
+/// Where and when rays leaving the points of a batch start: pushed off each surface, at the
+/// shutter time the point was seen at.
 class RayStarts {
 public:
     explicit RayStarts(RixShadingContext const& ctx) {
         ctx.GetBuiltinVar(RixShadingContext::k_P, &m_P);
         ctx.GetBuiltinVar(RixShadingContext::k_Ngn, &m_Ngn);
         ctx.GetBuiltinVar(RixShadingContext::k_biasR, &m_biasR);
+        ctx.GetBuiltinVar(RixShadingContext::k_time, &m_time);
     }
     /// The start of a ray from point i toward dir.
     Vec3 at(int i, Vec3 const& dir) const { return offsetRayOrigin(toVec3(m_P[i]), m_biasR[i], toVec3(m_Ngn[i]), dir); }
+    float time(int i) const { return m_time[i]; }
     /// How far the lights may lie along a shadow ray from `start` (point i's) toward a light
     /// `distance` away from the point: short of that light, whatever the push off the surface.
     float lightReach(int i, Vec3 const& start, float distance) const {
@@ -32,6 +36,7 @@ private:
     RtPoint3 const* m_P = nullptr;
     RtNormal3 const* m_Ngn = nullptr;
     RtFloat const* m_biasR = nullptr;
+    RtFloat const* m_time = nullptr;
 };
 
 /// Shadow rays gathered (in arena memory) to be traced as one stream.
@@ -40,25 +45,29 @@ public:
     ShadowStream(MemoryArena& arena, size_t capacity)
         : m_from(arena.allocArray<Vec3>(capacity)),
           m_dir(arena.allocArray<Vec3>(capacity)),
-          m_reach(arena.allocArray<float>(capacity)) {}
-    /// A ray from start along dir that must stay clear up to a light `distance` away.
-    void add(Vec3 const& start, Vec3 const& dir, float distance) {
+          m_reach(arena.allocArray<float>(capacity)),
+          m_time(arena.allocArray<float>(capacity)) {}
+    /// A ray from start along dir, at shutter time `time`, that must stay clear up to a light
+    /// `distance` away.
+    void add(Vec3 const& start, Vec3 const& dir, float distance, float time) {
         m_from[m_count] = start;
         m_dir[m_count] = dir;
         m_reach[m_count] = shadowReach(distance);
+        m_time[m_count] = time;
         ++m_count;
     }
     int count() const { return m_count; }
     Vec3 const& from(int k) const { return m_from[k]; }
     /// blocked[k]: something lies in the way of ray k.
     void trace(PresenceTracer const& tracer, bool* blocked, RayCounts& counts, MemoryArena& arena) const {
-        tracer.occludedStream(m_from, m_dir, m_reach, m_count, blocked, counts, arena);
+        tracer.occludedStream(m_from, m_dir, m_reach, m_time, m_count, blocked, counts, arena);
     }
 
 private:
     Vec3* m_from;
     Vec3* m_dir;
     float* m_reach;
+    float* m_time;
     int m_count = 0;
 };
 
@@ -104,7 +113,7 @@ bool IntegratorServices::Unoccluded(RixShadingContext const& ctx, int i, RtVecto
     if (!(distance > 0.0f)) return true;  // nothing can lie on an empty segment
     RayStarts starts(ctx);
     Vec3 const d = toVec3(dir), from = starts.at(i, d);
-    return !m_tracer.occluded(from, d, 0.0f, shadowReach(distance), m_counts, m_arena) &&
+    return !m_tracer.occluded(from, d, 0.0f, shadowReach(distance), starts.time(i), m_counts, m_arena) &&
            !lightEmitsAcross(from, d, starts.lightReach(i, from, distance), -d);
 }
 
@@ -121,7 +130,7 @@ void IntegratorServices::Unoccluded(RixShadingContext const& ctx, int count, int
         ray[k] = distances[k] > 0.0f ? stream.count() : -1;
         if (ray[k] < 0) continue;
         Vec3 const d = toVec3(dirs[k]);
-        stream.add(starts.at(indices[k], d), d, distances[k]);
+        stream.add(starts.at(indices[k], d), d, distances[k], starts.time(indices[k]));
     }
     bool* blocked = m_arena.allocArray<bool>(static_cast<size_t>(std::max(1, stream.count())));
     stream.trace(m_tracer, blocked, m_counts, m_arena);
@@ -155,9 +164,10 @@ bool IntegratorServices::lightEmitsAcross(Vec3 const& from, Vec3 const& dir, flo
 }
 
 RixLightHit IntegratorServices::VisibleLight(RixShadingContext const& ctx, int i, RtVector3 const& dir) {
-    Vec3 d = toVec3(dir), from = RayStarts(ctx).at(i, d);
+    RayStarts const starts(ctx);
+    Vec3 d = toVec3(dir), from = starts.at(i, d);
     RixLightHit light = lightAlong(from, d, kInfinity);
-    if (light.hit && m_tracer.occluded(from, d, 0.0f, shadowReach(light.distance), m_counts, m_arena))
+    if (light.hit && m_tracer.occluded(from, d, 0.0f, shadowReach(light.distance), starts.time(i), m_counts, m_arena))
         light.hit = false;
     unlinkedSendNothing(ctx, i, light);
     return light;
@@ -176,7 +186,7 @@ void IntegratorServices::VisibleLights(RixShadingContext const& ctx, int count, 
         hits[k] = lightAlong(start, d, kInfinity);
         if (!hits[k].hit) continue;  // no light that way: no shadow ray
         hitOf[stream.count()] = k;
-        stream.add(start, d, hits[k].distance);
+        stream.add(start, d, hits[k].distance, starts.time(indices[k]));
     }
     bool* blocked = m_arena.allocArray<bool>(size);
     stream.trace(m_tracer, blocked, m_counts, m_arena);
@@ -194,7 +204,8 @@ void IntegratorServices::TraceIndirect(RixShadingContext const& ctx, int count, 
     RayStarts starts(ctx);
     for (int k = 0; k < count; ++k) {
         Vec3 d = glm::normalize(toVec3(dirs[k]));
-        hits[k] = m_tracer.tracer().intersect(starts.at(indices[k], d), d, 0.0f, kInfinity, RayKind::Indirect, m_counts);
+        hits[k] = m_tracer.tracer().intersect(starts.at(indices[k], d), d, 0.0f, kInfinity, starts.time(indices[k]),
+                                              RayKind::Indirect, m_counts);
     }
     m_tracer.passAbsent(hits, count, nullptr, RayKind::Indirect, m_counts, m_arena);
     for (int k = 0; k < count; ++k) {
@@ -264,7 +275,8 @@ void IntegratorServices::TraceEmitted(int count, RixLightEmission const* rays, R
         if (!rays[k].valid || !isFinite(from) || glm::dot(d, d) == 0.0f) continue;  // nothing leaves this light
         // A light may sit on a surface (a lamp on a ceiling): start just off the light.
         float const start = 1e-5f * (1.0f + std::max({std::fabs(from.x), std::fabs(from.y), std::fabs(from.z)}));
-        hits[k] = m_tracer.intersect(from, d, start, kInfinity, RayKind::Indirect, m_counts, m_arena);
+        hits[k] = m_tracer.intersect(from, d, start, kInfinity, shutterTime(samples[k]), RayKind::Indirect, m_counts,
+                                     m_arena);
         // Like a light subpath's later rays, it ends at a light where a camera path would
         // (looked for from the same start, off the light it leaves).
         if (hits[k].hit() && lightEmitsAcross(from + start * d, d, hits[k].t - start, d)) hits[k].forget();
@@ -294,8 +306,9 @@ RixCameraConnection IntegratorServices::ConnectCamera(RixShadingContext const& c
     out.pdfArea = directionPdf * std::fabs(glm::dot(toVec3(Ngn[i]), toEye)) / distSq;
     // A pixel averages camera rays spread evenly over its share of the image plane.
     out.importance = directionPdf * static_cast<float>(m_camera->pixelCount()) / distSq;
-    out.hit = !testVisibility ||
-              !m_tracer.occluded(RayStarts(ctx).at(i, toEye), toEye, 0.0f, shadowReach(distance), m_counts, m_arena);
+    RayStarts const starts(ctx);
+    out.hit = !testVisibility || !m_tracer.occluded(starts.at(i, toEye), toEye, 0.0f, shadowReach(distance),
+                                                    starts.time(i), m_counts, m_arena);
     // A light the camera sees in front of the point hides it, as it does from camera rays:
     // the pixel shows the light (or its dark back), never what lies behind.
     if (out.hit && testVisibility && m_cameraLights) {

@@ -7,6 +7,7 @@
 #include <tbb/task_arena.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cstdio>
@@ -18,6 +19,7 @@
 #include <thread>
 
 #include "accel/RayTracer.h"
+#include "integrate/ShutterTime.h"
 #include "core/CrashReport.h"
 #include "core/ImageFiles.h"
 #include "core/PixelFilter.h"
@@ -65,6 +67,7 @@ struct Worker {
     std::vector<HitRecord> hits;
     std::vector<Vec3> rayOrigins, rayDirections;
     std::vector<float> rayNear, rayFar;  ///< where Clipping's planes cut the camera rays (when they do)
+    std::vector<float> rayTimes;         ///< when in the shutter each camera ray is traced (when something moves)
     std::vector<RixRNG::SampleCtx> samples;
     std::vector<RtColorRGB> radiance, groupRadiance;
     std::vector<float> alpha;
@@ -158,6 +161,7 @@ struct Renderer::Impl {
     std::unique_ptr<BatchShader> shader;
     std::unique_ptr<PresenceTracer> rays;  // the tracer, seeing through cut-outs
     SurfaceRecord surfaceRecord;           // what displays of the surface need from each camera hit
+    bool shutterOpens = false;             // the shutter stays open a while: camera rays get times
     std::atomic<uint64_t> nonFinite{0};
     std::atomic<uint64_t> invalidPdf{0};
 
@@ -372,6 +376,12 @@ Renderer::Renderer(Scene& scene, RenderSettings settings, Diagnostics& diagnosti
     r.surfaceRecord = SurfaceRecord(layouts);
     if (r.surfaceRecord.any())
         effects.simulate("displays of the surface the camera sees (depth, position, normals, parameters)");
+    size_t const moving = static_cast<size_t>(
+        std::count_if(scene.shapes.begin(), scene.shapes.end(), [](auto const& shape) { return shape->moves(); }));
+    r.shutterOpens = scene.shutterClose > scene.shutterOpen;
+    if (moving > 0)
+        effects.simulate("motion blur: " + std::to_string(moving) + (moving == 1 ? " shape moves" : " shapes move") +
+                         " while the shutter is open");
 
     m_stats.integrator = r.integratorPlugin->name();
     m_stats.width = scene.xres;
@@ -437,6 +447,13 @@ void Renderer::Impl::renderTile(int tileX, int tileY, int spp, Film& film, Worke
                     }
                 }
             }
+        // Times come from numbers of their own, so drawing them changes no other number.
+        float const* times = nullptr;
+        if (shutterOpens) {
+            w.rayTimes.resize(static_cast<size_t>(count));
+            for (size_t i = 0; i < static_cast<size_t>(count); ++i) w.rayTimes[i] = shutterTime(w.samples[i]);
+            times = w.rayTimes.data();
+        }
         float const* clipNear = nullptr;
         float const* clipFar = nullptr;
         if (camera->clips()) {
@@ -448,7 +465,7 @@ void Renderer::Impl::renderTile(int tileX, int tileY, int spp, Film& film, Worke
             clipFar = w.rayFar.data();
         }
         tracer->intersectCoherent(w.rayOrigins.data(), w.rayDirections.data(), count, RayKind::Camera, w.hits.data(),
-                                  counts, clipNear, clipFar);
+                                  counts, clipNear, clipFar, times);
         rays->passAbsent(w.hits.data(), count, clipFar, RayKind::Camera, counts, w.arena);
         if (clipFar)  // a one-sided back passed on the way may have let the ray on past the far plane
             for (size_t i = 0; i < static_cast<size_t>(count); ++i)

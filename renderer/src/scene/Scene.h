@@ -123,6 +123,9 @@ struct SceneOptions {
     /// What MakeTexture and MakeLatLongEnvironment made: texture name -> picture name.
     std::map<std::string, std::string> madeTextures;
     int frame = -1;  ///< the FrameBegin number (-1: the file has no frames)
+    /// Shutter open close: the span of time one image sees (motion blocks give times in the same units).
+    /// Opening and closing at once (the default) sees each motion block at that one moment.
+    float shutterOpen = 0.0f, shutterClose = 0.0f;
 };
 
 struct Scene : SceneOptions {

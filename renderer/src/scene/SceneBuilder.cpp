@@ -220,8 +220,35 @@ void SceneBuilder::handle(RibRequest const& request) {
     bool const conditional = request.name == "IfBegin" || request.name == "ElseIf" || request.name == "Else" ||
                              request.name == "IfEnd";
     if (!conditional && !m_conditions.empty() && !m_conditions.back().reading) return;
-    // A motion block holds one request per time sample: the first one is used.
-    if (m_motionSamples > 0 && request.name != "MotionEnd" && m_motionSeen++ > 0) return;
+    // A motion block holds one request per time. Transforms and shapes are read at each time
+    // (and put together at MotionEnd); anything else keeps its first time's value. Requests that
+    // one of them reads in turn (an instance's) belong to it, not to the block.
+    if (m_motion && !m_motion->dispatching && request.name != "MotionEnd") {
+        MotionBlock& block = *m_motion;
+        int const time = block.read++;
+        if (time == 0) block.request = request.name;
+        if (time > 0 && (request.name != block.request || time >= static_cast<int>(block.times.size()))) {
+            warnOnce("motion block requests", request.where,
+                     request.name + " in the motion block at " + block.where.str() + " is not another time of its " +
+                         block.request + " (a motion block holds one request, repeated once for each of its " +
+                         "times): ignored");
+            return;
+        }
+        if (time > 0 && !block.captured()) return;  // an attribute: its first value holds
+        block.current = time;
+        block.dispatching = true;
+        block.shapes.emplace_back();
+        dispatch(request);
+        if (m_motion) {
+            m_motion->current = -1;
+            m_motion->dispatching = false;
+        }
+        return;
+    }
+    dispatch(request);
+}
+
+void SceneBuilder::dispatch(RibRequest const& request) {
     // The camera and image are fixed at WorldBegin (RenderMan reports these as
     // misplaced). A first Display after it only names the file, as older test
     // files expect, and is kept.

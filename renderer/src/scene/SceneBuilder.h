@@ -19,6 +19,7 @@
 #include "core/Diagnostics.h"
 #include "parse/ParamList.h"
 #include "parse/RibRequest.h"
+#include "scene/Motion.h"
 #include "scene/Scene.h"
 #include "scene/shapes/MeshBuilders.h"
 
@@ -49,7 +50,10 @@ public:
 private:
     /// What AttributeBegin saves and AttributeEnd restores.
     struct Attributes {
-        Mat4 transform{1.0f};
+        Mat4 transform{1.0f};  ///< where the transform is when the shutter opens
+        /// A transform that moves over time (a motion block's, and what was concatenated after it);
+        /// null while it holds still.
+        std::shared_ptr<TransformPath const> motion;
         int material = -1;
         Visibility visibility;
         std::string name;
@@ -89,8 +93,38 @@ private:
         SourceLocation where;
     };
     enum class Block { Attribute, Transform };
+    /// An open MotionBegin block: one request for each of its times, read as the transform or the
+    /// shapes it makes at that time, and put together at MotionEnd.
+    struct MotionBlock {
+        std::vector<float> times;
+        SourceLocation where;
+        std::string request;  ///< the request of the first time (the others must repeat it)
+        int read = 0;         ///< how many requests have been read
+        int current = -1;     ///< which time the request being read is for
+        bool dispatching = false;  ///< a request of the block is being read
+        struct Move {
+            Mat4 matrix;
+            bool absolute;  ///< Transform or Identity: the whole transform, not a change of it
+        };
+        std::vector<Move> moves;  ///< a transform request's, per time
+        struct Made {
+            std::unique_ptr<Shape> shape;
+            SourceLocation where;
+            PrimvarSet constants;
+        };
+        std::vector<std::vector<Made>> shapes;  ///< a shape request's shapes, per time
+        bool madeShapes() const {
+            for (auto const& made : shapes)
+                if (!made.empty()) return true;
+            return false;
+        }
+        /// Whether the block's request is one read at every time (a transform or a shape).
+        bool captured() const { return !moves.empty() || madeShapes(); }
+    };
 
     void handle(RibRequest const& request);
+    /// Reads one request with its handler (handle() has dealt with recording, conditions and motion).
+    void dispatch(RibRequest const& request);
     using Handler = void (SceneBuilder::*)(RequestReader&);
     static std::map<std::string, Handler> const& handlers();
 
@@ -175,8 +209,17 @@ private:
     void translate(RequestReader& in);
     void rotate(RequestReader& in);
     void scale(RequestReader& in);
-    /// Makes `transform` current, or fails at the request if it overflowed.
+    /// Makes `transform` current (Transform, Identity: a transform that holds still), or fails at
+    /// the request if it overflowed. Inside a motion block, keeps it for its time instead.
     void setTransform(RequestReader& in, Mat4 const& transform);
+    /// Multiplies the current transform by `change` (Translate, Rotate, ...), moving or not.
+    void concatenate(RequestReader& in, Mat4 const& change);
+    /// MotionEnd: the block's transforms become a moving transform, its shapes one moving shape.
+    void finishMotionTransform(MotionBlock& block, SourceLocation const& where);
+    void finishMotionShapes(MotionBlock& block, SourceLocation const& where);
+    void setShutter(float open, float close, SourceLocation const& where);
+    /// Lights are placed once: one under a moving transform is warned about.
+    void warnIfLightMoves(SourceLocation const& where);
     void coordinateSystem(RequestReader& in);
     void scopedCoordinateSystem(RequestReader& in);
     void coordSysTransform(RequestReader& in);
@@ -391,8 +434,7 @@ private:
         bool elseSeen;
     };
     std::vector<ConditionBlock> m_conditions;  ///< innermost last
-    int m_motionSamples = 0;  ///< inside MotionBegin: how many requests the block holds per sample
-    int m_motionSeen = 0;
+    std::optional<MotionBlock> m_motion;
     /// The standard light shaders' ambientlight: light the classic shaders add as Ka * ambient.
     Vec3 m_ambient{0.0f};
     /// Where the world's first light made from a classic light shader (LightSource, or an

@@ -26,9 +26,9 @@ float PresenceTracer::presenceDraw(HitRecord const& hit) {
     return static_cast<float>(h >> 8) * 0x1p-24f;
 }
 
-HitRecord PresenceTracer::intersect(Vec3 const& org, Vec3 const& dir, float tnear, float tfar, RayKind kind,
-                                    RayCounts& counts, MemoryArena& arena) const {
-    HitRecord hit = m_tracer.intersect(org, dir, tnear, tfar, kind, counts);
+HitRecord PresenceTracer::intersect(Vec3 const& org, Vec3 const& dir, float tnear, float tfar, float time,
+                                    RayKind kind, RayCounts& counts, MemoryArena& arena) const {
+    HitRecord hit = m_tracer.intersect(org, dir, tnear, tfar, time, kind, counts);
     if (m_active) passAbsent(&hit, 1, &tfar, kind, counts, arena);
     return hit;
 }
@@ -60,23 +60,24 @@ void PresenceTracer::passAbsent(HitRecord* hits, int count, float const* tfar, R
     arena.release(mark);
 }
 
-bool PresenceTracer::occluded(Vec3 const& org, Vec3 const& dir, float tnear, float tfar, RayCounts& counts,
-                              MemoryArena& arena) const {
-    if (!m_active) return m_tracer.occluded(org, dir, tnear, tfar, counts);
+bool PresenceTracer::occluded(Vec3 const& org, Vec3 const& dir, float tnear, float tfar, float time,
+                              RayCounts& counts, MemoryArena& arena) const {
+    if (!m_active) return m_tracer.occluded(org, dir, tnear, tfar, time, counts);
     // Any hit will not do: the first one may be a hole.
-    return intersect(org, dir, tnear, tfar, RayKind::Shadow, counts, arena).hit();
+    return intersect(org, dir, tnear, tfar, time, RayKind::Shadow, counts, arena).hit();
 }
 
-void PresenceTracer::occludedStream(Vec3 const* org, Vec3 const* dir, float const* tfar, int count, bool* blocked,
-                                    RayCounts& counts, MemoryArena& arena) const {
+void PresenceTracer::occludedStream(Vec3 const* org, Vec3 const* dir, float const* tfar, float const* time, int count,
+                                    bool* blocked, RayCounts& counts, MemoryArena& arena) const {
     if (!m_active) {
-        m_tracer.occludedStream(org, dir, tfar, count, blocked, counts);
+        m_tracer.occludedStream(org, dir, tfar, time, count, blocked, counts);
         return;
     }
     if (count <= 0) return;
     MemoryArena::Mark mark = arena.mark();
     HitRecord* hits = arena.allocArray<HitRecord>(static_cast<size_t>(count));
-    for (int i = 0; i < count; ++i) hits[i] = m_tracer.intersect(org[i], dir[i], 0.0f, tfar[i], RayKind::Shadow, counts);
+    for (int i = 0; i < count; ++i)
+        hits[i] = m_tracer.intersect(org[i], dir[i], 0.0f, tfar[i], time ? time[i] : 0.0f, RayKind::Shadow, counts);
     passAbsent(hits, count, tfar, RayKind::Shadow, counts, arena);
     for (int i = 0; i < count; ++i) blocked[i] = hits[i].hit();
     arena.release(mark);

@@ -25,18 +25,18 @@ public:
     RayTracer const& tracer() const { return m_tracer; }
 
     /// The nearest present hit along the ray within (tnear, tfar).
-    HitRecord intersect(Vec3 const& org, Vec3 const& dir, float tnear, float tfar, RayKind kind, RayCounts& counts,
-                        MemoryArena& arena) const;
+    HitRecord intersect(Vec3 const& org, Vec3 const& dir, float tnear, float tfar, float time, RayKind kind,
+                        RayCounts& counts, MemoryArena& arena) const;
     /// Moves each of hits[0..count) (with its ray) on past the absent surfaces
     /// it meets, staying within tfar[i] (kInfinity for every ray when tfar is null).
     void passAbsent(HitRecord* hits, int count, float const* tfar, RayKind kind, RayCounts& counts,
                     MemoryArena& arena) const;
     /// True if a present surface blocks the segment (tnear, tfar).
-    bool occluded(Vec3 const& org, Vec3 const& dir, float tnear, float tfar, RayCounts& counts,
+    bool occluded(Vec3 const& org, Vec3 const& dir, float tnear, float tfar, float time, RayCounts& counts,
                   MemoryArena& arena) const;
-    /// blocked[i] as occluded() gives it for the segment (0, tfar[i]) of ray i.
-    void occludedStream(Vec3 const* org, Vec3 const* dir, float const* tfar, int count, bool* blocked,
-                        RayCounts& counts, MemoryArena& arena) const;
+    /// blocked[i] as occluded() gives it for the segment (0, tfar[i]) of ray i at time[i].
+    void occludedStream(Vec3 const* org, Vec3 const* dir, float const* tfar, float const* time, int count,
+                        bool* blocked, RayCounts& counts, MemoryArena& arena) const;
 
     /// The random number in [0, 1) that decides whether a ray stops at a hit
     /// of fractional presence: a hash of the ray and the hit, so the same

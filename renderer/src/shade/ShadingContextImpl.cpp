@@ -33,6 +33,7 @@ bool isFloatBuiltin(RixShadingContext::BuiltinId id) {
         case RixShadingContext::k_dv:
         case RixShadingContext::k_s:
         case RixShadingContext::k_t:
+        case RixShadingContext::k_time:
         case RixShadingContext::k_biasR:
         case RixShadingContext::k_PRadius: return true;
         default: return false;
@@ -200,10 +201,17 @@ int ShadingContextImpl::Builtin(BuiltinId id, RixSCType wanted, void const** res
             case k_v:
             case k_s:
             case k_t: computeParameterGroup(); break;
-            case k_dPdtime: {  // nothing moves while the shutter is open: P's motion is zero
-                auto* still = m_arena.allocArray<RtVector3>(static_cast<size_t>(numPts));
-                std::fill(still, still + numPts, RtVector3(0.0f));
-                m_builtins[id] = still;
+            case k_dPdtime: {
+                auto* velocity = m_arena.allocArray<RtVector3>(static_cast<size_t>(numPts));
+                for (int i = 0; i < numPts; ++i)
+                    velocity[i] = toRt(m_scene.shapes[m_hits[i].geomID]->velocity(m_hits[i]));
+                m_builtins[id] = velocity;
+                break;
+            }
+            case k_time: {
+                auto* time = m_arena.allocArray<RtFloat>(static_cast<size_t>(numPts));
+                for (int i = 0; i < numPts; ++i) time[i] = m_hits[i].time;
+                m_builtins[id] = time;
                 break;
             }
             default: computeSurfaceGroup(); break;

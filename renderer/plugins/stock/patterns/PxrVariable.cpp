@@ -27,6 +27,7 @@ NamedBuiltin const kBuiltins[] = {
     {"dv", RixShadingContext::k_dv, true},        {"VLen", RixShadingContext::k_VLen, true},
     {"Po", RixShadingContext::k_Po, false},       {"Non", RixShadingContext::k_Non, false},
     {"PRadius", RixShadingContext::k_PRadius, true}, {"dPdtime", RixShadingContext::k_dPdtime, false},
+    {"time", RixShadingContext::k_time, true},
 };
 
 class PxrVariable : public stockpatterns::StockPattern {

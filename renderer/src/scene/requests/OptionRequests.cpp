@@ -410,10 +410,14 @@ void SceneBuilder::riOptions(ParamList const& params, SourceLocation const& wher
         std::vector<float> const* planes = params.getFloats("Clipping", ParamType::Float);
         setClipping(planes ? *planes : std::vector<float>{}, p->location, "Option \"Ri\" \"Clipping\"");
     }
-    // The frame number is a label; the shutter matters only to motion blocks, which are warned
-    // about where they are.
+    // The frame number is a label.
     params.ignore("Frame");
-    params.ignore("Shutter");
+    if (Param const* p = params.take("Shutter")) {
+        std::vector<float> const* times = params.getFloats("Shutter", ParamType::Float);
+        if (!times || times->size() != 2)
+            throw RibError(p->location, "Option \"Ri\" \"Shutter\" takes two numbers (open close)");
+        setShutter((*times)[0], (*times)[1], p->location);
+    }
     if (params.has("CropWindow")) {
         std::vector<float> const* crop = params.getFloats("CropWindow", ParamType::Float);
         checkCropWindow(crop ? *crop : std::vector<float>{}, params.find("CropWindow")->location,
@@ -481,7 +485,12 @@ void SceneBuilder::worldBegin(RequestReader& in) {
         in.fail(in.where(), "the camera transform is singular (a zero scale?)");
     m_namedSpaces["camera"] = glm::inverse(m_scene.camera.worldToCamera);
     m_namedSpaces["world"] = Mat4(1.0f);
+    if (state().motion && m_scene.shutterClose > m_scene.shutterOpen)
+        warnOnce("camera motion", in.where(),
+                 "the camera's transform moves (a motion block before WorldBegin): the camera does not, it stands "
+                 "where it is as the shutter opens (only shapes are blurred)");
     state().transform = Mat4(1.0f);
+    state().motion = nullptr;
     m_inWorld = true;
     // Worlds that are not wanted are read (for their errors and state) but not built.
     m_skipWorld = (!m_sink && m_keptFrame) || (m_options.frame >= 0 && m_frameNumber != m_options.frame);
@@ -543,9 +552,16 @@ void SceneBuilder::checkCropWindow(std::vector<float> const& window, SourceLocat
 }
 
 void SceneBuilder::shutter(RequestReader& in) {
-    // Open and close times matter only to motion blocks, which are warned about where they are.
-    in.numbers(2, "open close");
+    std::vector<float> const times = in.numbers(2, "open close");
     in.finish();
+    setShutter(times[0], times[1], in.where());
+}
+
+void SceneBuilder::setShutter(float open, float close, SourceLocation const& where) {
+    if (!std::isfinite(open) || !std::isfinite(close)) throw RibError(where, "Shutter times must be finite numbers");
+    if (close < open) throw RibError(where, "Shutter closes before it opens (open close, in that order)");
+    m_scene.shutterOpen = open;
+    m_scene.shutterClose = close;
 }
 
 void SceneBuilder::shadingRate(RequestReader& in) {

@@ -335,6 +335,7 @@ void SceneBuilder::makeLightFrom(std::string const& request, std::string const& 
         m_scene.dropped.push_back("light \"" + handle + "\" (" + type + ") has zero intensity");
         return;
     }
+    warnIfLightMoves(where);
     m_lightHandles[handle] = m_scene.lights.size();
     m_scene.lights.push_back(std::move(light));
     if (request == "LightSource" && type.rfind("Pxr", 0) != 0) {
@@ -486,6 +487,13 @@ bool SceneBuilder::shapeAsLight(char const* lightType, Mat4 const& lightToWorld,
     return true;
 }
 
+void SceneBuilder::warnIfLightMoves(SourceLocation const& where) {
+    if (state().motion && m_scene.shutterClose > m_scene.shutterOpen)
+        warnOnce("moving light", where,
+                 "a light under a moving transform does not move: it stands where the transform is as the shutter "
+                 "opens (only shapes are blurred)");
+}
+
 bool SceneBuilder::meshAsLight(Shape const& shape) {
     auto const* mesh = dynamic_cast<TriangleMesh const*>(&shape);
     if (!state().areaLight || state().areaLight->environment || !mesh ||
@@ -510,6 +518,7 @@ void SceneBuilder::addAreaLight(std::unique_ptr<Light> light, AreaLightDesc cons
         m_scene.dropped.push_back("area light \"" + area.handle + "\" (" + area.shader + ") has zero intensity");
         return;
     }
+    warnIfLightMoves(area.where);
     m_lightHandles[area.handle] = m_scene.lights.size();
     m_scene.lights.push_back(std::move(light));
     if (area.classic && !m_firstClassicLight) m_firstClassicLight = area.where;

@@ -76,6 +76,10 @@ void SceneBuilder::addShape(std::unique_ptr<Shape> shape, SourceLocation const& 
         throw RibError(where, "geometry before any WorldBegin: " + archive + " (read it from a scene with ReadArchive)");
     }
     if (!building()) return;
+    if (m_motion && m_motion->current >= 0) {  // one time of a motion block: kept until its MotionEnd
+        m_motion->shapes.back().push_back({std::move(shape), where, std::move(constants)});
+        return;
+    }
     for (int i = 0; i < 4; ++i)
         for (int j = 0; j < 4; ++j)
             if (!std::isfinite(state().transform[i][j])) throw RibError(where, "the current transform is not finite");
@@ -100,6 +104,9 @@ void SceneBuilder::addShape(std::unique_ptr<Shape> shape, SourceLocation const& 
     shape->name = state().name;
     shape->where = where;
     shape->objectToWorld = state().transform;
+    // (A deforming shape has the transform's motion in its points already.)
+    if (state().motion && !shape->deformation())
+        shape->motion = shapeMotion(*state().motion, m_scene.shutterOpen, m_scene.shutterClose);
     // Polygons under an area light are the light (seen by the rays its visibility allows).
     if (meshAsLight(*shape)) return;
     if (state().volume) {

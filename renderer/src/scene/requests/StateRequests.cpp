@@ -1,5 +1,6 @@
 // The graphics state: attribute and transform blocks, transforms, named
 // coordinate systems, motion blocks and the attributes of what follows.
+#include <algorithm>
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
@@ -75,13 +76,14 @@ void SceneBuilder::transformEnd(RequestReader& in) {
     Attributes inner = m_attributes.back();
     m_attributes.pop_back();
     inner.transform = state().transform;
+    inner.motion = state().motion;
     state() = inner;
 }
 
 void SceneBuilder::identity(RequestReader& in) {
     in.finish();
     // Inside the world, identity is world space; before it, the camera's.
-    state().transform = Mat4(1.0f);
+    setTransform(in, Mat4(1.0f));
 }
 
 // RIB matrices are row-major for row vectors (p' = p M); read as column-major
@@ -95,22 +97,46 @@ void SceneBuilder::transform(RequestReader& in) {
 void SceneBuilder::concatTransform(RequestReader& in) {
     std::vector<float> m = in.numbers(16, "a 4x4 matrix");
     in.finish();
-    setTransform(in, state().transform * glm::make_mat4(m.data()));
+    concatenate(in, glm::make_mat4(m.data()));
 }
 
-void SceneBuilder::setTransform(RequestReader& in, Mat4 const& transform) {
-    // Each number is a valid float, yet products of large ones overflow; say where it happened.
+namespace {
+/// Each number is a valid float, yet products of large ones overflow; say where it happened.
+void checkFinite(SourceLocation const& where, Mat4 const& transform) {
     for (int i = 0; i < 4; ++i)
         for (int j = 0; j < 4; ++j)
             if (!std::isfinite(transform[i][j]))
-                in.fail(in.where(), "the current transform is no longer finite (the numbers overflow a float)");
+                throw RibError(where, "the current transform is no longer finite (the numbers overflow a float)");
+}
+}  // namespace
+
+void SceneBuilder::setTransform(RequestReader& in, Mat4 const& transform) {
+    if (m_motion && m_motion->current >= 0) {
+        m_motion->moves.push_back({transform, true});
+        return;
+    }
+    checkFinite(in.where(), transform);
     state().transform = transform;
+    state().motion = nullptr;
+}
+
+void SceneBuilder::concatenate(RequestReader& in, Mat4 const& change) {
+    if (m_motion && m_motion->current >= 0) {
+        m_motion->moves.push_back({change, false});
+        return;
+    }
+    checkFinite(in.where(), state().transform * change);
+    state().transform = state().transform * change;
+    if (!state().motion) return;
+    auto moved = std::make_shared<TransformPath>(*state().motion);
+    for (Mat4& transform : moved->transforms) transform = transform * change;
+    state().motion = moved;
 }
 
 void SceneBuilder::translate(RequestReader& in) {
     std::vector<float> v = in.numbers(3, "dx dy dz");
     in.finish();
-    setTransform(in, glm::translate(state().transform, Vec3(v[0], v[1], v[2])));
+    concatenate(in, glm::translate(Mat4(1.0f), Vec3(v[0], v[1], v[2])));
 }
 
 void SceneBuilder::rotate(RequestReader& in) {
@@ -118,7 +144,7 @@ void SceneBuilder::rotate(RequestReader& in) {
     in.finish();
     Vec3 axis(v[1], v[2], v[3]);
     if (glm::length(axis) == 0.0f) in.fail(in.where(), "rotation axis is the zero vector");
-    setTransform(in, glm::rotate(state().transform, glm::radians(v[0]), glm::normalize(axis)));
+    concatenate(in, glm::rotate(Mat4(1.0f), glm::radians(v[0]), glm::normalize(axis)));
 }
 
 void SceneBuilder::scale(RequestReader& in) {
@@ -126,7 +152,7 @@ void SceneBuilder::scale(RequestReader& in) {
     in.finish();
     if (v[0] == 0.0f || v[1] == 0.0f || v[2] == 0.0f)
         m_diagnostics.warn(in.where(), "Scale by zero collapses everything that follows");
-    setTransform(in, glm::scale(state().transform, Vec3(v[0], v[1], v[2])));
+    concatenate(in, glm::scale(Mat4(1.0f), Vec3(v[0], v[1], v[2])));
 }
 
 void SceneBuilder::coordinateSystem(RequestReader& in) {
@@ -148,7 +174,7 @@ void SceneBuilder::coordSysTransform(RequestReader& in) {
     in.finish();
     auto scoped = state().scopedSpaces.find(name);
     if (scoped != state().scopedSpaces.end()) {
-        state().transform = scoped->second;
+        setTransform(in, scoped->second);
         return;
     }
     auto found = m_namedSpaces.find(name);
@@ -156,25 +182,100 @@ void SceneBuilder::coordSysTransform(RequestReader& in) {
         warnOnce("coordsys " + name, in.where(), "CoordSysTransform: no coordinate system \"" + name + "\"; ignored");
         return;
     }
-    state().transform = found->second;
+    setTransform(in, found->second);
 }
 
 void SceneBuilder::motionBegin(RequestReader& in) {
     std::vector<float> times = in.numberArray("time samples");
     in.finish();
-    if (m_motionSamples > 0) in.fail(in.where(), "MotionBegin inside a motion block");
+    if (m_motion) in.fail(in.where(), "MotionBegin inside a motion block");
     if (times.empty()) in.fail(in.where(), "a motion block needs at least one time");
-    warnOnce("motion blur", in.where(),
-             "motion blur is not rendered: each motion block uses its first time sample (shutter open)");
-    m_motionSamples = static_cast<int>(times.size());
-    m_motionSeen = 0;
+    for (size_t i = 0; i < times.size(); ++i) {
+        if (!std::isfinite(times[i])) in.fail(in.where(), "a motion block's times must be finite numbers");
+        if (i > 0 && !(times[i] > times[i - 1])) in.fail(in.where(), "a motion block's times must increase");
+    }
+    m_motion = MotionBlock{};
+    m_motion->times = std::move(times);
+    m_motion->where = in.where();
 }
 
 void SceneBuilder::motionEnd(RequestReader& in) {
     in.finish();
-    if (m_motionSamples == 0) in.fail(in.where(), "MotionEnd without a matching MotionBegin");
-    m_motionSamples = 0;
-    m_motionSeen = 0;
+    if (!m_motion) in.fail(in.where(), "MotionEnd without a matching MotionBegin");
+    MotionBlock block = std::move(*m_motion);
+    m_motion.reset();
+    if (block.read == 0) return;
+    if (block.read != static_cast<int>(block.times.size()))
+        m_diagnostics.warn(in.where(), "the motion block at " + block.where.str() + " has " +
+                                           std::to_string(block.times.size()) + " times but " +
+                                           std::to_string(block.read) + " requests (one a time is expected): it " +
+                                           "holds still, as its first request places it");
+    if (!block.moves.empty()) finishMotionTransform(block, in.where());
+    if (block.madeShapes()) finishMotionShapes(block, in.where());
+}
+
+void SceneBuilder::finishMotionTransform(MotionBlock& block, SourceLocation const& where) {
+    auto path = std::make_shared<TransformPath>();
+    Attributes const& now = state();
+    size_t const count = block.read == static_cast<int>(block.times.size()) && block.moves.size() == block.times.size()
+                             ? block.moves.size()
+                             : 1;
+    for (size_t k = 0; k < count; ++k) {
+        float const time = block.times[k];
+        MotionBlock::Move const& move = block.moves[k];
+        Mat4 const before = now.motion ? now.motion->at(time) : now.transform;
+        path->times.push_back(time);
+        path->transforms.push_back(move.absolute ? move.matrix : before * move.matrix);
+    }
+    for (Mat4 const& transform : path->transforms) checkFinite(where, transform);
+    state().transform = path->at(m_scene.shutterOpen);
+    state().motion = count > 1 ? path : nullptr;
+}
+
+void SceneBuilder::finishMotionShapes(MotionBlock& block, SourceLocation const& where) {
+    std::vector<MotionBlock::Made>& first = block.shapes.front();
+    // Deformation: the same shapes at every time, only their points changing.
+    bool same = block.read == static_cast<int>(block.times.size()) && block.shapes.size() == block.times.size();
+    bool changes = false;
+    for (size_t k = 1; same && k < block.shapes.size(); ++k) {
+        same = block.shapes[k].size() == first.size();
+        for (size_t j = 0; same && j < first.size(); ++j) {
+            Shape const& shape = *first[j].shape;
+            same = shape.points() && shape.samePointsAs(*block.shapes[k][j].shape);
+            changes = changes || (same && *shape.points() != *block.shapes[k][j].shape->points());
+        }
+    }
+    float const open = m_scene.shutterOpen, close = m_scene.shutterClose;
+    if (same && changes) {
+        std::vector<float> const steps = close > open ? shutterSteps(block.times, open, close) : std::vector<float>{open};
+        // A moving transform moves the points too: its motion is folded into theirs.
+        std::shared_ptr<ShapeMotion const> const moving =
+            state().motion ? shapeMotion(*state().motion, open, close) : nullptr;
+        for (size_t j = 0; j < first.size(); ++j) {
+            auto deformation = std::make_shared<PointSteps>();
+            for (size_t step = 0; step < steps.size(); ++step) {
+                // The points at this step, along straight lines between the block's times.
+                size_t earlier, later;
+                float f;
+                bracket(block.times, steps[step], earlier, later, f);
+                std::vector<Vec3> const& from = *block.shapes[earlier][j].shape->points();
+                std::vector<Vec3> const& to = *block.shapes[later][j].shape->points();
+                Mat4 const move = moving ? moving->at(static_cast<float>(step) / static_cast<float>(steps.size() - 1))
+                                         : Mat4(1.0f);
+                std::vector<Vec3> at(from.size());
+                for (size_t i = 0; i < at.size(); ++i) at[i] = transformPoint(move, (1.0f - f) * from[i] + f * to[i]);
+                deformation->steps.push_back(std::move(at));
+            }
+            first[j].shape->deform(std::move(deformation));
+        }
+    } else if (!same && block.shapes.size() > 1 && close > open) {
+        std::string const kind = first.empty() ? "shape" : first.front().shape->kind();
+        warnOnce("deformation " + kind, where,
+                 "the motion block at " + block.where.str() + " changes a " + kind +
+                     " from time to time; only polygons, patches and subdivision meshes whose points alone change "
+                     "are blurred, so it holds still as its first time gives it");
+    }
+    for (MotionBlock::Made& made : first) addShape(std::move(made.shape), made.where, std::move(made.constants));
 }
 
 void SceneBuilder::attribute(RequestReader& in) {

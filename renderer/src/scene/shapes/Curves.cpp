@@ -20,26 +20,26 @@ Curves::Curves(CurveData data, PrimvarSet curvePrimvars) : m_data(std::move(data
     takeSTFromPrimvars();
 }
 
-SurfaceBasics Curves::basics(HitRecord const& hit) const {
+SurfaceBasics Curves::basicsUnmoved(HitRecord const& hit) const {
     SurfaceBasics out;
     pointOnRay(hit, out);
     // Embree's curve intersection is approximate near the surface: keep new
     // rays a small fraction of the radius away, or they can hit the same tube.
     float P[4];
-    m_evaluator->evaluate(hit.primID, hit.u, hit.v, P, nullptr, nullptr, 4);
+    m_evaluator->evaluate(hit.primID, hit.u, hit.v, 0.0f, P, nullptr, nullptr, 4);
     out.pError = glm::max(out.pError, Vec3(0.02f * std::abs(P[3])));
     return out;  // (u along the segment: the hit's own parameters)
 }
 
-SurfaceTangents Curves::tangents(HitRecord const& hit) const {
+SurfaceTangents Curves::tangentsUnmoved(HitRecord const& hit) const {
     float P[4], dPdu[4];
-    m_evaluator->evaluate(hit.primID, hit.u, hit.v, P, dPdu, nullptr, 4);
+    m_evaluator->evaluate(hit.primID, hit.u, hit.v, 0.0f, P, dPdu, nullptr, 4);
     Vec3 along(dPdu[0], dPdu[1], dPdu[2]);
     Vec3 N = safeNormalize(hit.Ng);
     return {along, glm::cross(N, along)};
 }
 
-SurfaceBasics Points::basics(HitRecord const& hit) const {
+SurfaceBasics Points::basicsUnmoved(HitRecord const& hit) const {
     SurfaceBasics out;
     pointOnRay(hit, out);
     // The exact sphere normal, from the centre (Embree's is the same up to rounding).
@@ -49,13 +49,13 @@ SurfaceBasics Points::basics(HitRecord const& hit) const {
     return out;
 }
 
-void Points::primvar(Primvar const& var, HitRecord const& hit, float* out) const {
+void Points::primvarUnmoved(Primvar const& var, HitRecord const& hit, float* out) const {
     size_t const c = static_cast<size_t>(var.components);
     size_t const first = var.detail == Primvar::Detail::Uniform && var.values.size() >= (hit.primID + 1) * c ? hit.primID * c : 0;
     for (size_t k = 0; k < c; ++k) out[k] = var.values[first + k];
 }
 
-SurfaceTangents Points::tangents(HitRecord const&) const {
+SurfaceTangents Points::tangentsUnmoved(HitRecord const&) const {
     return {};  // a particle has no parameterisation: plugins build a frame from N alone
 }
 

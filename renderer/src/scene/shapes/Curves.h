@@ -25,8 +25,8 @@ public:
 
     const char* kind() const override { return "Curves"; }
     void accept(ShapeVisitor& visitor) const override { visitor.visit(*this); }
-    SurfaceBasics basics(HitRecord const& hit) const override;
-    SurfaceTangents tangents(HitRecord const& hit) const override;
+    SurfaceBasics basicsUnmoved(HitRecord const& hit) const override;
+    SurfaceTangents tangentsUnmoved(HitRecord const& hit) const override;
     CurveData const& data() const { return m_data; }
     /// The tubes' centre lines and radii as the ray tracer built them.
     void attach(std::shared_ptr<SurfaceEvaluator const> evaluator) const { m_evaluator = std::move(evaluator); }
@@ -42,11 +42,11 @@ public:
     explicit Points(std::vector<Vec4> spheres) : m_spheres(std::move(spheres)) {}
     const char* kind() const override { return "Points"; }
     void accept(ShapeVisitor& visitor) const override { visitor.visit(*this); }
-    SurfaceBasics basics(HitRecord const& hit) const override;
-    SurfaceTangents tangents(HitRecord const& hit) const override;
+    SurfaceBasics basicsUnmoved(HitRecord const& hit) const override;
+    SurfaceTangents tangentsUnmoved(HitRecord const& hit) const override;
     std::vector<Vec4> const& spheres() const { return m_spheres; }
     /// A particle's own value (uniform: one per point), else the constant one.
-    void primvar(Primvar const& var, HitRecord const& hit, float* out) const override;
+    void primvarUnmoved(Primvar const& var, HitRecord const& hit, float* out) const override;
 
 private:
     std::vector<Vec4> m_spheres;  ///< centre and radius, world space

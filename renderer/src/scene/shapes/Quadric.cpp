@@ -23,7 +23,7 @@ double Quadric::azimuth(double x, double y) {
     return phi < 0.0 ? phi + quadric::kTwoPi : phi;
 }
 
-SurfaceBasics Quadric::basics(HitRecord const& hit) const {
+SurfaceBasics Quadric::basicsUnmoved(HitRecord const& hit) const {
     LocalSurface local = surfaceAtHit(hit);
     SurfaceBasics out;
     out.P = transformPoint(m_objectToWorld, local.P);
@@ -36,7 +36,7 @@ SurfaceBasics Quadric::basics(HitRecord const& hit) const {
     return out;
 }
 
-SurfaceTangents Quadric::tangents(HitRecord const& hit) const {
+SurfaceTangents Quadric::tangentsUnmoved(HitRecord const& hit) const {
     LocalSurface local = surfaceAtHit(hit);
     return {transformVector(m_objectToWorld, local.dPdu), transformVector(m_objectToWorld, local.dPdv)};
 }

@@ -18,8 +18,8 @@ public:
     Quadric(Mat4 const& objectToWorld, bool reverseOrientation, float thetaMaxDegrees);
 
     void accept(ShapeVisitor& visitor) const override { visitor.visit(*this); }
-    SurfaceBasics basics(HitRecord const& hit) const override;
-    SurfaceTangents tangents(HitRecord const& hit) const override;
+    SurfaceBasics basicsUnmoved(HitRecord const& hit) const override;
+    SurfaceTangents tangentsUnmoved(HitRecord const& hit) const override;
 
     /// Object-space hit: distance and surface parameters.
     struct LocalHit {

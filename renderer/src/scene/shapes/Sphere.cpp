@@ -72,8 +72,8 @@ std::optional<Quadric::Uv> Sphere::parametersOf(DVec3 p) const {
     return swept(azimuth(p.x, p.y), std::clamp(v, 0.0, 1.0));
 }
 
-SurfaceParameters Sphere::parameters(HitRecord const& hit) const {
-    if (!m_whole) return Quadric::parameters(hit);
+SurfaceParameters Sphere::parametersUnmoved(HitRecord const& hit) const {
+    if (!m_whole) return Quadric::parametersUnmoved(hit);
     Uv uv = parametersOf(pointOnSphere(hit)).value_or(Uv{0.0f, 0.0f});  // (a whole sphere refuses no point)
     return {uv.u, uv.v, uv.u, uv.v};
 }
@@ -99,7 +99,7 @@ Quadric::LocalSurface Sphere::surfaceAtHit(HitRecord const& hit) const {
     DVec3 p = pointOnSphere(hit);
     double rho = std::sqrt(p.x * p.x + p.y * p.y);
     if (!(rho > 0.0)) {  // a pole: the azimuth is u's
-        double phi = parameters(hit).u * phiMax();
+        double phi = parametersUnmoved(hit).u * phiMax();
         return surfaceAt(p, std::cos(phi), std::sin(phi));
     }
     return surfaceAt(p, p.x / rho, p.y / rho);

@@ -18,7 +18,7 @@ public:
     LocalSurface surfaceAtHit(HitRecord const& hit) const override;
     void boundsLocal(Vec3& lower, Vec3& upper) const override;
     /// A whole sphere's from the hit point (its hits carry none); a cut one's from the hit.
-    SurfaceParameters parameters(HitRecord const& hit) const override;
+    SurfaceParameters parametersUnmoved(HitRecord const& hit) const override;
     std::optional<Vec4> placedSphere() const override { return m_placed; }
 
 private:

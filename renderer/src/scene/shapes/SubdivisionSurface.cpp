@@ -104,8 +104,19 @@ SubdivisionSurface::SubdivisionSurface(SubdivisionData data, bool flipNormals)
     takeSTFromPrimvars();
 }
 
-SurfaceBasics SubdivisionSurface::basics(HitRecord const& hit) const {
-    SurfaceTangents t = tangents(hit);
+bool SubdivisionSurface::samePointsAs(Shape const& other) const {
+    auto const* mesh = dynamic_cast<SubdivisionSurface const*>(&other);
+    return mesh && mesh->m_data.P.size() == m_data.P.size() && mesh->m_data.indices == m_data.indices &&
+           mesh->m_data.faceSizes == m_data.faceSizes;
+}
+
+void SubdivisionSurface::deform(std::shared_ptr<PointSteps const> steps) {
+    m_data.P = steps->steps.front();
+    Shape::deform(std::move(steps));
+}
+
+SurfaceBasics SubdivisionSurface::basicsUnmoved(HitRecord const& hit) const {
+    SurfaceTangents t = tangentsUnmoved(hit);
     SurfaceBasics out;
     // The hit is on Embree's tessellation: P where the ray met it keeps
     // secondary rays off that same surface.
@@ -120,13 +131,14 @@ SurfaceBasics SubdivisionSurface::basics(HitRecord const& hit) const {
     return out;
 }
 
-SurfaceTangents SubdivisionSurface::tangents(HitRecord const& hit) const {
+SurfaceTangents SubdivisionSurface::tangentsUnmoved(HitRecord const& hit) const {
     float P[3], dPdu[3], dPdv[3];
-    m_evaluator->evaluate(hit.primID, hit.u, hit.v, P, dPdu, dPdv, 3);
+    // A deforming mesh's limit surface is blended between the shapes around the hit's time.
+    m_evaluator->evaluate(hit.primID, hit.u, hit.v, m_deformation ? hit.time : 0.0f, P, dPdu, dPdv, 3);
     return {Vec3(dPdu[0], dPdu[1], dPdu[2]), Vec3(dPdv[0], dPdv[1], dPdv[2])};
 }
 
-void SubdivisionSurface::primvar(Primvar const& var, HitRecord const& hit, float* out) const {
+void SubdivisionSurface::primvarUnmoved(Primvar const& var, HitRecord const& hit, float* out) const {
     size_t const c = static_cast<size_t>(var.components);
     if (var.detail == Primvar::Detail::Uniform && (hit.primID + 1) * c <= var.values.size()) {
         std::memcpy(out, var.values.data() + hit.primID * c, c * sizeof(float));
@@ -136,7 +148,7 @@ void SubdivisionSurface::primvar(Primvar const& var, HitRecord const& hit, float
         var.parametric->at(hit.primID, hit.u, hit.v, out);
         return;
     }
-    Shape::primvar(var, hit, out);  // a constant
+    Shape::primvarUnmoved(var, hit, out);  // a constant
 }
 
 }  // namespace bxdflab

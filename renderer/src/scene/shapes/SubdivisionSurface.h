@@ -54,14 +54,17 @@ public:
 
     const char* kind() const override { return "SubdivisionMesh"; }
     void accept(ShapeVisitor& visitor) const override { visitor.visit(*this); }
-    SurfaceBasics basics(HitRecord const& hit) const override;
-    SurfaceTangents tangents(HitRecord const& hit) const override;
+    SurfaceBasics basicsUnmoved(HitRecord const& hit) const override;
+    SurfaceTangents tangentsUnmoved(HitRecord const& hit) const override;
     /// A primvar's value on the limit surface (slot: its index in data().primvars).
     void limitValue(unsigned slot, unsigned face, float u, float v, float* out, unsigned count) const {
         m_evaluator->evaluateAttribute(slot, face, u, v, out, count);
     }
-    void primvar(Primvar const& var, HitRecord const& hit, float* out) const override;
+    void primvarUnmoved(Primvar const& var, HitRecord const& hit, float* out) const override;
     SubdivisionData const& data() const { return m_data; }
+    bool samePointsAs(Shape const& other) const override;
+    std::vector<Vec3> const* points() const override { return &m_data.P; }
+    void deform(std::shared_ptr<PointSteps const> steps) override;
     /// The limit surface as the ray tracer built it (evaluated at hits).
     void attach(std::shared_ptr<SurfaceEvaluator const> evaluator) const { m_evaluator = std::move(evaluator); }
 

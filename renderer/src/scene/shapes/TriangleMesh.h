@@ -53,12 +53,16 @@ public:
 
     const char* kind() const override { return m_kind; }
     void accept(ShapeVisitor& visitor) const override { visitor.visit(*this); }
-    SurfaceBasics basics(HitRecord const& hit) const override;
-    SurfaceTangents tangents(HitRecord const& hit) const override;
+    SurfaceBasics basicsUnmoved(HitRecord const& hit) const override;
+    SurfaceTangents tangentsUnmoved(HitRecord const& hit) const override;
     /// (u, v) from the mesh's uv (else the barycentric coordinates), (s, t) from its st (else u, v).
-    SurfaceParameters parameters(HitRecord const& hit) const override;
-    void primvar(Primvar const& var, HitRecord const& hit, float* out) const override;
+    SurfaceParameters parametersUnmoved(HitRecord const& hit) const override;
+    void primvarUnmoved(Primvar const& var, HitRecord const& hit, float* out) const override;
     MeshData const& data() const { return m_data; }
+
+    bool samePointsAs(Shape const& other) const override;
+    std::vector<Vec3> const* points() const override { return &m_data.P; }
+    void deform(std::shared_ptr<PointSteps const> steps) override;
     /// +1 or -1: the sign that turns (p1 - p0) x (p2 - p0) into the facet normal.
     float orientation() const { return m_orientation; }
 
@@ -69,6 +73,9 @@ private:
         return (1.0f - b1 - b2) * values[tri[0]] + b1 * values[tri[1]] + b2 * values[tri[2]];
     }
     Vec2 uvAt(unsigned prim, float b1, float b2) const;
+    /// The corners of triangle prim at shutter time `time`.
+    void corners(unsigned prim, float time, Vec3& p0, Vec3& p1, Vec3& p2) const;
+    Vec3 velocityUnmoved(HitRecord const& hit) const override;
 
     MeshData m_data;
     const char* m_kind;
