@@ -114,6 +114,13 @@ add_test(NAME cli.further_displays
          COMMAND sh -c "mkdir -p displays && $<TARGET_FILE:rixrender> --quiet --spp 1 -o displays/beauty.exr ${CMAKE_CURRENT_SOURCE_DIR}/scenes/displays.rib && oiiotool --info -v displays/beauty.normal.exr displays/beauty.depth.tif")
 set_tests_properties(cli.further_displays PROPERTIES WORKING_DIRECTORY ${CLI_OUT}
   PASS_REGULAR_EXPRESSION "displays.rib:7:1: Display \"\\+preview\" \"framebuffer\" would show a further image in a window.*wrote displays/beauty.exr\nrixrender: wrote displays/beauty.normal.exr\nrixrender: wrote displays/beauty.depth.tif.*channel list: N.x, N.y, N.z.*beauty.depth.tif : +16 x +16, 1 channel, float tiff")
+# Every image a frame writes is checked before it renders: a further display that cannot be written stops
+# rixrender before the main image is written, not after.
+add_test(NAME cli.further_display_unwritable
+         COMMAND sh -c "mkdir -p blocked/beauty.normal.exr && $<TARGET_FILE:rixrender> --quiet --spp 1 -o blocked/beauty.exr ${CMAKE_CURRENT_SOURCE_DIR}/scenes/displays.rib; echo exit $? && ls blocked")
+set_tests_properties(cli.further_display_unwritable PROPERTIES WORKING_DIRECTORY ${CLI_OUT}
+  PASS_REGULAR_EXPRESSION "cannot write \"blocked/beauty.normal.exr\": it is a folder.*exit 1\nbeauty.normal.exr\n$"
+  FAIL_REGULAR_EXPRESSION "wrote blocked")
 add_test(NAME cli.tiff_output COMMAND rixrender --quiet --spp 1 -o ch06.tif ${PROJECT_SOURCE_DIR}/scenes/ch06/diffuse.rib)
 set_tests_properties(cli.tiff_output PROPERTIES WORKING_DIRECTORY ${CLI_OUT} PASS_REGULAR_EXPRESSION "wrote ch06.tif")
 

@@ -49,7 +49,7 @@ std::string besideImage(std::string const& imagePath, DisplayDesc const& display
 /// Writes one display's image of a rendered film: RGBA for the shaded colour ("rgb", "rgba", "Ci"), else the
 /// channels its mode asks for.
 void writeDisplay(std::string const& path, DisplayDesc const& display, Film const& film) {
-    DisplayLayout const layout = displayLayout(display.mode);
+    DisplayLayout const& layout = display.layout;
     if (layout.channels.empty() || (layout.shadedOnly() && layout.channels.front().quantity == Quantity::Color)) {
         writeImage(path, film.rgba(), film.width(), film.height(), 4);
         return;
@@ -146,7 +146,15 @@ int main(int argc, char** argv) {
             }
             int const number = severalFrames ? (scene.frame >= 0 ? scene.frame : rendered + 1) : -1;
             std::string imagePath = output.empty() && rawFd < 0 ? outputFor(scene.display) : numbered(output, number);
-            if (!imagePath.empty()) checkWritable(imagePath);
+            // Every image the frame writes is checked before it renders.
+            std::vector<std::string> morePaths;
+            if (!imagePath.empty()) {
+                checkWritable(imagePath);
+                for (DisplayDesc const& display : scene.moreDisplays) {
+                    morePaths.push_back(output.empty() ? outputFor(display) : besideImage(imagePath, display));
+                    checkWritable(morePaths.back());
+                }
+            }
             if (number >= 0) std::fprintf(stderr, "rixrender: frame %d\n", number);
 
             settings.progress = !quiet && isatty(STDERR_FILENO);
@@ -154,14 +162,9 @@ int main(int argc, char** argv) {
             Film film = renderer.render();
             if (rawFd >= 0 && !writeRawImage(rawFd, film))
                 throw RenderError("cannot write the raw image to descriptor " + std::to_string(rawFd));
-            std::vector<std::string> morePaths;
             if (!imagePath.empty()) {
                 writeDisplay(imagePath, scene.display, film);
-                for (DisplayDesc const& display : scene.moreDisplays) {
-                    morePaths.push_back(output.empty() ? outputFor(display) : besideImage(imagePath, display));
-                    checkWritable(morePaths.back());
-                    writeDisplay(morePaths.back(), display, film);
-                }
+                for (size_t k = 0; k < morePaths.size(); ++k) writeDisplay(morePaths[k], scene.moreDisplays[k], film);
             }
             if (!variance.empty())
                 writeImage(numbered(variance, number), film.varianceOfMean(), film.width(), film.height(), 3);

@@ -371,8 +371,8 @@ Renderer::Renderer(Scene& scene, RenderSettings settings, Diagnostics& diagnosti
     }
     for (std::string const& dropped : scene.dropped) effects.skip("dropped at load", dropped);
     if (r.tracer->passesBackFaces()) effects.simulate("one-sided surfaces (Sides 1): camera rays pass their backs");
-    std::vector<DisplayLayout> layouts = {displayLayout(scene.display.mode)};
-    for (DisplayDesc const& display : scene.moreDisplays) layouts.push_back(displayLayout(display.mode));
+    std::vector<DisplayLayout> layouts = {scene.display.layout};
+    for (DisplayDesc const& display : scene.moreDisplays) layouts.push_back(display.layout);
     r.surfaceRecord = SurfaceRecord(layouts);
     if (r.surfaceRecord.any())
         effects.simulate("displays of the surface the camera sees (depth, position, normals, parameters)");

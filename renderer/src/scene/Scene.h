@@ -15,6 +15,7 @@
 #include "core/Math.h"
 #include "core/TextureLocator.h"
 #include "parse/ParamList.h"
+#include "scene/DisplayChannels.h"
 #include "scene/lights/Light.h"
 #include "scene/shapes/Shape.h"
 
@@ -47,6 +48,7 @@ struct DisplayDesc {
     std::string type = "file";
     std::string mode = "rgba";
     SourceLocation where;
+    DisplayLayout layout = displayLayout("rgba");  ///< the channels `mode` names, read once
 };
 
 struct IntegratorDesc {

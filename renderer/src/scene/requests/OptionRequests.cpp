@@ -36,7 +36,7 @@ void SceneBuilder::display(RequestReader& in) {
     bool const added = !name.empty() && name[0] == '+';
     if (added) name.erase(0, 1);
     bool const further = added && m_scene.display.where.known();
-    DisplayLayout const layout = displayLayout(mode);
+    DisplayLayout layout = displayLayout(mode);
     if (!layout.unknown.empty()) {
         // Shader outputs (arbitrary output variables) need a shading language this renderer does not have.
         std::string const problem = std::string("Display \"") + (added ? "+" : "") + name + "\" mode \"" + mode +
@@ -48,6 +48,7 @@ void SceneBuilder::display(RequestReader& in) {
         }
         warnOnce("display mode " + layout.unknown, in.where(), problem + "; the shaded image is written instead");
         mode = "rgba";
+        layout = displayLayout(mode);
     }
     if (further) {
         if (type == "framebuffer" || type == "it")
@@ -55,10 +56,10 @@ void SceneBuilder::display(RequestReader& in) {
                      "Display \"+" + name + "\" \"" + type + "\" would show a further image in a window, which this "
                      "renderer does not open; skipped");
         else
-            m_scene.moreDisplays.push_back({name, type, mode, in.where()});
+            m_scene.moreDisplays.push_back({name, type, mode, in.where(), layout});
         return;
     }
-    m_scene.display = {name, type, mode, in.where()};
+    m_scene.display = {name, type, mode, in.where(), layout};
     m_scene.moreDisplays.clear();
     displayFilterAndExposure(params);
 }
