@@ -1434,3 +1434,19 @@ TEST_CASE("a NURBS sphere shades as smoothly as the quadric, its poles included"
     CHECK(sum / (64 * 64) < 0.0035);
     CHECK(worst < 0.025);
 }
+
+TEST_CASE("dicing controls and 8-bit or float quantizing are accepted without a word", "[rib]") {
+    Diagnostics diagnostics(false);
+    Scene scene = test::parseRib("Quantize \"rgba\" 255 0 255 0.5\nQuantize \"z\" 0 0 0 0\n"
+                                 "GeometricApproximation \"motionfactor\" 0\nWorldBegin\n"
+                                 "ShadingInterpolation \"smooth\"\nShadingInterpolation \"constant\"\n"
+                                 "Sphere 1 -1 1 360\nWorldEnd\n",
+                                 diagnostics);
+    CHECK(scene.shapes.size() == 1u);
+    CHECK(diagnostics.entries().empty());
+    // A depth the image formats here do not write is said; a misspelt interpolation is an error at its line.
+    test::parseRib("Quantize \"rgba\" 65535 0 65535 0.5\n", diagnostics);
+    CHECK(test::warningsContaining(diagnostics, "file format's own depth") == 1);
+    CHECK_THROWS_WITH(test::parseRib("WorldBegin\nShadingInterpolation \"bumpy\"\nWorldEnd\n", diagnostics),
+                      Catch::Contains("test.rib:2:1") && Catch::Contains("\"constant\" or \"smooth\""));
+}

@@ -51,6 +51,9 @@ std::map<std::string, SceneBuilder::Handler> const& SceneBuilder::handlers() {
         {"CropWindow", &SceneBuilder::cropWindow},
         {"Shutter", &SceneBuilder::shutter},
         {"ShadingRate", &SceneBuilder::shadingRate},
+        {"ShadingInterpolation", &SceneBuilder::shadingInterpolation},
+        {"GeometricApproximation", &SceneBuilder::geometricApproximation},
+        {"Quantize", &SceneBuilder::quantize},
         // The graphics state.
         {"AttributeBegin", &SceneBuilder::attributeBegin},
         {"AttributeEnd", &SceneBuilder::attributeEnd},

@@ -170,6 +170,9 @@ private:
     void cropWindow(RequestReader& in);
     void shutter(RequestReader& in);
     void shadingRate(RequestReader& in);
+    void shadingInterpolation(RequestReader& in);
+    void geometricApproximation(RequestReader& in);
+    void quantize(RequestReader& in);
     /// A crop window (xmin xmax ymin ymax): the whole image is accepted, a part of it warned about.
     void checkCropWindow(std::vector<float> const& window, SourceLocation const& where, std::string const& what);
     void ignore(RequestReader& in);

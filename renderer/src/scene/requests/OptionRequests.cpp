@@ -571,4 +571,33 @@ void SceneBuilder::shadingRate(RequestReader& in) {
     in.finish();
 }
 
+void SceneBuilder::shadingInterpolation(RequestReader& in) {
+    // Whether a REYES renderer shades micropolygons flat or smoothly: both are finer than a pixel.
+    std::string const kind = in.string("\"constant\" or \"smooth\"");
+    in.finish();
+    if (kind != "constant" && kind != "smooth")
+        in.fail(in.where(), "ShadingInterpolation must be \"constant\" or \"smooth\", not \"" + kind + "\"");
+}
+
+void SceneBuilder::geometricApproximation(RequestReader& in) {
+    // How finely a REYES renderer dices surfaces ("flatness", "motionfactor", ...): surfaces here are
+    // intersected as they are, or tessellated by their own rule.
+    in.string("approximation type");
+    in.number("its value");
+    in.finish();
+}
+
+void SceneBuilder::quantize(RequestReader& in) {
+    std::string const channels = in.string("\"rgba\" or \"z\"");
+    std::vector<float> const q = in.numbers(4, "one min max dither");
+    in.finish();
+    // RenderMan's 8-bit (255) and floating-point (0) settings are what the image formats here write;
+    // other depths are the file format's, and dithering is not added.
+    if (q[0] != 0.0f && q[0] != 255.0f)
+        warnOnce("quantize", in.where(),
+                 "Quantize \"" + channels + "\" " + std::to_string(static_cast<long>(q[0])) +
+                     ": the image is written with its file format's own depth (8-bit PNG and JPEG, float EXR and "
+                     "TIFF)");
+}
+
 }  // namespace bxdflab
