@@ -73,6 +73,14 @@ TEST_CASE("Motion blocks move the transform: shapes are where it puts them at ea
         CHECK(shape->motion->at(1.0f)[3].y == Approx(0.0f).margin(1e-6));
     }
     CHECK(test::warningsContaining(diagnostics, "motion") == 0);
+    // A time that repeats the first does not make the block still: there and back again moves.
+    Scene back = sceneWith("Shutter 0 1\nWorldBegin\nMotionBegin [0 0.5 1]\nTranslate 0 0 0\nTranslate 2 0 0\n"
+                           "Translate 0 0 0\nMotionEnd\nSphere 1 -1 1 360\nWorldEnd\n",
+                           diagnostics);
+    REQUIRE(back.shapes.size() == 1);
+    REQUIRE(back.shapes[0]->motion);
+    CHECK(back.shapes[0]->motion->at(0.5f)[3].x == Approx(2.0f));
+    CHECK(back.shapes[0]->motion->at(1.0f)[3].x == Approx(0.0f).margin(1e-6));
     RayTracer tracer(scene);
     // A ray along x = 2 misses the sphere as the shutter opens and meets it as it closes.
     CHECK_FALSE(traceAt(tracer, Vec3(2, 0, 0), Vec3(0, 0, 1), 0.0f).hit());
@@ -137,10 +145,11 @@ TEST_CASE("Motion blocks of polygons deform them, and other changes hold still w
         "MotionBegin [0 1]\nColor 1 0 0\nColor 0 1 0\nMotionEnd\n"
         "TransformBegin\nTranslate 10 0 0\nMotionBegin [0 1]\nSphere 1 -1 1 360\nSphere 2 -2 2 360\nMotionEnd\n"
         "TransformEnd\n"
+        "MotionBegin [0 0.5 1]\nCylinder 1 -1 1 360\nCylinder 1 -1 1 360\nCylinder 1 -1 1 360\nMotionEnd\n"
         "MotionBegin [0 1]\nTranslate 5 0 0\nMotionEnd\n"
         "WorldEnd\n",
         diagnostics);
-    REQUIRE(scene.shapes.size() == 2);
+    REQUIRE(scene.shapes.size() == 3);
     auto const* mesh = dynamic_cast<TriangleMesh const*>(scene.shapes[0].get());
     REQUIRE(mesh);
     REQUIRE(mesh->deformation());
@@ -159,6 +168,9 @@ TEST_CASE("Motion blocks of polygons deform them, and other changes hold still w
     // A sphere that changes its radius is not blurred: it keeps its first one, and says so.
     CHECK_FALSE(scene.shapes[1]->moves());
     CHECK(test::warningsContaining(diagnostics, "changes a Sphere") == 1);
+    // One written again unchanged at every time is simply still.
+    CHECK_FALSE(scene.shapes[2]->moves());
+    CHECK(test::warningsContaining(diagnostics, "Cylinder") == 0);
     // A block with fewer requests than times holds still, with a warning; an attribute's first value holds.
     CHECK(test::warningsContaining(diagnostics, "has 2 times but 1 requests") == 1);
     CHECK(test::warningsContaining(diagnostics, "Color") == 0);

@@ -205,6 +205,15 @@ void SceneBuilder::missingFile(SourceLocation const& where, std::string const& m
     m_diagnostics.warn(where, message + " (rendering without it; --strict makes this an error)");
 }
 
+namespace {
+/// Whether two requests' arguments are the same values (wherever they were written).
+bool sameArguments(std::vector<RibValue> const& a, std::vector<RibValue> const& b) {
+    return std::equal(a.begin(), a.end(), b.begin(), b.end(), [](RibValue const& x, RibValue const& y) {
+        return x.kind == y.kind && x.numbers == y.numbers && x.strings == y.strings;
+    });
+}
+}  // namespace
+
 void SceneBuilder::handle(RibRequest const& request) {
     if (m_recording) {
         // Inside ObjectBegin/ArchiveBegin: keep the requests for later.
@@ -229,7 +238,10 @@ void SceneBuilder::handle(RibRequest const& request) {
     if (m_motion && !m_motion->dispatching && request.name != "MotionEnd") {
         MotionBlock& block = *m_motion;
         int const time = block.read++;
-        if (time == 0) block.request = request.name;
+        if (time == 0) {
+            block.request = request.name;
+            block.first = request.args;
+        }
         if (time > 0 && (request.name != block.request || time >= static_cast<int>(block.times.size()))) {
             warnOnce("motion block requests", request.where,
                      request.name + " in the motion block at " + block.where.str() + " is not another time of its " +
@@ -238,6 +250,7 @@ void SceneBuilder::handle(RibRequest const& request) {
             return;
         }
         if (time > 0 && !block.captured()) return;  // an attribute: its first value holds
+        if (time > 0) block.changes = block.changes || !sameArguments(request.args, block.first);
         block.current = time;
         block.dispatching = true;
         block.shapes.emplace_back();

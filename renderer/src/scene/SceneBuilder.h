@@ -99,6 +99,8 @@ private:
         std::vector<float> times;
         SourceLocation where;
         std::string request;  ///< the request of the first time (the others must repeat it)
+        std::vector<RibValue> first;  ///< its arguments
+        bool changes = false;         ///< some time's arguments differ from the first's (else nothing moves)
         int read = 0;         ///< how many requests have been read
         int current = -1;     ///< which time the request being read is for
         bool dispatching = false;  ///< a request of the block is being read
@@ -218,7 +220,7 @@ private:
     /// Multiplies the current transform by `change` (Translate, Rotate, ...), moving or not.
     void concatenate(RequestReader& in, Mat4 const& change);
     /// MotionEnd: the block's transforms become a moving transform, its shapes one moving shape.
-    void finishMotionTransform(MotionBlock& block, SourceLocation const& where);
+    void finishMotionTransform(MotionBlock& block, RequestReader& in);
     void finishMotionShapes(MotionBlock& block, SourceLocation const& where);
     void setShutter(float open, float close, SourceLocation const& where);
     /// Lights are placed once: one under a moving transform is warned about.

@@ -102,11 +102,11 @@ void SceneBuilder::concatTransform(RequestReader& in) {
 
 namespace {
 /// Each number is a valid float, yet products of large ones overflow; say where it happened.
-void checkFinite(SourceLocation const& where, Mat4 const& transform) {
+void checkFinite(RequestReader& in, Mat4 const& transform) {
     for (int i = 0; i < 4; ++i)
         for (int j = 0; j < 4; ++j)
             if (!std::isfinite(transform[i][j]))
-                throw RibError(where, "the current transform is no longer finite (the numbers overflow a float)");
+                in.fail(in.where(), "the current transform is no longer finite (the numbers overflow a float)");
 }
 }  // namespace
 
@@ -115,7 +115,7 @@ void SceneBuilder::setTransform(RequestReader& in, Mat4 const& transform) {
         m_motion->moves.push_back({transform, true});
         return;
     }
-    checkFinite(in.where(), transform);
+    checkFinite(in, transform);
     state().transform = transform;
     state().motion = nullptr;
 }
@@ -125,7 +125,7 @@ void SceneBuilder::concatenate(RequestReader& in, Mat4 const& change) {
         m_motion->moves.push_back({change, false});
         return;
     }
-    checkFinite(in.where(), state().transform * change);
+    checkFinite(in, state().transform * change);
     state().transform = state().transform * change;
     if (!state().motion) return;
     auto moved = std::make_shared<TransformPath>(*state().motion);
@@ -210,16 +210,15 @@ void SceneBuilder::motionEnd(RequestReader& in) {
                                            std::to_string(block.times.size()) + " times but " +
                                            std::to_string(block.read) + " requests (one a time is expected): it " +
                                            "holds still, as its first request places it");
-    if (!block.moves.empty()) finishMotionTransform(block, in.where());
+    if (!block.moves.empty()) finishMotionTransform(block, in);
     if (block.madeShapes()) finishMotionShapes(block, in.where());
 }
 
-void SceneBuilder::finishMotionTransform(MotionBlock& block, SourceLocation const& where) {
+void SceneBuilder::finishMotionTransform(MotionBlock& block, RequestReader& in) {
     auto path = std::make_shared<TransformPath>();
     Attributes const& now = state();
-    size_t const count = block.read == static_cast<int>(block.times.size()) && block.moves.size() == block.times.size()
-                             ? block.moves.size()
-                             : 1;
+    bool const complete = block.read == static_cast<int>(block.times.size()) && block.moves.size() == block.times.size();
+    size_t const count = complete && block.changes ? block.moves.size() : 1;
     for (size_t k = 0; k < count; ++k) {
         float const time = block.times[k];
         MotionBlock::Move const& move = block.moves[k];
@@ -227,26 +226,28 @@ void SceneBuilder::finishMotionTransform(MotionBlock& block, SourceLocation cons
         path->times.push_back(time);
         path->transforms.push_back(move.absolute ? move.matrix : before * move.matrix);
     }
-    for (Mat4 const& transform : path->transforms) checkFinite(where, transform);
+    for (Mat4 const& transform : path->transforms) checkFinite(in, transform);
     state().transform = path->at(m_scene.shutterOpen);
     state().motion = count > 1 ? path : nullptr;
 }
 
 void SceneBuilder::finishMotionShapes(MotionBlock& block, SourceLocation const& where) {
     std::vector<MotionBlock::Made>& first = block.shapes.front();
-    // Deformation: the same shapes at every time, only their points changing.
-    bool same = block.read == static_cast<int>(block.times.size()) && block.shapes.size() == block.times.size();
-    bool changes = false;
-    for (size_t k = 1; same && k < block.shapes.size(); ++k) {
-        same = block.shapes[k].size() == first.size();
-        for (size_t j = 0; same && j < first.size(); ++j) {
+    // Deformation: the same shapes at every time, only their points changing. (A block that writes
+    // the same request at every time changes nothing.)
+    bool deforms = block.changes && block.read == static_cast<int>(block.times.size()) &&
+                   block.shapes.size() == block.times.size();
+    bool pointsMove = false;
+    for (size_t k = 1; deforms && k < block.shapes.size(); ++k) {
+        deforms = block.shapes[k].size() == first.size();
+        for (size_t j = 0; deforms && j < first.size(); ++j) {
             Shape const& shape = *first[j].shape;
-            same = shape.points() && shape.samePointsAs(*block.shapes[k][j].shape);
-            changes = changes || (same && *shape.points() != *block.shapes[k][j].shape->points());
+            deforms = shape.points() && shape.samePointsAs(*block.shapes[k][j].shape);
+            pointsMove = pointsMove || (deforms && *shape.points() != *block.shapes[k][j].shape->points());
         }
     }
     float const open = m_scene.shutterOpen, close = m_scene.shutterClose;
-    if (same && changes) {
+    if (deforms && pointsMove) {
         std::vector<float> const steps = close > open ? shutterSteps(block.times, open, close) : std::vector<float>{open};
         // A moving transform moves the points too: its motion is folded into theirs.
         std::shared_ptr<ShapeMotion const> const moving =
@@ -268,7 +269,7 @@ void SceneBuilder::finishMotionShapes(MotionBlock& block, SourceLocation const& 
             }
             first[j].shape->deform(std::move(deformation));
         }
-    } else if (!same && block.shapes.size() > 1 && close > open) {
+    } else if (block.changes && !deforms && close > open) {
         std::string const kind = first.empty() ? "shape" : first.front().shape->kind();
         warnOnce("deformation " + kind, where,
                  "the motion block at " + block.where.str() + " changes a " + kind +
