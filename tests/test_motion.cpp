@@ -231,6 +231,11 @@ TEST_CASE("Motion blocks under a shutter that does not open, or opens late", "[r
                       Catch::Contains("closes before it opens"));
     CHECK_THROWS_WITH(sceneWith("WorldBegin\nMotionBegin [0 1 0.5]\nMotionEnd\nWorldEnd\n", diagnostics),
                       Catch::Contains("times must increase"));
+    // A forgotten MotionEnd is said where the block is left, not read as a block that swallows the rest.
+    CHECK_THROWS_WITH(
+        sceneWith("WorldBegin\nMotionBegin [0 1]\nTranslate 0 0 0\nTranslate 1 0 0\nSphere 1 -1 1 360\nWorldEnd\n",
+                  diagnostics),
+        Catch::Contains("test.rib:6:1") && Catch::Contains("WorldEnd inside the motion block at test.rib:2:1"));
 }
 
 TEST_CASE("Motion blur: a patch sweeping across the view covers each column for its share of the shutter",

@@ -237,6 +237,15 @@ void SceneBuilder::handle(RibRequest const& request) {
     // one of them reads in turn (an instance's) belong to it, not to the block.
     if (m_motion && !m_motion->dispatching && request.name != "MotionEnd") {
         MotionBlock& block = *m_motion;
+        // A block or frame boundary cannot be one time of a motion: its MotionEnd is missing.
+        static std::set<std::string> const boundaries = {"WorldBegin",     "WorldEnd",      "FrameBegin",
+                                                         "FrameEnd",       "AttributeBegin", "AttributeEnd",
+                                                         "TransformBegin", "TransformEnd",  "ObjectBegin",
+                                                         "ObjectEnd"};
+        if (boundaries.count(request.name))
+            throw RibError(request.where, request.name + " inside the motion block at " + block.where.str() +
+                                              " (is its MotionEnd missing?): a motion block holds one request for "
+                                              "each of its times");
         int const time = block.read++;
         if (time == 0) {
             block.request = request.name;
