@@ -67,7 +67,7 @@ struct Worker {
     std::vector<HitRecord> hits;
     std::vector<Vec3> rayOrigins, rayDirections;
     std::vector<float> rayNear, rayFar;  ///< where Clipping's planes cut the camera rays (when they do)
-    std::vector<float> rayTimes;         ///< when in the shutter each camera ray is traced (when something moves)
+    std::vector<float> rayTimes;         ///< when in the shutter each camera ray is traced (when it stays open)
     std::vector<RixRNG::SampleCtx> samples;
     std::vector<RtColorRGB> radiance, groupRadiance;
     std::vector<float> alpha;
