@@ -2,10 +2,9 @@
 
 namespace bxdflab {
 
-HitRecord Shape::unmoved(HitRecord const& hit) const {
-    if (!motion) return hit;
-    Mat4 const move = motion->at(hit.time);
-    Mat4 const back = glm::inverse(move);
+namespace {
+/// The hit carried back by `back`, the inverse of `move` (see Shape::unmoved).
+HitRecord carriedBack(HitRecord const& hit, Mat4 const& move, Mat4 const& back) {
     HitRecord out = hit;
     // The ray keeps its parameter t: the transforms are affine, so org + t dir maps to its image.
     out.org = transformPoint(back, hit.org);
@@ -13,12 +12,19 @@ HitRecord Shape::unmoved(HitRecord const& hit) const {
     out.Ng = transformNormal(move, hit.Ng);
     return out;
 }
+}  // namespace
+
+HitRecord Shape::unmoved(HitRecord const& hit) const {
+    if (!motion) return hit;
+    Mat4 const move = motion->at(hit.time);
+    return carriedBack(hit, move, glm::inverse(move));
+}
 
 SurfaceBasics Shape::basics(HitRecord const& hit) const {
     if (!motion) return basicsUnmoved(hit);
-    SurfaceBasics out = basicsUnmoved(unmoved(hit));
     Mat4 const move = motion->at(hit.time);
     Mat4 const back = glm::inverse(move);
+    SurfaceBasics out = basicsUnmoved(carriedBack(hit, move, back));
     Vec3 const magnitude = glm::abs(out.P) + out.pError;
     out.P = transformPoint(move, out.P);
     out.Ng = safeNormalize(transformNormal(back, out.Ng));
@@ -32,8 +38,8 @@ SurfaceBasics Shape::basics(HitRecord const& hit) const {
 
 SurfaceTangents Shape::tangents(HitRecord const& hit) const {
     if (!motion) return tangentsUnmoved(hit);
-    SurfaceTangents out = tangentsUnmoved(unmoved(hit));
     Mat4 const move = motion->at(hit.time);
+    SurfaceTangents out = tangentsUnmoved(carriedBack(hit, move, glm::inverse(move)));
     return {transformVector(move, out.dPdu), transformVector(move, out.dPdv)};
 }
 
