@@ -333,7 +333,7 @@ TEST_CASE("Option Ri and Attribute Ri, as RenderMan 21 and later write requests,
     std::string const asOption =
         "Option \"Ri\" \"int Frame\" [1] \"float PixelVariance\" [0.015] \"int[2] FormatResolution\" [64 32]\n"
         "  \"float FormatPixelAspectRatio\" [1] \"float[2] Clipping\" [0.1 10000] \"float[4] ScreenWindow\" [-2 2 -1 1]\n"
-        "  \"float[4] CropWindow\" [0 1 0 1]\n"
+        "  \"float[4] CropWindow\" [0 1 0 1] \"float[2] Exposure\" [1 2.2]\n"
         "Projection \"perspective\" \"fov\" [30]\nWorldBegin\n";
     std::string const asRequests = "Format 64 32 1\nScreenWindow -2 2 -1 1\nProjection \"perspective\" \"fov\" [30]\nWorldBegin\n";
     Diagnostics diagnostics(false);
@@ -346,7 +346,9 @@ TEST_CASE("Option Ri and Attribute Ri, as RenderMan 21 and later write requests,
     for (int i = 0; i < 4; ++i) CHECK(viaOption.camera.screenWindow[i] == viaRequests.camera.screenWindow[i]);
     // Requests this renderer skips are named as such; the ones it needs no value from are not mentioned.
     CHECK(test::warningsContaining(diagnostics, "CropWindow") == 0);  // the whole image: nothing to skip
-    CHECK(test::warningsContaining(diagnostics, "\"PixelVariance\" is not used") == 1);
+    CHECK(viaOption.pixelVariance == Approx(0.015f));
+    CHECK(test::warningsContaining(diagnostics, "PixelVariance") == 0);
+    CHECK(test::warningsContaining(diagnostics, "\"Exposure\" is not used") == 1);
     CHECK(test::warningsContaining(diagnostics, "FormatResolution") == 0);
     CHECK(test::warningsContaining(diagnostics, "Clipping") == 0);
     CHECK(test::warningsContaining(diagnostics, "Option \"Ri\" is not used") == 0);

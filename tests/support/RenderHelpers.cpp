@@ -39,6 +39,8 @@ RenderOutcome renderRib(std::string const& rib, RenderSettings settings, std::st
         out.variance = film.varianceOfMean();
         out.width = film.width();
         out.height = film.height();
+        for (int y = 0; y < out.height; ++y)
+            for (int x = 0; x < out.width; ++x) out.samples.push_back(film.samplesTaken(x, y));
         out.stats = renderer.stats();
     }
     out.messages = diagnostics.entries();

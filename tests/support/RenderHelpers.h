@@ -15,7 +15,8 @@ namespace bxdflab::test {
 
 struct RenderOutcome {
     std::vector<float> rgba;  ///< per-pixel mean, RGBA
-    std::vector<float> variance;
+    std::vector<float> variance;  ///< per-pixel variance of the mean, RGB
+    std::vector<int> samples;     ///< camera samples each pixel took
     int width = 0, height = 0;
     RenderStats stats;
     std::vector<Diagnostics::Entry> messages;

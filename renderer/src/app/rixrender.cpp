@@ -115,6 +115,10 @@ int main(int argc, char** argv) {
                                  "a file of several frames writes NAME.0001.EXT, ... (the FrameBegin numbers)");
     app.add_option("--spp", settings.spp, "samples per pixel (overrides PixelSamples / Hider maxsamples)")
         ->check(CLI::Range(1, 1 << 20));
+    app.add_option("--pixel-variance", settings.pixelVariance,
+                   "adaptive sampling: a pixel stops once its value's variance is at most this (overrides "
+                   "PixelVariance; 0: every pixel takes all its samples)")
+        ->check(CLI::Range(0.0f, 1e30f));
     app.add_option("--threads", settings.threads, "worker threads (default: all cores)")->check(CLI::Range(1, 1024));
     app.add_option("--seed", settings.seed, "sample-sequence seed; the same seed gives the same image");
     app.add_option("--plugin-path", settings.pluginPath, "colon-separated plugin folders, searched first");

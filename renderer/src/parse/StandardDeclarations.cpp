@@ -30,7 +30,8 @@ std::vector<std::pair<char const*, char const*>> const& standardDeclarations() {
         {"maxdepth", "int"}, {"format", "string"}, {"asciistyle", "string"},
         // Hider parameters.
         {"jitter", "int"}, {"depthfilter", "string"}, {"maxsamples", "int"}, {"minsamples", "int"},
-        {"samplemotion", "int"}, {"extrememotiondof", "int"}, {"emit", "int"}, {"incremental", "int"},
+        {"minextrasamples", "int"}, {"samplemotion", "int"}, {"extrememotiondof", "int"}, {"emit", "int"},
+        {"incremental", "int"},
         {"pixelvariance", "float"}, {"integrationmode", "string"}, {"aperture", "float[4]"},
         // Display parameters.
         {"quantize", "float[4]"}, {"dither", "float"}, {"compression", "string"}, {"exrcompression", "string"},

@@ -13,12 +13,12 @@ Film::Film(int width, int height)
     : m_width(width), m_height(height), m_pixels(static_cast<size_t>(width) * static_cast<size_t>(height)) {}
 
 void Film::addSample(int x, int y, RtColorRGB const& radiance, float alpha, float weight) {
-    size_t const index = static_cast<size_t>(y) * static_cast<size_t>(m_width) + static_cast<size_t>(x);
-    Pixel& p = m_pixels[index];
+    size_t const pixel = index(x, y);
+    Pixel& p = m_pixels[pixel];
     for (int c = 0; c < 3; ++c) p.sumSq[c] += static_cast<double>(radiance[c]) * radiance[c];
     ++p.allSamples;
     if (weight < 0.0f && !m_negative.empty()) {
-        NegativeLobes& n = m_negative[index];
+        NegativeLobes& n = m_negative[pixel];
         for (int c = 0; c < 3; ++c) n.sum[c] += radiance[c];
         n.alpha += alpha;
         ++n.count;
@@ -63,7 +63,7 @@ void Film::enableSplats() {
 
 void Film::addSplat(int x, int y, RtColorRGB const& value) {
     if (!m_splats) return;
-    size_t const pixel = static_cast<size_t>(y) * static_cast<size_t>(m_width) + static_cast<size_t>(x);
+    size_t const pixel = index(x, y);
     for (int c = 0; c < 3; ++c) {
         double v = std::clamp(static_cast<double>(value[c]), -kSplatLimit, kSplatLimit);
         if (!std::isfinite(v)) continue;
@@ -99,10 +99,10 @@ void Film::enableSurface(SurfaceRecord const& record) {
 }
 
 void Film::addSurface(int x, int y, float depth, float const* values) {
-    size_t const index = static_cast<size_t>(y) * static_cast<size_t>(m_width) + static_cast<size_t>(x);
-    if (!m_nearest.empty()) m_nearest[index] = std::min(m_nearest[index], depth);
+    size_t const pixel = index(x, y);
+    if (!m_nearest.empty()) m_nearest[pixel] = std::min(m_nearest[pixel], depth);
     size_t const width = static_cast<size_t>(m_surface.width());
-    for (size_t k = 0; k < width; ++k) m_surfaceSums[index * width + k] += values[k];
+    for (size_t k = 0; k < width; ++k) m_surfaceSums[pixel * width + k] += values[k];
 }
 
 std::vector<float> Film::channels(DisplayLayout const& layout) const {
@@ -133,21 +133,29 @@ std::vector<float> Film::channels(DisplayLayout const& layout) const {
     return out;
 }
 
+double Film::varianceOfMean(size_t pixel, int channel) const {
+    Pixel const& p = m_pixels[pixel];
+    NegativeLobes const none;
+    NegativeLobes const& n = m_negative.empty() ? none : m_negative[pixel];
+    // Under negative lobes, the spread of all samples about the pixel's value: an estimate, not exact.
+    double const mean = resolve(p.sum[channel], p.count, n.sum[channel], n.count);
+    double const variance = std::max(0.0, (p.sumSq[channel] - p.allSamples * mean * mean) / (p.allSamples - 1));
+    return variance / p.allSamples;
+}
+
 std::vector<float> Film::varianceOfMean() const {
     std::vector<float> out(m_pixels.size() * 3, 0.0f);
     for (size_t i = 0; i < m_pixels.size(); ++i) {
-        Pixel const& p = m_pixels[i];
-        if (p.allSamples < 2) continue;
-        NegativeLobes const none;
-        NegativeLobes const& n = m_negative.empty() ? none : m_negative[i];
-        // Under negative lobes, the spread of all samples about the pixel's value: an estimate, not exact.
-        for (int c = 0; c < 3; ++c) {
-            double mean = resolve(p.sum[c], p.count, n.sum[c], n.count);
-            double variance = std::max(0.0, (p.sumSq[c] - p.allSamples * mean * mean) / (p.allSamples - 1));
-            out[3 * i + static_cast<size_t>(c)] = static_cast<float>(variance / p.allSamples);
-        }
+        if (m_pixels[i].allSamples < 2) continue;
+        for (int c = 0; c < 3; ++c) out[3 * i + static_cast<size_t>(c)] = static_cast<float>(varianceOfMean(i, c));
     }
     return out;
+}
+
+double Film::largestVarianceOfMean(int x, int y) const {
+    size_t const i = index(x, y);
+    if (m_pixels[i].allSamples < 2) return std::numeric_limits<double>::infinity();
+    return std::max({varianceOfMean(i, 0), varianceOfMean(i, 1), varianceOfMean(i, 2)});
 }
 
 }  // namespace bxdflab

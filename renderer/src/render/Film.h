@@ -70,6 +70,11 @@ public:
     std::vector<float> channels(DisplayLayout const& layout) const;
     /// Per-pixel variance of the mean (sample variance / n) as RGB floats.
     std::vector<float> varianceOfMean() const;
+    /// Pixel (x, y)'s variance of the mean in the channel where it is largest (infinite
+    /// before the pixel has two samples): adaptive sampling stops a pixel on it.
+    double largestVarianceOfMean(int x, int y) const;
+    /// How many camera samples pixel (x, y) has taken.
+    int samplesTaken(int x, int y) const { return m_pixels[index(x, y)].allSamples; }
 
 private:
     /// The samples drawn in the filter's positive lobes (all of them under a
@@ -89,6 +94,11 @@ private:
     };
     /// A pixel's value for one channel from its lobes' sums (the positive ones alone under most filters).
     double resolve(double positiveSum, int positiveCount, double negativeSum, int negativeCount) const;
+    /// One channel's variance of the mean of a pixel that has at least two samples.
+    double varianceOfMean(size_t pixel, int channel) const;
+    size_t index(int x, int y) const {
+        return static_cast<size_t>(y) * static_cast<size_t>(m_width) + static_cast<size_t>(x);
+    }
     int m_width, m_height;
     std::vector<Pixel> m_pixels;
     std::vector<NegativeLobes> m_negative;  ///< empty unless enableNegativeLobes was called

@@ -11,6 +11,7 @@
 #include <atomic>
 #include <chrono>
 #include <cstdio>
+#include <iomanip>
 #include <map>
 #include <mutex>
 #include <optional>
@@ -23,6 +24,7 @@
 #include "core/CrashReport.h"
 #include "core/ImageFiles.h"
 #include "core/PixelFilter.h"
+#include "render/SampleSchedule.h"
 #include "scene/Camera.h"
 #include "scene/PatternReach.h"
 #include "scene/lights/HeadLight.h"
@@ -60,10 +62,15 @@ int tileSizeFor(int baseSize, int spp) {
     return size;
 }
 
+struct PixelXY {
+    int x, y;
+};
+
 /// Per-worker state: memory, ray counts, shading-time counters.
 struct Worker {
     Worker() { crashreport::prepareThread(); }  // made on the thread that uses it, which runs plugin code
     MemoryArena arena;
+    std::vector<PixelXY> pixels;  ///< the tile's pixels that take the next samples
     std::vector<HitRecord> hits;
     std::vector<Vec3> rayOrigins, rayDirections;
     std::vector<float> rayNear, rayFar;  ///< where Clipping's planes cut the camera rays (when they do)
@@ -124,6 +131,21 @@ void summarise(Film const& film, RenderStats::ImageSummary& out) {
 /// A camera transform that puts every shape behind the camera is a common
 /// mistake (and the sign of a right-handed export): say so, rather than
 /// leaving an empty image to explain itself.
+/// The fewest, the most and the mean number of samples the film's pixels took.
+void countSamplesTaken(Film const& film, RenderStats::SamplesTaken& out) {
+    out = {};
+    long long total = 0;
+    for (int y = 0; y < film.height(); ++y)
+        for (int x = 0; x < film.width(); ++x) {
+            int const n = film.samplesTaken(x, y);
+            out.least = x == 0 && y == 0 ? n : std::min(out.least, n);
+            out.most = std::max(out.most, n);
+            total += n;
+        }
+    long long const pixels = static_cast<long long>(film.width()) * film.height();
+    out.mean = pixels > 0 ? static_cast<double>(total) / static_cast<double>(pixels) : 0.0;
+}
+
 void warnIfNothingInFront(RayTracer const& tracer, Scene const& scene, Diagnostics& diagnostics) {
     Vec3 lower, upper;
     tracer.cameraBounds(lower, upper);
@@ -162,6 +184,7 @@ struct Renderer::Impl {
     std::unique_ptr<PresenceTracer> rays;  // the tracer, seeing through cut-outs
     SurfaceRecord surfaceRecord;           // what displays of the surface need from each camera hit
     bool shutterOpens = false;             // the shutter stays open a while: camera rays get times
+    SampleSchedule schedule;               // how many samples each pixel takes (adaptive under PixelVariance)
     std::atomic<uint64_t> nonFinite{0};
     std::atomic<uint64_t> invalidPdf{0};
 
@@ -176,7 +199,9 @@ struct Renderer::Impl {
     void loadPatterns(std::vector<MaterialDesc> const& usedMaterials);
     /// Every loaded Bxdf and pattern plugin, each once, in order of first use.
     std::vector<ShadingPlugin*> usedPlugins() const;
-    void renderTile(int tileX, int tileY, int spp, Film& film, Worker& worker);
+    void renderTile(int tileX, int tileY, Film& film, Worker& worker);
+    /// Samples first..end-1 of each pixel in worker.pixels, into the film.
+    void renderSamples(int first, int end, Film& film, Worker& worker, RayCounts& counts);
     void shadeChunk(Worker& worker, int count, Film& film);
     /// What displays of the surface need from each camera sample's hit (before shading).
     void recordSurfaces(Worker& worker, int count, SurfaceRecord const& record) const;
@@ -387,6 +412,21 @@ Renderer::Renderer(Scene& scene, RenderSettings settings, Diagnostics& diagnosti
     m_stats.width = scene.xres;
     m_stats.height = scene.yres;
     m_stats.spp = settings.spp > 0 ? settings.spp : scene.spp;
+    m_stats.pixelVariance = settings.pixelVariance >= 0.0f ? settings.pixelVariance : scene.pixelVariance;
+    r.schedule = sampleSchedule(m_stats.spp, m_stats.pixelVariance, scene.minSamples, scene.minExtraSamples);
+    std::string const everyPixel = "every pixel takes " + std::to_string(m_stats.spp) + " samples";
+    if (r.schedule.adaptive() && r.integrator->WantsLightTracing()) {
+        // Light subpaths land in whichever pixel they reach, so no pixel's value is its own samples' alone.
+        diagnostics.warn(integrator.where, "Integrator \"" + integrator.name +
+                                               "\" adds light subpaths to the pixels they land in: PixelVariance is "
+                                               "not applied, and " + everyPixel);
+        effects.skip("adaptive sampling", integrator.name + " adds light subpaths to the pixels they land in");
+        r.schedule = sampleSchedule(m_stats.spp, 0.0f, scene.minSamples, scene.minExtraSamples);
+    } else if (!r.schedule.adaptive()) {
+        effects.skip("adaptive sampling", m_stats.pixelVariance > 0.0f
+                                              ? "minsamples is maxsamples, so " + everyPixel
+                                              : "the scene sets no PixelVariance, so " + everyPixel);
+    }
     m_stats.threads = settings.threads > 0 ? settings.threads
                                            : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
     m_stats.setupSeconds = secondsSince(start);
@@ -401,16 +441,35 @@ Renderer::~Renderer() {
     m_impl->patterns.clear();
 }
 
-void Renderer::Impl::renderTile(int tileX, int tileY, int spp, Film& film, Worker& w) {
-    int const size = tileSizeFor(settings.tileSize, spp);
+void Renderer::Impl::renderTile(int tileX, int tileY, Film& film, Worker& w) {
+    int const size = tileSizeFor(settings.tileSize, schedule.most);
     int x0 = tileX * size, y0 = tileY * size;
     int x1 = std::min(x0 + size, scene.xres), y1 = std::min(y0 + size, scene.yres);
-    int pixels = (x1 - x0) * (y1 - y0);
-    int chunk = std::max(1, std::min(spp, kMaxPointsPerChunk / pixels));
+    w.pixels.clear();
+    for (int y = y0; y < y1; ++y)
+        for (int x = x0; x < x1; ++x) w.pixels.push_back({x, y});
     RayCounts counts;
+    int taken = std::min(schedule.first, schedule.most);
+    renderSamples(0, taken, film, w, counts);
+    while (taken < schedule.most) {
+        // Whether a pixel goes on depends on its own samples alone, and so on no thread count.
+        auto settled = [&](PixelXY const& p) {
+            return film.largestVarianceOfMean(p.x, p.y) <= schedule.pixelVariance;
+        };
+        w.pixels.erase(std::remove_if(w.pixels.begin(), w.pixels.end(), settled), w.pixels.end());
+        if (w.pixels.empty()) break;
+        int const next = std::min(schedule.most, taken + schedule.step);
+        renderSamples(taken, next, film, w, counts);
+        taken = next;
+    }
+    tracer->counters().add(counts);
+}
 
-    for (int s0 = 0; s0 < spp; s0 += chunk) {
-        int s1 = std::min(spp, s0 + chunk);
+void Renderer::Impl::renderSamples(int first, int end, Film& film, Worker& w, RayCounts& counts) {
+    int const pixels = static_cast<int>(w.pixels.size());
+    int const chunk = std::max(1, std::min(end - first, kMaxPointsPerChunk / pixels));
+    for (int s0 = first; s0 < end; s0 += chunk) {
+        int s1 = std::min(end, s0 + chunk);
         int count = pixels * (s1 - s0);
         w.hits.resize(static_cast<size_t>(count));
         w.rayOrigins.resize(static_cast<size_t>(count));
@@ -425,28 +484,27 @@ void Renderer::Impl::renderTile(int tileX, int tileY, int spp, Film& film, Worke
         int k = 0;
         uint32_t const seedHash = RixRNG::Hash(settings.seed + 0x5bd1e995u);
         bool const lens = camera->hasLens();
-        for (int y = y0; y < y1; ++y)
-            for (int x = x0; x < x1; ++x) {
-                uint32_t patternid = RixRNG::Hash(static_cast<uint32_t>(y * scene.xres + x) ^ seedHash);
-                for (int s = s0; s < s1; ++s, ++k) {
-                    RixRNG::SampleCtx& sample = w.samples[static_cast<size_t>(k)];
-                    sample = {patternid, static_cast<uint32_t>(s), 0, -1.0f};
-                    RtFloat2 const jitter = RixRNG::Sample2D(sample);
-                    Vec2 const offset =
-                        pixelFilter.sample(jitter.x, jitter.y, w.filterWeight[static_cast<size_t>(k)]);
-                    float const rasterX = static_cast<float>(x) + offset.x,
-                                rasterY = static_cast<float>(y) + offset.y;
-                    Vec3& org = w.rayOrigins[static_cast<size_t>(k)];
-                    Vec3& dir = w.rayDirections[static_cast<size_t>(k)];
-                    if (lens) {
-                        // Numbers of their own, so the integrator's draws are those of a pinhole render.
-                        RixRNG::SampleCtx onLens = sample.NewDomain(kLensDomain);
-                        camera->generateRay(rasterX, rasterY, RixRNG::Sample2D(onLens), org, dir);
-                    } else {
-                        camera->generateRay(rasterX, rasterY, org, dir);
-                    }
+        for (auto const [x, y] : w.pixels) {
+            uint32_t patternid = RixRNG::Hash(static_cast<uint32_t>(y * scene.xres + x) ^ seedHash);
+            for (int s = s0; s < s1; ++s, ++k) {
+                RixRNG::SampleCtx& sample = w.samples[static_cast<size_t>(k)];
+                sample = {patternid, static_cast<uint32_t>(s), 0, -1.0f};
+                RtFloat2 const jitter = RixRNG::Sample2D(sample);
+                Vec2 const offset =
+                    pixelFilter.sample(jitter.x, jitter.y, w.filterWeight[static_cast<size_t>(k)]);
+                float const rasterX = static_cast<float>(x) + offset.x,
+                            rasterY = static_cast<float>(y) + offset.y;
+                Vec3& org = w.rayOrigins[static_cast<size_t>(k)];
+                Vec3& dir = w.rayDirections[static_cast<size_t>(k)];
+                if (lens) {
+                    // Numbers of their own, so the integrator's draws are those of a pinhole render.
+                    RixRNG::SampleCtx onLens = sample.NewDomain(kLensDomain);
+                    camera->generateRay(rasterX, rasterY, RixRNG::Sample2D(onLens), org, dir);
+                } else {
+                    camera->generateRay(rasterX, rasterY, org, dir);
                 }
             }
+        }
         // Times come from numbers of their own, so drawing them changes no other number.
         float const* times = nullptr;
         if (shutterOpens) {
@@ -464,8 +522,8 @@ void Renderer::Impl::renderTile(int tileX, int tileY, int spp, Film& film, Worke
             clipNear = w.rayNear.data();
             clipFar = w.rayFar.data();
         }
-        tracer->intersectCoherent(w.rayOrigins.data(), w.rayDirections.data(), count, RayKind::Camera, w.hits.data(),
-                                  counts, clipNear, clipFar, times);
+        tracer->intersectCoherent(w.rayOrigins.data(), w.rayDirections.data(), count, RayKind::Camera,
+                                  w.hits.data(), counts, clipNear, clipFar, times);
         rays->passAbsent(w.hits.data(), count, clipFar, RayKind::Camera, counts, w.arena);
         if (clipFar)  // a one-sided back passed on the way may have let the ray on past the far plane
             for (size_t i = 0; i < static_cast<size_t>(count); ++i)
@@ -474,7 +532,8 @@ void Renderer::Impl::renderTile(int tileX, int tileY, int spp, Film& film, Worke
         // Lights the camera sees directly, in front of any geometry.
         for (int i = 0; i < count; ++i) {
             HitRecord& hit = w.hits[static_cast<size_t>(i)];
-            LightAlongRay seen = nearestLightAlong(cameraLights, hit.org, hit.dir, hit.hit() ? hit.t : kInfinity);
+            LightAlongRay seen =
+                nearestLightAlong(cameraLights, hit.org, hit.dir, hit.hit() ? hit.t : kInfinity);
             if (seen.light) {
                 w.radiance[static_cast<size_t>(i)] = seen.radiance;
                 w.alpha[static_cast<size_t>(i)] = 1.0f;
@@ -488,22 +547,20 @@ void Renderer::Impl::renderTile(int tileX, int tileY, int spp, Film& film, Worke
 
         // Into the film, in the fixed sample order; non-finite values are counted and dropped.
         k = 0;
-        for (int y = y0; y < y1; ++y)
-            for (int x = x0; x < x1; ++x)
-                for (int s = s0; s < s1; ++s, ++k) {
-                    RtColorRGB value = w.radiance[static_cast<size_t>(k)];
-                    if (!std::isfinite(value.r) || !std::isfinite(value.g) || !std::isfinite(value.b)) {
-                        nonFinite.fetch_add(1, std::memory_order_relaxed);
-                        value = RtColorRGB(0.0f);
-                    }
-                    film.addSample(x, y, value, w.alpha[static_cast<size_t>(k)],
-                                   w.filterWeight[static_cast<size_t>(k)]);
-                    if (film.surfaceRecord().any())
-                        film.addSurface(x, y, w.depth[static_cast<size_t>(k)],
-                                        w.surface.data() + static_cast<size_t>(k * film.surfaceRecord().width()));
+        for (auto const [x, y] : w.pixels)
+            for (int s = s0; s < s1; ++s, ++k) {
+                RtColorRGB value = w.radiance[static_cast<size_t>(k)];
+                if (!std::isfinite(value.r) || !std::isfinite(value.g) || !std::isfinite(value.b)) {
+                    nonFinite.fetch_add(1, std::memory_order_relaxed);
+                    value = RtColorRGB(0.0f);
                 }
+                film.addSample(x, y, value, w.alpha[static_cast<size_t>(k)],
+                               w.filterWeight[static_cast<size_t>(k)]);
+                if (film.surfaceRecord().any())
+                    film.addSurface(x, y, w.depth[static_cast<size_t>(k)],
+                                    w.surface.data() + static_cast<size_t>(k * film.surfaceRecord().width()));
+            }
     }
-    tracer->counters().add(counts);
 }
 
 void Renderer::Impl::recordSurfaces(Worker& w, int count, SurfaceRecord const& record) const {
@@ -589,7 +646,7 @@ Film Renderer::render() {
     tbb::task_arena arena(m_stats.threads);
     arena.execute([&] {
         tbb::parallel_for(0, tiles, [&](int tile) {
-            r.renderTile(tile % tilesX, tile / tilesX, spp, film, workers.local());
+            r.renderTile(tile % tilesX, tile / tilesX, film, workers.local());
             progress.tick();
         });
     });
@@ -612,9 +669,18 @@ Film Renderer::render() {
     m_stats.invalidPdfSamples = r.invalidPdf.load();
     m_stats.peakMemoryMB = peakResidentMB();
     summarise(film, m_stats.image);
+    countSamplesTaken(film, m_stats.samplesTaken);
 
     // Effects decided while shading: tangent frames are computed only on request.
     auto& effects = m_stats.effects;
+    if (r.schedule.adaptive()) {
+        RenderStats::SamplesTaken const& taken = m_stats.samplesTaken;
+        std::ostringstream line;
+        line << "adaptive sampling (PixelVariance " << m_stats.pixelVariance << "): pixels took " << taken.least
+             << " to " << taken.most << " samples, " << std::fixed << std::setprecision(1) << taken.mean
+             << " on average";
+        effects.simulate(line.str());
+    }
     if (m_stats.tangentPoints > 0)
         effects.simulate("tangent frames (dPdu, dPdv, Tn) for " + std::to_string(m_stats.tangentPoints) + " points");
     else
@@ -641,6 +707,8 @@ nlohmann::json RenderStats::toJson(Diagnostics const& diagnostics) const {
         {"render_s", renderSeconds},
         {"threads", threads},
         {"spp", spp},
+        {"pixel_variance", pixelVariance},
+        {"samples_per_pixel", {{"least", samplesTaken.least}, {"mean", samplesTaken.mean}, {"most", samplesTaken.most}}},
         {"width", width},
         {"height", height},
         {"integrator", integrator},

@@ -21,6 +21,7 @@ namespace bxdflab {
 
 struct RenderSettings {
     int spp = 0;        ///< 0: the scene's PixelSamples / Hider maxsamples
+    float pixelVariance = -1.0f;  ///< below 0: the scene's PixelVariance (0: no adaptive sampling)
     int threads = 0;    ///< 0: all cores
     uint32_t seed = 0;  ///< sample-sequence seed
     bool progress = false;
@@ -32,6 +33,11 @@ struct RenderSettings {
 struct RenderStats {
     double setupSeconds = 0, renderSeconds = 0;
     int threads = 0, spp = 0, width = 0, height = 0;
+    float pixelVariance = 0;  ///< above 0: pixels stop sampling once their value is this certain
+    struct SamplesTaken {
+        int least = 0, most = 0;
+        double mean = 0;
+    } samplesTaken;  ///< camera samples per pixel (all spp without adaptive sampling)
     uint64_t cameraRays = 0, shadowRays = 0, indirectRays = 0;
     uint64_t shadePoints = 0, batches = 0;
     uint64_t presencePoints = 0;  ///< hits a Bxdf was asked how present they are (cut-outs)

@@ -34,6 +34,7 @@ std::map<std::string, SceneBuilder::Handler> const& SceneBuilder::handlers() {
         {"ScreenWindow", &SceneBuilder::screenWindow},
         {"FrameAspectRatio", &SceneBuilder::frameAspectRatio},
         {"PixelSamples", &SceneBuilder::pixelSamples},
+        {"PixelVariance", &SceneBuilder::pixelVariance},
         {"PixelFilter", &SceneBuilder::pixelFilter},
         {"Hider", &SceneBuilder::hider},
         {"DepthOfField", &SceneBuilder::depthOfField},

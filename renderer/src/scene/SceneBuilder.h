@@ -148,6 +148,7 @@ private:
     /// PixelFilter's name and widths, checked (an unknown name keeps the filter as it was, with a warning).
     void setPixelFilter(std::string const& name, float xwidth, float ywidth, SourceLocation const& where);
     void hider(RequestReader& in);
+    void pixelVariance(RequestReader& in);
     void imager(RequestReader& in);
     void depthOfField(RequestReader& in);
     /// The camera's thin lens; a located error for numbers that make none.
@@ -223,6 +224,9 @@ private:
     void finishMotionTransform(MotionBlock& block, RequestReader& in);
     void finishMotionShapes(MotionBlock& block, SourceLocation const& where);
     void setShutter(float open, float close, SourceLocation const& where);
+    void setPixelVariance(float variance, SourceLocation const& where);
+    /// Hider's (or Option "hider"'s) maxsamples, minsamples and minextrasamples.
+    void hiderSampleCounts(ParamList const& params, std::string const& owner);
     /// Lights are placed once: one under a moving transform is warned about.
     void warnIfLightMoves(SourceLocation const& where);
     void coordinateSystem(RequestReader& in);

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <sstream>
 
 #include "core/PixelFilter.h"
@@ -229,15 +230,38 @@ void SceneBuilder::hider(RequestReader& in) {
     std::string type = in.string("hider type");
     ParamList params = in.params();
     if (type != "raytrace") warnOnce("hider " + type, in.where(), "Hider \"" + type + "\" treated as \"raytrace\"");
-    if (type == "raytrace")
-        if (Param const* p = params.take("maxsamples")) {
-            int spp = params.getInt("maxsamples", 16);
-            if (spp < 1 || spp > kMaxSamplesPerPixel)
-                throw RibError(p->location, "Hider: maxsamples must be between 1 and " +
-                                                std::to_string(kMaxSamplesPerPixel) + ", got " + std::to_string(spp));
-            m_scene.spp = spp;
-        }
-    for (auto const& p : params.all()) p.used = true;  // adaptive sampling, jitter, photon emission: not modelled
+    if (type == "raytrace") hiderSampleCounts(params, "Hider");
+    for (auto const& p : params.all()) p.used = true;  // jitter, incremental, photon emission: not modelled
+}
+
+void SceneBuilder::hiderSampleCounts(ParamList const& params, std::string const& owner) {
+    // minsamples and minextrasamples of 0 or -1 (RenderMan's default) ask for their automatic values.
+    auto count = [&](char const* name, int least) -> std::optional<int> {
+        Param const* p = params.take(name);
+        if (!p) return std::nullopt;
+        int const value = params.getInt(name, 0);
+        if (value < least || value > kMaxSamplesPerPixel)
+            throw RibError(p->location, owner + ": " + name + " must be between " + std::to_string(least) + " and " +
+                                            std::to_string(kMaxSamplesPerPixel) + ", got " + std::to_string(value));
+        return value;
+    };
+    if (std::optional<int> most = count("maxsamples", 1)) m_scene.spp = *most;
+    if (std::optional<int> least = count("minsamples", -1)) m_scene.minSamples = *least;
+    if (std::optional<int> extra = count("minextrasamples", -1)) m_scene.minExtraSamples = *extra;
+    if (Param const* p = params.take("pixelvariance"))
+        setPixelVariance(params.getFloat("pixelvariance", 0.0f), p->location);
+}
+
+void SceneBuilder::pixelVariance(RequestReader& in) {
+    float const variance = in.number("variance");
+    in.finish();
+    setPixelVariance(variance, in.where());
+}
+
+void SceneBuilder::setPixelVariance(float variance, SourceLocation const& where) {
+    if (!(variance >= 0.0f && std::isfinite(variance)))
+        throw RibError(where, "PixelVariance must be 0 (every pixel takes all its samples) or a number above 0");
+    m_scene.pixelVariance = variance;
 }
 
 void SceneBuilder::imager(RequestReader& in) {
@@ -343,6 +367,13 @@ void SceneBuilder::option(RequestReader& in) {
         params.warnUnused(m_diagnostics, "Option \"ribparse\"");
         return;
     }
+    if (category == "hider") {
+        // RenderMan 21 and later write the Hider's sample counts here; its other controls (incremental,
+        // adaptivemetric, darkfalloff, ...) steer RenderMan's own sampler and are read quietly.
+        hiderSampleCounts(params, "Option \"hider\"");
+        for (auto const& p : params.all()) p.used = true;
+        return;
+    }
     if (category != "searchpath") {
         warnOnce("option " + category, in.where(), "Option \"" + category + "\" is not used by this renderer; skipped");
         return;
@@ -430,7 +461,9 @@ void SceneBuilder::riOptions(ParamList const& params, SourceLocation const& wher
                        widths && widths->size() == 2 ? (*widths)[0] : 2.0f,
                        widths && widths->size() == 2 ? (*widths)[1] : 2.0f, p->location);
     }
-    // The rest are requests this renderer skips when written out (PixelVariance, Exposure, ...).
+    if (Param const* p = params.take("PixelVariance"))
+        setPixelVariance(params.getFloat("PixelVariance", 0.0f), p->location);
+    // The rest are requests this renderer skips when written out (Exposure, ...).
     for (auto const& p : params.all())
         if (!p.used)
             warnOnce("option Ri " + p.name(), p.location,
