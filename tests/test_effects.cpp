@@ -1,6 +1,8 @@
 // "Simulate only what the scene calls for", proven by the counters.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+
 #include "support/RenderHelpers.h"
 
 using namespace bxdflab;
@@ -107,4 +109,18 @@ TEST_CASE("PxrDefault lights an unlit scene with a headlight and samples no Bxdf
     CHECK(lit.channel(12, 12, 0) == Approx(r.channel(12, 12, 0)));
     CHECK(lit.anyMessageContains("the scene names no Integrator, so PxrDefault lights it from the camera, as in "
                                  "RenderMan, and its light is not used; Integrator \"PxrDirectLighting\""));
+}
+
+TEST_CASE("motion blur is simulated only when something moves while the shutter is open", "[effects][motion]") {
+    auto still = test::renderRib(sceneWith("Bxdf \"diffuse\" \"d\"", kDiskLight));
+    CHECK(skipped(still.stats, "the shutter does not open"));
+    auto open = test::renderRib("Shutter 0 1\n" + sceneWith("Bxdf \"diffuse\" \"d\"", kDiskLight));
+    CHECK(skipped(open.stats, "nothing in the scene moves"));
+    auto moving = test::renderRib(
+        "Shutter 0 1\n" + sceneWith("Bxdf \"diffuse\" \"d\"\n  MotionBegin [0 1]\n  Translate 0 0 0\n  Translate 0.2 0 0\n"
+                                    "  MotionEnd",
+                                    kDiskLight));
+    CHECK_FALSE(skipped(moving.stats, "motion blur"));
+    CHECK(std::count(moving.stats.effects.simulated.begin(), moving.stats.effects.simulated.end(),
+                     "motion blur: 1 shape moves while the shutter is open") == 1);
 }

@@ -407,6 +407,9 @@ Renderer::Renderer(Scene& scene, RenderSettings settings, Diagnostics& diagnosti
     if (moving > 0)
         effects.simulate("motion blur: " + std::to_string(moving) + (moving == 1 ? " shape moves" : " shapes move") +
                          " while the shutter is open");
+    else
+        effects.skip("motion blur", r.shutterOpens ? "the shutter is open, but nothing in the scene moves"
+                                                   : "the shutter does not open (Shutter)");
 
     m_stats.integrator = r.integratorPlugin->name();
     m_stats.width = scene.xres;
