@@ -1,6 +1,7 @@
 #!/usr/bin/python3
 """Writes the "what accuracy costs" appendix from the studies' tables and the
 bench output (both produced by scripts/accuracy-studies.sh)."""
+import csv
 import sys
 from pathlib import Path
 
@@ -12,6 +13,25 @@ def table(folder, name):
 def tables(folder, captioned):
     """One study's table after another, each under its caption."""
     return "\n\n".join(f"{caption}:\n\n{table(folder, name)}" for caption, name in captioned)
+
+
+def rmse_table(folder, name):
+    """Each variant's RMSE at the largest sample count (over its seeds), the
+    fastest render's seconds and the efficiency 1 / (RMSE^2 x seconds)."""
+    with open(Path(folder) / name / "convergence.csv") as f:
+        rows = list(csv.DictReader(f))
+    largest = max(int(r["spp"]) for r in rows)
+    lines = [f"| variant | RMSE at {largest} spp | seconds | efficiency 1/(RMSE^2 x s) | relative efficiency |",
+             "|---|---|---|---|---|"]
+    first = None
+    for variant in dict.fromkeys(r["variant"] for r in rows):
+        at = [r for r in rows if r["variant"] == variant and int(r["spp"]) == largest]
+        mse = sum(float(r["rmse"]) ** 2 for r in at) / len(at)
+        seconds = min(float(r["seconds"]) for r in at)
+        efficiency = 1.0 / (mse * seconds)
+        first = first or efficiency
+        lines.append(f"| {variant} | {mse ** 0.5:.3e} | {seconds:.3f} | {efficiency:.3e} | {efficiency / first:.2f} |")
+    return "\n".join(lines)
 
 
 def main(folder):
@@ -90,6 +110,27 @@ never computes (the floor lit by the glowing sphere, the reflections): it
 stops improving however many samples it takes.
 
 {table(folder, "ch04-bounces")}
+
+## Adaptive sampling (PixelVariance)
+
+The same showcase, path traced, with every pixel taking every sample against
+pixels that stop once the variance of their value is at most PixelVariance
+(each count is then the most a pixel takes, and the first test comes after
+its square root). The criterion is the RenderMan Interface's: a bound on each
+pixel's own variance, the same for bright and dark pixels. So it saves most
+where the image is dark or flat (a pixel whose samples all agree stops at the
+first test) and spends the samples where the absolute noise is largest. Measured by
+relMSE, which weighs an error in a dark pixel more than the same error in a
+bright one, that buys little or nothing:
+
+{table(folder, "ch04-adaptive")}
+
+Measured by the absolute error the criterion bounds (RMSE), each setting
+stops at its own floor of error and gets there in less time:
+
+{rmse_table(folder, "ch04-adaptive")}
+
+![relMSE against time](figures/studies/ch04-adaptive/error_vs_time.png)
 
 ## The renderer's own costs
 

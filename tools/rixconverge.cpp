@@ -7,9 +7,11 @@
 //
 // A variant's override is one or more RIB requests: an Integrator request
 // replaces the scene's integrator, a Bxdf request replaces the Bxdf with the
-// same handle, e.g.
+// same handle, and PixelVariance (with the Hider's sample counts) samples
+// adaptively, each count then being the most a pixel takes, e.g.
 //   --variant cosine='Bxdf "diffuse" "white" "int samplingMode" [0]'
 //   --variant uniform='Bxdf "diffuse" "white" "int samplingMode" [1]'
+//   --variant adaptive='PixelVariance 0.001'
 // Per render it records spp, seconds, relMSE = mean((x - r)^2 / (r^2 + 0.01)),
 // RMSE and the mean bias, writes DIR/convergence.csv, DIR/table.md (fitted
 // slope of log relMSE against log spp, about -1 for Monte Carlo, and the
@@ -72,11 +74,16 @@ Errors compare(std::vector<float> const& imageRgba, std::vector<float> const& re
 }
 
 /// Applies a variant's RIB requests to the scene: an Integrator replaces the
-/// integrator, a Bxdf replaces the Bxdf with its handle.
+/// integrator, a Bxdf replaces the Bxdf with its handle, a PixelVariance and
+/// the Hider's minsamples and minextrasamples replace the scene's.
 void applyOverride(Scene& scene, std::string const& override, Diagnostics& diagnostics) {
     Scene changes;
     SceneBuilder(changes, diagnostics).readText(override, "<variant>");
     if (changes.integrator.given) scene.integrator = changes.integrator;
+    SceneOptions const defaults;
+    if (changes.pixelVariance != defaults.pixelVariance) scene.pixelVariance = changes.pixelVariance;
+    if (changes.minSamples != defaults.minSamples) scene.minSamples = changes.minSamples;
+    if (changes.minExtraSamples != defaults.minExtraSamples) scene.minExtraSamples = changes.minExtraSamples;
     for (MaterialDesc const& m : changes.materials) {
         bool found = false;
         for (MaterialDesc& existing : scene.materials)
@@ -88,8 +95,10 @@ void applyOverride(Scene& scene, std::string const& override, Diagnostics& diagn
     }
 }
 
-std::vector<float> render(Scene& scene, int spp, uint32_t seed, int threads, Diagnostics& diagnostics, double& seconds) {
+std::vector<float> render(Scene& scene, int spp, uint32_t seed, int threads, Diagnostics& diagnostics, double& seconds,
+                          bool everySample = false) {
     RenderSettings settings;
+    if (everySample) settings.pixelVariance = 0.0f;  // the reference: every pixel converged alike
     settings.spp = spp;
     settings.seed = seed;
     settings.threads = threads;
@@ -179,7 +188,7 @@ int main(int argc, char** argv) {
             Scene scene = loadVariant(variants[0]);
             int n = referenceSpp > 0 ? referenceSpp : 16 * *std::max_element(spps.begin(), spps.end());
             double seconds;
-            ref = render(scene, n, 0x7fffffffu, threads, diagnostics, seconds);
+            ref = render(scene, n, 0x7fffffffu, threads, diagnostics, seconds, true);
             writeImage(outDir + "/reference.exr", ref, scene.xres, scene.yres, 4);
             std::cout << "reference: " << n << " spp in " << std::fixed << std::setprecision(2) << seconds << " s\n";
         } else {
