@@ -52,9 +52,9 @@ $converge scenes/showcase.rib --res 240x100 --spp 1,2,4,8,16,32 --repeats 2 --ou
 # (PixelVariance); each count is then the most a pixel takes.
 $converge scenes/showcase.rib --res 240x100 --spp 4,8,16,32,64,128,256 --repeats 2 --out $out/ch04-adaptive \
   --variant every-pixel='PixelVariance 0' \
-  --variant pv-0.001='PixelVariance 0.001' \
-  --variant pv-0.0002='PixelVariance 0.0002' \
-  --variant pv-0.00005='PixelVariance 0.00005'
+  --variant pv-0.01='PixelVariance 0.01' \
+  --variant pv-0.003='PixelVariance 0.003' \
+  --variant pv-0.001='PixelVariance 0.001'
 
 echo "studies written to $out"
 

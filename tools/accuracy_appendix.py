@@ -114,19 +114,18 @@ stops improving however many samples it takes.
 ## Adaptive sampling (PixelVariance)
 
 The same showcase, path traced, with every pixel taking every sample against
-pixels that stop once the variance of their value is at most PixelVariance
-(each count is then the most a pixel takes, and the first test comes after
-its square root). The criterion is the RenderMan Interface's: a bound on each
-pixel's own variance, the same for bright and dark pixels. So it saves most
-where the image is dark or flat (a pixel whose samples all agree stops at the
-first test) and spends the samples where the absolute noise is largest. Measured by
-relMSE, which weighs an error in a dark pixel more than the same error in a
-bright one, that buys little or nothing:
+pixels that stop once their relative variance (the variance of their value
+over the value squared, as RenderMan measures it) is at most PixelVariance.
+Each count is then the most a pixel takes, and the first test comes after its
+square root. A pixel whose samples agree, or that is already as certain as
+asked, stops there, and the samples go where the noise is. Each setting has a
+floor: once most pixels have stopped, more samples allowed change little, so
+the error falls more slowly with the count (the slope) while the time it
+costs stays low:
 
 {table(folder, "ch04-adaptive")}
 
-Measured by the absolute error the criterion bounds (RMSE), each setting
-stops at its own floor of error and gets there in less time:
+The same renders measured by RMSE, which weighs every pixel's error alike:
 
 {rmse_table(folder, "ch04-adaptive")}
 

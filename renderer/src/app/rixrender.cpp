@@ -116,7 +116,7 @@ int main(int argc, char** argv) {
     app.add_option("--spp", settings.spp, "samples per pixel (overrides PixelSamples / Hider maxsamples)")
         ->check(CLI::Range(1, 1 << 20));
     app.add_option("--pixel-variance", settings.pixelVariance,
-                   "adaptive sampling: a pixel stops once its value's variance is at most this (overrides "
+                   "adaptive sampling: a pixel stops once its relative variance is at most this (overrides "
                    "PixelVariance; 0: every pixel takes all its samples)")
         ->check(CLI::Range(0.0f, 1e30f));
     app.add_option("--threads", settings.threads, "worker threads (default: all cores)")->check(CLI::Range(1, 1024));

@@ -32,7 +32,7 @@ std::vector<std::pair<char const*, char const*>> const& standardDeclarations() {
         {"jitter", "int"}, {"depthfilter", "string"}, {"maxsamples", "int"}, {"minsamples", "int"},
         {"minextrasamples", "int"}, {"samplemotion", "int"}, {"extrememotiondof", "int"}, {"emit", "int"},
         {"incremental", "int"},
-        {"pixelvariance", "float"}, {"integrationmode", "string"}, {"aperture", "float[4]"},
+        {"pixelvariance", "float"}, {"darkfalloff", "float"}, {"integrationmode", "string"}, {"aperture", "float[4]"},
         // Display parameters.
         {"quantize", "float[4]"}, {"dither", "float"}, {"compression", "string"}, {"exrcompression", "string"},
         {"merge", "int"}, {"origin", "int[2]"}, {"dspyParams", "string"},

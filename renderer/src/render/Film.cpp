@@ -152,6 +152,17 @@ std::vector<float> Film::varianceOfMean() const {
     return out;
 }
 
+double Film::brightness(int x, int y) const {
+    size_t const i = index(x, y);
+    Pixel const& p = m_pixels[i];
+    if (p.allSamples == 0) return 0.0;
+    NegativeLobes const none;
+    NegativeLobes const& n = m_negative.empty() ? none : m_negative[i];
+    double brightest = resolve(p.sum[0], p.count, n.sum[0], n.count);
+    for (int c = 1; c < 3; ++c) brightest = std::max(brightest, resolve(p.sum[c], p.count, n.sum[c], n.count));
+    return brightest;
+}
+
 double Film::largestVarianceOfMean(int x, int y) const {
     size_t const i = index(x, y);
     if (m_pixels[i].allSamples < 2) return std::numeric_limits<double>::infinity();

@@ -73,6 +73,8 @@ public:
     /// Pixel (x, y)'s variance of the mean in the channel where it is largest (infinite
     /// before the pixel has two samples): adaptive sampling stops a pixel on it.
     double largestVarianceOfMean(int x, int y) const;
+    /// Pixel (x, y)'s value in its brightest channel (0 before it has a sample).
+    double brightness(int x, int y) const;
     /// How many camera samples pixel (x, y) has taken.
     int samplesTaken(int x, int y) const { return m_pixels[index(x, y)].allSamples; }
 

@@ -416,7 +416,8 @@ Renderer::Renderer(Scene& scene, RenderSettings settings, Diagnostics& diagnosti
     m_stats.height = scene.yres;
     m_stats.spp = settings.spp > 0 ? settings.spp : scene.spp;
     m_stats.pixelVariance = settings.pixelVariance >= 0.0f ? settings.pixelVariance : scene.pixelVariance;
-    r.schedule = sampleSchedule(m_stats.spp, m_stats.pixelVariance, scene.minSamples, scene.minExtraSamples);
+    r.schedule = sampleSchedule(m_stats.spp, m_stats.pixelVariance, scene.minSamples, scene.minExtraSamples,
+                                scene.darkFalloff);
     std::string const everyPixel = "every pixel takes " + std::to_string(m_stats.spp) + " samples";
     if (r.schedule.adaptive() && r.integrator->WantsLightTracing()) {
         // Light subpaths land in whichever pixel they reach, so no pixel's value is its own samples' alone.
@@ -424,11 +425,11 @@ Renderer::Renderer(Scene& scene, RenderSettings settings, Diagnostics& diagnosti
                                                "\" adds light subpaths to the pixels they land in: PixelVariance is "
                                                "not applied, and " + everyPixel);
         effects.skip("adaptive sampling", integrator.name + " adds light subpaths to the pixels they land in");
-        r.schedule = sampleSchedule(m_stats.spp, 0.0f, scene.minSamples, scene.minExtraSamples);
+        r.schedule = sampleSchedule(m_stats.spp, 0.0f, scene.minSamples, scene.minExtraSamples, scene.darkFalloff);
     } else if (!r.schedule.adaptive()) {
         effects.skip("adaptive sampling", m_stats.pixelVariance > 0.0f
-                                              ? "minsamples is maxsamples, so " + everyPixel
-                                              : "the scene sets no PixelVariance, so " + everyPixel);
+                                              ? "minsamples reaches maxsamples, so " + everyPixel
+                                              : "no PixelVariance above 0 is set, so " + everyPixel);
     }
     m_stats.threads = settings.threads > 0 ? settings.threads
                                            : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
@@ -457,7 +458,7 @@ void Renderer::Impl::renderTile(int tileX, int tileY, Film& film, Worker& w) {
     while (taken < schedule.most) {
         // Whether a pixel goes on depends on its own samples alone, and so on no thread count.
         auto settled = [&](PixelXY const& p) {
-            return film.largestVarianceOfMean(p.x, p.y) <= schedule.pixelVariance;
+            return schedule.settled(film.largestVarianceOfMean(p.x, p.y), film.brightness(p.x, p.y));
         };
         w.pixels.erase(std::remove_if(w.pixels.begin(), w.pixels.end(), settled), w.pixels.end());
         if (w.pixels.empty()) break;

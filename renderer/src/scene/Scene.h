@@ -114,13 +114,15 @@ struct SceneOptions {
     int xres = 640, yres = 480;
     float pixelAspect = 1.0f;
     int spp = 16;
-    /// PixelVariance, as the RenderMan Interface defines it: above 0, a pixel stops taking samples once the
-    /// estimated variance of its value (its mean's variance, in the channel where it is largest) is at most
-    /// this (adaptive sampling); 0, the default, gives every pixel spp samples.
+    /// PixelVariance: above 0, a pixel stops taking samples once its relative variance (its variance of
+    /// the mean over its value squared, as RenderMan measures it) is at most this (adaptive sampling);
+    /// 0, the default, gives every pixel spp samples.
     float pixelVariance = 0.0f;
     /// Hider "minsamples": the samples every pixel takes before its first test (0 or below: the square root
     /// of spp, as in RenderMan); "minextrasamples": how many more it takes between tests (0 or below: minsamples).
     int minSamples = -1, minExtraSamples = -1;
+    /// Hider "darkfalloff": a pixel darker than this is held to the error allowed at this brightness.
+    float darkFalloff = 0.025f;
     PixelFilterDesc pixelFilter;
     CameraDesc camera;
     DisplayDesc display;

@@ -236,6 +236,7 @@ void SceneBuilder::hider(RequestReader& in) {
 
 void SceneBuilder::hiderSampleCounts(ParamList const& params, std::string const& owner) {
     // minsamples and minextrasamples of 0 or -1 (RenderMan's default) ask for their automatic values.
+    // The other controls of RenderMan's sampler (incremental, adaptivemetric, ...) are accepted by the callers.
     auto count = [&](char const* name, int least) -> std::optional<int> {
         Param const* p = params.take(name);
         if (!p) return std::nullopt;
@@ -248,6 +249,12 @@ void SceneBuilder::hiderSampleCounts(ParamList const& params, std::string const&
     if (std::optional<int> most = count("maxsamples", 1)) m_scene.spp = *most;
     if (std::optional<int> least = count("minsamples", -1)) m_scene.minSamples = *least;
     if (std::optional<int> extra = count("minextrasamples", -1)) m_scene.minExtraSamples = *extra;
+    if (Param const* p = params.take("darkfalloff")) {
+        float const falloff = params.getFloat("darkfalloff", 0.025f);
+        if (!(falloff >= 0.0f && falloff <= 1.0f))
+            throw RibError(p->location, owner + ": darkfalloff must be between 0 and 1");
+        m_scene.darkFalloff = falloff;
+    }
     if (Param const* p = params.take("pixelvariance"))
         setPixelVariance(params.getFloat("pixelvariance", 0.0f), p->location);
 }
