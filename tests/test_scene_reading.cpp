@@ -556,9 +556,15 @@ TEST_CASE("lights and integrators type a parameter written without a type, as Re
 TEST_CASE("what exporters always write is accepted quietly: the whole CropWindow, Shutter, ShadingRate", "[rib]") {
     Diagnostics quiet(false);
     test::parseRib("CropWindow 0 1 0 1\nShutter 0 0\nShadingRate 1\nOption \"Ri\" \"float[4] CropWindow\" [0 1 0 1] "
-                   "\"float[2] Shutter\" [0 1]\nWorldBegin\nShadingRate 10\n",
+                   "\"float[2] Shutter\" [0 1]\nErrorHandler \"printonce\"\nErrorHandler \"abort\"\n"
+                   "WorldBegin\nShadingRate 10\n",
                    quiet);
     CHECK(quiet.warningCount() == 0);
+    // A handler that is none of the standard ones is named, once.
+    Diagnostics handler(false);
+    test::parseRib("ErrorHandler \"mine\"\nErrorHandler \"mine\"\nWorldBegin\n", handler, "handler.rib");
+    CHECK(test::warningsContaining(handler, "handler.rib:1:1: ErrorHandler \"mine\" is not a standard handler") == 1);
+    CHECK(handler.warningCount() == 1);
     // A part of the image is not rendered alone: that changes the picture, so it is said.
     Diagnostics cropped(false);
     test::parseRib("CropWindow 0.25 0.75 0 1\nWorldBegin\n", cropped, "crop.rib");

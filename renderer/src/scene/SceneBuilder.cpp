@@ -55,6 +55,7 @@ std::map<std::string, SceneBuilder::Handler> const& SceneBuilder::handlers() {
         {"ShadingInterpolation", &SceneBuilder::shadingInterpolation},
         {"GeometricApproximation", &SceneBuilder::geometricApproximation},
         {"Quantize", &SceneBuilder::quantize},
+        {"ErrorHandler", &SceneBuilder::errorHandler},
         // The graphics state.
         {"AttributeBegin", &SceneBuilder::attributeBegin},
         {"AttributeEnd", &SceneBuilder::attributeEnd},

@@ -149,6 +149,7 @@ private:
     void setPixelFilter(std::string const& name, float xwidth, float ywidth, SourceLocation const& where);
     void hider(RequestReader& in);
     void pixelVariance(RequestReader& in);
+    void errorHandler(RequestReader& in);
     void imager(RequestReader& in);
     void depthOfField(RequestReader& in);
     /// The camera's thin lens; a located error for numbers that make none.

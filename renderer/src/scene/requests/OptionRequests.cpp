@@ -259,6 +259,17 @@ void SceneBuilder::hiderSampleCounts(ParamList const& params, std::string const&
         setPixelVariance(params.getFloat("pixelvariance", 0.0f), p->location);
 }
 
+void SceneBuilder::errorHandler(RequestReader& in) {
+    // Errors here always stop the read at their line and warnings are said once per kind, so the
+    // standard handlers ("ignore", "print", "abort" and PRMan's "printonce") change nothing.
+    std::string const handler = in.string("error handler name");
+    in.finish();
+    if (handler != "ignore" && handler != "print" && handler != "printonce" && handler != "abort")
+        warnOnce("error handler", in.where(),
+                 "ErrorHandler \"" + handler + "\" is not a standard handler (ignore, print, printonce, abort); "
+                 "errors stop the read at their line and warnings are printed once per kind");
+}
+
 void SceneBuilder::pixelVariance(RequestReader& in) {
     float const variance = in.number("variance");
     in.finish();
