@@ -36,6 +36,16 @@ double allowedVariance(test::RenderOutcome const& r, size_t pixel, double pixelV
     return pixelVariance * value * value;
 }
 
+/// The sampling options a scene was read with.
+void checkSampling(Scene const& scene, float pixelVariance, int spp, int minSamples, int minExtraSamples,
+                   float darkFalloff) {
+    CHECK(scene.pixelVariance == Approx(pixelVariance));
+    CHECK(scene.spp == spp);
+    CHECK(scene.minSamples == minSamples);
+    CHECK(scene.minExtraSamples == minExtraSamples);
+    CHECK(scene.darkFalloff == Approx(darkFalloff));
+}
+
 }  // namespace
 
 TEST_CASE("PixelVariance and the Hider's sample counts are read as RenderMan writes them", "[rib][sampling]") {
@@ -44,26 +54,18 @@ TEST_CASE("PixelVariance and the Hider's sample counts are read as RenderMan wri
                                  "\"int minsamples\" [8] \"int minextrasamples\" [4] \"float darkfalloff\" [0.1] "
                                  "\"int incremental\" [1]\nWorldBegin\nWorldEnd\n",
                                  diagnostics);
-    CHECK(hider.pixelVariance == Approx(0.02f));
-    CHECK(hider.spp == 256);
-    CHECK(hider.minSamples == 8);
-    CHECK(hider.minExtraSamples == 4);
-    CHECK(hider.darkFalloff == Approx(0.1f));
+    checkSampling(hider, 0.02f, 256, 8, 4, 0.1f);
     // RenderMan 21 and later: Option "Ri" and Option "hider", with the sampler's other controls read quietly.
     Scene later = test::parseRib("Option \"Ri\" \"float PixelVariance\" [0.015]\n"
                                  "Option \"hider\" \"int maxsamples\" [64] \"int minsamples\" [4] "
                                  "\"string adaptivemetric\" [\"variance\"] \"float darkfalloff\" [0.025]\n"
                                  "WorldBegin\nWorldEnd\n",
                                  diagnostics);
-    CHECK(later.pixelVariance == Approx(0.015f));
-    CHECK(later.spp == 64);
-    CHECK(later.minSamples == 4);
+    checkSampling(later, 0.015f, 64, 4, -1, 0.025f);
     CHECK(test::warningsContaining(diagnostics, "") == 0);
     // Without them every pixel takes every sample.
     Scene plain = test::parseRib("WorldBegin\nWorldEnd\n", diagnostics);
-    CHECK(plain.pixelVariance == 0.0f);
-    CHECK(plain.minSamples == -1);
-    CHECK(plain.darkFalloff == Approx(0.025f));
+    checkSampling(plain, 0.0f, 16, -1, -1, 0.025f);
     CHECK_THROWS_WITH(test::parseRib("Format 8 8 1\nPixelVariance -0.1\nWorldBegin\nWorldEnd\n", diagnostics),
                       Catch::Contains("test.rib:2:1") && Catch::Contains("PixelVariance must be 0"));
     CHECK_THROWS_WITH(test::parseRib("Hider \"raytrace\" \"int minsamples\" [-3]\nWorldBegin\nWorldEnd\n", diagnostics),
