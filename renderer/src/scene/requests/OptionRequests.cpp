@@ -386,8 +386,8 @@ void SceneBuilder::option(RequestReader& in) {
         return;
     }
     if (category == "hider") {
-        // RenderMan 21 and later write the Hider's sample counts here; its other controls (incremental,
-        // adaptivemetric, darkfalloff, ...) steer RenderMan's own sampler and are read quietly.
+        // RenderMan 21 and later write the Hider's sample counts and darkfalloff here; its other controls
+        // (incremental, adaptivemetric, exposurebracket, ...) steer RenderMan's own sampler and are read quietly.
         hiderSampleCounts(params, "Option \"hider\"");
         for (auto const& p : params.all()) p.used = true;
         return;
