@@ -418,7 +418,8 @@ Renderer::Renderer(Scene& scene, RenderSettings settings, Diagnostics& diagnosti
     m_stats.pixelVariance = settings.pixelVariance >= 0.0f ? settings.pixelVariance : scene.pixelVariance;
     r.schedule = sampleSchedule(m_stats.spp, m_stats.pixelVariance, scene.minSamples, scene.minExtraSamples,
                                 scene.darkFalloff);
-    std::string const everyPixel = "every pixel takes " + std::to_string(m_stats.spp) + " samples";
+    std::string const everyPixel =
+        "every pixel takes " + std::to_string(m_stats.spp) + (m_stats.spp == 1 ? " sample" : " samples");
     if (r.schedule.adaptive() && r.integrator->WantsLightTracing()) {
         // Light subpaths land in whichever pixel they reach, so no pixel's value is its own samples' alone.
         diagnostics.warn(integrator.where, "Integrator \"" + integrator.name +
