@@ -128,9 +128,6 @@ void summarise(Film const& film, RenderStats::ImageSummary& out) {
     out.litFraction = pixels ? static_cast<double>(lit) / static_cast<double>(pixels) : 0.0;
 }
 
-/// A camera transform that puts every shape behind the camera is a common
-/// mistake (and the sign of a right-handed export): say so, rather than
-/// leaving an empty image to explain itself.
 /// The fewest, the most and the mean number of samples the film's pixels took.
 void countSamplesTaken(Film const& film, RenderStats::SamplesTaken& out) {
     out = {};
@@ -146,6 +143,9 @@ void countSamplesTaken(Film const& film, RenderStats::SamplesTaken& out) {
     out.mean = pixels > 0 ? static_cast<double>(total) / static_cast<double>(pixels) : 0.0;
 }
 
+/// A camera transform that puts every shape behind the camera is a common
+/// mistake (and the sign of a right-handed export): say so, rather than
+/// leaving an empty image to explain itself.
 void warnIfNothingInFront(RayTracer const& tracer, Scene const& scene, Diagnostics& diagnostics) {
     Vec3 lower, upper;
     tracer.cameraBounds(lower, upper);
@@ -454,7 +454,7 @@ void Renderer::Impl::renderTile(int tileX, int tileY, Film& film, Worker& w) {
     for (int y = y0; y < y1; ++y)
         for (int x = x0; x < x1; ++x) w.pixels.push_back({x, y});
     RayCounts counts;
-    int taken = std::min(schedule.first, schedule.most);
+    int taken = schedule.first;
     renderSamples(0, taken, film, w, counts);
     while (taken < schedule.most) {
         // Whether a pixel goes on depends on its own samples alone, and so on no thread count.

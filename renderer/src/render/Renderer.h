@@ -33,7 +33,7 @@ struct RenderSettings {
 struct RenderStats {
     double setupSeconds = 0, renderSeconds = 0;
     int threads = 0, spp = 0, width = 0, height = 0;
-    float pixelVariance = 0;  ///< above 0: pixels stop sampling once their value is this certain
+    float pixelVariance = 0;  ///< above 0: a pixel stops sampling once its relative variance is at most this
     struct SamplesTaken {
         int least = 0, most = 0;
         double mean = 0;
