@@ -75,7 +75,7 @@ Errors compare(std::vector<float> const& imageRgba, std::vector<float> const& re
 
 /// Applies a variant's RIB requests to the scene: an Integrator replaces the
 /// integrator, a Bxdf replaces the Bxdf with its handle, a PixelVariance and
-/// the Hider's minsamples and minextrasamples replace the scene's.
+/// the Hider's minsamples, minextrasamples and darkfalloff replace the scene's.
 void applyOverride(Scene& scene, std::string const& override, Diagnostics& diagnostics) {
     Scene changes;
     SceneBuilder(changes, diagnostics).readText(override, "<variant>");
@@ -84,6 +84,7 @@ void applyOverride(Scene& scene, std::string const& override, Diagnostics& diagn
     if (changes.pixelVariance != defaults.pixelVariance) scene.pixelVariance = changes.pixelVariance;
     if (changes.minSamples != defaults.minSamples) scene.minSamples = changes.minSamples;
     if (changes.minExtraSamples != defaults.minExtraSamples) scene.minExtraSamples = changes.minExtraSamples;
+    if (changes.darkFalloff != defaults.darkFalloff) scene.darkFalloff = changes.darkFalloff;
     for (MaterialDesc const& m : changes.materials) {
         bool found = false;
         for (MaterialDesc& existing : scene.materials)
