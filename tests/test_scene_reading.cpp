@@ -424,6 +424,48 @@ TEST_CASE("Clipping: camera rays see only what lies between the near and far pla
     CHECK(scene.camera.clipNear == 0.0f);
 }
 
+TEST_CASE("Camera saves the camera under a name, and a Display's camera picks the one it is seen from", "[rib]") {
+    // A red wall in front of the origin (z = 2) and a blue one behind it (z = -2). Camera "front" looks down +z,
+    // "back" is turned round; the transform at WorldBegin is the front one again. The mean red and blue.
+    auto seen = [](std::string const& display, std::string const& backParams = "") {
+        std::string rib = "Format 8 8 1\nProjection \"perspective\" \"fov\" [30]\n"
+                          "Integrator \"PxrDirectLighting\" \"d\"\n" + display +
+                          "Camera \"front\"\nRotate 180 0 1 0\nCamera \"back\"" + backParams + "\nIdentity\n"
+                          "DisplayChannel \"color Ci\"\nWorldBegin\n"
+                          "AttributeBegin\nBxdf \"PxrConstant\" \"r\" \"color emitColor\" [1 0 0]\n"
+                          "Polygon \"P\" [-5 -5 2  5 -5 2  5 5 2  -5 5 2]\nAttributeEnd\n"
+                          "Bxdf \"PxrConstant\" \"b\" \"color emitColor\" [0 0 1]\n"
+                          "Polygon \"P\" [-5 -5 -2  5 -5 -2  5 5 -2  -5 5 -2]\nWorldEnd\n";
+        auto r = test::renderRib(rib, test::withSpp(4));
+        auto all = [](int, int) { return true; };
+        return std::make_pair(test::meanChannel(r, 0, all), test::meanChannel(r, 2, all));
+    };
+    using Seen = std::pair<double, double>;
+    std::string const display = "Display \"x.exr\" \"openexr\" \"rgba\" \"string camera\" ";
+    CHECK(seen("") == Seen(1.0, 0.0));  // no Display names a camera: the one at WorldBegin
+    CHECK(seen(display + "[\"back\"]\n") == Seen(0.0, 1.0));
+    CHECK(seen(display + "[\"front\"]\n") == Seen(1.0, 0.0));
+    // A camera's clipping planes are its own: "back" sees nothing nearer than 3.
+    CHECK(seen(display + "[\"back\"]\n", " \"float nearClip\" [3] \"float farClip\" [100]") == Seen(0.0, 0.0));
+
+    Diagnostics diagnostics(false);
+    Scene scene = test::parseRib("Display \"x.exr\" \"openexr\" \"rgba\" \"string camera\" [\"side\"]\n"
+                                 "Display \"+y.exr\" \"openexr\" \"z\" \"string camera\" [\"top\"]\n"
+                                 "DisplayChannel \"color lpe:C<RD>L\" \"string filter\" [\"box\"]\n"
+                                 "Camera \"top\" \"float nearClip\" [2] \"float apertureNSides\" [5]\n"
+                                 "Translate 0 0 5\nWorldBegin\nWorldEnd\n",
+                                 diagnostics);
+    // A camera no Camera request named: the one at WorldBegin, with a warning.
+    CHECK(test::warningsContaining(diagnostics, "which no Camera request has named") == 1);
+    CHECK(scene.camera.worldToCamera[3][2] == 5.0f);
+    // A further display is seen from the first one's camera, with a warning.
+    CHECK(test::warningsContaining(diagnostics, "every image of a render is seen from one camera") == 1);
+    // The lens shape is not modelled; DisplayChannel is read, and the Display says whether its channel is made.
+    CHECK(test::warningsContaining(diagnostics, "apertureNSides") == 1);
+    CHECK(test::warningsContaining(diagnostics, "DisplayChannel") == 0);
+    CHECK(scene.camera.clipNear == 2.0f);
+}
+
 TEST_CASE("Sides 1 hides the back of a surface from the camera, and from no other ray", "[rib]") {
     // Two quads side by side in front of a green wall, wound opposite ways: whatever the
     // winding rule, one shows the camera its outside and the other its back.

@@ -22,7 +22,7 @@
 namespace bxdflab {
 
 struct CameraDesc {
-    Mat4 worldToCamera{1.0f};  ///< the transform in effect at WorldBegin
+    Mat4 worldToCamera{1.0f};  ///< the transform in effect at WorldBegin (or at the Camera request that named it)
     std::string projection = "orthographic";  ///< the RenderMan Interface's default
     float fov = 90.0f;  ///< degrees, across the shorter image axis
     bool hasScreenWindow = false;
@@ -49,6 +49,8 @@ struct DisplayDesc {
     std::string mode = "rgba";
     SourceLocation where;
     DisplayLayout layout = displayLayout("rgba");  ///< the channels `mode` names, read once
+    std::string camera;  ///< "string camera": the name a Camera request gave the camera it is seen from
+    SourceLocation cameraWhere;
 };
 
 struct IntegratorDesc {
@@ -125,6 +127,9 @@ struct SceneOptions {
     float darkFalloff = 0.025f;
     PixelFilterDesc pixelFilter;
     CameraDesc camera;
+    /// Camera name: the camera description (transform and camera options) saved under that name, for a
+    /// Display to be seen from.
+    std::map<std::string, CameraDesc> namedCameras;
     DisplayDesc display;
     std::vector<DisplayDesc> moreDisplays;  ///< "+name" Displays: further images of the same render (AOVs)
     ImageFinish finish;  ///< Imager and DisplayFilter

@@ -31,6 +31,8 @@ std::map<std::string, SceneBuilder::Handler> const& SceneBuilder::handlers() {
         {"Display", &SceneBuilder::display},
         {"Format", &SceneBuilder::format},
         {"Projection", &SceneBuilder::projection},
+        {"Camera", &SceneBuilder::camera},
+        {"DisplayChannel", &SceneBuilder::displayChannel},
         {"ScreenWindow", &SceneBuilder::screenWindow},
         {"FrameAspectRatio", &SceneBuilder::frameAspectRatio},
         {"PixelSamples", &SceneBuilder::pixelSamples},
@@ -304,7 +306,8 @@ void SceneBuilder::dispatch(RibRequest const& request) {
 void SceneBuilder::ignore(RequestReader&) {}
 
 bool SceneBuilder::isCameraOption(std::string const& name) {
-    return name == "Display" || name == "Format" || name == "Projection" || name == "ScreenWindow" ||
+    return name == "Display" || name == "Format" || name == "Projection" || name == "Camera" ||
+           name == "DisplayChannel" || name == "ScreenWindow" ||
            name == "FrameAspectRatio" || name == "PixelSamples" || name == "PixelFilter" || name == "Hider" ||
            name == "Integrator";
 }

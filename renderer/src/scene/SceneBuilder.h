@@ -137,6 +137,10 @@ private:
     static std::string resolutionProblem(float xres, float yres);
     void setFormat(float xres, float yres, float pixelAspect);
     void projection(RequestReader& in);
+    void camera(RequestReader& in);
+    void displayChannel(RequestReader& in);
+    /// At WorldBegin: the camera the image is seen from, the one its Display names or the current one.
+    void chooseCamera(SourceLocation const& where);
     void screenWindow(RequestReader& in);
     void frameAspectRatio(RequestReader& in);
     void setFrameAspectRatio(float ratio);

@@ -51,16 +51,24 @@ void SceneBuilder::display(RequestReader& in) {
         mode = "rgba";
         layout = displayLayout(mode);
     }
+    Param const* camera = params.find("camera");
+    std::string const cameraName =
+        camera && camera->decl.type == ParamType::String && !camera->strings.empty() ? camera->strings[0] : "";
+    SourceLocation const cameraWhere = camera ? camera->location : in.where();
     if (further) {
+        if (!cameraName.empty() && cameraName != m_scene.display.camera)
+            warnOnce("further display camera", cameraWhere,
+                     "Display \"+" + name + "\" asks to be seen from camera \"" + cameraName +
+                         "\": every image of a render is seen from one camera, the first Display's");
         if (type == "framebuffer" || type == "it")
             warnOnce("further framebuffer", in.where(),
                      "Display \"+" + name + "\" \"" + type + "\" would show a further image in a window, which this "
                      "renderer does not open; skipped");
         else
-            m_scene.moreDisplays.push_back({name, type, mode, in.where(), layout});
+            m_scene.moreDisplays.push_back({name, type, mode, in.where(), layout, cameraName, cameraWhere});
         return;
     }
-    m_scene.display = {name, type, mode, in.where(), layout};
+    m_scene.display = {name, type, mode, in.where(), layout, cameraName, cameraWhere};
     m_scene.moreDisplays.clear();
     displayFilterAndExposure(params);
 }
@@ -144,6 +152,52 @@ void SceneBuilder::projection(RequestReader& in) {
                            "Projection: depth of field needs all of fStop, focalLength and focalDistance; the camera "
                            "stays a pinhole");
     params.warnUnused(m_diagnostics, "Projection");
+}
+
+void SceneBuilder::camera(RequestReader& in) {
+    // RenderMan 22 and later write the camera as Projection, its transform and then Camera, which saves the
+    // camera description of the moment under a name; a Display's "string camera" picks the one it is seen from.
+    std::string const name = in.string("camera name");
+    ParamList params = in.params();
+    // Its clipping planes are set as a Clipping request before it would set them; its lens shape and
+    // shutter curve are effects this renderer does not model.
+    params.typeUntyped({{"nearClip", ParamType::Float}, {"farClip", ParamType::Float}}, "Camera");
+    Param const* nearClip = params.take("nearClip");
+    Param const* farClip = params.take("farClip");
+    if (nearClip || farClip)
+        setClipping({params.getFloat("nearClip", m_scene.camera.clipNear),
+                     params.getFloat("farClip", m_scene.camera.clipFar)},
+                    (nearClip ? nearClip : farClip)->location, "Camera \"" + name + "\": nearClip and farClip");
+    params.warnUnused(m_diagnostics, "Camera");
+    CameraDesc& saved = m_scene.namedCameras[name];
+    saved = m_scene.camera;
+    saved.worldToCamera = state().transform;
+}
+
+void SceneBuilder::chooseCamera(SourceLocation const& where) {
+    std::string const& name = m_scene.display.camera;
+    auto const named = m_scene.namedCameras.find(name);
+    if (named != m_scene.namedCameras.end()) {
+        m_scene.camera = named->second;
+        return;
+    }
+    if (!name.empty())
+        warnOnce("unknown camera", m_scene.display.cameraWhere,
+                 "Display \"" + m_scene.display.name + "\" asks to be seen from camera \"" + name +
+                     "\", which no Camera request has named: it is seen from the camera at WorldBegin");
+    m_scene.camera.worldToCamera = state().transform;
+    if (state().motion && m_scene.shutterClose > m_scene.shutterOpen)
+        warnOnce("camera motion", where,
+                 "the camera's transform moves (a motion block before WorldBegin): the camera does not, it stands "
+                 "where it is as the shutter opens (only shapes are blurred)");
+}
+
+void SceneBuilder::displayChannel(RequestReader& in) {
+    // Declares an output channel ("color Ci", "float a", or a light path expression as its "source") that a
+    // Display's mode may then name. The Display is what says whether this renderer makes it.
+    in.string("channel declaration");
+    ParamList params = in.params();
+    for (auto const& p : params.all()) p.used = true;  // its own filter, exposure and source are not read
 }
 
 void SceneBuilder::depthOfField(RequestReader& in) {
@@ -529,7 +583,7 @@ void SceneBuilder::worldBegin(RequestReader& in) {
         ++m_nestedWorlds;
         return;
     }
-    m_scene.camera.worldToCamera = state().transform;
+    chooseCamera(in.where());
     for (int i = 0; i < 4; ++i)
         for (int j = 0; j < 4; ++j)
             if (!std::isfinite(m_scene.camera.worldToCamera[i][j])) in.fail(in.where(), "the camera transform is not finite");
@@ -537,10 +591,6 @@ void SceneBuilder::worldBegin(RequestReader& in) {
         in.fail(in.where(), "the camera transform is singular (a zero scale?)");
     m_namedSpaces["camera"] = glm::inverse(m_scene.camera.worldToCamera);
     m_namedSpaces["world"] = Mat4(1.0f);
-    if (state().motion && m_scene.shutterClose > m_scene.shutterOpen)
-        warnOnce("camera motion", in.where(),
-                 "the camera's transform moves (a motion block before WorldBegin): the camera does not, it stands "
-                 "where it is as the shutter opens (only shapes are blurred)");
     state().transform = Mat4(1.0f);
     state().motion = nullptr;
     m_inWorld = true;
