@@ -278,3 +278,49 @@ TEST_CASE("Motion blur: shading sees the time of its ray", "[render][motion]") {
     CHECK(test::meanChannel(open, 0, all) == Approx(0.5).margin(0.01));
     CHECK(test::meanChannel(shut, 0, all) == 0.0);
 }
+
+TEST_CASE("Motion blur: a camera that moves while the shutter is open sees the world sweep past",
+          "[render][motion]") {
+    // The sweeping patch above, held still, and the camera moving instead: a motion block before
+    // WorldBegin carries the patch from just left of the view onto it, column x covered for 1 - x of the
+    // time.
+    std::string const moving = "MotionBegin [0 1]\nTranslate -1 0 1\nTranslate 0 0 1\nMotionEnd\n";
+    auto scene = [&](std::string const& shutter, std::string const& camera) {
+        return "Format 16 2 1\n" + shutter + "Projection \"orthographic\"\nScreenWindow 0 1 0 1\n" + camera +
+               "WorldBegin\nBxdf \"PxrConstant\" \"white\" \"color emitColor\" [1 1 1]\n"
+               "Patch \"bilinear\" \"P\" [0 -1 0  1 -1 0  0 2 0  1 2 0]\nWorldEnd\n";
+    };
+    RenderSettings settings = test::withSpp(1024);
+    settings.threads = 2;
+    // Also through Camera: the camera it saves moves as the one at WorldBegin would.
+    std::string const picksMain = "Display \"x.exr\" \"openexr\" \"rgba\" \"string camera\" [\"main\"]\n";
+    for (std::string const& picked :
+         {scene("Shutter 0 1\n", moving),
+          picksMain + scene("Shutter 0 1\n", moving + "Camera \"main\"\nIdentity\n")}) {
+        INFO(picked);
+        test::RenderOutcome const two = test::renderRib(picked, settings);
+        REQUIRE(two.width == 16);
+        for (int x = 0; x < 16; ++x) {
+            INFO("column " << x);
+            double const covered = 1.0 - (x + 0.5) / 16.0;
+            for (int y = 0; y < 2; ++y) CHECK(two.channel(x, y, 0) == Approx(covered).margin(0.04));
+        }
+        auto const& simulated = two.stats.effects.simulated;
+        CHECK(std::any_of(simulated.begin(), simulated.end(), [](std::string const& effect) {
+            return effect.find("motion blur: the camera and 0 shapes move") == 0;
+        }));
+        settings.threads = 1;
+        CHECK(test::renderRib(picked, settings).rgba == two.rgba);
+        settings.threads = 2;
+    }
+    // A shutter that does not open sees the camera where it stands at time 0: the patch out of view.
+    test::RenderOutcome const shut = test::renderRib(scene("", moving), test::withSpp(16));
+    auto all = [](int, int) { return true; };
+    CHECK(test::meanChannel(shut, 0, all) == 0.0);
+    // PxrVCM joins light paths to a camera that holds still: it says so, and the patch stays out of view.
+    test::RenderOutcome const held =
+        test::renderRib("Integrator \"PxrVCM\" \"v\"\n" + scene("Shutter 0 1\n", moving), test::withSpp(16));
+    CHECK(test::meanChannel(held, 0, all) == 0.0);
+    CHECK(held.anyMessageContains(
+        "joins light paths to a camera that holds still: the camera's motion is not rendered"));
+}

@@ -297,7 +297,8 @@ Renderer::Renderer(Scene& scene, RenderSettings settings, Diagnostics& diagnosti
         m_stats.plugins.push_back(plugin->name() + " (" + plugin->path() + ")");
     }
 
-    r.camera = std::make_unique<Camera>(scene.camera, scene.xres, scene.yres, scene.pixelAspect);
+    r.camera = std::make_unique<Camera>(scene.camera, scene.xres, scene.yres, scene.pixelAspect,
+                                        scene.shutterOpen, scene.shutterClose);
     IntegratorDesc integrator = scene.integrator;
     bool const renderMansGlobalIllumination =
         integrator.name == "PxrUnified" || integrator.name == "PxrUPBP" || integrator.name == "PxrVPL";
@@ -320,6 +321,16 @@ Renderer::Renderer(Scene& scene, RenderSettings settings, Diagnostics& diagnosti
     r.integratorPlugin = r.loader.integrator(integrator.name, integrator.params, integrator.where);
     r.integrator = &r.integratorPlugin->integrator();
     m_stats.plugins.insert(m_stats.plugins.begin(), r.integratorPlugin->name() + " (" + r.integratorPlugin->path() + ")");
+    if (r.camera->moves() && r.integrator->WantsLightTracing()) {
+        // Light subpaths are joined to the camera where it stands as the shutter opens.
+        r.camera->holdStill();
+        diagnostics.warn(integrator.where,
+                         "Integrator \"" + integrator.name +
+                             "\" joins light paths to a camera that holds still: the camera's "
+                             "motion is not rendered");
+        m_stats.effects.skip("camera motion",
+                             integrator.name + " joins light paths to a camera that holds still");
+    }
     if (r.camera->hasLens()) {
         if (r.integrator->WantsLightTracing()) {
             // Light subpaths are joined to a pinhole; a lens would need them joined to
@@ -404,12 +415,14 @@ Renderer::Renderer(Scene& scene, RenderSettings settings, Diagnostics& diagnosti
     size_t const moving = static_cast<size_t>(
         std::count_if(scene.shapes.begin(), scene.shapes.end(), [](auto const& shape) { return shape->moves(); }));
     r.shutterOpens = scene.shutterClose > scene.shutterOpen;
-    if (moving > 0)
-        effects.simulate("motion blur: " + std::to_string(moving) + (moving == 1 ? " shape moves" : " shapes move") +
+    if (moving > 0 || r.camera->moves()) {
+        std::string const shapes = std::to_string(moving) + (moving == 1 ? " shape moves" : " shapes move");
+        effects.simulate("motion blur: " + (r.camera->moves() ? "the camera and " + shapes : shapes) +
                          " while the shutter is open");
-    else
+    } else {
         effects.skip("motion blur", r.shutterOpens ? "the shutter is open, but nothing in the scene moves"
                                                    : "the shutter does not open (Shutter)");
+    }
 
     m_stats.integrator = r.integratorPlugin->name();
     m_stats.width = scene.xres;
@@ -527,6 +540,14 @@ void Renderer::Impl::renderSamples(int first, int end, Film& film, Worker& w, Ra
             clipNear = w.rayNear.data();
             clipFar = w.rayFar.data();
         }
+        if (camera->moves())  // each ray from where the camera is at its moment
+            for (size_t i = 0; i < static_cast<size_t>(count); ++i) {
+                float const stretch = camera->moveRay(w.rayTimes[i], w.rayOrigins[i], w.rayDirections[i]);
+                if (clipNear) {
+                    w.rayNear[i] *= stretch;
+                    w.rayFar[i] *= stretch;
+                }
+            }
         tracer->intersectCoherent(w.rayOrigins.data(), w.rayDirections.data(), count, RayKind::Camera,
                                   w.hits.data(), counts, clipNear, clipFar, times);
         rays->passAbsent(w.hits.data(), count, clipFar, RayKind::Camera, counts, w.arena);
@@ -588,14 +609,15 @@ void Renderer::Impl::recordSurfaces(Worker& w, int count, SurfaceRecord const& r
     for (size_t i = 0; i < static_cast<size_t>(count); ++i) {
         HitRecord const& hit = w.hits[i];
         if (!hit.hit()) continue;
-        w.depth[i] = camera->depthAlong(hit.dir, hit.t);
+        float const time = w.rayTimes.empty() ? scene.shutterOpen : w.rayTimes[i];
+        w.depth[i] = camera->depthAlong(hit.dir, hit.t, time);
         float* values = w.surface.data() + i * width;
         Shape const& shape = *scene.shapes[hit.geomID];
         if (basics) {
             SurfaceBasics const at = shape.basics(hit);
-            put(values, Quantity::P, camera->pointToCamera(at.P));
-            put(values, Quantity::N, camera->normalToCamera(at.N));
-            put(values, Quantity::Ng, camera->normalToCamera(at.Ng));
+            put(values, Quantity::P, camera->pointToCamera(at.P, time));
+            put(values, Quantity::N, camera->normalToCamera(at.N, time));
+            put(values, Quantity::Ng, camera->normalToCamera(at.Ng, time));
         }
         if (parameters) {
             SurfaceParameters const at = shape.parameters(hit);

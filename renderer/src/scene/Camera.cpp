@@ -4,7 +4,8 @@
 
 namespace bxdflab {
 
-Camera::Camera(CameraDesc const& desc, int xres, int yres, float pixelAspect)
+Camera::Camera(CameraDesc const& desc, int xres, int yres, float pixelAspect, float shutterOpen,
+               float shutterClose)
     : m_cameraToWorld(glm::inverse(desc.worldToCamera)),
       m_worldToCamera(desc.worldToCamera),
       m_perspective(desc.projection != "orthographic"),
@@ -47,6 +48,37 @@ Camera::Camera(CameraDesc const& desc, int xres, int yres, float pixelAspect)
     m_orthographicDirection = glm::normalize(transformVector(m_cameraToWorld, Vec3(0.0f, 0.0f, 1.0f)));
     m_lensX = transformVector(m_cameraToWorld, Vec3(m_lensRadius, 0.0f, 0.0f));
     m_lensY = transformVector(m_cameraToWorld, Vec3(0.0f, m_lensRadius, 0.0f));
+    // Camera rays are traced at moments spread over the shutter; a path that stays put then needs no moving.
+    if (desc.motion && shutterClose > shutterOpen) {
+        bool moves = false;
+        for (float time : shutterSteps(desc.motion->times, shutterOpen, shutterClose)) {
+            Mat4 const there = desc.motion->at(time);
+            for (int i = 0; i < 4; ++i)
+                for (int j = 0; j < 4; ++j)
+                    moves = moves || std::fabs(there[i][j] - m_worldToCamera[i][j]) >
+                                         1e-6f * (1.0f + std::fabs(m_worldToCamera[i][j]));
+        }
+        if (moves) m_motion = desc.motion;
+    }
+}
+
+float Camera::moveRay(float time, Vec3& org, Vec3& dir) const {
+    if (!m_motion) return 1.0f;
+    Mat4 const worldToCamera = m_motion->at(time);
+    // Transforms are blended entry by entry, so a half turn between two times passes through a flat one.
+    if (!(std::fabs(glm::determinant(worldToCamera)) > 1e-12f)) return 1.0f;
+    Mat4 const openToThen = glm::inverse(worldToCamera) * m_worldToCamera;
+    org = transformPoint(openToThen, org);
+    Vec3 const moved = transformVector(openToThen, dir);
+    float const stretch = glm::length(moved);
+    dir = moved / stretch;
+    return stretch;
+}
+
+float Camera::depthAlong(Vec3 const& dir, float t, float time) const {
+    if (!m_motion) return glm::dot(m_depthAlong, dir) * t;
+    Mat4 const worldToCamera = m_motion->at(time);
+    return glm::dot(Vec3(worldToCamera[0][2], worldToCamera[1][2], worldToCamera[2][2]), dir) * t;
 }
 
 void Camera::generateRay(float rasterX, float rasterY, Vec3& org, Vec3& dir) const {
@@ -114,6 +146,7 @@ bool Camera::project(Vec3 const& P, float& rasterX, float& rasterY, Vec3& toEye,
 }
 
 bool Camera::mightSee(Vec3 const& center, float radius) const {
+    if (m_motion) return true;
     // In camera space, where the rays are made. A transform that scales makes
     // the sphere an ellipsoid: the Frobenius norm bounds how much it grows.
     Mat3 linear(m_worldToCamera);

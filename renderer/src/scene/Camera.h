@@ -11,7 +11,10 @@ namespace bxdflab {
 
 class Camera {
 public:
-    Camera(CameraDesc const& desc, int xres, int yres, float pixelAspect);
+    /// The camera as `desc` places it when the shutter opens at shutterOpen; a camera whose desc.motion
+    /// moves it before shutterClose moves while the shutter is open (moves()).
+    Camera(CameraDesc const& desc, int xres, int yres, float pixelAspect, float shutterOpen = 0.0f,
+           float shutterClose = 0.0f);
     /// The world-space ray through raster position (x, y) (pixels, fractional).
     void generateRay(float rasterX, float rasterY, Vec3& org, Vec3& dir) const;
     /// With a lens (hasLens()): the ray from the lens point `lens` (two numbers
@@ -21,17 +24,29 @@ public:
     /// dir (from the camera's origin or lens) crosses them.
     bool clips() const { return m_clipNear > 0.0f || m_clipFar < kInfinity; }
     void clipRange(Vec3 const& dir, float& tnear, float& tfar) const;
-    /// Camera-space depth (z) of the point at distance t along a camera ray in direction dir.
-    float depthAlong(Vec3 const& dir, float t) const { return glm::dot(m_depthAlong, dir) * t; }
-    /// A world-space point, and a world-space normal (unit length), in camera space.
-    Vec3 pointToCamera(Vec3 const& P) const { return transformPoint(m_worldToCamera, P); }
-    Vec3 normalToCamera(Vec3 const& N) const { return safeNormalize(transformNormal(m_cameraToWorld, N)); }
+    /// Whether the camera moves while the shutter is open. generateRay() then gives the rays of the
+    /// camera as the shutter opens, and moveRay() carries each to the moment it is traced at.
+    bool moves() const { return m_motion != nullptr; }
+    /// Carries a ray of the camera as the shutter opens to where the camera is at `time`: the same ray
+    /// in camera space. Returns how much a unit of distance along the old ray stretches along the new
+    /// (1 unless the camera's transform scales), so distances such as clipRange's can follow.
+    float moveRay(float time, Vec3& org, Vec3& dir) const;
+    /// Makes the camera stand where it is as the shutter opens, whatever its motion.
+    void holdStill() { m_motion = nullptr; }
+    /// Camera-space depth (z) of the point at distance t along a camera ray in direction dir traced at `time`.
+    float depthAlong(Vec3 const& dir, float t, float time) const;
+    /// A world-space point, and a world-space normal (unit length), in the camera space of `time`.
+    Vec3 pointToCamera(Vec3 const& P, float time) const { return transformPoint(worldToCameraAt(time), P); }
+    Vec3 normalToCamera(Vec3 const& N, float time) const {
+        return safeNormalize(
+            transformNormal(m_motion ? glm::inverse(worldToCameraAt(time)) : m_cameraToWorld, N));
+    }
     /// Whether DepthOfField gave the camera a lens of some size.
     bool hasLens() const { return m_lensRadius > 0.0f; }
     /// Makes the camera a pinhole whatever its DepthOfField said.
     void removeLens() { m_lensRadius = 0.0f; }
     /// False only when no camera ray can reach the sphere (center, radius):
-    /// it lies behind the camera or wholly outside the image's frustum.
+    /// it lies behind the camera or wholly outside the image's frustum (never while the camera moves).
     bool mightSee(Vec3 const& center, float radius) const;
     /// Where a camera ray through `P` lands, for light subpaths joined to the camera
     /// (perspective cameras only): false when P is behind the camera or outside the image.
@@ -48,6 +63,10 @@ public:
     Vec3 position() const { return m_position; }
 
 private:
+    /// The world-to-camera transform at `time` (as the shutter opens for a camera that holds still).
+    Mat4 worldToCameraAt(float time) const { return m_motion ? m_motion->at(time) : m_worldToCamera; }
+
+    std::shared_ptr<TransformPath const> m_motion;  ///< world-to-camera over time, while the camera moves
     Mat4 m_cameraToWorld;
     Mat4 m_worldToCamera;
     Vec3 m_position;

@@ -16,13 +16,17 @@
 #include "core/TextureLocator.h"
 #include "parse/ParamList.h"
 #include "scene/DisplayChannels.h"
+#include "scene/Motion.h"
 #include "scene/lights/Light.h"
 #include "scene/shapes/Shape.h"
 
 namespace bxdflab {
 
 struct CameraDesc {
-    Mat4 worldToCamera{1.0f};  ///< the transform in effect at WorldBegin (or at the Camera request that named it)
+    /// The transform in effect at WorldBegin (or at the Camera request that named it), as the shutter opens.
+    Mat4 worldToCamera{1.0f};
+    /// The same over time, when a motion block before WorldBegin moves the camera (null when it holds still).
+    std::shared_ptr<TransformPath const> motion;
     std::string projection = "orthographic";  ///< the RenderMan Interface's default
     float fov = 90.0f;  ///< degrees, across the shorter image axis
     bool hasScreenWindow = false;

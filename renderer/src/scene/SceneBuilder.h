@@ -140,7 +140,7 @@ private:
     void camera(RequestReader& in);
     void displayChannel(RequestReader& in);
     /// At WorldBegin: the camera the image is seen from, the one its Display names or the current one.
-    void chooseCamera(SourceLocation const& where);
+    void chooseCamera();
     void screenWindow(RequestReader& in);
     void frameAspectRatio(RequestReader& in);
     void setFrameAspectRatio(float ratio);

@@ -172,9 +172,10 @@ void SceneBuilder::camera(RequestReader& in) {
     CameraDesc& saved = m_scene.namedCameras[name];
     saved = m_scene.camera;
     saved.worldToCamera = state().transform;
+    saved.motion = state().motion;
 }
 
-void SceneBuilder::chooseCamera(SourceLocation const& where) {
+void SceneBuilder::chooseCamera() {
     std::string const& name = m_scene.display.camera;
     auto const named = m_scene.namedCameras.find(name);
     if (named != m_scene.namedCameras.end()) {
@@ -186,10 +187,7 @@ void SceneBuilder::chooseCamera(SourceLocation const& where) {
                  "Display \"" + m_scene.display.name + "\" asks to be seen from camera \"" + name +
                      "\", which no Camera request has named: it is seen from the camera at WorldBegin");
     m_scene.camera.worldToCamera = state().transform;
-    if (state().motion && m_scene.shutterClose > m_scene.shutterOpen)
-        warnOnce("camera motion", where,
-                 "the camera's transform moves (a motion block before WorldBegin): the camera does not, it stands "
-                 "where it is as the shutter opens (only shapes are blurred)");
+    m_scene.camera.motion = state().motion;  // a motion block before WorldBegin moves the camera
 }
 
 void SceneBuilder::displayChannel(RequestReader& in) {
@@ -583,12 +581,18 @@ void SceneBuilder::worldBegin(RequestReader& in) {
         ++m_nestedWorlds;
         return;
     }
-    chooseCamera(in.where());
-    for (int i = 0; i < 4; ++i)
-        for (int j = 0; j < 4; ++j)
-            if (!std::isfinite(m_scene.camera.worldToCamera[i][j])) in.fail(in.where(), "the camera transform is not finite");
-    if (std::fabs(glm::determinant(m_scene.camera.worldToCamera)) < 1e-12f)
-        in.fail(in.where(), "the camera transform is singular (a zero scale?)");
+    chooseCamera();
+    std::vector<Mat4> poses = {m_scene.camera.worldToCamera};
+    if (m_scene.camera.motion)
+        poses.insert(poses.end(), m_scene.camera.motion->transforms.begin(),
+                     m_scene.camera.motion->transforms.end());
+    for (Mat4 const& pose : poses) {
+        for (int i = 0; i < 4; ++i)
+            for (int j = 0; j < 4; ++j)
+                if (!std::isfinite(pose[i][j])) in.fail(in.where(), "the camera transform is not finite");
+        if (std::fabs(glm::determinant(pose)) < 1e-12f)
+            in.fail(in.where(), "the camera transform is singular (a zero scale?)");
+    }
     m_namedSpaces["camera"] = glm::inverse(m_scene.camera.worldToCamera);
     m_namedSpaces["world"] = Mat4(1.0f);
     state().transform = Mat4(1.0f);
