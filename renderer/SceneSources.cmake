@@ -29,6 +29,7 @@ set(RIX_SCENE_SOURCES
   scene/requests/InstanceRequests.cpp
   scene/requests/FreeformRequests.cpp
   scene/Motion.cpp
+  scene/Camera.cpp
   scene/shapes/Shape.cpp
   scene/shapes/Quadric.cpp
   scene/shapes/Sphere.cpp

@@ -197,24 +197,27 @@ TEST_CASE("standard names need no type, an unknown untyped name in a skipped req
 
 TEST_CASE("unknown requests are warned about once with their location, then skipped", "[rib]") {
     Diagnostics diagnostics(false);
-    Scene scene = parseRib("RelativeDetail 0.5\nRelativeDetail 2\nWorldBegin\nSphere 1 -1 1 360\nWorldEnd\n", diagnostics);
+    Scene scene =
+        parseRib("Atmosphere \"fog\"\nAtmosphere \"depthcue\"\nWorldBegin\nSphere 1 -1 1 360\nWorldEnd\n",
+                 diagnostics);
     CHECK(scene.shapes.size() == 1);
     std::vector<std::string> warnings = test::warningTexts(diagnostics);
     REQUIRE(warnings.size() == 1u);
     CHECK_THAT(warnings[0], Catch::Matchers::StartsWith("test.rib:1:1"));
-    CHECK_THAT(warnings[0], Catch::Matchers::Contains("RelativeDetail"));
+    CHECK_THAT(warnings[0], Catch::Matchers::Contains("Atmosphere"));
 }
 
 TEST_CASE("a name that is no RIB request is told apart from an unsupported one, with the request it was likely meant to be",
           "[rib]") {
     Diagnostics diagnostics(false);
-    Scene scene = parseRib("RelativeDetail 0.5\nWorldBegin\nTransforBegin\nsphere 1 -1 1 360\nFrobnicate 3\nSphere 1 -1 1 360\n"
-                           "WorldEnd\n",
-                           diagnostics);
+    Scene scene = parseRib(
+        "Atmosphere \"fog\"\nWorldBegin\nTransforBegin\nsphere 1 -1 1 360\nFrobnicate 3\nSphere 1 -1 1 360\n"
+        "WorldEnd\n",
+        diagnostics);
     CHECK(scene.shapes.size() == 1);
     std::vector<std::string> warnings = test::warningTexts(diagnostics);
     REQUIRE(warnings.size() == 4u);
-    CHECK_THAT(warnings[0], Catch::Matchers::Contains("unsupported request RelativeDetail"));
+    CHECK_THAT(warnings[0], Catch::Matchers::Contains("unsupported request Atmosphere"));
     CHECK_THAT(warnings[1], Catch::Matchers::StartsWith("test.rib:3:1"));
     CHECK_THAT(warnings[1], Catch::Matchers::Contains("TransforBegin is not a RIB request; skipped (did you mean TransformBegin?)"));
     CHECK_THAT(warnings[2], Catch::Matchers::Contains("sphere is not a RIB request; skipped (did you mean Sphere?)"));

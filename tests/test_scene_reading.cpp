@@ -466,6 +466,57 @@ TEST_CASE("Camera saves the camera under a name, and a Display's camera picks th
     CHECK(scene.camera.clipNear == 2.0f);
 }
 
+TEST_CASE("Detail and DetailRange draw the one representation of a model meant for its size on the image",
+          "[rib]") {
+    // After aqsis's level-of-detail example: a unit sphere given three times, red for a model under 20-30
+    // pixels of the image, green up to 500-600, blue above, at a distance. Which of red, green and blue
+    // shows.
+    auto drawn = [](float distance, std::string const& options = "",
+                    std::string const& detail = "Detail [-1 1 -1 1 -1 1]\n") {
+        std::string const rib = "Format 64 64 1\nProjection \"perspective\" \"fov\" [40]\n" + options +
+                                "WorldBegin\nTranslate 0 0 " + std::to_string(distance) +
+                                "\nAttributeBegin\n" + detail +
+                                "DetailRange [0 0 20 30]\nBxdf \"PxrConstant\" \"r\" \"color emitColor\" [1 "
+                                "0 0]\nSphere 1 -1 1 360\n"
+                                "DetailRange [20 30 500 600]\nBxdf \"PxrConstant\" \"g\" \"color emitColor\" "
+                                "[0 1 0]\nSphere 1 -1 1 360\n"
+                                "DetailRange [500 600 1e38 1e38]\nBxdf \"PxrConstant\" \"b\" \"color "
+                                "emitColor\" [0 0 1]\nSphere 1 -1 1 360\n"
+                                "AttributeEnd\nWorldEnd\n";
+        auto r = test::renderRib(rib, test::withSpp(4));
+        auto all = [](int, int) { return true; };
+        std::string shown;
+        for (int c = 0; c < 3; ++c)
+            if (test::meanChannel(r, c, all) > 0.0) shown += "rgb"[c];
+        return shown;
+    };
+    // The bound's nearest face spans 2 / (2 (d - 1) tan 20 deg) of the image's 64 pixels: about 7700 square
+    // pixels at 3, 85 at 20 and 3 at 100.
+    CHECK(drawn(3.0f) == "b");
+    CHECK(drawn(20.0f) == "g");
+    CHECK(drawn(100.0f) == "r");
+    // RelativeDetail scales the detail: a thousandth of 7700 is red's.
+    CHECK(drawn(3.0f, "RelativeDetail 0.001\n") == "r");
+    // A bound that reaches the eye is as detailed as can be.
+    CHECK(drawn(3.0f, "", "Detail [-1 1 -1 1 -5 1]\n") == "b");
+
+    // Without a Detail, the finest representation, with a warning; what was left out is listed.
+    Diagnostics diagnostics(false);
+    Scene scene = test::parseRib(
+        "WorldBegin\nDetailRange [0 0 1 2]\nSphere 1 -1 1 360\nDetailRange [1 2 1e38 1e38]\n"
+        "Sphere 2 -2 2 360\nWorldEnd\n",
+        diagnostics);
+    REQUIRE(scene.shapes.size() == 1);
+    CHECK(test::warningsContaining(diagnostics, "DetailRange with no Detail bound before it") == 1);
+    CHECK(std::count_if(scene.dropped.begin(), scene.dropped.end(), [](std::string const& line) {
+              return line.find("1 shape is a representation that DetailRange does not draw") == 0;
+          }) == 1);
+    // Numbers that decrease are an error at their line.
+    Diagnostics bad(false);
+    CHECK_THROWS_WITH(test::parseRib("WorldBegin\nDetailRange [0 10 5 20]\n", bad),
+                      Catch::Matchers::StartsWith("test.rib:2:1: DetailRange: minvisible"));
+}
+
 TEST_CASE("Sides 1 hides the back of a surface from the camera, and from no other ray", "[rib]") {
     // Two quads side by side in front of a green wall, wound opposite ways: whatever the
     // winding rule, one shows the camera its outside and the other its back.

@@ -123,18 +123,24 @@ void Camera::clipRange(Vec3 const& dir, float& tnear, float& tfar) const {
     tfar = m_clipFar / along;
 }
 
-bool Camera::project(Vec3 const& P, float& rasterX, float& rasterY, Vec3& toEye, float& distance,
-                     float& directionPdf) const {
-    if (!m_perspective) return false;
-    Vec3 c = transformPoint(m_worldToCamera, P);
-    if (!(c.z > 0.0f)) return false;
+bool Camera::rasterPosition(Vec3 const& P, float& rasterX, float& rasterY) const {
+    Vec3 const c = transformPoint(m_worldToCamera, P);
+    if (m_perspective && !(c.z > 0.0f)) return false;
     // The inverse of generateRay: the screen position of the ray through c.
-    float sx = c.x / (c.z * m_tanHalfFov), sy = c.y / (c.z * m_tanHalfFov);
+    float const scale = m_perspective ? c.z * m_tanHalfFov : 1.0f;
+    float const sx = c.x / scale, sy = c.y / scale;
     rasterX = (sx - m_screen[0]) / (m_screen[1] - m_screen[0]) * static_cast<float>(m_xres);
     rasterY = (m_screen[3] - sy) / (m_screen[3] - m_screen[2]) * static_cast<float>(m_yres);
+    return true;
+}
+
+bool Camera::project(Vec3 const& P, float& rasterX, float& rasterY, Vec3& toEye, float& distance,
+                     float& directionPdf) const {
+    if (!m_perspective || !rasterPosition(P, rasterX, rasterY)) return false;
     if (!(rasterX >= 0.0f && rasterX < static_cast<float>(m_xres) && rasterY >= 0.0f &&
           rasterY < static_cast<float>(m_yres)))
         return false;
+    Vec3 const c = transformPoint(m_worldToCamera, P);
     Vec3 toward = m_position - P;
     distance = glm::length(toward);
     if (!(distance > 0.0f)) return false;

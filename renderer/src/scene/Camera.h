@@ -48,6 +48,9 @@ public:
     /// False only when no camera ray can reach the sphere (center, radius):
     /// it lies behind the camera or wholly outside the image's frustum (never while the camera moves).
     bool mightSee(Vec3 const& center, float radius) const;
+    /// Where the world-space point P lands on the image, in raster units (pixels, not limited to the
+    /// image), as the shutter opens: false when a perspective camera has it behind the eye.
+    bool rasterPosition(Vec3 const& P, float& rasterX, float& rasterY) const;
     /// Where a camera ray through `P` lands, for light subpaths joined to the camera
     /// (perspective cameras only): false when P is behind the camera or outside the image.
     /// Gives the raster position, the unit direction from P to the eye and the distance,

@@ -129,6 +129,8 @@ struct SceneOptions {
     int minSamples = -1, minExtraSamples = -1;
     /// Hider "darkfalloff": a pixel darker than this is held to the error allowed at this brightness.
     float darkFalloff = 0.025f;
+    /// RelativeDetail: scales every Detail's raster area before DetailRange compares it.
+    float relativeDetail = 1.0f;
     PixelFilterDesc pixelFilter;
     CameraDesc camera;
     /// Camera name: the camera description (transform and camera options) saved under that name, for a

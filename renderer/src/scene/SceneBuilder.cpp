@@ -32,6 +32,7 @@ std::map<std::string, SceneBuilder::Handler> const& SceneBuilder::handlers() {
         {"Format", &SceneBuilder::format},
         {"Projection", &SceneBuilder::projection},
         {"Camera", &SceneBuilder::camera},
+        {"RelativeDetail", &SceneBuilder::relativeDetail},
         {"DisplayChannel", &SceneBuilder::displayChannel},
         {"ScreenWindow", &SceneBuilder::screenWindow},
         {"FrameAspectRatio", &SceneBuilder::frameAspectRatio},
@@ -75,6 +76,8 @@ std::map<std::string, SceneBuilder::Handler> const& SceneBuilder::handlers() {
         {"MotionBegin", &SceneBuilder::motionBegin},
         {"MotionEnd", &SceneBuilder::motionEnd},
         {"Attribute", &SceneBuilder::attribute},
+        {"Detail", &SceneBuilder::detail},
+        {"DetailRange", &SceneBuilder::detailRange},
         {"Color", &SceneBuilder::color},
         {"Opacity", &SceneBuilder::opacity},
         {"ReverseOrientation", &SceneBuilder::reverseOrientation},
@@ -450,6 +453,11 @@ void SceneBuilder::finishFrame() {
         if (material.plugin == "ClassicSurface")
             material.params.add(colorParam("ambient", m_ambient));
     resolvePortals();
+    if (m_shapesOutsideDetail > 0)
+        m_scene.dropped.push_back(
+            std::to_string(m_shapesOutsideDetail) +
+            (m_shapesOutsideDetail == 1 ? " shape is a representation" : " shapes are representations") +
+            " that DetailRange does not draw at its model's detail (level of detail)");
     // A file lit by classic light shaders and naming no integrator was written for RenderMan before
     // RIS, whose surface shaders gathered those lights: PxrDirectLighting renders it that way, where
     // RIS's PxrDefault would light it from the camera and leave its lights unused.

@@ -66,6 +66,10 @@ private:
         bool classicLightShadows = false;
         bool colorSet = false;
         bool volume = false;  ///< the Bxdf in effect is a volume's (PxrVolume): its shapes are not rendered
+        /// Detail: the raster area (pixels) the current bound covers, times RelativeDetail (-1: none given).
+        float detail = -1.0f;
+        /// DetailRange: the shapes that follow are one representation of a model, not the one for its detail.
+        bool outsideDetailRange = false;
         std::set<std::string> lightsOff;  ///< handles turned off with Illuminate for the shapes that follow
         /// The classic light list: LightSource lights on for the shapes that follow. It is an
         /// attribute, so a light given inside a block is off after the block ends.
@@ -138,6 +142,7 @@ private:
     void setFormat(float xres, float yres, float pixelAspect);
     void projection(RequestReader& in);
     void camera(RequestReader& in);
+    void relativeDetail(RequestReader& in);
     void displayChannel(RequestReader& in);
     /// At WorldBegin: the camera the image is seen from, the one its Display names or the current one.
     void chooseCamera();
@@ -205,6 +210,11 @@ private:
     /// `text` with the variables it names ("${RMSPROJ}/rib") replaced by their values (see variable()).
     std::string expanded(std::string const& text) const;
     // The graphics state (scene/requests/StateRequests.cpp).
+    void detail(RequestReader& in);
+    void detailRange(RequestReader& in);
+    /// The raster area (pixels) of the bounding rectangle of where the box `bound` (xmin xmax ymin ymax
+    /// zmin zmax, current space) lands on the image; infinite when it reaches the eye.
+    float rasterArea(std::vector<float> const& bound);
     void attributeBegin(RequestReader& in);
     void attributeEnd(RequestReader& in);
     void transformBegin(RequestReader& in);
@@ -478,6 +488,7 @@ private:
     };
     std::map<std::string, LightUse> m_lightUse;
     int m_worldShapes = 0;  ///< shapes read in this world so far
+    int m_shapesOutsideDetail = 0;  ///< shapes of this world left out by DetailRange
     int m_listedLights = 0;  ///< classic lights given in this world so far
     /// Light linking, as a shape is read: the handles that are off for it (sorted), how many
     /// classic lights had been given (the later ones are off for it too), and its "lighting" subsets.

@@ -175,6 +175,14 @@ void SceneBuilder::camera(RequestReader& in) {
     saved.motion = state().motion;
 }
 
+void SceneBuilder::relativeDetail(RequestReader& in) {
+    float const scale = in.number("relativedetail");
+    in.finish();
+    if (!(scale >= 0.0f) || !std::isfinite(scale))
+        in.fail(in.where(), "the scale must be a finite number of at least 0");
+    m_scene.relativeDetail = scale;
+}
+
 void SceneBuilder::chooseCamera() {
     std::string const& name = m_scene.display.camera;
     auto const named = m_scene.namedCameras.find(name);
@@ -605,6 +613,7 @@ void SceneBuilder::worldBegin(RequestReader& in) {
     m_lightHandles.clear();
     m_lightUse.clear();
     m_worldShapes = 0;
+    m_shapesOutsideDetail = 0;
     m_listedLights = 0;
     m_lightsOff.clear();
     m_lightsOffIndex.clear();

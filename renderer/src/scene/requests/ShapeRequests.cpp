@@ -76,6 +76,10 @@ void SceneBuilder::addShape(std::unique_ptr<Shape> shape, SourceLocation const& 
         throw RibError(where, "geometry before any WorldBegin: " + archive + " (read it from a scene with ReadArchive)");
     }
     if (!building()) return;
+    if (state().outsideDetailRange) {
+        ++m_shapesOutsideDetail;
+        return;
+    }
     if (m_motion && m_motion->current >= 0) {  // one time of a motion block: kept until its MotionEnd
         m_motion->shapes.back().push_back({std::move(shape), where, std::move(constants)});
         return;

@@ -5,6 +5,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
+#include "scene/Camera.h"
 #include "scene/SceneBuilder.h"
 
 namespace bxdflab {
@@ -50,6 +51,58 @@ bool SceneBuilder::endBlock(RequestReader& in, Block block) {
 }
 
 void SceneBuilder::attributeBegin(RequestReader& in) { beginBlock(in, Block::Attribute); }
+
+// Level of detail. A model given in several representations sets its bound with Detail and gives
+// each representation after a DetailRange; what the bound covers on the image picks the one drawn.
+
+void SceneBuilder::detail(RequestReader& in) {
+    std::vector<float> const bound = in.numbers(6, "bound (xmin xmax ymin ymax zmin zmax)");
+    in.finish();
+    if (!(bound[0] <= bound[1] && bound[2] <= bound[3] && bound[4] <= bound[5]))
+        in.fail(in.where(), "the bound must give each axis's least value before its greatest");
+    if (!m_inWorld) {
+        warnOnce("detail outside world", in.where(),
+                 "Detail before WorldBegin has no model to measure; ignored");
+        return;
+    }
+    state().detail = rasterArea(bound) * m_scene.relativeDetail;
+}
+
+float SceneBuilder::rasterArea(std::vector<float> const& bound) {
+    Camera const camera(m_scene.camera, m_scene.xres, m_scene.yres, m_scene.pixelAspect);
+    float xmin = kInfinity, xmax = -kInfinity, ymin = kInfinity, ymax = -kInfinity;
+    for (int corner = 0; corner < 8; ++corner) {
+        Vec3 const p(bound[corner & 1], bound[2 + ((corner >> 1) & 1)], bound[4 + ((corner >> 2) & 1)]);
+        float x = 0.0f, y = 0.0f;
+        if (!camera.rasterPosition(transformPoint(state().transform, p), x, y)) return kInfinity;
+        xmin = std::min(xmin, x);
+        xmax = std::max(xmax, x);
+        ymin = std::min(ymin, y);
+        ymax = std::max(ymax, y);
+    }
+    return (xmax - xmin) * (ymax - ymin);
+}
+
+void SceneBuilder::detailRange(RequestReader& in) {
+    std::vector<float> const range = in.numbers(4, "minvisible lowertransition uppertransition maxvisible");
+    in.finish();
+    if (!(range[0] <= range[1] && range[1] <= range[2] && range[2] <= range[3]))
+        in.fail(in.where(), "minvisible, lowertransition, uppertransition and maxvisible must not decrease");
+    float detail = state().detail;
+    if (detail < 0.0f) {
+        warnOnce("detail range without detail", in.where(),
+                 "DetailRange with no Detail bound before it: the detail is taken as the greatest, so the "
+                 "representation for the closest view is drawn");
+        detail = kInfinity;
+    }
+    // A representation fades in between minvisible and lowertransition and out between uppertransition
+    // and maxvisible, where the next takes over. Drawing each where it is at least half faded in draws
+    // exactly one of a model's representations at any detail, with no blend of two. (1e38, as files write
+    // infinity, stays above any detail.)
+    detail = std::min(detail, 1e37f);
+    state().outsideDetailRange =
+        !(detail >= 0.5f * (range[0] + range[1]) && detail < 0.5f * (range[2] + range[3]));
+}
 
 void SceneBuilder::attributeEnd(RequestReader& in) {
     if (!endBlock(in, Block::Attribute)) return;
