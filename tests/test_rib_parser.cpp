@@ -207,6 +207,19 @@ TEST_CASE("unknown requests are warned about once with their location, then skip
     CHECK_THAT(warnings[0], Catch::Matchers::Contains("Atmosphere"));
 }
 
+TEST_CASE("Matte 0 is read quietly; Matte 1, a holdout, is drawn as a surface with a warning", "[rib]") {
+    Diagnostics quiet(false);
+    CHECK(parseRib("WorldBegin\nMatte 0\nSphere 1 -1 1 360\nWorldEnd\n", quiet).shapes.size() == 1);
+    CHECK(test::warningsContaining(quiet, "") == 0);
+    Diagnostics holdout(false);
+    CHECK(parseRib("WorldBegin\nMatte 1\nSphere 1 -1 1 360\nMatte 1\nWorldEnd\n", holdout).shapes.size() ==
+          1);
+    CHECK(test::warningsContaining(holdout, "Matte 1 (a holdout") == 1);
+    Diagnostics bad(false);
+    CHECK_THROWS_WITH(parseRib("WorldBegin\nMatte 2\n", bad),
+                      Catch::Matchers::StartsWith("test.rib:2:1: Matte: onoff must be 0 or 1"));
+}
+
 TEST_CASE("a name that is no RIB request is told apart from an unsupported one, with the request it was likely meant to be",
           "[rib]") {
     Diagnostics diagnostics(false);

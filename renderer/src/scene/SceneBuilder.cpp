@@ -76,6 +76,7 @@ std::map<std::string, SceneBuilder::Handler> const& SceneBuilder::handlers() {
         {"MotionBegin", &SceneBuilder::motionBegin},
         {"MotionEnd", &SceneBuilder::motionEnd},
         {"Attribute", &SceneBuilder::attribute},
+        {"Matte", &SceneBuilder::matte},
         {"Detail", &SceneBuilder::detail},
         {"DetailRange", &SceneBuilder::detailRange},
         {"Color", &SceneBuilder::color},

@@ -259,6 +259,7 @@ private:
     /// Attribute "Ri": the state requests as RenderMan 21+ writes them.
     void riAttributes(ParamList const& params);
     void sides(RequestReader& in);
+    void matte(RequestReader& in);
     void basis(RequestReader& in);
     void textureCoordinates(RequestReader& in);
     // Shading: Bxdfs, classic shaders, lights (scene/requests/ShadingRequests.cpp).

@@ -445,6 +445,17 @@ void SceneBuilder::sides(RequestReader& in) {
     state().twoSided = sides == 2.0f;
 }
 
+void SceneBuilder::matte(RequestReader& in) {
+    // Matte 1 makes what follows a holdout: it hides what lies behind it and shows nothing itself.
+    float const on = in.number("onoff");
+    in.finish();
+    if (on != 0.0f && on != 1.0f) in.fail(in.where(), "onoff must be 0 or 1");
+    if (on == 1.0f)
+        warnOnce("matte", in.where(),
+                 "Matte 1 (a holdout, which hides what lies behind it and shows nothing itself) is not supported: "
+                 "what follows is drawn as an ordinary surface");
+}
+
 void SceneBuilder::riAttributes(ParamList const& params) {
     // RenderMan 21 and later write the state requests as one Attribute "Ri",
     // each request a parameter of its own name.
