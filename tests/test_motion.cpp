@@ -31,6 +31,26 @@ void checkHitAgrees(Shape const& shape, HitRecord const& hit) {
     CHECK(glm::length(at.N) == Approx(1.0f).epsilon(1e-5));
 }
 
+/// A white patch one view wide sweeping onto the view of an orthographic 16 x 2 image while the shutter
+/// is open: column x (0..1 across the view) covered for the last 1 - x of the time, the effects report
+/// saying `effect`, and the same image with 1 thread as with 2.
+void checkSweep(std::string const& rib, std::string const& effect) {
+    RenderSettings settings = test::withSpp(1024);
+    settings.threads = 2;
+    test::RenderOutcome const two = test::renderRib(rib, settings);
+    REQUIRE(two.width == 16);
+    for (int x = 0; x < 16; ++x) {
+        INFO("column " << x);
+        double const covered = 1.0 - (x + 0.5) / 16.0;
+        for (int y = 0; y < 2; ++y) CHECK(two.channel(x, y, 0) == Approx(covered).margin(0.04));
+    }
+    auto const& simulated = two.stats.effects.simulated;
+    CHECK(std::any_of(simulated.begin(), simulated.end(),
+                      [&](std::string const& line) { return line.find(effect) == 0; }));
+    settings.threads = 1;
+    CHECK(test::renderRib(rib, settings).rgba == two.rgba);
+}
+
 }  // namespace
 
 TEST_CASE("Motion: a transform over time and the shutter's evenly spaced steps", "[motion]") {
@@ -240,29 +260,13 @@ TEST_CASE("Motion blocks under a shutter that does not open, or opens late", "[r
 
 TEST_CASE("Motion blur: a patch sweeping across the view covers each column for its share of the shutter",
           "[render][motion]") {
-    // After aqsis's mb_noise_test: a white patch one view wide slides from just left of the view
-    // onto it while the shutter is open, so column x (0..1 across the view) is covered for the
-    // last 1 - x of the time.
+    // After aqsis's mb_noise_test: the patch moves, from just left of the view onto it.
     std::string const rib =
         "Format 16 2 1\nShutter 0 1\nProjection \"orthographic\"\nScreenWindow 0 1 0 1\n"
         "Translate 0 0 1\nWorldBegin\nBxdf \"PxrConstant\" \"white\" \"color emitColor\" [1 1 1]\n"
         "MotionBegin [0 1]\nTranslate -1 0 0\nTranslate 0 0 0\nMotionEnd\n"
         "Patch \"bilinear\" \"P\" [0 -1 0  1 -1 0  0 2 0  1 2 0]\nWorldEnd\n";
-    RenderSettings settings = test::withSpp(1024);
-    settings.threads = 2;
-    test::RenderOutcome const two = test::renderRib(rib, settings);
-    REQUIRE(two.width == 16);
-    for (int x = 0; x < 16; ++x) {
-        INFO("column " << x);
-        double const covered = 1.0 - (x + 0.5) / 16.0;
-        for (int y = 0; y < 2; ++y) CHECK(two.channel(x, y, 0) == Approx(covered).margin(0.04));
-    }
-    auto const& simulated = two.stats.effects.simulated;
-    CHECK(std::any_of(simulated.begin(), simulated.end(),
-                      [](std::string const& effect) { return effect.find("motion blur: 1 shape moves") == 0; }));
-    // The same image with one thread.
-    settings.threads = 1;
-    CHECK(test::renderRib(rib, settings).rgba == two.rgba);
+    checkSweep(rib, "motion blur: 1 shape moves");
 }
 
 TEST_CASE("Motion blur: shading sees the time of its ray", "[render][motion]") {
@@ -290,29 +294,11 @@ TEST_CASE("Motion blur: a camera that moves while the shutter is open sees the w
                "WorldBegin\nBxdf \"PxrConstant\" \"white\" \"color emitColor\" [1 1 1]\n"
                "Patch \"bilinear\" \"P\" [0 -1 0  1 -1 0  0 2 0  1 2 0]\nWorldEnd\n";
     };
-    RenderSettings settings = test::withSpp(1024);
-    settings.threads = 2;
+    checkSweep(scene("Shutter 0 1\n", moving), "motion blur: the camera and 0 shapes move");
     // Also through Camera: the camera it saves moves as the one at WorldBegin would.
-    std::string const picksMain = "Display \"x.exr\" \"openexr\" \"rgba\" \"string camera\" [\"main\"]\n";
-    for (std::string const& picked :
-         {scene("Shutter 0 1\n", moving),
-          picksMain + scene("Shutter 0 1\n", moving + "Camera \"main\"\nIdentity\n")}) {
-        INFO(picked);
-        test::RenderOutcome const two = test::renderRib(picked, settings);
-        REQUIRE(two.width == 16);
-        for (int x = 0; x < 16; ++x) {
-            INFO("column " << x);
-            double const covered = 1.0 - (x + 0.5) / 16.0;
-            for (int y = 0; y < 2; ++y) CHECK(two.channel(x, y, 0) == Approx(covered).margin(0.04));
-        }
-        auto const& simulated = two.stats.effects.simulated;
-        CHECK(std::any_of(simulated.begin(), simulated.end(), [](std::string const& effect) {
-            return effect.find("motion blur: the camera and 0 shapes move") == 0;
-        }));
-        settings.threads = 1;
-        CHECK(test::renderRib(picked, settings).rgba == two.rgba);
-        settings.threads = 2;
-    }
+    checkSweep("Display \"x.exr\" \"openexr\" \"rgba\" \"string camera\" [\"main\"]\n" +
+                   scene("Shutter 0 1\n", moving + "Camera \"main\"\nIdentity\n"),
+               "motion blur: the camera and 0 shapes move");
     // A shutter that does not open sees the camera where it stands at time 0: the patch out of view.
     test::RenderOutcome const shut = test::renderRib(scene("", moving), test::withSpp(16));
     auto all = [](int, int) { return true; };

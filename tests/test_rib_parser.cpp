@@ -207,14 +207,36 @@ TEST_CASE("unknown requests are warned about once with their location, then skip
     CHECK_THAT(warnings[0], Catch::Matchers::Contains("Atmosphere"));
 }
 
-TEST_CASE("Matte 0 is read quietly; Matte 1, a holdout, is drawn as a surface with a warning", "[rib]") {
+TEST_CASE(
+    "Matte, GeometricRepresentation and solids: the usual values are read quietly, the others drawn as "
+    "surfaces",
+    "[rib]") {
     Diagnostics quiet(false);
-    CHECK(parseRib("WorldBegin\nMatte 0\nSphere 1 -1 1 360\nWorldEnd\n", quiet).shapes.size() == 1);
+    CHECK(
+        parseRib("WorldBegin\nMatte 0\nGeometricRepresentation \"primitive\"\nSphere 1 -1 1 360\nWorldEnd\n",
+                 quiet)
+            .shapes.size() == 1);
     CHECK(test::warningsContaining(quiet, "") == 0);
     Diagnostics holdout(false);
     CHECK(parseRib("WorldBegin\nMatte 1\nSphere 1 -1 1 360\nMatte 1\nWorldEnd\n", holdout).shapes.size() ==
           1);
     CHECK(test::warningsContaining(holdout, "Matte 1 (a holdout") == 1);
+    Diagnostics wireframe(false);
+    CHECK(parseRib("WorldBegin\nGeometricRepresentation \"lines\"\nSphere 1 -1 1 360\nWorldEnd\n", wireframe)
+              .shapes.size() == 1);
+    CHECK(test::warningsContaining(wireframe, "GeometricRepresentation \"lines\" is not supported") == 1);
+    // Solid modelling: a union of primitives is every surface; an intersection is drawn as a union.
+    Diagnostics solids(false);
+    std::string const unionOf =
+        "SolidBegin \"union\"\nSolidBegin \"primitive\"\nSphere 1 -1 1 360\nSolidEnd\n"
+        "SolidBegin \"primitive\"\nSphere 2 -2 2 360\nSolidEnd\nSolidEnd\n";
+    CHECK(parseRib("WorldBegin\n" + unionOf + "WorldEnd\n", solids).shapes.size() == 2);
+    CHECK(test::warningsContaining(solids, "") == 0);
+    CHECK(parseRib("WorldBegin\nSolidBegin \"intersection\"\n" + unionOf + "SolidEnd\nWorldEnd\n", solids)
+              .shapes.size() == 2);
+    CHECK(test::warningsContaining(solids, "SolidBegin \"intersection\" is not supported") == 1);
+    CHECK_THROWS_WITH(parseRib("WorldBegin\nSolidEnd\n", solids),
+                      Catch::Matchers::StartsWith("test.rib:2:1: SolidEnd: no SolidBegin to match"));
     Diagnostics bad(false);
     CHECK_THROWS_WITH(parseRib("WorldBegin\nMatte 2\n", bad),
                       Catch::Matchers::StartsWith("test.rib:2:1: Matte: onoff must be 0 or 1"));

@@ -260,6 +260,9 @@ private:
     void riAttributes(ParamList const& params);
     void sides(RequestReader& in);
     void matte(RequestReader& in);
+    void geometricRepresentation(RequestReader& in);
+    void solidBegin(RequestReader& in);
+    void solidEnd(RequestReader& in);
     void basis(RequestReader& in);
     void textureCoordinates(RequestReader& in);
     // Shading: Bxdfs, classic shaders, lights (scene/requests/ShadingRequests.cpp).
@@ -490,6 +493,7 @@ private:
     std::map<std::string, LightUse> m_lightUse;
     int m_worldShapes = 0;  ///< shapes read in this world so far
     int m_shapesOutsideDetail = 0;  ///< shapes of this world left out by DetailRange
+    int m_solidDepth = 0;           ///< SolidBegin blocks open
     int m_listedLights = 0;  ///< classic lights given in this world so far
     /// Light linking, as a shape is read: the handles that are off for it (sorted), how many
     /// classic lights had been given (the later ones are off for it too), and its "lighting" subsets.

@@ -456,6 +456,38 @@ void SceneBuilder::matte(RequestReader& in) {
                  "what follows is drawn as an ordinary surface");
 }
 
+void SceneBuilder::geometricRepresentation(RequestReader& in) {
+    // "primitive" draws surfaces as they are; "points" and "lines" (a wireframe) are previews.
+    std::string const type = in.string("representation type");
+    in.finish();
+    if (type != "primitive")
+        warnOnce("geometric representation " + type, in.where(),
+                 "GeometricRepresentation \"" + type +
+                     "\" is not supported: what follows is drawn as its surfaces "
+                     "(\"primitive\")");
+}
+
+void SceneBuilder::solidBegin(RequestReader& in) {
+    // Solid modelling: "primitive" marks one closed surface and "union" joins solids, which drawing every
+    // surface shows from outside; "intersection" and "difference" would cut surfaces away.
+    std::string const operation = in.string("\"primitive\", \"union\", \"intersection\" or \"difference\"");
+    in.finish();
+    if (operation != "primitive" && operation != "union" && operation != "intersection" &&
+        operation != "difference")
+        in.fail(in.where(), "unknown operation \"" + operation +
+                                "\" (\"primitive\", \"union\", \"intersection\" or \"difference\")");
+    if (operation == "intersection" || operation == "difference")
+        warnOnce("solid " + operation, in.where(),
+                 "SolidBegin \"" + operation + "\" is not supported: its solids are drawn whole, as a union");
+    ++m_solidDepth;
+}
+
+void SceneBuilder::solidEnd(RequestReader& in) {
+    in.finish();
+    if (m_solidDepth == 0) in.fail(in.where(), "no SolidBegin to match");
+    --m_solidDepth;
+}
+
 void SceneBuilder::riAttributes(ParamList const& params) {
     // RenderMan 21 and later write the state requests as one Attribute "Ri",
     // each request a parameter of its own name.
