@@ -159,8 +159,8 @@ void SceneBuilder::camera(RequestReader& in) {
     // camera description of the moment under a name; a Display's "string camera" picks the one it is seen from.
     std::string const name = in.string("camera name");
     ParamList params = in.params();
-    // Its clipping planes are set as a Clipping request before it would set them; its lens shape and
-    // shutter curve are effects this renderer does not model.
+    // Its nearClip and farClip set the clipping planes, as a Clipping request would. Its lens shape and
+    // shutter curve (apertureNSides, shutterOpenTime, ...) are effects not modelled here: warned as unused.
     params.typeUntyped({{"nearClip", ParamType::Float}, {"farClip", ParamType::Float}}, "Camera");
     Param const* nearClip = params.take("nearClip");
     Param const* farClip = params.take("farClip");
@@ -173,14 +173,6 @@ void SceneBuilder::camera(RequestReader& in) {
     saved = m_scene.camera;
     saved.worldToCamera = state().transform;
     saved.motion = state().motion;
-}
-
-void SceneBuilder::relativeDetail(RequestReader& in) {
-    float const scale = in.number("relativedetail");
-    in.finish();
-    if (!(scale >= 0.0f) || !std::isfinite(scale))
-        in.fail(in.where(), "the scale must be a finite number of at least 0");
-    m_scene.relativeDetail = scale;
 }
 
 void SceneBuilder::chooseCamera() {
@@ -204,6 +196,14 @@ void SceneBuilder::displayChannel(RequestReader& in) {
     in.string("channel declaration");
     ParamList params = in.params();
     for (auto const& p : params.all()) p.used = true;  // its own filter, exposure and source are not read
+}
+
+void SceneBuilder::relativeDetail(RequestReader& in) {
+    float const scale = in.number("relativedetail");
+    in.finish();
+    if (!(scale >= 0.0f) || !std::isfinite(scale))
+        in.fail(in.where(), "the scale must be a finite number of at least 0");
+    m_scene.relativeDetail = scale;
 }
 
 void SceneBuilder::depthOfField(RequestReader& in) {
