@@ -30,6 +30,14 @@ std::string const kTwoFrames =
     "FrameBegin 2\n  Display \"b.exr\" \"file\" \"rgba\"\n  Translate 0 0 3\n"
     "  WorldBegin\n    Disk 0 1 360\n    Disk 1 1 360\n  WorldEnd\nFrameEnd\n";
 
+/// The mean red and the mean blue of a render of `rib` at 4 samples a pixel.
+using RedAndBlue = std::pair<double, double>;
+RedAndBlue meanRedAndBlue(std::string const& rib) {
+    auto r = test::renderRib(rib, test::withSpp(4));
+    auto all = [](int, int) { return true; };
+    return {test::meanChannel(r, 0, all), test::meanChannel(r, 2, all)};
+}
+
 }  // namespace
 
 TEST_CASE("each frame is its own scene: options, camera and world, none piled on another", "[rib][frames]") {
@@ -407,11 +415,9 @@ TEST_CASE("Clipping: camera rays see only what lies between the near and far pla
                           "Polygon \"P\" [-5 -5 1  5 -5 1  5 5 1  -5 5 1]\nAttributeEnd\n"
                           "Bxdf \"PxrConstant\" \"far\" \"color emitColor\" [0 0 1]\n"
                           "Polygon \"P\" [-50 -50 3  50 -50 3  50 50 3  -50 50 3]\nWorldEnd\n";
-        auto r = test::renderRib(rib, test::withSpp(4));
-        auto all = [](int, int) { return true; };
-        return std::make_pair(test::meanChannel(r, 0, all), test::meanChannel(r, 2, all));
+        return meanRedAndBlue(rib);
     };
-    using Seen = std::pair<double, double>;
+    using Seen = RedAndBlue;
     CHECK(seen("") == Seen(1.0, 0.0));
     CHECK(seen("Clipping 0.1 4\n") == Seen(1.0, 0.0));
     CHECK(seen("Clipping 3 100\n") == Seen(0.0, 1.0));
@@ -436,16 +442,14 @@ TEST_CASE("Camera saves the camera under a name, and a Display's camera picks th
                           "Polygon \"P\" [-5 -5 2  5 -5 2  5 5 2  -5 5 2]\nAttributeEnd\n"
                           "Bxdf \"PxrConstant\" \"b\" \"color emitColor\" [0 0 1]\n"
                           "Polygon \"P\" [-5 -5 -2  5 -5 -2  5 5 -2  -5 5 -2]\nWorldEnd\n";
-        auto r = test::renderRib(rib, test::withSpp(4));
-        auto all = [](int, int) { return true; };
-        return std::make_pair(test::meanChannel(r, 0, all), test::meanChannel(r, 2, all));
+        return meanRedAndBlue(rib);
     };
-    using Seen = std::pair<double, double>;
+    using Seen = RedAndBlue;
     std::string const display = "Display \"x.exr\" \"openexr\" \"rgba\" \"string camera\" ";
     CHECK(seen("") == Seen(1.0, 0.0));  // no Display names a camera: the one at WorldBegin
     CHECK(seen(display + "[\"back\"]\n") == Seen(0.0, 1.0));
     CHECK(seen(display + "[\"front\"]\n") == Seen(1.0, 0.0));
-    // A camera's clipping planes are its own: "back" sees nothing nearer than 3.
+    // The camera's nearClip and farClip: "back" sees nothing nearer than 3.
     CHECK(seen(display + "[\"back\"]\n", " \"float nearClip\" [3] \"float farClip\" [100]") == Seen(0.0, 0.0));
 
     Diagnostics diagnostics(false);
