@@ -48,18 +48,8 @@ Camera::Camera(CameraDesc const& desc, int xres, int yres, float pixelAspect, fl
     m_orthographicDirection = glm::normalize(transformVector(m_cameraToWorld, Vec3(0.0f, 0.0f, 1.0f)));
     m_lensX = transformVector(m_cameraToWorld, Vec3(m_lensRadius, 0.0f, 0.0f));
     m_lensY = transformVector(m_cameraToWorld, Vec3(0.0f, m_lensRadius, 0.0f));
-    // Camera rays are traced at moments spread over the shutter; a path that stays put then needs no moving.
-    if (desc.motion && shutterClose > shutterOpen) {
-        bool moves = false;
-        for (float time : shutterSteps(desc.motion->times, shutterOpen, shutterClose)) {
-            Mat4 const there = desc.motion->at(time);
-            for (int i = 0; i < 4; ++i)
-                for (int j = 0; j < 4; ++j)
-                    moves = moves || std::fabs(there[i][j] - m_worldToCamera[i][j]) >
-                                         1e-6f * (1.0f + std::fabs(m_worldToCamera[i][j]));
-        }
-        if (moves) m_motion = desc.motion;
-    }
+    // A path that stays put while the shutter is open needs no moving, by the same test a shape's does.
+    if (desc.motion && shapeMotion(*desc.motion, shutterOpen, shutterClose)) m_motion = desc.motion;
 }
 
 float Camera::moveRay(float time, Vec3& org, Vec3& dir) const {
