@@ -242,6 +242,51 @@ TEST_CASE(
                       Catch::Matchers::StartsWith("test.rib:2:1: Matte: onoff must be 0 or 1"));
 }
 
+TEST_CASE("Resource saves attributes under a name and restores all of them, the shading or the transform", "[rib]") {
+    // Two spheres: one where and as the attributes were saved, one after the restore.
+    std::string const saved =
+        "WorldBegin\nTranslate 1 0 0\nBxdf \"PxrDiffuse\" \"red\" \"color diffuseColor\" [1 0 0]\n"
+        "Resource \"kept\" \"attributes\" \"string operation\" \"save\"\nSphere 1 -1 1 360\n"
+        "Translate 0 5 0\nBxdf \"PxrDiffuse\" \"blue\" \"color diffuseColor\" [0 0 1]\n";
+    auto restoredIs = [&](std::string const& subset, bool sameMaterial, bool samePlace) {
+        Diagnostics quiet(false);
+        Scene scene = parseRib(saved + "Resource \"kept\" \"attributes\" \"string operation\" \"restore\"" + subset +
+                                   "\nSphere 1 -1 1 360\nWorldEnd\n",
+                               quiet);
+        REQUIRE(scene.shapes.size() == 2u);
+        auto const& first = dynamic_cast<Quadric const&>(*scene.shapes[0]);
+        auto const& second = dynamic_cast<Quadric const&>(*scene.shapes[1]);
+        CHECK((first.material == second.material) == sameMaterial);
+        CHECK((first.objectToWorld() == second.objectToWorld()) == samePlace);
+        CHECK(test::warningsContaining(quiet, "") == 0);
+    };
+    SECTION("all") { restoredIs("", true, true); }
+    SECTION("shading") { restoredIs(" \"string subset\" \"shading\"", true, false); }
+    SECTION("transform") { restoredIs(" \"string subset\" \"transform\"", false, true); }
+    SECTION("ResourceEnd forgets what was saved inside it, and a restore of no saved name is warned about") {
+        Diagnostics diagnostics(false);
+        Scene scene = parseRib(
+            "ResourceBegin\nWorldBegin\nResourceBegin\nResource \"inner\" \"attributes\" \"string operation\" "
+            "\"save\"\nResourceEnd\nResource \"inner\" \"attributes\" \"string operation\" \"restore\"\n"
+            "Sphere 1 -1 1 360\nWorldEnd\nResourceEnd\n",
+            diagnostics);
+        CHECK(scene.shapes.size() == 1u);
+        CHECK(test::warningsContaining(diagnostics, "Resource \"inner\": no attributes were saved") == 1);
+        CHECK(test::warningsContaining(diagnostics, "unsupported") == 0);
+    }
+    SECTION("other kinds of resource are skipped with a warning; bad operations and unmatched ends are errors") {
+        Diagnostics diagnostics(false);
+        parseRib("WorldBegin\nResource \"map.tex\" \"texture\" \"string filename\" \"map.tex\"\nWorldEnd\n",
+                 diagnostics);
+        CHECK(test::warningsContaining(diagnostics, "Resource of type \"texture\" is not a resource") == 1);
+        CHECK_THROWS_WITH(parseRib("WorldBegin\nResource \"a\" \"attributes\" \"string operation\" \"keep\"\n",
+                                   diagnostics),
+                          Catch::Matchers::StartsWith("test.rib:2:1: Resource: \"string operation\" must be"));
+        CHECK_THROWS_WITH(parseRib("ResourceEnd\n", diagnostics),
+                          Catch::Matchers::StartsWith("test.rib:1:1: ResourceEnd: no ResourceBegin to match"));
+    }
+}
+
 TEST_CASE("a name that is no RIB request is told apart from an unsupported one, with the request it was likely meant to be",
           "[rib]") {
     Diagnostics diagnostics(false);

@@ -263,6 +263,9 @@ private:
     void geometricRepresentation(RequestReader& in);
     void solidBegin(RequestReader& in);
     void solidEnd(RequestReader& in);
+    void resourceBegin(RequestReader& in);
+    void resourceEnd(RequestReader& in);
+    void resource(RequestReader& in);
     void basis(RequestReader& in);
     void textureCoordinates(RequestReader& in);
     // Shading: Bxdfs, classic shaders, lights (scene/requests/ShadingRequests.cpp).
@@ -494,6 +497,9 @@ private:
     int m_worldShapes = 0;  ///< shapes read in this world so far
     int m_shapesOutsideDetail = 0;  ///< shapes of this world left out by DetailRange
     int m_solidDepth = 0;           ///< SolidBegin blocks open
+    std::map<std::string, Attributes> m_savedAttributes;  ///< Resource "attributes" saved, by name
+    /// What m_savedAttributes held at each open ResourceBegin (ResourceEnd forgets names saved since).
+    std::vector<std::map<std::string, Attributes>> m_resourceScopes;
     int m_listedLights = 0;  ///< classic lights given in this world so far
     /// Light linking, as a shape is read: the handles that are off for it (sorted), how many
     /// classic lights had been given (the later ones are off for it too), and its "lighting" subsets.

@@ -488,6 +488,65 @@ void SceneBuilder::solidEnd(RequestReader& in) {
     --m_solidDepth;
 }
 
+// Named resources (RenderMan 16 and later): an "attributes" resource saves the graphics state under a
+// name and restores it, or the part of it a "subset" names, later. ResourceBegin/ResourceEnd bound
+// where names saved inside them hold.
+
+void SceneBuilder::resourceBegin(RequestReader& in) {
+    in.finish();
+    m_resourceScopes.push_back(m_savedAttributes);
+}
+
+void SceneBuilder::resourceEnd(RequestReader& in) {
+    in.finish();
+    if (m_resourceScopes.empty()) in.fail(in.where(), "no ResourceBegin to match");
+    m_savedAttributes = std::move(m_resourceScopes.back());
+    m_resourceScopes.pop_back();
+}
+
+void SceneBuilder::resource(RequestReader& in) {
+    std::string const name = in.string("resource name");
+    std::string const type = in.string("resource type");
+    ParamList params = in.params();
+    if (type != "attributes") {
+        for (auto const& p : params.all()) p.used = true;  // the resource's own parameters
+        warnOnce("resource " + type, in.where(),
+                 "Resource of type \"" + type + "\" is not a resource this renderer keeps (it keeps \"attributes\"); skipped");
+        return;
+    }
+    std::string const operation = params.getString("operation", "");
+    std::string subset = params.getString("subset", "all");
+    params.warnUnused(m_diagnostics, "Resource \"attributes\"");
+    if (operation == "save") {
+        m_savedAttributes[name] = state();
+        return;
+    }
+    if (operation != "restore") in.fail(in.where(), "\"string operation\" must be \"save\" or \"restore\"");
+    auto const saved = m_savedAttributes.find(name);
+    if (saved == m_savedAttributes.end()) {
+        warnOnce("resource not saved", in.where(),
+                 "Resource \"" + name + "\": no attributes were saved under this name here; nothing restored");
+        return;
+    }
+    if (subset != "all" && subset != "shading" && subset != "transform") {
+        warnOnce("resource subset " + subset, in.where(),
+                 "Resource \"" + name + "\": subset \"" + subset +
+                     "\" is not one this renderer knows (\"all\", \"shading\", \"transform\"); all is restored");
+        subset = "all";
+    }
+    Attributes restored = saved->second;
+    if (subset == "shading") {  // everything but where things are
+        restored.transform = state().transform;
+        restored.motion = state().motion;
+    } else if (subset == "transform") {  // where things are, and nothing else
+        Attributes current = state();
+        current.transform = restored.transform;
+        current.motion = restored.motion;
+        restored = std::move(current);
+    }
+    state() = std::move(restored);
+}
+
 void SceneBuilder::riAttributes(ParamList const& params) {
     // RenderMan 21 and later write the state requests as one Attribute "Ri",
     // each request a parameter of its own name.
