@@ -30,6 +30,7 @@ set(RIX_SCENE_SOURCES
   scene/requests/FreeformRequests.cpp
   scene/Motion.cpp
   scene/Camera.cpp
+  scene/ProceduralProgram.cpp
   scene/shapes/Shape.cpp
   scene/shapes/Quadric.cpp
   scene/shapes/Sphere.cpp

@@ -121,6 +121,12 @@ add_test(NAME cli.further_display_unwritable
 set_tests_properties(cli.further_display_unwritable PROPERTIES WORKING_DIRECTORY ${CLI_OUT}
   PASS_REGULAR_EXPRESSION "cannot write \"blocked/beauty.normal.exr\": it is a folder.*exit 1\nbeauty.normal.exr\n$"
   FAIL_REGULAR_EXPRESSION "wrote blocked")
+# Procedural "RunProgram" runs its program only with --run-programs: the scene's two spheres are the
+# program's, and the stats say the image is lit; without the flag it says how to run it.
+add_test(NAME cli.run_programs
+         COMMAND sh -c "$<TARGET_FILE:rixrender> --quiet --spp 1 --run-programs -o balls.exr --stats-json balls.json ${CMAKE_CURRENT_SOURCE_DIR}/scenes/run-program/balls.rib && grep -o '\"lit_fraction\": 0\\.[0-9]*' balls.json; $<TARGET_FILE:rixrender> --quiet --spp 1 -o balls-skipped.exr ${CMAKE_CURRENT_SOURCE_DIR}/scenes/run-program/balls.rib")
+set_tests_properties(cli.run_programs PROPERTIES WORKING_DIRECTORY ${CLI_OUT} LABELS "cli;sanitize"
+  PASS_REGULAR_EXPRESSION "wrote balls.exr\n\"lit_fraction\": 0\\.[0-9]*[1-9].*balls.rib:8:3: Procedural \"RunProgram\" \\(\"ball.sh\"\\): a scene's programs run only when asked for \\(rixrender --run-programs\\)")
 add_test(NAME cli.tiff_output COMMAND rixrender --quiet --spp 1 -o ch06.tif ${PROJECT_SOURCE_DIR}/scenes/ch06/diffuse.rib)
 set_tests_properties(cli.tiff_output PROPERTIES WORKING_DIRECTORY ${CLI_OUT} PASS_REGULAR_EXPRESSION "wrote ch06.tif")
 

@@ -127,6 +127,9 @@ int main(int argc, char** argv) {
     app.add_option("--frame", load.frame, "render only the frame with this FrameBegin number")->check(CLI::Range(0, 1 << 30));
     app.add_option("--resolution-scale", resolutionScale, "scale the Format resolution (e.g. 0.25 for a quick look)")
         ->check(CLI::Range(0.01f, 8.0f));
+    app.add_flag("--run-programs", load.runPrograms,
+                 "run the programs the scene's Procedural \"RunProgram\" requests name (they are the scene's code: "
+                 "use it for scenes you trust)");
     app.add_flag("--strict", load.strict, "a file the scene names that is missing (archive, texture, sky image) is an "
                                           "error instead of a warning");
     app.add_flag("--quiet", quiet, "no progress bar");

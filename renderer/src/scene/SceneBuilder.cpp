@@ -13,10 +13,6 @@
 namespace bxdflab {
 namespace fs = std::filesystem;
 
-namespace {
-constexpr int kMaxArchiveDepth = 32;
-}  // namespace
-
 SceneBuilder::SceneBuilder(Scene& scene, Diagnostics& diagnostics, LoadOptions options)
     : m_scene(scene), m_diagnostics(diagnostics), m_options(options) {}
 
@@ -176,6 +172,7 @@ void SceneBuilder::readText(std::string const& text, std::string const& fileName
 }
 
 void SceneBuilder::finishInput(std::string const& name) {
+    m_programs.clear();  // the scene is read: RunProgram helpers end
     if (m_keptFrame) static_cast<SceneOptions&>(m_scene) = m_keptOptions;
     if (m_recording) m_diagnostics.warn(name + ": " + m_recordingEnd + " missing at the end of the file");
     if (!m_conditions.empty()) {

@@ -20,6 +20,7 @@
 #include "parse/ParamList.h"
 #include "parse/RibRequest.h"
 #include "scene/Motion.h"
+#include "scene/ProceduralProgram.h"
 #include "scene/Scene.h"
 #include "scene/shapes/MeshBuilders.h"
 
@@ -28,6 +29,9 @@ namespace bxdflab {
 struct LoadOptions {
     bool strict = false;  ///< a missing archive, texture or sky image is an error (else a warning, as in RenderMan)
     int frame = -1;       ///< render only the frame with this FrameBegin number (-1: every frame)
+    /// Procedural "RunProgram" runs the program it names. A scene that runs programs is code, not data,
+    /// so it is off unless the user asks for it.
+    bool runPrograms = false;
 };
 
 /// Receives each frame as soon as its world is complete (at WorldEnd).
@@ -48,6 +52,8 @@ public:
     void readText(std::string const& text, std::string const& fileName);
 
 private:
+    static constexpr int kMaxArchiveDepth = 32;  ///< archives and procedurals read inside one another
+
     /// What AttributeBegin saves and AttributeEnd restores.
     struct Attributes {
         Mat4 transform{1.0f};  ///< where the transform is when the shutter opens
@@ -369,6 +375,12 @@ private:
     void procedural2(RequestReader& in);
     /// The warning for a procedural that is not read (`program`: its first argument, if any).
     void warnProcedural(std::string const& kind, std::string const& program, SourceLocation const& where);
+    /// Procedural "RunProgram" with programs allowed: reads what the program writes for this procedural.
+    void runProgram(std::string const& program, std::string const& datablock, std::vector<float> const& bound,
+                    SourceLocation const& where);
+    /// Starts the program a "RunProgram" names (its first word; the others are its arguments).
+    std::unique_ptr<ProceduralProgram> startProgram(std::string const& program, std::string& file,
+                                                    SourceLocation const& where);
     void objectBegin(RequestReader& in);
     void objectInstance(RequestReader& in);
     void archiveBegin(RequestReader& in);
@@ -427,7 +439,17 @@ private:
     } m_pbrtDirective;  ///< the first pbrt directive met, if any
     std::vector<std::string> m_fileStack;
     std::vector<std::string> m_archiveSearchPath;
-    std::vector<std::string> m_proceduralSearchPath;  // where a DynamicLoad plugin would be looked for
+    std::vector<std::string>
+        m_proceduralSearchPath;  // where a DynamicLoad plugin or a RunProgram program is looked for
+    /// The programs of "RunProgram" procedurals, running while the scene is read, by the string that names
+    /// them.
+    struct RunningProgram {
+        std::unique_ptr<ProceduralProgram> process;
+        std::string file;  ///< the program's file, where its output's messages point
+    };
+    std::map<std::string, RunningProgram> m_programs;
+    std::set<std::string>
+        m_failedPrograms;  ///< programs that did not start or stopped: said once, then skipped
     std::map<std::string, std::string> m_userOptions;  // Option "user" values, for "${NAME}" and conditions
     bool m_archiveMissing = false;  // an archive was not found: objects it defined may be missing too
     int m_archivesNotFound = 0;     // the first few list the places tried, the rest one line each

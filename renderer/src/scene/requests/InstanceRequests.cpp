@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "core/GitLfs.h"
+#include "parse/RibParser.h"
 #include "parse/ZipMember.h"
 #include "scene/SceneBuilder.h"
 
@@ -162,12 +163,16 @@ void SceneBuilder::readArchiveNamed(std::string const& name, SourceLocation cons
 void SceneBuilder::procedural(RequestReader& in) {
     std::string kind = in.string("procedural type");
     std::vector<std::string> arguments = in.stringArray("procedural arguments");
-    in.numberArray("bound");
+    std::vector<float> const bound = in.numberArray("bound");
     in.finish();
     // A delayed archive is read when a ray first reaches its bound; reading it
     // now gives the same picture.
     if (kind == "DelayedReadArchive" && !arguments.empty()) {
         readArchiveNamed(arguments.front(), in.where());
+        return;
+    }
+    if (kind == "RunProgram" && m_options.runPrograms && !arguments.empty()) {
+        runProgram(arguments[0], arguments.size() > 1 ? arguments[1] : "", bound, in.where());
         return;
     }
     warnProcedural(kind, arguments.empty() ? "" : arguments.front(), in.where());
@@ -194,11 +199,97 @@ void SceneBuilder::procedural2(RequestReader& in) {
     warnProcedural(kind, program, in.where());
 }
 
-void SceneBuilder::warnProcedural(std::string const& kind, std::string const& program, SourceLocation const& where) {
+std::unique_ptr<ProceduralProgram> SceneBuilder::startProgram(std::string const& program, std::string& file,
+                                                              SourceLocation const& where) {
+    std::istringstream words(program);
+    std::string name;
+    words >> name;
+    std::vector<std::string> arguments;
+    for (std::string word; words >> word;) arguments.push_back(word);
+    if (name.empty()) throw RenderError("it names no program");
+    // The program is looked for as an archive is: beside the file that names it, in the folder the
+    // renderer runs in, then on the "procedural" search path; a bare name may also be a command on PATH.
+    std::vector<fs::path> candidates;
+    if (fs::path(name).is_absolute()) {
+        candidates.push_back(name);
+    } else {
+        candidates = {fs::path(currentDirectory()) / name, fs::path(name)};
+        for (std::string const& folder : m_proceduralSearchPath)
+            candidates.push_back(fs::path(folder) / name);
+    }
+    std::string searched;
+    ProgramLaunch launch;
+    for (fs::path const& candidate : candidates) {
+        searched += "\n    " + candidate.string();
+        std::error_code error;
+        if (!fs::is_regular_file(candidate, error)) continue;
+        file = candidate.string();
+        launch = programLaunch(file, arguments);
+        break;
+    }
+    if (launch.command.empty() && name.find('/') == std::string::npos && launchInterpreter(name, launch)) {
+        // "python3 spiral.py", say: its output's messages and names are taken as from beside the scene file.
+        file = (fs::path(currentDirectory()) / name).string();
+        launch.command.insert(launch.command.end(), arguments.begin(), arguments.end());
+    }
+    if (launch.command.empty())
+        throw RenderError("the program is not in any place searched:" + searched + "\n    (nor on PATH)");
+    if (!launch.note.empty())
+        m_diagnostics.info(where.str() + ": Procedural \"RunProgram\" (\"" + program + "\"): " + launch.note);
+    // It runs in the folder of the file that names it, where its own relative names most likely point.
+    return std::make_unique<ProceduralProgram>(launch, currentDirectory());
+}
+
+void SceneBuilder::runProgram(std::string const& program, std::string const& datablock,
+                              std::vector<float> const& bound, SourceLocation const& where) {
+    if (m_failedPrograms.count(program)) return;  // its failure was said the first time
+    std::string rib;
+    auto running = m_programs.find(program);
+    try {
+        if (running == m_programs.end()) {
+            RunningProgram started;
+            started.process = startProgram(program, started.file, where);
+            running = m_programs.emplace(program, std::move(started)).first;
+        }
+        // The program may choose what to make by how large its bound is on the image, as Detail does.
+        float const detail =
+            bound.size() == 6 && m_inWorld ? rasterArea(bound) * m_scene.relativeDetail : kInfinity;
+        rib = running->second.process->generate(std::min(detail, 1e37f), datablock);
+    } catch (RenderError const& problem) {
+        if (running != m_programs.end()) m_programs.erase(running);
+        m_failedPrograms.insert(program);
+        m_diagnostics.warn(where.str() + ": Procedural \"RunProgram\" (\"" + program + "\"): " +
+                           problem.what() + "; its geometry is skipped (and so for its other procedurals)");
+        return;
+    }
+    // What it writes is read as if it stood here, inside an attribute block of its own: what it sets
+    // stays in its geometry. Messages point into its output; relative names in it resolve beside it.
+    if (static_cast<int>(m_fileStack.size()) >= kMaxArchiveDepth)
+        throw RibError(
+            where, "procedurals and archives nested more than " + std::to_string(kMaxArchiveDepth) + " deep");
+    std::string const outputName = running->second.file + " (output)";
+    size_t const depth = m_blocks.size();
+    m_attributes.push_back(state());
+    m_blocks.push_back(Block::Attribute);
+    m_fileStack.push_back(outputName);
+    parseRib(rib, outputName, [this](RibRequest const& r) { handle(r); });
+    m_fileStack.pop_back();
+    if (m_blocks.size() != depth + 1 || m_blocks.back() != Block::Attribute)
+        throw RibError(where,
+                       "Procedural \"RunProgram\" (\"" + program +
+                           "\"): its output does not close every AttributeBegin and TransformBegin it opens, "
+                           "or closes one it did not open");
+    m_blocks.pop_back();
+    m_attributes.pop_back();
+}
+
+void SceneBuilder::warnProcedural(std::string const& kind, std::string const& program,
+                                  SourceLocation const& where) {
     if (kind == "RunProgram") {
         warnOnce("procedural " + kind, where,
                  "Procedural \"RunProgram\"" + (program.empty() ? "" : " (\"" + program + "\")") +
-                     ": this renderer does not run programs named by a scene; its geometry is skipped");
+                     ": a scene's programs run only when asked for (rixrender --run-programs), as running one is "
+                     "running the scene's code; its geometry is skipped");
         return;
     }
     if (kind != "DynamicLoad" || program.empty()) {
