@@ -213,6 +213,12 @@ add_test(NAME architecture.includes_follow_the_data_flow
 set_tests_properties(architecture.includes_follow_the_data_flow PROPERTIES
   PASS_REGULAR_EXPRESSION "files checked, 0 includes against the data flow")
 
+# tools/python/prman.py: course scripts' Ri calls write the RIB RenderMan's prman module writes, and
+# Begin("__render") renders it.
+add_test(NAME tools.prman_module
+         COMMAND ${BXDFLAB_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test_prman_module.py $<TARGET_FILE:rixrender>)
+set_tests_properties(tools.prman_module PROPERTIES LABELS "cli")
+
 # The README names every RIB request the scene builder handles, and no other.
 add_test(NAME readme.lists_every_rib_request
          COMMAND ${BXDFLAB_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_readme_requests.py ${PROJECT_SOURCE_DIR})

@@ -1,0 +1,130 @@
+"""tools/python/prman.py: a course script's Ri calls become the RIB RenderMan's prman module writes,
+and Begin("__render") renders it with rixrender.
+
+    python3 tests/test_prman_module.py path/to/rixrender
+"""
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+import unittest
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "tools", "python"))
+import prman  # noqa: E402
+
+RIXRENDER = None
+
+
+def spiral(data, detail):
+    """A Python procedural, as course scripts pass to ri.Procedural: it writes its geometry itself."""
+    ri, radius = data
+    ri.Sphere(radius, -radius, radius, 360)
+
+
+def write_scene(ri):
+    ri.Option("rib", {"string asciistyle": "indented"})
+    ri.ArchiveRecord(ri.COMMENT, "made by %s", "a test")
+    ri.Display("scene.exr", "file", "rgba")
+    ri.Format(32, 24, 1)
+    ri.Projection(ri.PERSPECTIVE, {ri.FOV: 45})
+    ri.ConcatTransform([[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 6, 1]])
+    ri.WorldBegin()
+    light = ri.LightSource("pointlight", {"from": [0, 0, -4], "float intensity": 20})
+    ri.Illuminate(light, 1)
+    ri.AttributeBegin()
+    ri.Bxdf("PxrDiffuse", "red", {"color diffuseColor": [1, 0, 0]})
+    ri.Attribute("identifier", {"name": "ball"})
+    ri.Procedural((ri, 0.5), [-1, 1, -1, 1, -1, 1], spiral, None)
+    ri.AttributeEnd()
+    shape = ri.ObjectBegin()
+    ri.Hyperboloid([1, 0, 0.5], [1, 0, -0.5], 270)
+    ri.ObjectEnd()
+    ri.ObjectInstance(shape)
+    ri.WorldEnd()
+
+
+EXPECTED = """##RenderMan RIB
+version 3.04
+# made by a test
+Display "scene.exr" "file" "rgba"
+Format 32 24 1
+Projection "perspective" "fov" [45]
+ConcatTransform [1 0 0 0 0 1 0 0 0 0 1 0 0 0 6 1]
+WorldBegin
+    LightSource "pointlight" "light1" "from" [0 0 -4] "float intensity" [20]
+    Illuminate "light1" 1
+    AttributeBegin
+        Bxdf "PxrDiffuse" "red" "color diffuseColor" [1 0 0]
+        Attribute "identifier" "name" ["ball"]
+        AttributeBegin
+            Sphere 0.5 -0.5 0.5 360
+        AttributeEnd
+    AttributeEnd
+    ObjectBegin "object2"
+        Hyperboloid 1 0 0.5 1 0 -0.5 270
+    ObjectEnd
+    ObjectInstance "object2"
+WorldEnd
+"""
+
+
+class PrmanModule(unittest.TestCase):
+    def setUp(self):
+        self.folder = tempfile.mkdtemp(prefix="prman-test-")
+        self.previous = os.getcwd()
+        os.chdir(self.folder)
+
+    def tearDown(self):
+        os.chdir(self.previous)
+        shutil.rmtree(self.folder, ignore_errors=True)
+
+    def test_ri_calls_write_the_rib_prman_writes(self):
+        ri = prman.Ri()
+        ri.Begin("scene.rib")
+        write_scene(ri)
+        ri.End()
+        with open("scene.rib") as written:
+            self.assertEqual(written.read(), EXPECTED)
+        # ... and the renderer reads it, lit: the red ball and the hyperboloid are in view.
+        rendered = subprocess.run([RIXRENDER, "--quiet", "--spp", "1", "scene.rib"], capture_output=True, text=True)
+        self.assertEqual(rendered.returncode, 0, rendered.stderr)
+        self.assertNotIn("warning", rendered.stderr)
+        self.assertTrue(os.path.exists("scene.exr"))
+
+    def test_render_target_renders_at_end_and_cleans_up(self):
+        os.environ["RIXRENDER"] = RIXRENDER
+        os.environ["RIXRENDER_ARGS"] = "--quiet --spp 1"
+        ri = prman.Ri()
+        ri.Begin(ri.RENDER)
+        write_scene(ri)
+        rib = ri._path
+        ri.End()
+        self.assertTrue(os.path.exists("scene.exr"))  # written where the script runs
+        self.assertFalse(os.path.exists(os.path.dirname(rib)))  # the RIB rendered is gone
+
+    def test_a_failed_render_keeps_its_rib_and_says_where(self):
+        os.environ["RIXRENDER"] = RIXRENDER
+        os.environ["RIXRENDER_ARGS"] = "--quiet --spp 1"
+        script = "import prman\nri = prman.Ri()\nri.Begin('__render')\nri.WorldBegin()\nri.Sphere('one', -1, 1, 360)\n" \
+                 "ri.WorldEnd()\nri.End()\n"
+        env = dict(os.environ, PYTHONPATH=os.path.dirname(prman.__file__))
+        run = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, env=env)
+        self.assertIn("scene.rib:4:12: Sphere: expected radius", run.stderr)
+        kept = run.stderr.split("the RIB that was rendered is kept at ")[1].strip()
+        self.assertTrue(os.path.exists(kept), run.stderr)
+        shutil.rmtree(os.path.dirname(kept))
+
+    def test_calls_outside_begin_and_values_of_no_rib_type_are_errors(self):
+        ri = prman.Ri()
+        with self.assertRaisesRegex(prman.Error, "before ri.Begin"):
+            ri.Sphere(1, -1, 1, 360)
+        ri.Begin("bad.rib")
+        with self.assertRaisesRegex(prman.Error, "is not a RIB value"):
+            ri.Translate(object(), 0, 0)
+        ri.End()
+
+
+if __name__ == "__main__":
+    RIXRENDER = os.path.abspath(sys.argv.pop(1))
+    unittest.main()
