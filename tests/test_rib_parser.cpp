@@ -271,8 +271,9 @@ TEST_CASE("Resource saves attributes under a name and restores all of them, the 
             "Sphere 1 -1 1 360\nWorldEnd\nResourceEnd\n",
             diagnostics);
         CHECK(scene.shapes.size() == 1u);
-        CHECK(test::warningsContaining(diagnostics, "Resource \"inner\": no attributes were saved") == 1);
-        CHECK(test::warningsContaining(diagnostics, "unsupported") == 0);
+        CHECK(test::warningTexts(diagnostics) ==
+              std::vector<std::string>{"test.rib:6:1: Resource \"inner\": no attributes were saved under this name "
+                                       "here; nothing restored"});
     }
     SECTION("other kinds of resource are skipped with a warning; bad operations and unmatched ends are errors") {
         Diagnostics diagnostics(false);
@@ -788,26 +789,17 @@ TEST_CASE("archives are read out of zip files (\"bundle.zip!member.rib\"), also 
         load("ReadArchive \"geo/fake.zip!sphere.rib\"\n", diagnostics);
         CHECK(test::warningsContaining(diagnostics, "as a zip file") == 1);
     }
-    SECTION(
-        "programs (unless asked for) and geometry plugins a procedural names are not run: one warning, the "
-        "rest "
-        "renders") {
+    SECTION("programs (unless asked for) and plugins a procedural names are not run: one warning, the rest renders") {
         Diagnostics diagnostics(false);
-        Scene scene = load(
-            "Procedural \"RunProgram\" [\"spiral.py\" \"1 0.2\"] [-5 5 -5 5 -5 5]\n"
-            "Procedural \"RunProgram\" [\"spiral.py\" \"2 0.4\"] [-5 5 -5 5 -5 5]\n"
-            "Procedural \"DynamicLoad\" [\"sphere.so\" \"\"] [-1 1 -1 1 -1 1]\nSphere 1 -1 1 360\n",
-            diagnostics);
+        Scene scene = load("Procedural \"RunProgram\" [\"spiral.py\" \"1 0.2\"] [-5 5 -5 5 -5 5]\n"
+                           "Procedural \"RunProgram\" [\"spiral.py\" \"2 0.4\"] [-5 5 -5 5 -5 5]\n"
+                           "Procedural \"DynamicLoad\" [\"sphere.so\" \"\"] [-1 1 -1 1 -1 1]\nSphere 1 -1 1 360\n",
+                           diagnostics);
         CHECK(scene.shapes.size() == 1u);
-        CHECK(
-            test::warningsContaining(diagnostics,
-                                     "Procedural \"RunProgram\" (\"spiral.py\"): a scene's programs run only "
-                                     "when asked for") == 1);
-        CHECK(test::warningsContaining(
-                  diagnostics,
-                  "Procedural \"DynamicLoad\" (\"sphere.so\"): the plugin is not in any folder "
-                  "searched:\n    " +
-                      folder.string()) == 1);
+        CHECK(test::warningsContaining(diagnostics, "Procedural \"RunProgram\" (\"spiral.py\"): a scene's programs run "
+                                                    "only when asked for") == 1);
+        CHECK(test::warningsContaining(diagnostics, "Procedural \"DynamicLoad\" (\"sphere.so\"): the plugin is not in any folder "
+                                        "searched:\n    " + folder.string()) == 1);
     }
 }
 

@@ -191,22 +191,10 @@ class Ri:
 
     def LightSource(self, name, params=None):
         """A classic light; its handle is the parameter ri.HANDLEID, and it is returned for Illuminate."""
-        params = dict(params or {})
-        handle = params.pop("__handleid", None)
-        if handle is None:
-            self._handles += 1
-            handle = "light%d" % self._handles
-        self._request("LightSource", (name, handle, params))
-        return handle
+        return self._light("LightSource", name, params)
 
     def AreaLightSource(self, name, params=None):
-        params = dict(params or {})
-        handle = params.pop("__handleid", None)
-        if handle is None:
-            self._handles += 1
-            handle = "light%d" % self._handles
-        self._request("AreaLightSource", (name, handle, params))
-        return handle
+        return self._light("AreaLightSource", name, params)
 
     def ReadArchive(self, name, callback=None, params=None):
         """Reads an archive (the callback of the C interface is not used)."""
@@ -248,6 +236,15 @@ class Ri:
         self._request("Option", (name,) + ((params,) if params else ()))
 
     # Writing.
+
+    def _light(self, request, name, params):
+        params = dict(params or {})
+        handle = params.pop("__handleid", None)
+        if handle is None:
+            self._handles += 1
+            handle = "light%d" % self._handles
+        self._request(request, (name, handle, params))
+        return handle
 
     def _request(self, name, args):
         if self._out is None:
