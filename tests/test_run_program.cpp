@@ -2,6 +2,7 @@
 #include <sys/stat.h>
 
 #include <catch2/catch.hpp>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 
@@ -95,6 +96,11 @@ TEST_CASE(
                                               "    sys.stdout.write('\\377')\n"
                                               "    sys.stdout.flush()\n"
                                               "    line = sys.stdin.readline()\n");
+    // Even where the user's own PYTHONIOENCODING asks for UTF-8.
+    struct UserEncoding {
+        UserEncoding() { setenv("PYTHONIOENCODING", "utf-8", 1); }
+        ~UserEncoding() { unsetenv("PYTHONIOENCODING"); }
+    } const userEncoding;
     auto radiusOfTheOneSphere = [](Scene const& scene) {
         REQUIRE(scene.shapes.size() == 1u);
         Vec3 lower, upper;

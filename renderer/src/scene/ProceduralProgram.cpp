@@ -7,6 +7,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <chrono>
 #include <cstdlib>
@@ -107,7 +108,12 @@ ProceduralProgram::ProceduralProgram(ProgramLaunch const& launch, std::string co
     argv.push_back(nullptr);
     for (std::string const& setting : launch.environment)
         environment.push_back(const_cast<char*>(setting.c_str()));
-    for (char** setting = environ; *setting; ++setting) environment.push_back(*setting);  // later ones lose
+    for (char** setting = environ; *setting; ++setting) {  // the renderer's own, but for the names set above
+        std::string const name(*setting, std::strcspn(*setting, "="));
+        bool const replaced = std::any_of(launch.environment.begin(), launch.environment.end(),
+                                          [&](std::string const& added) { return added.rfind(name + "=", 0) == 0; });
+        if (!replaced) environment.push_back(*setting);
+    }
     environment.push_back(nullptr);
     // In a process group of its own, so that stopping it stops what it started too.
     posix_spawnattr_t attributes;
