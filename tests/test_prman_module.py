@@ -106,8 +106,8 @@ class PrmanModule(unittest.TestCase):
     def test_a_failed_render_keeps_its_rib_and_says_where(self):
         os.environ["RIXRENDER"] = RIXRENDER
         os.environ["RIXRENDER_ARGS"] = "--quiet --spp 1"
-        script = "import prman\nri = prman.Ri()\nri.Begin('__render')\nri.WorldBegin()\nri.Sphere('one', -1, 1, 360)\n" \
-                 "ri.WorldEnd()\nri.End()\n"
+        script = ("import prman\nri = prman.Ri()\nri.Begin('__render')\nri.WorldBegin()\n"
+                  "ri.Sphere('one', -1, 1, 360)\nri.WorldEnd()\nri.End()\n")
         env = dict(os.environ, PYTHONPATH=os.path.dirname(prman.__file__))
         run = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, env=env)
         self.assertIn("scene.rib:4:12: Sphere: expected radius", run.stderr)

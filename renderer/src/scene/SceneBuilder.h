@@ -439,17 +439,16 @@ private:
     } m_pbrtDirective;  ///< the first pbrt directive met, if any
     std::vector<std::string> m_fileStack;
     std::vector<std::string> m_archiveSearchPath;
-    std::vector<std::string>
-        m_proceduralSearchPath;  // where a DynamicLoad plugin or a RunProgram program is looked for
-    /// The programs of "RunProgram" procedurals, running while the scene is read, by the string that names
-    /// them.
+    // Where a DynamicLoad plugin or a RunProgram program is looked for.
+    std::vector<std::string> m_proceduralSearchPath;
+    /// The programs of "RunProgram" procedurals, running while the scene is read, by the string naming them.
     struct RunningProgram {
         std::unique_ptr<ProceduralProgram> process;
         std::string file;  ///< the program's file, where its output's messages point
     };
     std::map<std::string, RunningProgram> m_programs;
-    std::set<std::string>
-        m_failedPrograms;  ///< programs that did not start or stopped: said once, then skipped
+    /// Programs that did not start or stopped: said once, then skipped.
+    std::set<std::string> m_failedPrograms;
     std::map<std::string, std::string> m_userOptions;  // Option "user" values, for "${NAME}" and conditions
     bool m_archiveMissing = false;  // an archive was not found: objects it defined may be missing too
     int m_archivesNotFound = 0;     // the first few list the places tried, the rest one line each

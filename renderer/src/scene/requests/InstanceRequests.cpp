@@ -283,8 +283,7 @@ void SceneBuilder::runProgram(std::string const& program, std::string const& dat
     m_attributes.pop_back();
 }
 
-void SceneBuilder::warnProcedural(std::string const& kind, std::string const& program,
-                                  SourceLocation const& where) {
+void SceneBuilder::warnProcedural(std::string const& kind, std::string const& program, SourceLocation const& where) {
     if (kind == "RunProgram") {
         warnOnce("procedural " + kind, where,
                  "Procedural \"RunProgram\"" + (program.empty() ? "" : " (\"" + program + "\")") +

@@ -511,7 +511,8 @@ void SceneBuilder::resource(RequestReader& in) {
     if (type != "attributes") {
         for (auto const& p : params.all()) p.used = true;  // the resource's own parameters
         warnOnce("resource " + type, in.where(),
-                 "Resource of type \"" + type + "\" is not a resource this renderer keeps (it keeps \"attributes\"); skipped");
+                 "Resource of type \"" + type +
+                     "\" is not a resource this renderer keeps (it keeps \"attributes\"); skipped");
         return;
     }
     std::string const operation = params.getString("operation", "");
