@@ -7,6 +7,7 @@
 #pragma once
 
 #include <array>
+#include <filesystem>
 #include <functional>
 #include <map>
 #include <optional>
@@ -371,6 +372,11 @@ private:
     /// Reads an archive by name: an inline archive, a file (beside the file that
     /// names it, in the working folder, on the search path) or a zip member.
     void readArchiveNamed(std::string const& name, SourceLocation const& where);
+    /// Where a file named by the scene (an archive, a procedural's program or plugin) is looked for, in
+    /// order, each place once: beside the file that names it, in the folder the renderer runs in, then in
+    /// the folders of `searchPath`. An absolute name is looked for where it says.
+    std::vector<std::filesystem::path> placesToLook(std::string const& name,
+                                                    std::vector<std::string> const& searchPath) const;
     void procedural(RequestReader& in);
     void procedural2(RequestReader& in);
     /// The warning for a procedural that is not read (`program`: its first argument, if any).

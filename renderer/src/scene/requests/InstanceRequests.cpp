@@ -34,6 +34,21 @@ void SceneBuilder::readArchive(RequestReader& in) {
     readArchiveNamed(name, in.where());
 }
 
+std::vector<fs::path> SceneBuilder::placesToLook(std::string const& name,
+                                                 std::vector<std::string> const& searchPath) const {
+    if (fs::path(name).is_absolute()) return {fs::path(name)};
+    std::vector<fs::path> places;
+    auto add = [&](fs::path const& place) {  // each place once ("./a.rib" is "a.rib")
+        for (fs::path const& earlier : places)
+            if (earlier.lexically_normal() == place.lexically_normal()) return;
+        places.push_back(place);
+    };
+    add(fs::path(currentDirectory()) / name);
+    add(fs::path(name));
+    for (std::string const& folder : searchPath) add(fs::path(folder) / name);
+    return places;
+}
+
 void SceneBuilder::readArchiveNamed(std::string const& name, SourceLocation const& where) {
     auto inlineArchive = m_inlineArchives.find(name);
     if (inlineArchive != m_inlineArchives.end()) {
@@ -63,20 +78,8 @@ void SceneBuilder::readArchiveNamed(std::string const& name, SourceLocation cons
     };
     // A relative name is looked for beside the file that names it, in the
     // folder the renderer runs in (as RenderMan does), then on the search path.
-    std::vector<fs::path> candidates;
-    auto addCandidate = [&candidates](fs::path const& candidate) {  // each place once ("./a.rib" is "a.rib")
-        for (fs::path const& earlier : candidates)
-            if (earlier.lexically_normal() == candidate.lexically_normal()) return;
-        candidates.push_back(candidate);
-    };
     fs::path const path(fileName);
-    if (path.is_absolute()) {
-        candidates.push_back(path);
-    } else {
-        addCandidate(fs::path(currentDirectory()) / path);
-        addCandidate(path);
-        for (std::string const& folder : m_archiveSearchPath) addCandidate(fs::path(folder) / path);
-    }
+    std::vector<fs::path> const candidates = placesToLook(fileName, m_archiveSearchPath);
     std::string tried;
     auto exists = [](fs::path const& candidate) {
         std::error_code error;  // a name the file system rejects (too long, ...) is simply not found
@@ -207,19 +210,10 @@ std::unique_ptr<ProceduralProgram> SceneBuilder::startProgram(std::string const&
     std::vector<std::string> arguments;
     for (std::string word; words >> word;) arguments.push_back(word);
     if (name.empty()) throw RenderError("it names no program");
-    // The program is looked for as an archive is: beside the file that names it, in the folder the
-    // renderer runs in, then on the "procedural" search path; a bare name may also be a command on PATH.
-    std::vector<fs::path> candidates;
-    if (fs::path(name).is_absolute()) {
-        candidates.push_back(name);
-    } else {
-        candidates = {fs::path(currentDirectory()) / name, fs::path(name)};
-        for (std::string const& folder : m_proceduralSearchPath)
-            candidates.push_back(fs::path(folder) / name);
-    }
+    // A bare name not found where procedurals are looked for may also be a command on PATH.
     std::string searched;
     ProgramLaunch launch;
-    for (fs::path const& candidate : candidates) {
+    for (fs::path const& candidate : placesToLook(name, m_proceduralSearchPath)) {
         searched += "\n    " + candidate.string();
         std::error_code error;
         if (!fs::is_regular_file(candidate, error)) continue;
@@ -298,16 +292,11 @@ void SceneBuilder::warnProcedural(std::string const& kind, std::string const& pr
     // A procedural plugin speaks RenderMan's C interface (Ri calls), which this
     // renderer does not offer: it is never loaded. Saying where it would have
     // been looked for still tells the reader whether the file is even there.
-    std::vector<fs::path> folders;
-    for (fs::path const& folder : {fs::path(currentDirectory()), fs::path(".")})
-        if (std::find(folders.begin(), folders.end(), folder) == folders.end()) folders.push_back(folder);
-    for (std::string const& folder : m_proceduralSearchPath)
-        if (std::find(folders.begin(), folders.end(), fs::path(folder)) == folders.end()) folders.push_back(folder);
     fs::path found;
     std::string searched;
-    for (fs::path const& folder : folders) {
-        fs::path const candidate = fs::path(program).is_absolute() ? fs::path(program) : folder / program;
-        searched += "\n    " + candidate.parent_path().string();
+    for (fs::path const& candidate : placesToLook(program, m_proceduralSearchPath)) {
+        fs::path const folder = candidate.parent_path();
+        searched += "\n    " + (folder.empty() ? std::string(".") : folder.string());
         std::error_code error;
         if (fs::is_regular_file(candidate, error)) {
             found = candidate;
