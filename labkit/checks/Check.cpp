@@ -25,7 +25,8 @@ std::string const& checkHint(std::string const& check) {
                       "zero tangents, extreme parameters and xi = 0 against NaN, infinity, a negative W and negative "
                       "pdfs; mark a sample invalid instead of returning garbage."},
         {"smooth", "With roughness 0 a sample must be exactly the mirror or the refracted direction (Snell's law), from a "
-                   "discrete lobe, weighted by Fresnel and by (eta_V / eta_L)^2 for the light that crosses."},
+                   "discrete lobe, weighted by Fresnel and by (eta_V / eta_L)^2 for the light that crosses; its RPdf is the "
+                   "probability of the way back, the same choice seen from L."},
         {"renders", "Diff your render with the solution's (rixdiff --heatmap); the heatmap shows where they disagree."},
         {"noise", "Render the scene at the same spp with your plugin and the solution's and compare the noise: a "
                   "missing sampling strategy or MIS weight shows where one of them is weak."},

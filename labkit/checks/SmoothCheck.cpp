@@ -6,8 +6,11 @@
 // a renderer sees of a discrete lobe, equals the reference's within five
 // standard errors (plus 0.2%), at views from outside and inside, one of them
 // beyond the critical angle (total internal reflection), and again with the
-// colours differing from point to point.
+// colours differing from point to point. Every sample's RPdf is the
+// probability that a sample drawn from its L goes back to V, which is that
+// sample's FPdf (the discrete form of reciprocity's RPdf(V, L) = FPdf(L, V)).
 #include <cmath>
+#include <optional>
 #include <tuple>
 
 #include "checks/CheckSupport.h"
@@ -32,7 +35,10 @@ bool refracted(glm::dvec3 const& V, double etaV, double etaL, glm::dvec3& T) {
 struct Way {
     double sum[3] = {0, 0, 0}, sumSq[3] = {0, 0, 0};
     long count = 0;
-    void add(RtColorRGB const& w) {
+    float leastRPdf = 0.0f, greatestRPdf = 0.0f;  ///< the range of the samples' RPdf
+    void add(RtColorRGB const& w, float rpdf) {
+        leastRPdf = count == 0 ? rpdf : std::min(leastRPdf, rpdf);
+        greatestRPdf = count == 0 ? rpdf : std::max(greatestRPdf, rpdf);
         ++count;
         for (int k = 0; k < 3; ++k) {
             sum[k] += w[k];
@@ -71,13 +77,45 @@ Sorted sortSamples(std::vector<ProbeResult> const& drawn, Frame const& f, glm::d
             s.problem = "a sample toward " + describeDirection(Vec3(L)) +
                         " comes from a lobe not marked discrete; an integrator would then weight it against light "
                         "samples (MIS) that can never find a single direction";
-        if (toMirror) s.mirror.add(w);
-        if (toRefraction) s.refraction.add(w);
+        if (toMirror) s.mirror.add(w, g.RPdf);
+        if (toRefraction) s.refraction.add(w, g.RPdf);
     }
     if (valid == 0)
         s.problem = "none of " + std::to_string(drawn.size()) +
                     " samples was valid: a smooth boundary always sends light one way or the other";
     return s;
+}
+
+/// The FPdf of the samples drawn with the viewer at local `from` that go back
+/// to local `to`: the probability of that way. Nothing when none of them does.
+std::optional<float> probabilityOfWayBack(CheckContext& c, std::string const& params, Frame const& f,
+                                          glm::dvec3 const& from, Vec3 const& to, uint32_t seed) {
+    size_t const n = 4000;
+    ProbePoint const point = f.point(Vec3(from));
+    for (ProbeResult const& g : c.plugin.generate(params, std::vector<ProbePoint>(n, point), stratifiedSamples(n, seed)))
+        if (g.valid && glm::length(glm::dvec3(f.toLocal(g.L)) - glm::dvec3(to)) < 1e-3) return g.FPdf;
+    return std::nullopt;
+}
+
+/// Why the RPdf of `way`'s samples (toward local `L`, viewed from local V) is
+/// wrong, or nothing: it must be the probability that a sample drawn from L
+/// goes back to V.
+std::string wrongReversePdf(CheckContext& c, std::string const& params, Frame const& f, Vec3 const& V,
+                            glm::dvec3 const& L, Way const& way, std::string const& name, uint32_t seed) {
+    if (way.count == 0) return "";
+    std::optional<float> back = probabilityOfWayBack(c, params, f, L, V, seed);
+    float const expected = back.value_or(0.0f);
+    for (float rpdf : {way.leastRPdf, way.greatestRPdf})
+        if (!close(rpdf, expected, 1e-3, 1e-6))
+            return "the samples toward " + name + " have RPdf " +
+                   (way.leastRPdf == way.greatestRPdf
+                        ? number(way.leastRPdf)
+                        : "from " + number(way.leastRPdf) + " to " + number(way.greatestRPdf)) +
+                   ", but " +
+                   (back ? "a sample drawn with the viewer there goes back with probability (FPdf) " + number(expected)
+                         : std::string("no sample drawn with the viewer there goes back (RPdf 0)")) +
+                   "; RPdf is the probability of sampling V from L, for every sample";
+    return "";
 }
 
 }  // namespace
@@ -143,6 +181,14 @@ CheckOutcome checkSmooth(CheckContext& c) {
                                                       number(std::fabs(ma - mb)) + ", " + number(allowed) + " allowed)",
                                                   details);
                 }
+
+            for (auto const& [name, way, L] :
+                 {std::tuple<char const*, Way const*, glm::dvec3>{"the mirror direction", &mine.mirror, M},
+                  {"the refracted direction", &mine.refraction, T}}) {
+                std::string wrong = wrongReversePdf(c, params, f, localV, L, *way, name,
+                                                    c.seed + 101u + static_cast<uint32_t>(views));
+                if (!wrong.empty()) return CheckOutcome::fail(where + ": " + wrong, details);
+            }
 
             // A discrete lobe has no value at any given direction, not even its own.
             std::vector<Vec3> exact = {f.toWorld(Vec3(M))};
