@@ -113,17 +113,19 @@ TEST_CASE("named coordinate systems: CoordinateSystem, ScopedCoordinateSystem an
     CHECK(test::warningsContaining(diagnostics, "no coordinate system \"aside\"") == 1);
 }
 
-TEST_CASE("a surface shader of the scene's own is rendered as the standard one its name or its Ks suggests",
+TEST_CASE("a surface shader of the scene's own is rendered as the standard one its name or its Ks suggests, else as matte",
           "[rib][classic]") {
     Diagnostics diagnostics(false);
-    Scene scene = test::parseRib("WorldBegin\nColor [0 1 0]\n"
+    Scene scene = test::parseRib("WorldBegin\nColor [0 1 0]\nLightSource \"ambientlight\" 1 \"intensity\" [0.2]\n"
                                  "Surface \"RCPlastic\" \"Ks\" [.5] \"Kd\" [.4] \"roughness\" [.2] \"Kr\" [1]\nSphere 1 -1 1 360\n"
                                  "Surface \"LGRustyMetal\" \"metalKa\" [1]\nSphere 1 -1 1 360\n"
                                  "Surface \"wood2\" \"Ks\" [.3] \"ringscale\" [10]\nSphere 1 -1 1 360\n"
                                  "Surface \"TLconstantMap\" \"mapname\" [\"\"]\nSphere 1 -1 1 360\n"
-                                 "Surface \"GNember\"\nSphere 1 -1 1 360\n",
+                                 "Surface \"GNember\"\nSphere 1 -1 1 360\n"
+                                 "Surface \"specsurf\" \"float Ka\" 1 \"float Kd\" 0.8 \"float Kr\" 0.5\n"
+                                 "Sphere 1 -1 1 360\n",
                                  diagnostics);
-    REQUIRE(scene.shapes.size() == 5u);
+    REQUIRE(scene.shapes.size() == 6u);
     auto materialOf = [&](size_t i) -> MaterialDesc const& {
         return scene.materials[static_cast<size_t>(scene.shapes[i]->material)];
     };
@@ -134,11 +136,21 @@ TEST_CASE("a surface shader of the scene's own is rendered as the standard one i
     CHECK(materialOf(1).params.getString("shader", "") == "metal");
     CHECK(materialOf(2).params.getString("shader", "") == "plastic");
     CHECK(materialOf(3).params.getString("shader", "") == "constant");
-    CHECK(materialOf(4).plugin == "PxrDiffuse");
-    CHECK(test::warningsContaining(diagnostics, "test.rib:3:1: Surface \"RCPlastic\" is a shader this renderer does not "
-                                                "have: rendered as the standard \"plastic\" its name suggests") == 1);
-    CHECK(test::warningsContaining(diagnostics, "Surface \"wood2\" is a shader this renderer does not have: rendered as the "
-                                                "standard \"plastic\" its specular weight Ks suggests") == 1);
+    // Neither a name nor a Ks to go by: matte, which most shaders of a scene's own grew from (its
+    // Ka * ambient() then lit by the scene's ambientlight, as theirs would be).
+    CHECK(materialOf(4).params.getString("shader", "") == "matte");
+    CHECK(materialOf(4).params.getColor("ambient", Vec3(0.0f)).y > 0.0f);
+    CHECK(materialOf(5).params.getString("shader", "") == "matte");
+    CHECK(materialOf(5).params.getFloat("Kd", 0.0f) == 0.8f);
+    CHECK(materialOf(5).params.getFloat("Ka", 0.0f) == 1.0f);
+    CHECK_FALSE(materialOf(5).params.has("Kr"));
+    CHECK(test::warningsContaining(diagnostics, "test.rib:4:1: Surface \"RCPlastic\" is a shader this renderer does not "
+                                                "have: rendered as \"plastic\", the standard one its name suggests") == 1);
+    CHECK(test::warningsContaining(diagnostics, "Surface \"wood2\" is a shader this renderer does not have: rendered as "
+                                                "\"plastic\", the standard one its specular weight Ks suggests") == 1);
+    CHECK(test::warningsContaining(diagnostics, "Surface \"GNember\" is a shader this renderer does not have: rendered "
+                                                "as \"matte\", the standard shader most shaders of a scene's own grew "
+                                                "from") == 1);
     CHECK(test::warningsContaining(diagnostics, "has no parameter") == 0);
 }
 
@@ -159,10 +171,11 @@ TEST_CASE("classic Surface shaders become the ClassicSurface Bxdf with the Color
         CHECK(plastic.params.getString("shader", "") == "plastic");
         CHECK(plastic.params.getFloat("Ks", 0.0f) == 0.7f);
         CHECK(plastic.params.getColor("surfaceColor", Vec3(0)) == Vec3(1, 0, 0));
-        // An unknown shader: one warning, and the default material in the current Color.
+        // An unknown shader: one warning, and the standard matte in the current Color.
         MaterialDesc const& unknown = scene.materials[static_cast<size_t>(scene.shapes[1]->material)];
-        CHECK(unknown.plugin == "PxrDiffuse");
-        CHECK(unknown.params.getColor("diffuseColor", Vec3(0)) == Vec3(1, 0, 0));
+        CHECK(unknown.plugin == "ClassicSurface");
+        CHECK(unknown.params.getString("shader", "") == "matte");
+        CHECK(unknown.params.getColor("surfaceColor", Vec3(0)) == Vec3(1, 0, 0));
         CHECK(test::warningsContaining(diagnostics, "Surface \"" + folder + "wobbly\"") == 1);
         CHECK(scene.materials[static_cast<size_t>(scene.shapes[2]->material)].plugin == "PxrDiffuse");
         CHECK(scene.materials[static_cast<size_t>(scene.shapes[2]->material)].handle == "d");

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include <filesystem>
+#include <utility>
 
 #include "core/Spelling.h"
 #include "scene/SceneBuilder.h"
@@ -34,15 +35,17 @@ std::vector<std::string> const* classicSurfaceParameters(std::string const& shad
     return found == parameters.end() ? nullptr : &found->second;
 }
 
-/// The standard shader an unknown one most likely is: the one its name holds
-/// ("RCPlastic", "TLFresnelPlastic", "rsmetal", "RCMatte"), else plastic when
-/// it has a specular weight Ks; else "" (the default material).
-std::string lookalikeSurface(std::string const& name, ParamList const& params) {
+/// The standard shader an unknown one most likely is, and why: the one its
+/// name holds ("RCPlastic", "TLFresnelPlastic", "rsmetal", "RCMatte"), else
+/// plastic when it has a specular weight Ks, else matte, which most shaders
+/// of a scene's own grew from: its Ka * ambient() is lit by the scene's
+/// ambientlight as theirs would be.
+std::pair<std::string, std::string> lookalikeSurface(std::string const& name, ParamList const& params) {
     std::string const lower = lowered(name);
     for (char const* standard : {"plastic", "matte", "metal", "constant"})
-        if (lower.find(standard) != std::string::npos) return standard;
-    if (params.has("Ks")) return "plastic";
-    return "";
+        if (lower.find(standard) != std::string::npos) return {standard, "the standard one its name suggests"};
+    if (params.has("Ks")) return {"plastic", "the standard one its specular weight Ks suggests"};
+    return {"matte", "the standard shader most shaders of a scene's own grew from"};
 }
 
 }  // namespace
@@ -119,28 +122,17 @@ void SceneBuilder::surface(RequestReader& in) {
                  "rendered as the standard \"" + base + "\"");
         name = base;
     }
-    // A shader of the scene's own that says which standard one it resembles is rendered as that one,
-    // with the standard parameters it shares (most were written from the standard shaders).
+    // A shader of the scene's own is rendered as the standard one it most likely resembles, with the
+    // standard parameters it shares (most were written from the standard shaders).
     bool lookalike = false;
     if (!known) {
-        std::string const like = lookalikeSurface(base, params);
-        if (!like.empty()) {
-            bool const byName = lookalikeSurface(base, ParamList()) == like;
-            warnOnce("surface " + name, in.where(),
-                     "Surface \"" + name + "\" is a shader this renderer does not have: rendered as the standard \"" +
-                         like + "\" its " + (byName ? "name" : "specular weight Ks") +
-                         " suggests, with the parameters of it that it gives (its others are ignored)");
-            name = like;
-            known = classicSurfaceParameters(like);
-            lookalike = true;
-        }
-    }
-    if (!known) {
+        auto const [like, why] = lookalikeSurface(base, params);
         warnOnce("surface " + name, in.where(),
-                 "Surface \"" + name + "\" is a shader this renderer does not have: its surfaces get the default "
-                 "material (PxrDiffuse in the current Color)");
-        state().surface.reset();
-        return;
+                 "Surface \"" + name + "\" is a shader this renderer does not have: rendered as \"" + like + "\", " +
+                     why + ", with the parameters of it that it gives (its others are ignored)");
+        name = like;
+        known = classicSurfaceParameters(like);
+        lookalike = true;
     }
     auto shader = std::make_shared<MaterialDesc>();
     shader->plugin = "ClassicSurface";
