@@ -230,6 +230,28 @@ TEST_CASE("classic light shaders: pointlight, spotlight and distantlight light w
                                                 "the same point, so the light has no direction; it is left out") == 1);
 }
 
+TEST_CASE("a classic metal's highlight is as narrow as PRMan's: Blinn's exponent 8 / roughness", "[lights][classic]") {
+    // A surface facing the camera, a distant light at alpha from its normal: the half vector is alpha / 2
+    // from the normal and the mirror direction alpha from the viewer. PRMan's specular() (which BMRT and
+    // Aqsis emulate as max(0, N.H)^(8 / roughness)) is half its peak where cos(alpha / 2)^80 = 1/2 at
+    // roughness 0.1; the stock Phong lobe of exponent 2 / roughness is cos(alpha)^20 there, times cos(alpha).
+    double const roughness = 0.1, Ks = 0.8;
+    double const alpha = 2.0 * std::acos(std::pow(0.5, roughness / 8.0));
+    std::string const rib =
+        "Format 8 8 1\nProjection \"orthographic\"\nScreenWindow -0.01 0.01 -0.01 0.01\nWorldBegin\n"
+        "LightSource \"distantlight\" 1 \"to\" [" + std::to_string(std::sin(alpha)) + " 0 " +
+        std::to_string(std::cos(alpha)) + "]\nColor [1 1 1]\nSurface \"metal\" \"Ka\" [0] \"Ks\" [" +
+        std::to_string(Ks) + "] \"roughness\" [" + std::to_string(roughness) +
+        "]\nPolygon \"P\" [-10 -10 5  10 -10 5  10 10 5  -10 10 5]\nWorldEnd\n";
+    RenderSettings settings;
+    settings.spp = 4;
+    double const highlight = test::meanChannel(test::renderRib(rib, settings), 0, [](int, int) { return true; });
+    double const stockLobe = Ks * std::cos(alpha) * std::pow(std::cos(alpha), 2.0 / roughness);
+    CHECK(highlight == Approx(stockLobe).epsilon(2e-3));
+    // Within 5% of PRMan's half peak (less its cosine); the specification's 1 / roughness would give 0.91.
+    CHECK(highlight / (Ks * std::cos(alpha)) == Approx(0.5).epsilon(0.05));
+}
+
 TEST_CASE("a LightSource without its handle is read as Aqsis and Pixie read it: the string after the shader is a "
           "parameter's name", "[lights]") {
     // A hand-written teaching file: LightSource "ambientlight" "intensity" [1], no sequence number.

@@ -28,12 +28,16 @@
 // same share. A shape's own "Os" primvar darkens it as before, without showing
 // through.
 //
-// The classic shaders' specular() is a Blinn lobe max(0, N.H)^(1/roughness),
-// with no cosine and no normalisation. Here the glossy lobe is the chapter 6
-// Phong lobe around the mirror direction, unnormalised and divided by pi:
-//   f_s = Ks specularcolor / pi * max(0, R.L)^(1 / (4 roughness)).
-// The exponent gives the same highlight width (the half vector turns half as
-// fast as the mirror direction), and since the lights of those files get a
+// The classic shaders' specular() is a Blinn lobe max(0, N.H)^n with no
+// cosine and no normalisation. The RenderMan specification writes
+// n = 1/roughness, but PRMan's highlights are far tighter: BMRT and Aqsis
+// emulate them with n = 8/roughness, and that fits the highlight of a PRMan
+// render of the standard metal (roughness 0.1) near its peak. Here the glossy
+// lobe is the chapter 6 Phong lobe around the mirror direction, unnormalised
+// and divided by pi:
+//   f_s = Ks specularcolor / pi * max(0, R.L)^(2 / roughness).
+// The exponent n/4 gives the same highlight width (the half vector turns half
+// as fast as the mirror direction), and since the lights of those files get a
 // factor pi in the scene reader (the classic diffuse() has no 1/pi), the
 // highlight's peak keeps the brightness the files were made for; a lobe of
 // at most 1/pi never reflects more than the surface receives.
@@ -187,7 +191,7 @@ public:
             specularColors[i] = shader == Shader::Matte ? black
                                 : (shader == Shader::Metal ? color[i] : *specularColor) * (*Ks * F_INVPI);
             glow[i] = color[i] * *ambient * *Ka;
-            gloss[i] = 0.25f / RixMax(*roughness, 1e-4f);
+            gloss[i] = 2.0f / RixMax(*roughness, 1e-4f);
         }
         params.diffuseColor = diffuseColors;
         params.specularColor = specularColors;
