@@ -411,6 +411,18 @@ TEST_CASE("a light shader this renderer does not have is placed by its name, the
     CHECK(kindOf("LightSource \"key\"" + fromTo + " \"coneangle\" [0.5]") == spot);
     CHECK(kindOf("LightSource \"key\"" + fromTo) == distant);  // a "to" and no cone: a direction
     CHECK(kindOf("LightSource \"key\" 1 \"from\" [0 0 0]") == point);
+    // A shader of its own named for its shadows traces them (it names no map); another casts none,
+    // as the standard pointlight does.
+    auto shadowsOf = [](std::string const& shader) {
+        Diagnostics diagnostics(false);
+        Scene scene = test::parseRib("WorldBegin\nLightSource \"" + shader + "\" 1 \"from\" [0 0 0]\n", diagnostics);
+        REQUIRE(scene.lights.size() == 1u);
+        return scene.lights[0]->castsShadows;
+    };
+    CHECK(shadowsOf("pointlight_shadows"));
+    CHECK(shadowsOf("shaders/shadowlight"));
+    CHECK_FALSE(shadowsOf("mypointlight"));
+    CHECK_FALSE(shadowsOf("pointlight"));
 }
 
 TEST_CASE("a light given before WorldBegin is placed in camera space", "[lights]") {

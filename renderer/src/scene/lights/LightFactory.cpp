@@ -341,8 +341,14 @@ std::unique_ptr<Light> makeClassicLight(std::string const& shader, ParamList con
         bool const traced = option.find("raytrace") != std::string::npos && !p.floats.empty() && p.floats[0] != 0.0f;
         if (map || traced) light->castsShadows = true;
     }
+    // A shader of the scene's own that says so in its name ("pointlight_shadows", "shadowlight") and
+    // is given no map can only trace its shadows, as its transmission() or shadow(..., "raytrace") does.
+    bool const namedShadowed = !guess.empty() && lowerName.find("shadow") != std::string::npos;
+    if (namedShadowed) light->castsShadows = true;
     for (auto const& p : params.all()) p.used = true;  // shadow maps, samples and other shader options: not modelled
-    if (!guess.empty()) guess = std::string("the ") + light->kind() + " its parameters describe";
+    if (!guess.empty())
+        guess = std::string("the ") + light->kind() + " its parameters describe" +
+                (namedShadowed ? ", tracing the shadows its name speaks of" : "");
     return light;
 }
 
