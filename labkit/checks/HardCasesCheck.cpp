@@ -1,5 +1,5 @@
-// hardcases: grazing, exactly tangent and back-facing views and lights,
-// degenerate tangents (zero, along N, not unit), random numbers 0 and
+// hardcases: grazing, exactly tangent and back-facing views and lights
+// (tangent to the bit in an unturned frame, as at a silhouette), degenerate tangents (zero, along N, not unit), random numbers 0 and
 // 1 - 2^-24, views and lights between the horizons of a shading normal bent
 // away from the geometric one, and the exercise's extreme parameters, in
 // every sampling mode: W finite and never negative, pdfs finite and never
@@ -61,6 +61,12 @@ CheckOutcome checkHardCases(CheckContext& c) {
                                          {Vec3(0), "a zero tangent (dPdu = 0, as at a sphere's pole)"},
                                          {Vec3(0, 0, 1), "a tangent along the normal"},
                                          {Vec3(0, 3, 0.5f), "a long tangent"}};
+    // Turned 40 degrees, "exactly on the horizon" is so only to float precision.
+    // In the unturned frame N.V and N.L are exactly 0, as where a ray grazes a
+    // silhouette: a division by the cosine there gives infinity.
+    Frame const unturned(0.0f);
+    std::vector<Named> const exactViews = {{Vec3(1, 0, 0), "exactly on the horizon (N.V = 0 to the bit)"},
+                                           {Vec3(0, 0, 1), "along the normal (frame unturned: a light on the horizon has N.L = 0 to the bit)"}};
     std::vector<Named> const lights = {{Vec3(0, 0, 1), "along the normal"},
                                        {glm::normalize(Vec3(0, 1, tiny)), "grazing above"},
                                        {Vec3(0, 1, 0), "on the horizon"},
@@ -79,8 +85,8 @@ CheckOutcome checkHardCases(CheckContext& c) {
     int cases = 0;
     // Generates from `point` (32 stratified draws, then every random number 0 and 1 - 2^-24) and
     // evaluates `toward` (local directions) there: the first problem found, or "".
-    auto probe = [&](std::string const& params, ProbePoint const& point, std::string const& where,
-                     std::vector<Named> const& toward) -> std::string {
+    auto probe = [&](std::string const& params, Frame const& frameOf, ProbePoint const& point,
+                     std::string const& where, std::vector<Named> const& toward) -> std::string {
         for (float xi : {-1.0f, 0.0f, 1.0f - 0x1p-24f}) {
             size_t n = xi < 0 ? 32 : 1;
             auto samples = xi < 0 ? stratifiedSamples(n, c.seed + 5u) : fixedSamples(n, RtFloat2(xi, xi));
@@ -91,7 +97,7 @@ CheckOutcome checkHardCases(CheckContext& c) {
             }
         }
         std::vector<Vec3> L;
-        for (auto const& l : toward) L.push_back(f.toWorld(l.v));
+        for (auto const& l : toward) L.push_back(frameOf.toWorld(l.v));
         auto evaluated = c.plugin.evaluate(params, std::vector<ProbePoint>(L.size(), point), L);
         for (size_t k = 0; k < evaluated.size(); ++k) {
             ++cases;
@@ -108,19 +114,27 @@ CheckOutcome checkHardCases(CheckContext& c) {
             for (Named const& V : views)
                 for (Named const& T : tangents) {
                     std::string const where = withParams(params) + ", the viewer " + V.name + " and " + T.name;
-                    if (std::string problem = probe(params, f.point(V.v, T.v), where, lights); !problem.empty())
+                    if (std::string problem = probe(params, f, f.point(V.v, T.v), where, lights); !problem.empty())
+                        return CheckOutcome::fail(problem);
+                }
+            for (Named const& V : exactViews)
+                for (Named const& T : tangents) {
+                    std::string const where = withParams(params) + ", the viewer " + V.name + " and " + T.name;
+                    if (std::string problem = probe(params, unturned, unturned.point(V.v, T.v), where, lights);
+                        !problem.empty())
                         return CheckOutcome::fail(problem);
                 }
             for (Named const& V : between) {
                 std::string const where = withParams(params) + ", the viewer " + V.name;
-                if (std::string problem = probe(params, f.bentPoint(V.v), where, between); !problem.empty())
+                if (std::string problem = probe(params, f, f.bentPoint(V.v), where, between); !problem.empty())
                     return CheckOutcome::fail(problem);
             }
         }
     return CheckOutcome::pass("all " + std::to_string(cases) + " hard cases stay finite, with W never negative and valid pdfs",
                               std::to_string(paramSets.size()) + " parameter sets x " +
                                   std::to_string(e.samplingModes.size()) + " sampling modes x (" +
-                                  std::to_string(views.size()) + " views x " + std::to_string(tangents.size()) +
+                                  std::to_string(views.size() + exactViews.size()) + " views x " +
+                                  std::to_string(tangents.size()) +
                                   " tangents + " + std::to_string(between.size()) +
                                   " views about a bent shading normal)");
 }
