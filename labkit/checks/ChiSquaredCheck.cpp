@@ -1,6 +1,8 @@
 // chi2: the directions GenerateSample returns follow the FPdf that
 // EvaluateSample declares, for every sampling mode and at views that differ
-// for the sampler (more azimuths for anisotropic models). Pearson's test on
+// for the sampler (more azimuths for anisotropic models), and at one view
+// with the exercise's coloured parameter set, whose weights change the
+// probabilities of a mixture's lobes. Pearson's test on
 // equal-area cells (16 x 32) of about a million independent draws per view;
 // expected counts integrate FPdf adaptively over each cell; the draws that
 // come back invalid are one more category. Sidak's correction over every
@@ -35,8 +37,12 @@ CheckOutcome checkChiSquared(CheckContext& c) {
     Exercise const& e = c.exercise;
     if (std::string why = notAttempted(c); !why.empty()) return CheckOutcome::fail(why);
     Frame const& f = frame();
-    std::vector<View> const views = viewsFor(e);
-    int const tests = static_cast<int>(views.size() * e.samplingModes.size());
+    // Every view with the exercise's parameters, and one with its coloured set, whose
+    // other weights move the mixture's lobe probabilities (Ward's diffuse part, say).
+    std::vector<std::pair<std::string, View>> probes;
+    for (View const& view : viewsFor(e)) probes.push_back({e.params, view});
+    if (e.colorParams != e.params) probes.push_back({e.colorParams, View{45, 20}});
+    int const tests = static_cast<int>(probes.size() * e.samplingModes.size());
     double const alphaEach = sidak(c.alpha, tests);
     long const samples = c.chiSquaredSamples;
     DirectionCells cells;
@@ -44,8 +50,8 @@ CheckOutcome checkChiSquared(CheckContext& c) {
     std::string details;
     int testIndex = 0;
     for (SamplingMode const& mode : e.samplingModes) {
-        std::string const params = e.withMode(e.params, mode);
-        for (View const& view : views) {
+        for (auto const& [base, view] : probes) {
+            std::string const params = e.withMode(base, mode);
             ++testIndex;
             Vec3 localV = direction(view.theta, view.phi);
             ProbePoint point = view.bentNormal ? f.bentPoint(localV) : f.point(localV);
@@ -74,8 +80,9 @@ CheckOutcome checkChiSquared(CheckContext& c) {
 
             std::string where = "with the viewer at " + describeDirection(localV) +
                                 (view.bentNormal ? ", the shading normal bent 20 deg from the geometric normal," : "") +
-                                " and sampling mode \"" + mode.name + "\"";
-            char line[320];
+                                " and sampling mode \"" + mode.name + "\"" +
+                                (base == e.params ? "" : ", " + withParams(base));
+            char line[1024];
             std::snprintf(line, sizeof line,
                           "%s: %ld draws, %ld invalid; FPdf integrates to %.4f; chi-squared %.1f with %d degrees of "
                           "freedom, p = %.3g (needed above %.2g)\n",
