@@ -1,10 +1,11 @@
 // hardcases: grazing, exactly tangent and back-facing views and lights
-// (tangent to the bit in an unturned frame, as at a silhouette), degenerate tangents (zero, along N, not unit), random numbers 0 and
-// 1 - 2^-24, views and lights between the horizons of a shading normal bent
-// away from the geometric one, and the exercise's extreme parameters, in
-// every sampling mode: W finite and never negative, pdfs finite and never
-// negative, and a sample marked valid has FPdf > 0 and a finite unit
-// direction (otherwise it must be marked invalid).
+// (tangent to the bit in an unturned frame, as at a silhouette), degenerate
+// tangents (zero, along N, not unit), random numbers 0 and 1 - 2^-24, views
+// and lights between the horizons of a shading normal bent away from the
+// geometric one, and the exercise's extreme parameters, in every sampling
+// mode: W finite and never negative, pdfs finite and never negative, and a
+// sample marked valid has FPdf > 0 and a finite unit direction (otherwise it
+// must be marked invalid).
 #include <cmath>
 
 #include "checks/CheckSupport.h"
@@ -65,8 +66,9 @@ CheckOutcome checkHardCases(CheckContext& c) {
     // In the unturned frame N.V and N.L are exactly 0, as where a ray grazes a
     // silhouette: a division by the cosine there gives infinity.
     Frame const unturned(0.0f);
-    std::vector<Named> const exactViews = {{Vec3(1, 0, 0), "exactly on the horizon (N.V = 0 to the bit)"},
-                                           {Vec3(0, 0, 1), "along the normal (frame unturned: a light on the horizon has N.L = 0 to the bit)"}};
+    std::vector<Named> const exactViews = {
+        {Vec3(1, 0, 0), "exactly on the horizon (N.V = 0 to the bit)"},
+        {Vec3(0, 0, 1), "along the normal (frame unturned: a light on the horizon has N.L = 0 to the bit)"}};
     std::vector<Named> const lights = {{Vec3(0, 0, 1), "along the normal"},
                                        {glm::normalize(Vec3(0, 1, tiny)), "grazing above"},
                                        {Vec3(0, 1, 0), "on the horizon"},
@@ -114,7 +116,8 @@ CheckOutcome checkHardCases(CheckContext& c) {
             for (Named const& V : views)
                 for (Named const& T : tangents) {
                     std::string const where = withParams(params) + ", the viewer " + V.name + " and " + T.name;
-                    if (std::string problem = probe(params, f, f.point(V.v, T.v), where, lights); !problem.empty())
+                    if (std::string problem = probe(params, f, f.point(V.v, T.v), where, lights);
+                        !problem.empty())
                         return CheckOutcome::fail(problem);
                 }
             for (Named const& V : exactViews)
