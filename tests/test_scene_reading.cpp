@@ -113,6 +113,50 @@ TEST_CASE("named coordinate systems: CoordinateSystem, ScopedCoordinateSystem an
     CHECK(test::warningsContaining(diagnostics, "no coordinate system \"aside\"") == 1);
 }
 
+TEST_CASE("Skew shears what follows: its first axis turns towards its second by the angle", "[rib]") {
+    auto skewed = [](std::string const& skew, Vec3 point) {
+        Diagnostics diagnostics(false);
+        Scene scene = test::parseRib("WorldBegin\n" + skew + "\nSphere 1 -1 1 360\n", diagnostics);
+        REQUIRE(scene.shapes.size() == 1u);
+        return transformPoint(dynamic_cast<Quadric const&>(*scene.shapes[0]).objectToWorld(), point);
+    };
+    // The y axis leans 45 degrees towards x; points on the x axis and off the plane stay.
+    Vec3 const y = skewed("Skew 45 0 1 0 1 0 0", Vec3(0, 1, 0));
+    CHECK(y.x == Approx(1.0f));
+    CHECK(y.y == Approx(1.0f));
+    CHECK(y.z == Approx(0.0f).margin(1e-6));
+    CHECK(skewed("Skew 45 0 1 0 1 0 0", Vec3(2, 0, 0)).x == Approx(2.0f));
+    CHECK(skewed("Skew 45 0 1 0 1 0 0", Vec3(0, 0, 3)).z == Approx(3.0f));
+    CHECK(skewed("Skew -30 0 1 0 1 0 0", Vec3(0, 1, 0)).x == Approx(-std::tan(glm::radians(30.0f))));
+    // Axes that are not square to each other: (1 1 0) is 45 degrees from x, and 15 after turning
+    // 30 degrees towards it, keeping its height above the x axis.
+    Vec3 const diagonal = skewed("Skew 30 1 1 0 1 0 0", Vec3(1, 1, 0));
+    CHECK(diagonal.y == Approx(1.0f));
+    CHECK(glm::degrees(std::atan2(diagonal.y, diagonal.x)) == Approx(15.0f));
+    // The axis cannot be turned onto the line of the other, nor can axes that are one line.
+    Diagnostics bad(false);
+    CHECK_THROWS_WITH(
+        test::parseRib("WorldBegin\nSkew 90 0 1 0 1 0 0\n", bad),
+        Catch::Matchers::Contains("test.rib:2:1: Skew: the axes are 90 degrees apart, so the angle must "
+                                  "lie between -90 and 90 (not 90)"));
+    CHECK_THROWS_WITH(test::parseRib("WorldBegin\nSkew -140 1 1 0 1 0 0\n", bad),
+                      Catch::Matchers::Contains("must lie between -135 and 45 (not -140)"));
+    CHECK_THROWS_WITH(test::parseRib("WorldBegin\nSkew 10 1 0 0 -2 0 0\n", bad),
+                      Catch::Matchers::Contains("Skew: the two axes are parallel"));
+    CHECK_THROWS_WITH(test::parseRib("WorldBegin\nSkew 10 0 0 0 1 0 0\n", bad),
+                      Catch::Matchers::Contains("Skew: an axis is the zero vector"));
+}
+
+TEST_CASE("Bound is a hint for renderers that dice: read without a word", "[rib]") {
+    Diagnostics diagnostics(false);
+    Scene scene = test::parseRib(
+        "WorldBegin\nBound [-1 1 -1 1 -1 1]\nBound -1 1 -1 1 -1 1\nSphere 1 -1 1 360\n", diagnostics);
+    CHECK(scene.shapes.size() == 1u);
+    CHECK(diagnostics.warningCount() == 0);
+    CHECK_THROWS_WITH(test::parseRib("WorldBegin\nBound [-1 1 -1 1]\n", diagnostics),
+                      Catch::Matchers::Contains("test.rib:2:7: Bound: expected 6 numbers"));
+}
+
 TEST_CASE("a surface shader of the scene's own is rendered as the standard one its name or its Ks suggests, else as matte",
           "[rib][classic]") {
     Diagnostics diagnostics(false);

@@ -237,6 +237,8 @@ private:
     void translate(RequestReader& in);
     void rotate(RequestReader& in);
     void scale(RequestReader& in);
+    void skew(RequestReader& in);
+    void bound(RequestReader& in);
     /// Makes `transform` current (Transform, Identity: a transform that holds still), or fails at
     /// the request if it overflowed. Inside a motion block, keeps it for its time instead.
     void setTransform(RequestReader& in, Mat4 const& transform);

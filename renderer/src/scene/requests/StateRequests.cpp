@@ -4,6 +4,7 @@
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
+#include <sstream>
 
 #include "scene/Camera.h"
 #include "scene/SceneBuilder.h"
@@ -206,6 +207,43 @@ void SceneBuilder::scale(RequestReader& in) {
     if (v[0] == 0.0f || v[1] == 0.0f || v[2] == 0.0f)
         m_diagnostics.warn(in.where(), "Scale by zero collapses everything that follows");
     concatenate(in, glm::scale(Mat4(1.0f), Vec3(v[0], v[1], v[2])));
+}
+
+// Skew shears space along d2 so that d1 turns by `angle` towards it: a point moves along d2 by
+// s times its distance along `across`, the direction of d1's part square to d2. If d1 makes the
+// angle a0 with `across` (towards d2), it turns to a0 + angle when s = tan(a0 + angle) - tan(a0),
+// which needs |a0 + angle| < 90 degrees: d1 cannot be turned onto the line of d2.
+void SceneBuilder::skew(RequestReader& in) {
+    std::vector<float> v = in.numbers(7, "angle dx1 dy1 dz1 dx2 dy2 dz2");
+    in.finish();
+    Vec3 const d1(v[1], v[2], v[3]), d2(v[4], v[5], v[6]);
+    if (glm::length(d1) == 0.0f || glm::length(d2) == 0.0f) in.fail(in.where(), "an axis is the zero vector");
+    Vec3 const along = glm::normalize(d2);
+    Vec3 const d1Across = d1 - glm::dot(d1, along) * along;
+    if (glm::length(d1Across) <= 1e-6f * glm::length(d1))
+        in.fail(in.where(), "the two axes are parallel, so no angle between them can change");
+    Vec3 const across = glm::normalize(d1Across);
+    double const from = glm::degrees(std::atan2(double(glm::dot(d1, along)), double(glm::dot(d1, across))));
+    double const to = from + v[0];
+    if (std::abs(to) >= 90.0) {
+        std::ostringstream message;
+        message << "the axes are " << 90.0 - from << " degrees apart, so the angle must lie between "
+                << -(90.0 + from) << " and " << 90.0 - from << " (not " << v[0]
+                << "): the first axis cannot be turned onto the line of the second";
+        in.fail(in.where(), message.str());
+    }
+    float const s = float(std::tan(glm::radians(to)) - std::tan(glm::radians(from)));
+    Mat4 shear(1.0f);
+    for (int column = 0; column < 3; ++column)
+        for (int row = 0; row < 3; ++row) shear[column][row] += s * along[row] * across[column];
+    concatenate(in, shear);
+}
+
+// A bounding box for the shapes that follow: a hint for a renderer that dices them, which a ray
+// tracer, bounding every shape itself, does not need.
+void SceneBuilder::bound(RequestReader& in) {
+    in.numbers(6, "bound (xmin xmax ymin ymax zmin zmax)");
+    in.finish();
 }
 
 void SceneBuilder::coordinateSystem(RequestReader& in) {
