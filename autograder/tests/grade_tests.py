@@ -124,6 +124,9 @@ def no_leftover_processes(marker):
 def test_variant(ctx, name):
     variants = json.load(open(os.path.join(ctx.root, "autograder/tests/variants.json")))["variants"]
     v = next(v for v in variants if v["name"] == name)
+    built = os.path.join(ctx.build, "plugins/variants", name, v["plugin"] + ".so")
+    if not expect(os.path.isfile(built), f"{built} was not built"):
+        return
     status, output, _ = ctx.grade("variant-" + name, "--plugins", os.path.join(ctx.build, "plugins/variants", name),
                                   "--only", v["plugin"])
     if not expect(status == 0, f"rixgrade exited with {status}:\n{output[-2000:]}"):
@@ -139,6 +142,10 @@ def test_variant(ctx, name):
         for check in v["fail"]:
             expect(check in checks, f"{check} was not graded")
             expect(checks.get(check, {}).get("status") == "failed", f"the mutant ({v['bug']}) passes {check}")
+        # A Bxdf loads: one that does not fails every check, and would otherwise look caught
+        # by the checks its entry names.
+        if "loads" in checks and "loads" not in v["fail"]:
+            expect(checks["loads"]["status"] == "passed", f"the mutant does not load: {checks['loads']['output'][:400]}")
 
 
 # --- hostile plugins ----------------------------------------------------------

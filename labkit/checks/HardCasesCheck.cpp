@@ -3,9 +3,10 @@
 // tangents (zero, along N, not unit), random numbers 0 and 1 - 2^-24, views
 // and lights between the horizons of a shading normal bent away from the
 // geometric one, and the exercise's extreme parameters, in every sampling
-// mode: W finite and never negative, pdfs finite and never negative, and a
-// sample marked valid has FPdf > 0 and a finite unit direction (otherwise it
-// must be marked invalid).
+// mode: W finite and never negative, pdfs finite and never negative (from
+// EvaluateSample and EvaluateSamplesAtIndex alike), and a sample marked valid
+// has FPdf > 0 and a finite unit direction (otherwise it must be marked
+// invalid).
 #include <cmath>
 
 #include "checks/CheckSupport.h"
@@ -100,12 +101,18 @@ CheckOutcome checkHardCases(CheckContext& c) {
         }
         std::vector<Vec3> L;
         for (auto const& l : toward) L.push_back(frameOf.toWorld(l.v));
+        // EvaluateSamplesAtIndex too: the consistency check, which compares it with EvaluateSample
+        // at ordinary directions, is not run for an emitter, whose three sampling functions
+        // must still answer "nothing here" within the arrays they are given.
         auto evaluated = c.plugin.evaluate(params, std::vector<ProbePoint>(L.size(), point), L);
-        for (size_t k = 0; k < evaluated.size(); ++k) {
-            ++cases;
-            if (std::string problem = valueProblem(evaluated[k], "EvaluateSample"); !problem.empty())
-                return where + ", the light " + toward[k].name + ": " + problem;
-        }
+        auto atIndex = c.plugin.evaluateAtIndex(params, point, L);
+        for (auto const& [results, call] :
+             {std::pair{&evaluated, "EvaluateSample"}, std::pair{&atIndex, "EvaluateSamplesAtIndex"}})
+            for (size_t k = 0; k < results->size(); ++k) {
+                ++cases;
+                if (std::string problem = valueProblem((*results)[k], call); !problem.empty())
+                    return where + ", the light " + toward[k].name + ": " + problem;
+            }
         for (auto const& emitted : c.plugin.emission(params, {point}))
             if (!isFiniteColor(emitted)) return where + ": EmitLocal gave " + describe(emitted);
         return "";

@@ -217,10 +217,15 @@ struct BxdfProbe::Impl {
         announce("EndScatter");
         factory->EndScatter(bxdf);
         if (!overran && !ctx.guardsIntact()) overran = "EndScatter";
-        if (overran)
-            throw MemoryOverrun(overran, std::string(overran) +
-                                             " wrote past the end of an array the shading context gave it (numPts is " +
-                                             std::to_string(ctx.numPts) + " here: does a loop run to i <= numPts?)");
+        if (overran) {
+            // EvaluateSamplesAtIndex's arrays hold numSamples entries, the others' numPts.
+            bool const atIndex = std::string(overran) == "EvaluateSamplesAtIndex";
+            throw MemoryOverrun(overran, std::string(overran) + " wrote past the end of an array " +
+                                             (atIndex ? "it was given (does a loop run to s <= numSamples?)"
+                                                      : "the shading context gave it (numPts is " +
+                                                            std::to_string(ctx.numPts) +
+                                                            " here: does a loop run to i <= numPts?)"));
+        }
     }
     /// Says which plugin function is called next, and poisons the stack it will use
     /// (inlined, so that the poison lies at the depth of the call that follows).
