@@ -100,6 +100,20 @@ TEST_CASE("a connected parameter takes the pattern's value at every point", "[pa
             CHECK(r.channel(4, y, 1) == Approx(pixelU(4)).margin(0.02));
         }
     }
+    SECTION("PxrManifold2D flips s with invertS and t with invertT before it turns them") {
+        auto r =
+            test::renderRib(kHead +
+                                "Pattern \"PxrManifold2D\" \"m\" \"int invertS\" [1] \"int invertT\" [1]\n"
+                                "Bxdf \"PxrConstant\" \"c\" \"reference color emitColor\" [\"m:result\"]\n" +
+                                kSquare,
+                            fewSamples());
+        CHECK_FALSE(r.anyMessageContains("has no parameter"));
+        for (int x : {1, 8, 14})
+            for (int y : {1, 8, 14}) {
+                CHECK(r.channel(x, y, 0) == Approx(1.0f - pixelU(x)).margin(0.02));
+                CHECK(r.channel(x, y, 1) == Approx(1.0f - pixelV(y)).margin(0.02));
+            }
+    }
     SECTION(
         "PxrManifold2D reads s from the primvar primvarS names; a name the surface lacks leaves t as it is") {
         std::string const polygon =

@@ -1,6 +1,6 @@
 // PxrManifold2D — places a 2-D texture on a surface: it turns the surface's
 // texture coordinates (s, t) into the coordinates a PxrTexture reads, by a
-// rotation, a scale and an offset:
+// flip of either axis (invertS, invertT), a rotation, a scale and an offset:
 //
 //   (s', t') = scale * rotate(angle) * (s, t) + offset
 //
@@ -22,7 +22,10 @@ namespace {
 
 class PxrManifold2D : public stockpatterns::StockPattern {
 public:
-    enum { k_angle, k_scaleS, k_scaleT, k_offsetS, k_offsetT, k_invertT, k_primvarS, k_primvarT, k_result };
+    enum {
+        k_angle, k_scaleS, k_scaleT, k_offsetS, k_offsetT, k_invertS, k_invertT, k_primvarS, k_primvarT,
+        k_result
+    };
 
     RixSCParamInfo const* GetParamTable() override {
         static RixSCParamInfo table[] = {
@@ -31,6 +34,7 @@ public:
             RixSCParamInfo(RtUString("scaleT"), k_RixSCFloat),
             RixSCParamInfo(RtUString("offsetS"), k_RixSCFloat),
             RixSCParamInfo(RtUString("offsetT"), k_RixSCFloat),
+            RixSCParamInfo(RtUString("invertS"), k_RixSCInteger),  // 1: use 1 - s
             RixSCParamInfo(RtUString("invertT"), k_RixSCInteger),  // 1: use 1 - t
             RixSCParamInfo(RtUString("primvarS"), k_RixSCString),  // "": the surface's s
             RixSCParamInfo(RtUString("primvarT"), k_RixSCString),
@@ -44,12 +48,13 @@ public:
         RtFloat const zero = 0.0f, one = 1.0f;
         RtInt const noInvert = 0;
         RtFloat const *angle, *scaleS, *scaleT, *offsetS, *offsetT;
-        RtInt const* invertT;
+        RtInt const *invertS, *invertT;
         sCtx->EvalParam(k_angle, -1, &angle, &zero, true);
         sCtx->EvalParam(k_scaleS, -1, &scaleS, &one, true);
         sCtx->EvalParam(k_scaleT, -1, &scaleT, &one, true);
         sCtx->EvalParam(k_offsetS, -1, &offsetS, &zero, true);
         sCtx->EvalParam(k_offsetT, -1, &offsetT, &zero, true);
+        sCtx->EvalParam(k_invertS, -1, &invertS, &noInvert, true);
         sCtx->EvalParam(k_invertT, -1, &invertT, &noInvert, true);
 
         RixShadingContext::Allocator pool(sCtx);
@@ -60,7 +65,8 @@ public:
         readCoordinate(sCtx, k_primvarS, st, &RtPoint3::x);
         readCoordinate(sCtx, k_primvarT, st, &RtPoint3::y);
         for (int i = 0; i < sCtx->numPts; ++i) {
-            float s = st[i].x, t = invertT[i] ? 1.0f - st[i].y : st[i].y;
+            float s = invertS[i] ? 1.0f - st[i].x : st[i].x;
+            float t = invertT[i] ? 1.0f - st[i].y : st[i].y;
             float radians = angle[i] * 3.14159265f / 180.0f;
             float c = std::cos(radians), n = std::sin(radians);
             float rs = c * s - n * t, rt = n * s + c * t;
