@@ -151,7 +151,6 @@ TEST_CASE("malformed RIB gives file:line:col and what was expected", "[rib][erro
         {"WorldBegin\nPatchMesh \"bicubic\" 4294967295 \"nonperiodic\" 4 \"nonperiodic\" \"P\" [0 0 0]", "bad.rib:2:21", "fits an int"},
         {"Basis \"bezier\" 3e9 \"bezier\" 3", "bad.rib:1:16", "fits an int"},
         {"Hider \"raytrace\" \"int maxsamples\" [0]", "bad.rib:1:18", "between 1 and"},
-        {"WorldBegin\nSphere 0 -1 1 360", "bad.rib:2:1", "radius must not be zero"},
         {"Light \"PxrDiskLight\" \"l\" \"blah intensity\" [1]", "bad.rib:1:26", "unknown parameter type"},
         {"WorldBegin\nAreaLightSource \"PxrStdAreaLight\" \"a\"\nGeometry \"spherelight\" \"radius\" [1]", "bad.rib:3:24",
          "\"radius\" has no type"},

@@ -157,6 +157,62 @@ TEST_CASE("Bound is a hint for renderers that dice: read without a word", "[rib]
                       Catch::Matchers::Contains("test.rib:2:7: Bound: expected 6 numbers"));
 }
 
+TEST_CASE("a quadric with no surface is skipped with one warning a kind, as RenderMan draws nothing for it",
+          "[rib]") {
+    Diagnostics diagnostics(false);
+    Scene scene = test::parseRib(
+        "WorldBegin\nSphere 0 -1 1 360\nSphere 0 -1 1 360\nDisk 0 0 360\n"
+        "Cylinder 0 -1 1 360\nParaboloid 0 0 1 360\nParaboloid 1 -1 0 360\n"
+        "Hyperboloid 1 0 0 1 0 0 360\nTorus 1 0 0 360 360\nSphere 1 -1 1 360\n",
+        diagnostics);
+    CHECK(scene.shapes.size() == 1u);  // the last sphere alone
+    // One warning for each of the six kinds, each at its first statement.
+    CHECK(diagnostics.warningCount() == 6);
+    auto said = [&](std::string const& text) {
+        for (auto const& entry : diagnostics.entries())
+            if (entry.text == text) return true;
+        return false;
+    };
+    CHECK(said("test.rib:2:1: Sphere with radius 0 describes no surface; skipped"));
+    CHECK(said("test.rib:6:1: Paraboloid with rmax 0 describes no surface; skipped"));
+    CHECK(said("test.rib:9:1: Torus with a radius 0 describes no surface; skipped"));
+    // A negative radius is not an empty surface: the torus still says what it needs.
+    CHECK_THROWS_WITH(test::parseRib("WorldBegin\nTorus 1 -0.5 0 360 360\n", diagnostics),
+                      Catch::Matchers::Contains("test.rib:2:1: Torus: radii must be positive"));
+}
+
+TEST_CASE("a cone of height 0 is the disk it stands on", "[rib]") {
+    Diagnostics diagnostics(false);
+    Scene scene = test::parseRib("WorldBegin\nCone 0 1 360\n", diagnostics);
+    REQUIRE(scene.shapes.size() == 1u);
+    CHECK(std::string(scene.shapes[0]->kind()) == "Disk");
+    CHECK(diagnostics.entries().empty());
+    RayTracer tracer(scene);
+    HitRecord inside = trace(tracer, Vec3(0.5f, 0.25f, -5.0f), Vec3(0, 0, 1));
+    REQUIRE(inside.hit());
+    CHECK(inside.t == Approx(5.0f).epsilon(1e-5));
+    CHECK_FALSE(trace(tracer, Vec3(1.2f, 0.0f, -5.0f), Vec3(0, 0, 1)).hit());  // past the radius
+}
+
+TEST_CASE("Rotate by 0 needs no axis, in or out of a motion block", "[rib]") {
+    Diagnostics diagnostics(false);
+    Scene scene = test::parseRib(
+        "Shutter 0 1\nWorldBegin\nRotate 0 0 0 0\nTranslate 2 0 0\nSphere 1 -1 1 360\n"
+        "MotionBegin [0 1]\n  Rotate 0 0 0 0\n  Rotate 90 0 0 1\nMotionEnd\n"
+        "Sphere 1 -1 1 360\n",
+        diagnostics);
+    REQUIRE(scene.shapes.size() == 2u);
+    CHECK(diagnostics.entries().empty());
+    RayTracer tracer(scene);
+    HitRecord hit = trace(tracer, Vec3(2, 0, -10), Vec3(0, 0, 1));
+    REQUIRE(hit.hit());
+    CHECK(hit.t == Approx(9.0f).epsilon(1e-5));
+    CHECK_FALSE(scene.shapes[0]->moves());
+    CHECK(scene.shapes[1]->moves());  // the block's two steps: no turn, then a quarter turn
+    CHECK_THROWS_WITH(test::parseRib("Rotate 30 0 0 0\n", diagnostics),
+                      Catch::Matchers::Contains("only a rotation by 0 may have no axis"));
+}
+
 TEST_CASE("a surface shader of the scene's own is rendered as the standard one its name or its Ks suggests, else as matte",
           "[rib][classic]") {
     Diagnostics diagnostics(false);

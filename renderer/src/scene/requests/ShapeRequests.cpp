@@ -161,10 +161,15 @@ SceneBuilder::QuadricRequest SceneBuilder::readQuadric(RequestReader& in, char c
     return q;
 }
 
+void SceneBuilder::skipWithoutSurface(RequestReader& in, char const* request, char const* why) {
+    warnOnce(std::string("no surface ") + request, in.where(),
+             std::string(request) + " with " + why + " describes no surface; skipped");
+}
+
 void SceneBuilder::sphere(RequestReader& in) {
     QuadricRequest q = readQuadric(in, "Sphere", 4, "radius zmin zmax thetamax", 0);
     std::vector<float> const& v = q.v;
-    if (!(q.radius > 0.0f)) in.fail(in.where(), "radius must not be zero, got " + std::to_string(v[0]));
+    if (!(q.radius > 0.0f)) return skipWithoutSurface(in, "Sphere", "radius 0");
     bool whole = v[1] <= -q.radius && v[2] >= q.radius && v[3] >= 360.0f;
     if (whole && shapeAsLight("PxrSphereLight", glm::scale(state().transform, Vec3(2.0f * q.radius)))) return;
     addShape(std::make_unique<Sphere>(q.radius, v[1], v[2], v[3], state().transform, q.reverse), in.where(),
@@ -174,7 +179,7 @@ void SceneBuilder::sphere(RequestReader& in) {
 void SceneBuilder::cylinder(RequestReader& in) {
     QuadricRequest q = readQuadric(in, "Cylinder", 4, "radius zmin zmax thetamax", 0);
     std::vector<float> const& v = q.v;
-    if (!(q.radius > 0.0f)) in.fail(in.where(), "radius must not be zero, got " + std::to_string(v[0]));
+    if (!(q.radius > 0.0f)) return skipWithoutSurface(in, "Cylinder", "radius 0");
     addShape(std::make_unique<Cylinder>(q.radius, v[1], v[2], v[3], state().transform, q.reverse), in.where(),
              std::move(q.primvars));
 }
@@ -182,7 +187,7 @@ void SceneBuilder::cylinder(RequestReader& in) {
 void SceneBuilder::disk(RequestReader& in) {
     QuadricRequest q = readQuadric(in, "Disk", 3, "height radius thetamax", 1);
     std::vector<float> const& v = q.v;
-    if (!(q.radius > 0.0f)) in.fail(in.where(), "radius must not be zero, got " + std::to_string(v[1]));
+    if (!(q.radius > 0.0f)) return skipWithoutSurface(in, "Disk", "radius 0");
     Mat4 diskLight = glm::scale(glm::translate(state().transform, Vec3(0.0f, 0.0f, v[0])),
                                 Vec3(2.0f * q.radius, 2.0f * q.radius, 1.0f));
     if (q.reverse) diskLight = glm::scale(diskLight, Vec3(1.0f, -1.0f, -1.0f));  // it emits the other way
@@ -194,7 +199,13 @@ void SceneBuilder::disk(RequestReader& in) {
 void SceneBuilder::cone(RequestReader& in) {
     QuadricRequest q = readQuadric(in, "Cone", 3, "height radius thetamax", 1);
     std::vector<float> const& v = q.v;
-    if (!(q.radius > 0.0f) || v[0] == 0.0f) in.fail(in.where(), "needs a non-zero radius and height");
+    if (!(q.radius > 0.0f)) return skipWithoutSurface(in, "Cone", "radius 0");
+    if (v[0] == 0.0f) {
+        // A cone of height 0 is the disk it stands on, point for point and (u, v) for (u, v).
+        addShape(std::make_unique<Disk>(0.0f, q.radius, v[2], state().transform, q.reverse), in.where(),
+                 std::move(q.primvars));
+        return;
+    }
     addShape(std::make_unique<Cone>(v[0], q.radius, v[2], state().transform, q.reverse), in.where(),
              std::move(q.primvars));
 }
@@ -202,8 +213,9 @@ void SceneBuilder::cone(RequestReader& in) {
 void SceneBuilder::paraboloid(RequestReader& in) {
     QuadricRequest q = readQuadric(in, "Paraboloid", 4, "rmax zmin zmax thetamax", 0);
     std::vector<float> const& v = q.v;
-    if (!(q.radius > 0.0f) || !(std::max(v[1], v[2]) > 0.0f))
-        in.fail(in.where(), "needs a non-zero rmax and a positive zmax");
+    if (!(q.radius > 0.0f)) return skipWithoutSurface(in, "Paraboloid", "rmax 0");
+    // The surface runs from z = 0 up to zmax; a span that never rises above 0 holds none of it.
+    if (!(std::max(v[1], v[2]) > 0.0f)) return skipWithoutSurface(in, "Paraboloid", "no z above 0");
     addShape(std::make_unique<Paraboloid>(q.radius, v[1], v[2], v[3], state().transform, q.reverse), in.where(),
              std::move(q.primvars));
 }
@@ -211,10 +223,8 @@ void SceneBuilder::paraboloid(RequestReader& in) {
 void SceneBuilder::hyperboloid(RequestReader& in) {
     QuadricRequest q = readQuadric(in, "Hyperboloid", 7, "point1 point2 thetamax", -1);
     std::vector<float> const& v = q.v;
-    if (v[2] == v[5] && v[0] == v[3] && v[1] == v[4]) {
-        warnOnce("point hyperboloid", in.where(), "Hyperboloid with both points the same describes no surface; skipped");
-        return;
-    }
+    if (v[2] == v[5] && v[0] == v[3] && v[1] == v[4])
+        return skipWithoutSurface(in, "Hyperboloid", "both points the same");
     addShape(std::make_unique<Hyperboloid>(Vec3(v[0], v[1], v[2]), Vec3(v[3], v[4], v[5]), v[6], state().transform,
                                            q.reverse),
              in.where(), std::move(q.primvars));
@@ -227,6 +237,7 @@ void SceneBuilder::addTessellated(MeshData mesh, char const* request, RequestRea
 void SceneBuilder::torus(RequestReader& in) {
     QuadricRequest q = readQuadric(in, "Torus", 5, "majorrad minorrad phimin phimax thetamax", -1);
     std::vector<float> const& v = q.v;
+    if (v[0] == 0.0f || v[1] == 0.0f) return skipWithoutSurface(in, "Torus", "a radius 0");
     if (!(v[0] > 0.0f) || !(v[1] > 0.0f)) in.fail(in.where(), "radii must be positive");
     bool flip = state().reverseOrientation != mirrors(state().transform);
     addTessellated(buildTorus(v[0], v[1], v[2], v[3], v[4], state().transform, flip), "Torus", in,

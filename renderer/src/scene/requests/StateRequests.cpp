@@ -197,7 +197,10 @@ void SceneBuilder::rotate(RequestReader& in) {
     std::vector<float> v = in.numbers(4, "angle dx dy dz");
     in.finish();
     Vec3 axis(v[1], v[2], v[3]);
-    if (glm::length(axis) == 0.0f) in.fail(in.where(), "rotation axis is the zero vector");
+    // No turn, whatever the axis (exporters write "Rotate 0 0 0 0"); still a step of any motion block.
+    if (v[0] == 0.0f) return concatenate(in, Mat4(1.0f));
+    if (glm::length(axis) == 0.0f)
+        in.fail(in.where(), "rotation axis is the zero vector (only a rotation by 0 may have no axis)");
     concatenate(in, glm::rotate(Mat4(1.0f), glm::radians(v[0]), glm::normalize(axis)));
 }
 
