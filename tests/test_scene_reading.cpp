@@ -842,13 +842,18 @@ TEST_CASE("a face of a million vertices is triangulated in about as many steps, 
     CHECK(trace(tracer, Vec3(0.3f, 0.2f, 0), Vec3(0, 0, 1)).hit());
 }
 
-TEST_CASE("RenderMan's camera plugins are perspective cameras, with no Projection the camera is orthographic",
-          "[rib]") {
+TEST_CASE(
+    "RenderMan's camera plugins are perspective cameras but PxrOrthographic and no Projection is "
+    "orthographic",
+    "[rib]") {
     Diagnostics diagnostics(false);
     Scene pxr = test::parseRib("Projection \"PxrCamera\" \"float fov\" [35]\nWorldBegin\n", diagnostics);
     CHECK(pxr.camera.projection == "perspective");
     CHECK(pxr.camera.fov == 35.0f);
     CHECK(test::warningsContaining(diagnostics, "PxrCamera") == 1);
+    Scene ortho = test::parseRib("Projection \"PxrOrthographic\"\nWorldBegin\n", diagnostics);
+    CHECK(ortho.camera.projection == "orthographic");
+    CHECK(test::warningsContaining(diagnostics, "PxrOrthographic") == 0);
     Scene none = test::parseRib("WorldBegin\n", diagnostics);
     CHECK(none.camera.projection == "orthographic");
 }

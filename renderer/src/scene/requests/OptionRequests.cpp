@@ -126,6 +126,8 @@ void SceneBuilder::projection(RequestReader& in) {
                  "effects are not)");
         type = "perspective";
     }
+    if (type == "PxrOrthographic")
+        type = "orthographic";  // RenderMan's plugin for it, the screen window its only setting
     if (type != "perspective" && type != "orthographic")
         in.fail(in.where(), "unsupported projection \"" + type + "\" (use \"perspective\" or \"orthographic\")");
     m_scene.camera.projection = type;
