@@ -183,34 +183,66 @@ TEST_CASE("PxrOcclusion: an open plane is white, a corner under a sphere is dark
     CHECK(shadowed > 0.5);
 }
 
-TEST_CASE("PxrVisualize: shaded as PxrDefault, normals, st, one colour per material, and a normal check",
-          "[integrators]") {
-    std::string const scene = "Format 16 16 1\nProjection \"orthographic\"\nScreenWindow -2 2 -2 2\nWorldBegin\n"
-                              "Translate 0 0 5\nBxdf \"PxrDiffuse\" \"a\"\nSphere 1 -1 1 360\n"
-                              "Translate 0 0 -10\nBxdf \"PxrDiffuse\" \"b\"\nPatch \"bilinear\" \"P\" "
-                              "[-2 -2 20  2 -2 20  -2 2 20  2 2 20]\nWorldEnd\n";
+TEST_CASE(
+    "PxrVisualizer: shaded by facing ratio and bxdf as PxrDefault and normals and st and flat and a normal "
+    "check",
+    "[integrators]") {
+    std::string const scene =
+        "Format 16 16 1\nProjection \"orthographic\"\nScreenWindow -2 2 -2 2\nWorldBegin\n"
+        "Translate 0 0 5\nBxdf \"PxrDiffuse\" \"a\"\nAttributeBegin\nRotate -90 1 0 0\n"
+        "Sphere 1 -1 1 360\nAttributeEnd\n"
+        "Translate 0 0 -10\nBxdf \"PxrDiffuse\" \"b\"\nPatch \"bilinear\" \"P\" "
+        "[-2 -2 20  2 -2 20  -2 2 20  2 2 20]\nWorldEnd\n";
     auto withIntegrator = [&](std::string const& integrator) {
         RenderSettings settings;
         settings.spp = 4;
         return test::renderRib(integrator + "\n" + scene, settings);
     };
-    auto shaded = withIntegrator("Integrator \"PxrVisualize\" \"v\"");
+    // The default style, with RenderMan's default wireframe, which is said not to be drawn.
+    auto shaded = withIntegrator("Integrator \"PxrVisualizer\" \"v\"");
+    CHECK(shaded.anyMessageContains("the tessellation is not drawn"));
+    // Pixel (x, y) looks along z at the point (x + 0.5) / 4 - 2 across and about as far down of the
+    // sphere of radius 1, where |Nn . Vn| is the height of the sphere there.
+    auto facing = [](float x, float y) {
+        float const a = (x + 0.5f) / 4.0f - 2.0f, b = (y + 0.5f) / 4.0f - 2.0f;
+        return std::sqrt(1.0f - a * a - b * b);
+    };
+    CHECK(shaded.channel(8, 8, 0) == Approx(facing(8, 8)).margin(0.01));
+    CHECK(shaded.channel(10, 8, 0) == Approx(facing(10, 8)).margin(0.02));
+    CHECK(shaded.channel(10, 8, 1) == Approx(shaded.channel(10, 8, 0)).margin(1e-6));  // grey
+    CHECK(shaded.channel(0, 0, 0) ==
+          Approx(1.0f).margin(1e-5));  // the wall's back faces the camera: |N . V| = 1
+
+    auto bxdf = withIntegrator(
+        "Integrator \"PxrVisualizer\" \"v\" \"string style\" [\"bxdf\"] \"int wireframe\" [0]");
     auto reference = withIntegrator("Integrator \"PxrDefault\" \"d\"");
-    CHECK(shaded.channel(8, 8, 0) == Approx(reference.channel(8, 8, 0)).epsilon(1e-5));
+    CHECK_FALSE(bxdf.anyMessageContains("tessellation"));
+    CHECK(bxdf.channel(8, 8, 0) == Approx(reference.channel(8, 8, 0)).epsilon(1e-5));
+    CHECK(bxdf.channel(10, 8, 0) == Approx(reference.channel(10, 8, 0)).epsilon(1e-5));
 
-    auto normals = withIntegrator("Integrator \"PxrVisualize\" \"v\" \"string style\" [\"normals\"]");
-    CHECK(normals.channel(8, 8, 2) < 0.05f);  // the sphere faces the camera: Nn = (0, 0, -1)
+    // The sphere is turned -90 degrees about x: the normal facing the camera, (0, 0, -1) in the world,
+    // is (0, 1, 0) in the sphere's own space.
+    auto normals = withIntegrator("Integrator \"PxrVisualizer\" \"v\" \"string style\" [\"normals\"]");
     CHECK(normals.channel(8, 8, 0) == Approx(0.5f).margin(0.1));
+    CHECK(normals.channel(8, 8, 1) > 0.95f);
+    CHECK(normals.channel(8, 8, 2) == Approx(0.5f).margin(0.1));
 
-    auto flat = withIntegrator("Integrator \"PxrVisualize\" \"v\" \"string style\" [\"flat\"]");
+    auto flat = withIntegrator("Integrator \"PxrVisualizer\" \"v\" \"string style\" [\"flat\"]");
     float const sphere = flat.channel(8, 8, 0) + 2 * flat.channel(8, 8, 1), wall = flat.channel(0, 0, 0) + 2 * flat.channel(0, 0, 1);
     CHECK(std::fabs(sphere - wall) > 0.1f);  // two Bxdf statements, two colours
 
-    // The patch's front (the side its normal points to) faces away from the camera: the check paints it red.
-    auto check = withIntegrator("Integrator \"PxrVisualize\" \"v\" \"string style\" [\"st\"] \"int normalCheck\" [1]");
+    auto matcap = withIntegrator("Integrator \"PxrVisualizer\" \"v\" \"string style\" [\"matcap\"]");
+    CHECK(matcap.anyMessageContains("shown as style shaded"));
+    CHECK(matcap.channel(10, 8, 0) == Approx(shaded.channel(10, 8, 0)).epsilon(1e-6));
+
+    // The patch's front (the side its normal points to) faces away from the camera: the check paints it
+    // orange.
+    auto check = withIntegrator(
+        "Integrator \"PxrVisualizer\" \"v\" \"string style\" [\"st\"] \"int normalCheck\" [1]");
     CHECK(check.channel(0, 0, 0) == Approx(1.0f));
-    CHECK(check.channel(0, 0, 1) == Approx(0.0f));
-    CHECK_THROWS_WITH(withIntegrator("Integrator \"PxrVisualize\" \"v\" \"string style\" [\"wire\"]"),
+    CHECK(check.channel(0, 0, 1) == Approx(0.5f));
+    CHECK(check.channel(0, 0, 2) == Approx(0.0f));
+    CHECK_THROWS_WITH(withIntegrator("Integrator \"PxrVisualizer\" \"v\" \"string style\" [\"wire\"]"),
                       Catch::Matchers::Contains("unknown style \"wire\""));
 }
 
