@@ -56,7 +56,8 @@ TEST_CASE("a plugin written in the course text's style compiles, loads and match
 TEST_CASE("a missing plugin names itself and every folder searched", "[plugins][errors]") {
     std::string message = renderError(withBxdf("Bxdf \"nosuchplugin\" \"x\""));
     CHECK_THAT(message, Contains("test.rib:11:3"));
-    CHECK_THAT(message, Contains("\"nosuchplugin\" not found"));
+    CHECK_THAT(message,
+               Contains("\"nosuchplugin\" not found: no nosuchplugin.so"));  // nothing near enough to suggest
     CHECK_THAT(message, Contains(TEST_PLUGIN_DIR));
     CHECK_THAT(message, Contains("plugins/solutions"));
 }
@@ -71,7 +72,9 @@ TEST_CASE("a plugin named in another case is found as a file system that ignores
     for (int y = 0; y < 24; y += 3)
         for (int x = 0; x < 24; x += 3) CHECK(otherCase.channel(x, y, 0) == asSpelled.channel(x, y, 0));
     // Only a name that no folder has as spelled: a name that differs in more than case is still not found.
-    CHECK_THAT(renderError(withBxdf("Bxdf \"Difuse\" \"x\"")), Contains("\"Difuse\" not found"));
+    // It is suggested, as the name of a plugin on the path.
+    CHECK_THAT(renderError(withBxdf("Bxdf \"Difuse\" \"x\"")),
+               Contains("\"Difuse\" not found (did you mean \"diffuse\"?)"));
 }
 
 TEST_CASE("broken plugins are refused with the reason", "[plugins][errors]") {
@@ -183,6 +186,12 @@ TEST_CASE("integrators are plugins: a missing one names the folders searched, a 
     CHECK_THAT(message, Contains("test.rib:3:1"));
     CHECK_THAT(message, Contains("Integrator plugin \"PxrNoSuchThing\" not found"));
     CHECK_THAT(message, Contains("plugins/integrators"));
+    // RenderMan's name for its debugging view, one letter short: the hint finds it.
+    std::string misspelt = rib;
+    misspelt.replace(misspelt.find("Integrator \"PxrDirectLighting\" \"d\""), 34,
+                     "Integrator \"PxrVisualize\" \"x\"");
+    CHECK_THAT(renderError(misspelt),
+               Contains("\"PxrVisualize\" not found (did you mean \"PxrVisualizer\"?)"));
     std::string bad = rib;
     bad.replace(bad.find("Integrator \"PxrDirectLighting\" \"d\""), 34,
                 "Integrator \"PxrDirectLighting\" \"d\" \"int numLightSamples\" [-2]");

@@ -1,5 +1,6 @@
 #include "shade/PluginLoader.h"
 
+#include <algorithm>
 #include <filesystem>
 
 #include "core/Spelling.h"
@@ -142,6 +143,19 @@ std::string caseInsensitiveMatch(std::string const& folder, std::string const& n
     }
     return best.empty() ? "" : (fs::path(folder) / best).string();
 }
+
+/// The plugins the folders hold, by name (their file names without ".so"), sorted.
+std::vector<std::string> pluginNames(std::vector<std::string> const& folders) {
+    std::vector<std::string> names;
+    for (std::string const& folder : folders) {
+        std::error_code error;
+        for (auto it = fs::directory_iterator(folder, error); !error && it != fs::directory_iterator();
+             it.increment(error))
+            if (it->path().extension() == ".so") names.push_back(it->path().stem().string());
+    }
+    std::sort(names.begin(), names.end());
+    return names;
+}
 }  // namespace
 
 std::string PluginLoader::locate(std::string const& name) const {
@@ -180,9 +194,12 @@ std::string PluginLoader::find(std::string const& name, const char* kind, Source
     }
     std::string searched;
     for (auto const& folder : m_searchPath) searched += "\n    " + folder;
-    throw RenderError(prefix + kind + " plugin \"" + name + "\" not found: no " + name +
+    std::string const near = closestSpelling(name, pluginNames(m_searchPath));
+    std::string const hint = near.empty() ? "" : " (did you mean \"" + near + "\"?)";
+    throw RenderError(prefix + kind + " plugin \"" + name + "\" not found" + hint + ": no " + name +
                       ".so in any folder of the plugin search path:" + searched +
-                      "\n  (add a folder with --plugin-path, $RIX_PLUGIN_PATH or Option \"searchpath\" \"string rixplugin\")");
+                      "\n  (add a folder with --plugin-path, $RIX_PLUGIN_PATH or Option \"searchpath\" "
+                      "\"string rixplugin\")");
 }
 
 std::unique_ptr<ShadingPlugin> PluginLoader::load(ShadingPlugin::Kind kind, std::string const& name,
