@@ -186,12 +186,20 @@ TEST_CASE("integrators are plugins: a missing one names the folders searched, a 
     CHECK_THAT(message, Contains("test.rib:3:1"));
     CHECK_THAT(message, Contains("Integrator plugin \"PxrNoSuchThing\" not found"));
     CHECK_THAT(message, Contains("plugins/integrators"));
-    // RenderMan's name for its debugging view, one letter short: the hint finds it.
+    // A name one letter off a plugin on the path: the hint finds it.
     std::string misspelt = rib;
     misspelt.replace(misspelt.find("Integrator \"PxrDirectLighting\" \"d\""), 34,
-                     "Integrator \"PxrVisualize\" \"x\"");
+                     "Integrator \"PxrPathTracr\" \"x\"");
     CHECK_THAT(renderError(misspelt),
-               Contains("\"PxrVisualize\" not found (did you mean \"PxrVisualizer\"?)"));
+               Contains("\"PxrPathTracr\" not found (did you mean \"PxrPathTracer\"?)"));
+    // RenderMan's debugging view without its last letter is rendered by it, with a warning.
+    std::string visualize = rib;
+    visualize.replace(visualize.find("Integrator \"PxrDirectLighting\" \"d\""), 34,
+                      "Integrator \"PxrVisualize\" \"x\" \"int wireframe\" [0]");
+    auto shortName = test::renderRib(visualize);
+    CHECK(shortName.anyMessageContains(
+        "test.rib:3:1: Integrator \"PxrVisualize\": RenderMan's integrator is spelled"));
+    CHECK_FALSE(shortName.anyMessageContains("tessellation"));  // PxrVisualizer read its parameters
     std::string bad = rib;
     bad.replace(bad.find("Integrator \"PxrDirectLighting\" \"d\""), 34,
                 "Integrator \"PxrDirectLighting\" \"d\" \"int numLightSamples\" [-2]");
