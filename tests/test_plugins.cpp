@@ -200,6 +200,9 @@ TEST_CASE("integrators are plugins: a missing one names the folders searched, a 
     CHECK(shortName.anyMessageContains(
         "test.rib:3:1: Integrator \"PxrVisualize\": RenderMan's integrator is spelled"));
     CHECK_FALSE(shortName.anyMessageContains("tessellation"));  // PxrVisualizer read its parameters
+    // What an integrator says as it reads its parameters is placed at its statement.
+    visualize.replace(visualize.find("\"int wireframe\" [0]"), 19, "\"string style\" [\"matcap\"]");
+    CHECK(test::renderRib(visualize).anyMessageContains("test.rib:3:1: plugin PxrVisualizer: style matcap"));
     std::string bad = rib;
     bad.replace(bad.find("Integrator \"PxrDirectLighting\" \"d\""), 34,
                 "Integrator \"PxrDirectLighting\" \"d\" \"int numLightSamples\" [-2]");

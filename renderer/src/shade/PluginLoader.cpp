@@ -236,8 +236,9 @@ namespace {
 /// Forwards an integrator's messages and keeps its errors, to report a refusal.
 class CapturingMessages final : public RixMessages {
 public:
-    CapturingMessages(Diagnostics& diagnostics, std::string const& name) : m_forward(diagnostics, name) {}
-    std::string errors;
+ CapturingMessages(Diagnostics& diagnostics, std::string const& name, SourceLocation const& where)
+     : m_forward(diagnostics, name, where) {}
+ std::string errors;
 
 protected:
     void Report(Severity severity, const char* message) override {
@@ -263,7 +264,7 @@ IntegratorPlugin::IntegratorPlugin(std::string name, std::string path, ParamList
         throw RenderError(what + ": does not export CreateRixIntegrator and DestroyRixIntegrator "
                                  "(define them with RIX_INTEGRATORCREATE and RIX_INTEGRATORDESTROY)");
     if (std::string why = apiMismatch(m_library); !why.empty()) throw RenderError(what + ": " + why);
-    CapturingMessages messages(diagnostics, m_name);
+    CapturingMessages messages(diagnostics, m_name, where);
     RibParameterList list(params);
     m_integrator = create(&list, &messages);
     if (!m_integrator)
