@@ -157,7 +157,7 @@ TEST_CASE("Bound is a hint for renderers that dice: read without a word", "[rib]
                       Catch::Matchers::Contains("test.rib:2:7: Bound: expected 6 numbers"));
 }
 
-TEST_CASE("a quadric with no surface is skipped with one warning a kind, as RenderMan draws nothing for it",
+TEST_CASE("a shape with no surface is skipped with one warning a kind, as RenderMan draws nothing for it",
           "[rib]") {
     Diagnostics diagnostics(false);
     Scene scene = test::parseRib(
@@ -176,6 +176,18 @@ TEST_CASE("a quadric with no surface is skipped with one warning a kind, as Rend
     CHECK(said("test.rib:2:1: Sphere with radius 0 describes no surface; skipped"));
     CHECK(said("test.rib:6:1: Paraboloid with rmax 0 describes no surface; skipped"));
     CHECK(said("test.rib:9:1: Torus with a radius 0 describes no surface; skipped"));
+    // A polygon of two points is a line, and a mesh's face of two points no more: the rest of the mesh is
+    // drawn.
+    Scene polygons = test::parseRib(
+        "WorldBegin\nPolygon \"P\" [0 0 0 1 0 0]\n"
+        "PointsPolygons [3 2] [0 1 2 0 1] \"P\" [0 0 0 1 0 0 0 1 0]\n",
+        diagnostics);
+    REQUIRE(polygons.shapes.size() == 1u);
+    CHECK(said("test.rib:2:1: Polygon with fewer than 3 vertices describes no surface; skipped"));
+    CHECK(said(
+        "test.rib:3:1: PointsPolygons with a face of fewer than 3 vertices describes no surface; skipped"));
+    RayTracer tracer(polygons);
+    CHECK(trace(tracer, Vec3(0.2f, 0.2f, -5.0f), Vec3(0, 0, 1)).hit());
     // A negative radius is not an empty surface: the torus still says what it needs.
     CHECK_THROWS_WITH(test::parseRib("WorldBegin\nTorus 1 -0.5 0 360 360\n", diagnostics),
                       Catch::Matchers::Contains("test.rib:2:1: Torus: radii must be positive"));

@@ -353,8 +353,8 @@ private:
     };
     QuadricRequest readQuadric(RequestReader& in, char const* request, int count, char const* arguments,
                                int radiusArgument);
-    /// A quadric whose numbers leave it no area (a radius of 0, say) is nothing to see, as in
-    /// RenderMan: warned about once per request, and skipped.
+    /// A shape whose numbers leave it no area (a radius of 0, a polygon of two points) is nothing
+    /// to see, as in RenderMan: warned about once per request, and skipped.
     void skipWithoutSurface(RequestReader& in, char const* request, char const* why);
     /// Adds the polygons a polygon request describes, with its primvars.
     void addPolygonMesh(char const* request, std::vector<int> const& loops, std::vector<int> const& nverts,

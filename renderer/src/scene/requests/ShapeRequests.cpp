@@ -1,10 +1,11 @@
 // Shapes: the quadrics (intersected exactly), polygons and meshes, patches,
 // and the Geometry request. Each becomes a Shape in world space with the
 // material and visibility in effect.
+#include <algorithm>
 #include <array>
 #include <cmath>
-#include <optional>
 #include <glm/gtc/matrix_transform.hpp>
+#include <optional>
 
 #include "scene/SceneBuilder.h"
 #include "scene/shapes/MeshBuilders.h"
@@ -258,7 +259,7 @@ void SceneBuilder::polygon(RequestReader& in) {
     std::vector<float> const* P = params.getFloats("P", ParamType::Point);
     if (!P) in.fail(in.where(), "needs a \"P\" parameter with the vertex positions");
     int count = static_cast<int>(P->size() / 3);
-    if (count < 3) in.fail(in.where(), "a polygon needs at least 3 vertices, got " + std::to_string(count));
+    if (count < 3) return skipWithoutSurface(in, "Polygon", "fewer than 3 vertices");
     std::vector<int> indices(static_cast<size_t>(count));
     for (int i = 0; i < count; ++i) indices[static_cast<size_t>(i)] = i;
     addPolygonMesh("Polygon", {1}, {count}, indices, params, in);
@@ -289,6 +290,9 @@ void SceneBuilder::pointsPolygons(RequestReader& in) {
     std::vector<int> verts = in.intArray("vertices (point indices)");
     ParamList params = in.params();
     if (nverts.empty()) return warnEmptyMesh("PointsPolygons", in);
+    if (std::any_of(nverts.begin(), nverts.end(), [](int n) { return n >= 0 && n < 3; }))
+        skipWithoutSurface(in, "PointsPolygons",
+                           "a face of fewer than 3 vertices");  // that face; the rest is drawn
     std::vector<int> loops(nverts.size(), 1);
     addPolygonMesh("PointsPolygons", loops, nverts, verts, params, in);
 }
