@@ -29,7 +29,7 @@ namespace {
 const char* const kStyles[] = {"shaded", "bxdf", "normals", "st", "flat", "matcap"};
 
 class Visualizer : public DirectLighting {
-   public:
+public:
     Visualizer(std::string style, bool normalCheck, bool wireframe)
         : DirectLighting(1, 0, true),
           m_style(style == "matcap" ? "shaded" : std::move(style)),
@@ -92,7 +92,7 @@ class Visualizer : public DirectLighting {
             if (Vn[i].Dot(Ngn[i]) < 0.0f) radiance[i] = RtColorRGB(1.0f, 0.5f, 0.0f);
     }
 
-   private:
+private:
     std::string m_style;
     bool m_normalCheck, m_wireframe;
 };

@@ -325,13 +325,6 @@ Renderer::Renderer(Scene& scene, RenderSettings settings, Diagnostics& diagnosti
                          "\"PxrVisualizer\", which renders instead");
         integrator.name = "PxrVisualizer";
     }
-    if (integrator.name == "PxrVisualize" && !r.loader.has(integrator.name)) {
-        // RenderMan's debugging view is PxrVisualizer; the name without its "r" is a slip worth rendering.
-        diagnostics.warn(integrator.where,
-                         "Integrator \"PxrVisualize\": RenderMan's integrator is spelled "
-                         "\"PxrVisualizer\", which renders instead");
-        integrator.name = "PxrVisualizer";
-    }
     r.integratorPlugin = r.loader.integrator(integrator.name, integrator.params, integrator.where);
     r.integrator = &r.integratorPlugin->integrator();
     m_stats.plugins.insert(m_stats.plugins.begin(), r.integratorPlugin->name() + " (" + r.integratorPlugin->path() + ")");
