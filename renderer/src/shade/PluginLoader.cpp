@@ -236,9 +236,9 @@ namespace {
 /// Forwards an integrator's messages and keeps its errors, to report a refusal.
 class CapturingMessages final : public RixMessages {
 public:
- CapturingMessages(Diagnostics& diagnostics, std::string const& name, SourceLocation const& where)
-     : m_forward(diagnostics, name, where) {}
- std::string errors;
+    CapturingMessages(Diagnostics& diagnostics, std::string const& name, SourceLocation const& where)
+        : m_forward(diagnostics, name, where) {}
+    std::string errors;
 
 protected:
     void Report(Severity severity, const char* message) override {

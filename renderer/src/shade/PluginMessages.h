@@ -12,10 +12,10 @@ namespace bxdflab {
 
 class PluginMessages final : public RixMessages {
 public:
- /// `where`, when known, is the RIB statement that asked for the plugin.
- PluginMessages(Diagnostics& diagnostics, std::string pluginName, SourceLocation const& where = {})
-     : m_diagnostics(diagnostics),
-       m_prefix((where.known() ? where.str() + ": " : "") + "plugin " + std::move(pluginName) + ": ") {}
+    /// `where`, when known, is the RIB statement that asked for the plugin.
+    PluginMessages(Diagnostics& diagnostics, std::string pluginName, SourceLocation const& where = {})
+        : m_diagnostics(diagnostics),
+          m_prefix((where.known() ? where.str() + ": " : "") + "plugin " + std::move(pluginName) + ": ") {}
 
 protected:
     void Report(Severity severity, const char* message) override {

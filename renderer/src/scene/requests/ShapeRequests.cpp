@@ -4,8 +4,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <glm/gtc/matrix_transform.hpp>
 #include <optional>
+#include <glm/gtc/matrix_transform.hpp>
 
 #include "scene/SceneBuilder.h"
 #include "scene/shapes/MeshBuilders.h"
