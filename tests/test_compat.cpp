@@ -53,8 +53,9 @@ TEST_CASE("an exporter's RIB with many unsupported requests renders with one loc
             warnings.insert(m.text);
         }
     // Six kinds of statement it does not use, some repeated: each kind once. Its
-    // Attribute "user" and IfBegin are read (conditions use them), its depth display is
-    // made and its Quantize accepted, so none of them is warned about.
+    // Attribute "user" and IfBegin are read (conditions use them), its trace depth is
+    // read, its depth display is made and its Quantize accepted, so none of them is
+    // warned about (its trace "bias" is).
     CHECK(warnings.size() <= 22u);
     CHECK(warnings.size() >= 6u);
     for (auto const& w : warnings) {
@@ -62,6 +63,7 @@ TEST_CASE("an exporter's RIB with many unsupported requests renders with one loc
         CHECK(w.find("Attribute \"user\"") == std::string::npos);
         CHECK(w.find("Display") == std::string::npos);
         CHECK(w.find("Quantize") == std::string::npos);
+        CHECK(w.find("maxdiffusedepth") == std::string::npos);
     }
     int dice = 0;  // Attribute "dice" is written three times
     for (auto const& w : warnings) dice += w.find("Attribute \"dice\"") != std::string::npos;

@@ -422,6 +422,35 @@ TEST_CASE("RenderMan's older visibility attributes: transmission as a string, ty
     CHECK(diagnostics.entries().empty());
 }
 
+TEST_CASE("Attribute trace sets a shape's bounce limits: RenderMan's 1 and 2 by default, scoped by blocks", "[rib]") {
+    Diagnostics diagnostics(false);
+    Scene scene = parseRib("Attribute \"trace\" \"int maxspeculardepth\" [6]\nWorldBegin\nSphere 1 -1 1 360\n"
+                           "AttributeBegin\n  Attribute \"trace\" \"maxdiffusedepth\" 3 \"int maxspeculardepth\" [0]\n"
+                           "  Sphere 1 -1 1 360\n  Attribute \"trace\" \"int maxdiffusedepth\" [-1]\n"
+                           "  Attribute \"trace\" \"float bias\" [0.01]\n  Sphere 1 -1 1 360\nAttributeEnd\n"
+                           "Sphere 1 -1 1 360\nWorldEnd\n",
+                           diagnostics);
+    REQUIRE(scene.shapes.size() == 4u);
+    auto limits = [&](size_t k) {
+        return std::make_pair(scene.shapes[k]->traceDepth.maxDiffuse, scene.shapes[k]->traceDepth.maxSpecular);
+    };
+    CHECK(limits(0) == std::make_pair(1, 6));  // set before WorldBegin: holds in the world
+    CHECK(limits(1) == std::make_pair(3, 0));
+    CHECK(limits(2) == std::make_pair(3, 0));  // a negative depth changes nothing...
+    CHECK(limits(3) == std::make_pair(1, 6));  // and the block's end restores what was in effect
+    std::vector<std::string> const warnings = test::warningTexts(diagnostics);
+    REQUIRE(warnings.size() == 2u);
+    CAPTURE(warnings[0]);
+    CHECK(warnings[0].find("test.rib:7:21:") == 0);  // ...with a warning at the parameter
+    CHECK(warnings[0].find("is below 0") != std::string::npos);
+    CHECK(warnings[1].find("Attribute \"trace\" \"bias\" is not used by this renderer") != std::string::npos);
+    Diagnostics defaults(false);
+    Scene plain = parseRib("WorldBegin\nSphere 1 -1 1 360\nWorldEnd\n", defaults);
+    REQUIRE(plain.shapes.size() == 1u);
+    CHECK(plain.shapes[0]->traceDepth.maxDiffuse == 1);
+    CHECK(plain.shapes[0]->traceDepth.maxSpecular == 2);
+}
+
 TEST_CASE("a whole scene read inside a world: its WorldBegin/WorldEnd and camera requests are warned about and ignored",
           "[rib]") {
     Diagnostics diagnostics(false);

@@ -63,6 +63,7 @@ private:
         std::shared_ptr<TransformPath const> motion;
         int material = -1;
         Visibility visibility;
+        TraceDepth traceDepth;
         std::string name;
         Vec3 color{1.0f};
         Vec3 opacity{1.0f};
@@ -267,6 +268,9 @@ private:
     bool setOrientation(std::string const& value);
     /// Attribute "Ri": the state requests as RenderMan 21+ writes them.
     void riAttributes(ParamList const& params);
+    /// Attribute "trace" "maxdiffusedepth" or "maxspeculardepth", if given, into `limit`
+    /// (a negative value is warned about and leaves it as it was).
+    void traceDepthLimit(ParamList const& params, std::string const& name, int& limit);
     void sides(RequestReader& in);
     void matte(RequestReader& in);
     void geometricRepresentation(RequestReader& in);

@@ -104,6 +104,7 @@ void SceneBuilder::addShape(std::unique_ptr<Shape> shape, SourceLocation const& 
         std::copy(state().textureCoordinates.begin(), state().textureCoordinates.end(), shape->textureCoordinates);
     }
     shape->visibility = state().visibility;
+    shape->traceDepth = state().traceDepth;
     // Curves and points face the ray they are seen by: they have no back to hide.
     shape->oneSided = !state().twoSided && kind != "Curves" && kind != "Points";
     shape->name = state().name;

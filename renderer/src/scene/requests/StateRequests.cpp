@@ -395,6 +395,11 @@ void SceneBuilder::attribute(RequestReader& in) {
         // Older files name the indirect rays by kind; any kind seeing the object makes it visible to indirect rays.
         bool olderKinds = params.has("diffuse") || params.has("specular");
         if (olderKinds) vis.indirect = params.getInt("diffuse", 0) != 0 || params.getInt("specular", 0) != 0;
+    } else if (category == "trace") {
+        // RenderMan's per-object bounce limits (PxrPathTracer honours them). Its other
+        // "trace" attributes (bias, displacements, holdout, ...) are reported as skipped below.
+        traceDepthLimit(params, "maxdiffusedepth", state().traceDepth.maxDiffuse);
+        traceDepthLimit(params, "maxspeculardepth", state().traceDepth.maxSpecular);
     } else if (category == "Ri") {
         riAttributes(params);
     } else if (category == "light" && params.has("shadows")) {
@@ -434,6 +439,19 @@ void SceneBuilder::attribute(RequestReader& in) {
         if (!p.used)
             warnOnce("attribute " + category + " " + p.name(), p.location,
                      "Attribute \"" + category + "\" \"" + p.name() + "\" is not used by this renderer; skipped");
+}
+
+void SceneBuilder::traceDepthLimit(ParamList const& params, std::string const& name, int& limit) {
+    Param const* p = params.find(name);
+    if (!p) return;
+    int const value = params.getInt(name, limit);
+    if (value >= 0)
+        limit = value;
+    else
+        warnOnce("trace " + name + " negative", p->location,
+                 "Attribute \"trace\" \"" + name + "\" " + std::to_string(value) +
+                     " is below 0, which limits nothing; the limit in effect (" + std::to_string(limit) +
+                     ") stays");
 }
 
 void SceneBuilder::color(RequestReader& in) {

@@ -27,6 +27,13 @@ struct Visibility {
     bool any() const { return camera || indirect || transmission; }
 };
 
+/// How many diffuse and how many specular bounces a path may take on from an object
+/// (RIB: Attribute "trace" "int maxdiffusedepth" [1] "int maxspeculardepth" [2], RenderMan's defaults).
+struct TraceDepth {
+    int maxDiffuse = 1;
+    int maxSpecular = 2;
+};
+
 /// What the ray tracer reports for a hit, plus the ray that made it.
 struct HitRecord {
     static constexpr unsigned kNoGeometry = ~0u;  ///< geomID of a miss
@@ -174,6 +181,7 @@ public:
     bool hasTextureCoordinates = false;
     float textureCoordinates[8] = {0, 0, 1, 0, 0, 1, 1, 1};
     Visibility visibility;
+    TraceDepth traceDepth;
     /// Sides 1: only the outside is visible, so camera rays pass through the
     /// back of it (a room's near wall seen from outside, say). Other rays see both sides.
     bool oneSided = false;
