@@ -23,7 +23,10 @@ std::pair<double, double> vcmAndPathTracer(std::function<std::string(std::string
                                            int maxPathLength, int spp, std::function<bool(int, int)> const& pixels) {
     std::string const length = " \"int maxPathLength\" [" + std::to_string(maxPathLength) + "]";
     auto vcm = test::renderRib(scene("Integrator \"PxrVCM\" \"v\"" + length), test::withSpp(spp));
-    auto paths = test::renderRib(scene("Integrator \"PxrPathTracer\" \"p\"" + length), test::withSpp(spp));
+    // PxrVCM bounds its paths by maxPathLength alone: so must the path tracer here.
+    auto paths =
+        test::renderRib(scene("Integrator \"PxrPathTracer\" \"p\"" + length + "\n" + test::kDeepTraceDepth),
+                        test::withSpp(spp));
     return {test::meanChannel(vcm, 0, pixels), test::meanChannel(paths, 0, pixels)};
 }
 
@@ -31,20 +34,27 @@ std::pair<double, double> vcmAndPathTracer(std::function<std::string(std::string
 
 TEST_CASE("path tracer furnace: an emitting, reflecting enclosure converges to E / (1 - a)", "[integrators][pathtracer]") {
     // The camera sits inside a closed sphere whose surface emits E and reflects
-    // a fraction a diffusely: every path sees E + a E + a^2 E + ... = E / (1 - a).
-    std::string rib =
-        "Format 16 16 1\nProjection \"perspective\" \"fov\" [60]\n"
-        "Integrator \"PxrPathTracer\" \"pt\" \"int maxPathLength\" [200]\n"
-        "WorldBegin\n"
-        "  Bxdf \"bookdiffuse\" \"walls\" \"color emissive_color\" [0.5 0.5 0.5] \"color diffuse_color\" [0.5 0.5 0.5]\n"
-        "  Sphere 5 -5 5 360\n"
-        "WorldEnd\n";
+    // a fraction a diffusely: every path sees E + a E + a^2 E + ... = E / (1 - a),
+    // once the walls allow paths that many diffuse bounces.
+    auto furnace = [](std::string const& walls) {
+        return "Format 16 16 1\nProjection \"perspective\" \"fov\" [60]\n"
+               "Integrator \"PxrPathTracer\" \"pt\" \"int maxPathLength\" [200]\n"
+               "WorldBegin\n" +
+               walls +
+               "  Bxdf \"bookdiffuse\" \"walls\" \"color emissive_color\" [0.5 0.5 0.5] \"color "
+               "diffuse_color\" [0.5 0.5 0.5]\n"
+               "  Sphere 5 -5 5 360\n"
+               "WorldEnd\n";
+    };
     RenderSettings settings;
     settings.spp = 1024;
-    auto r = test::renderRib(rib, settings);
+    auto r = test::renderRib(furnace("  Attribute \"trace\" \"int maxdiffusedepth\" [200]\n"), settings);
     CHECK(test::meanChannel(r, 0, kAll) == Approx(1.0).epsilon(0.02));
     CHECK(r.stats.indirectRays > 0u);
     CHECK(r.stats.shadowRays == 0u);  // no lights: nothing to sample
+    // Without the attribute the walls allow RenderMan's one diffuse bounce: E + a E.
+    auto oneBounce = test::renderRib(furnace(""), settings);
+    CHECK(test::meanChannel(oneBounce, 0, kAll) == Approx(0.75).epsilon(1e-5));
 }
 
 TEST_CASE("chapter 10 furnace: a smooth glass sphere in a white sky vanishes, a rough one loses light", "[integrators][ch10]") {
@@ -255,15 +265,19 @@ namespace {
 /// wall point the irradiance pi L: a path of k surfaces adds 0.5^k I / R^2. With
 /// I = 2 R^2 the first surface is 1, so maxPathLength 3 gives 1 + 0.5 + 0.25.
 /// `integrator` is rendered with maxPathLength 3.
-std::string pointLitSphere(std::string const& integrator, std::string const& bxdf) {
-    return "Format 16 16 1\nProjection \"perspective\" \"fov\" [60]\nIntegrator \"" + integrator +
-           "\" \"i\" \"int maxPathLength\" [3]" +
-           "\nTranslate 0 0 -2.5\n"
+/// `walls` replaces the one Sphere with other shapes (and attributes), and `traceDepth` is
+/// written before WorldBegin (by default, RenderMan's bounce limits out of the way).
+std::string pointLitSphere(std::string const& integrator, std::string const& bxdf,
+                           std::string const& walls = "  Sphere 5 -5 5 360\n",
+                           std::string const& traceDepth = test::kDeepTraceDepth) {
+    std::string const options = "Format 16 16 1\nProjection \"perspective\" \"fov\" [60]\nIntegrator \"" +
+                                integrator + "\" \"i\" \"int maxPathLength\" [3]\n" + traceDepth;
+    std::string const material = "  Bxdf \"" + bxdf + "\" \"walls\"\n";
+    return options +
+           "Translate 0 0 -2.5\n"
            "WorldBegin\n"
-           "  LightSource \"pointlight\" 1 \"intensity\" [50] \"from\" [0 0 0]\n"
-           "  Bxdf \"" + bxdf + "\" \"walls\"\n"
-           "  Sphere 5 -5 5 360\n"
-           "WorldEnd\n";
+           "  LightSource \"pointlight\" 1 \"intensity\" [50] \"from\" [0 0 0]\n" +
+           material + walls + "WorldEnd\n";
 }
 
 /// Half the mean squared difference of two renders with different seeds (red channel):
@@ -289,6 +303,58 @@ TEST_CASE("PxrVCM furnace: a point light inside a diffuse sphere gives 1 + a + a
     CHECK(vcm.stats.invalidPdfSamples == 0u);
 }
 
+TEST_CASE("PxrPathTracer keeps RenderMan's per-object trace depths", "[integrators][pathtracer]") {
+    // The point-lit sphere: a path of k surfaces adds 0.5^(k-1), every path alike, so each
+    // value below is exact. maxPathLength 3 allows two bounces; the walls may allow fewer.
+    auto mean = [](std::string const& walls, std::string const& traceDepth) {
+        return test::meanChannel(
+            test::renderRib(pointLitSphere("PxrPathTracer", "probe", walls, traceDepth), test::withSpp(16)),
+            0, kAll);
+    };
+    std::string const sphere = "  Sphere 5 -5 5 360\n";
+    auto diffuseDepth = [](int depth) {
+        return "Attribute \"trace\" \"int maxdiffusedepth\" [" + std::to_string(depth) + "]\n";
+    };
+    CHECK(mean(sphere, "") == Approx(1.5).epsilon(1e-5));  // RenderMan's default: one diffuse bounce
+    CHECK(mean(sphere, diffuseDepth(0)) == Approx(1.0).epsilon(1e-5));
+    CHECK(mean(sphere, diffuseDepth(2)) == Approx(1.75).epsilon(1e-5));
+    // The standard names need no type.
+    CHECK(mean(sphere, "Attribute \"trace\" \"maxdiffusedepth\" 2\n") == Approx(1.75).epsilon(1e-5));
+    // A surface's limit counts from the bounces a path has taken when it arrives, and never
+    // raises the limit the path brings. The camera sees only the far half (z > 0); a first
+    // bounce lands on either half with probability 1/2.
+    auto halves = [](int seen, int unseen) {
+        return "  AttributeBegin\n    Attribute \"trace\" \"int maxdiffusedepth\" [" + std::to_string(seen) +
+               "]\n    Sphere 5 0 5 360\n  AttributeEnd\n"
+               "  AttributeBegin\n    Attribute \"trace\" \"int maxdiffusedepth\" [" +
+               std::to_string(unseen) + "]\n    Sphere 5 -5 0 360\n  AttributeEnd\n";
+    };
+    // The unseen half cannot lift the seen half's 1; paths that reach an unseen half of 0 stop there.
+    CHECK(mean(halves(1, 5), "") == Approx(1.5).epsilon(1e-5));
+    CHECK(mean(halves(2, 0), "") == Approx(1.625).epsilon(0.01));
+    CHECK(mean(halves(2, 2), "") == Approx(1.75).epsilon(1e-5));
+}
+
+TEST_CASE(
+    "PxrPathTracer: a specular trace depth of 0 is direct lighting, and the diffuse one leaves specular "
+    "bounces alone",
+    "[integrators][pathtracer]") {
+    std::string const rib = readScene("ch06/specular.rib");
+    auto render = [&](std::string const& integrator) {
+        std::string scene = withIntegrator(rib, integrator);
+        scene.replace(scene.find("Format 800 700 1"), 16, "Format 80 70 1");
+        return test::renderRib(scene, test::withSpp(4));
+    };
+    std::string const paths = "Integrator \"PxrPathTracer\" \"p\" \"int maxPathLength\" [4]\n";
+    auto direct = render("Integrator \"PxrDirectLighting\" \"d\"");
+    auto noSpecular = render(paths + "Attribute \"trace\" \"int maxspeculardepth\" [0]");
+    CHECK(noSpecular.stats.indirectRays == 0u);  // every Bxdf sample is specular: none continues
+    CHECK(noSpecular.rgba == direct.rgba);       // and the light they find is weighted as before
+    auto noDiffuse = render(paths + "Attribute \"trace\" \"int maxdiffusedepth\" [0]");
+    CHECK(noDiffuse.stats.indirectRays > 0u);
+    CHECK(noDiffuse.rgba == render(paths).rgba);  // the specular lobe never met the diffuse limit
+}
+
 TEST_CASE("PxrVCM: a wrong RPdf biases a bidirectional image and leaves a path tracer's alone", "[integrators][vcm]") {
     // RPdf is only read to weigh the ways a path can be made; with the wrong one the
     // weights no longer add up to one for every path, and the furnace is off.
@@ -307,9 +373,12 @@ TEST_CASE("PxrVCM and PxrPathTracer agree on a box lit through its ceiling", "[i
     settings.spp = 256;
     std::string const file = std::string(SCENES_DIR) + "/ch11/box.rib";  // its archive is found beside it
     auto vcm = test::renderRib(withIntegrator(rib, "Integrator \"PxrVCM\" \"v\" \"int maxPathLength\" [5]"), settings, file);
-    auto paths = test::renderRib(
-        withIntegrator(rib, "Integrator \"PxrPathTracer\" \"p\" \"int maxPathLength\" [5] \"int allowCaustics\" [1]"),
-        settings, file);
+    auto paths =
+        test::renderRib(withIntegrator(rib,
+                                       "Integrator \"PxrPathTracer\" \"p\" \"int maxPathLength\" [5] "
+                                       "\"int allowCaustics\" [1]\n" +
+                                           std::string(test::kDeepTraceDepth)),
+                        settings, file);
     for (int c = 0; c < 3; ++c)
         CHECK(test::meanChannel(vcm, c, kAll) == Approx(test::meanChannel(paths, c, kAll)).epsilon(0.006));
 }
@@ -396,7 +465,9 @@ TEST_CASE("PxrVCM renders a caustic as a path tracer does, and finds it from a s
     std::string scene = readScene("ch04/caustic.rib");
     scene.replace(scene.find("Format 320 240 1"), 16, "Format 64 48 1");
     auto pathTracer = [](std::string const& rib) {
-        return withIntegrator(rib, "Integrator \"PxrPathTracer\" \"p\" \"int maxPathLength\" [6] \"int allowCaustics\" [1]");
+        return withIntegrator(
+            rib, "Integrator \"PxrPathTracer\" \"p\" \"int maxPathLength\" [6] \"int allowCaustics\" [1]\n" +
+                     std::string(test::kDeepTraceDepth));
     };
     RenderSettings settings;
     // The same picture: with a larger light (the same power), the path tracer's

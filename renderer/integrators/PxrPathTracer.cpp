@@ -6,6 +6,15 @@
 // it hits. Continuing paths are traced and shaded batch by batch, grouped
 // by Bxdf like camera hits.
 //
+// As in RenderMan, every surface also bounds the bounces a path takes on from
+// it, by kind (RIB: Attribute "trace" "int maxdiffusedepth" [1]
+// "int maxspeculardepth" [2], the defaults): a path keeps a diffuse and a
+// specular limit, each min(the limit so far, its bounces of that kind so far +
+// the surface's value). A Bxdf sample of a specular lobe continues the path
+// only while its specular bounces are below the specular limit; a sample of
+// any other lobe, while its diffuse bounces are below the diffuse limit. A
+// sample that may not continue still looks for the light it reaches.
+//
 // Parameters
 //   int maxPathLength    [10]  surfaces a path may visit (1 = direct lighting only)
 //   int maxIndirectBounces     RenderMan 23's name for the same limit, counted in
@@ -16,6 +25,8 @@
 //                              bounce does not continue it (caustics are noisy for a path tracer)
 // Russian roulette ends paths from the fourth vertex on with probability
 // 1 - min(0.95, the path's largest throughput channel), and compensates the survivors.
+#include <algorithm>
+#include <climits>
 #include <cmath>
 #include <string>
 
@@ -26,6 +37,20 @@
 using namespace bxdflab;
 
 namespace {
+
+/// Where a path stands as it reaches a surface.
+struct PathState {
+    RtColorRGB throughput = RtColorRGB(1.0f);  ///< the path's weight so far
+    bool diffusePath = false;                  ///< it has bounced off a diffuse lobe
+    int diffuseBounces = 0, specularBounces = 0;
+    int diffuseLimit = INT_MAX, specularLimit = INT_MAX;  ///< the trace-depth limits so far
+};
+
+/// A trace-depth limit at a surface: the limit so far, or fewer when the surface asks for fewer.
+int limitHere(int limitSoFar, int bouncesSoFar, int surfaceLimit) {
+    return static_cast<int>(
+        std::min<long long>(limitSoFar, static_cast<long long>(bouncesSoFar) + surfaceLimit));
+}
 
 class PathTracer : public RixIntegrator {
 public:
@@ -48,7 +73,9 @@ public:
         }
         effects.Simulate(("bxdf sampling (" + std::to_string(m_numBxdfSamples) + " per vertex, MIS)").c_str());
         if (m_maxPathLength > 1) {
-            effects.Simulate(("indirect rays (paths of up to " + std::to_string(m_maxPathLength) + " vertices)").c_str());
+            effects.Simulate(("indirect rays (paths of up to " + std::to_string(m_maxPathLength) +
+                              " vertices, within each surface's trace depths)")
+                                 .c_str());
             effects.Simulate("Russian roulette from the fourth vertex");
         } else {
             effects.Skip("indirect rays", "maxPathLength is 1");
@@ -63,22 +90,19 @@ public:
                    RtColorRGB* radiance) override {
         int const n = ctx.numPts;
         RixShadingContext::Allocator pool(&ctx);
-        RtColorRGB* throughput = pool.AllocFor<RtColorRGB>(n);
-        bool* diffusePath = pool.AllocFor<bool>(n);
-        for (int i = 0; i < n; ++i) {
-            throughput[i] = RtColorRGB(1.0f);
-            diffusePath[i] = false;
-        }
-        vertex(ctx, bxdf, rng, ictx, throughput, diffusePath, radiance, 1);
+        PathState* paths = pool.AllocFor<PathState>(n);
+        for (int i = 0; i < n; ++i) paths[i] = PathState();
+        vertex(ctx, bxdf, rng, ictx, paths, radiance, 1);
     }
 
 private:
-    /// Shades one batch of path vertices; throughput[i] is the path's weight
-    /// so far, diffusePath[i] whether it has bounced off a diffuse lobe.
+    /// Shades one batch of path vertices; paths[i] is where path i stands on arriving.
     void vertex(RixShadingContext const& ctx, RixBxdf& bxdf, RixRNG& rng, RixIntegratorContext& ictx,
-                RtColorRGB const* throughput, bool const* diffusePath, RtColorRGB* radiance, int depth) {
+                PathState const* paths, RtColorRGB* radiance, int depth) {
         int const n = ctx.numPts;
         RixShadingContext::Allocator pool(&ctx);
+        RtColorRGB* throughput = pool.AllocFor<RtColorRGB>(n);
+        for (int i = 0; i < n; ++i) throughput[i] = paths[i].throughput;
 
         // 1. Emission. Emissive surfaces are not sampled as lights, so a path
         //    that reaches one simply adds what it emits.
@@ -92,6 +116,14 @@ private:
         float const nL = static_cast<float>(lightSamples);
         float const nB = static_cast<float>(m_numBxdfSamples);
         bool const continues = depth < m_maxPathLength;
+        // This surface's trace depths, folded into each path's limits.
+        int* diffuseLimit = pool.AllocFor<int>(n);
+        int* specularLimit = pool.AllocFor<int>(n);
+        for (int i = 0; continues && i < n; ++i) {
+            RixTraceDepth const here = ictx.TraceDepth(ctx, i);
+            diffuseLimit[i] = limitHere(paths[i].diffuseLimit, paths[i].diffuseBounces, here.maxDiffuse);
+            specularLimit[i] = limitHere(paths[i].specularLimit, paths[i].specularBounces, here.maxSpecular);
+        }
         RixBxdfScratch q(ctx);
         // The continuation rays (the first Bxdf sample of each point).
         int* index = pool.AllocFor<int>(n);
@@ -99,8 +131,7 @@ private:
         bool* shade = pool.AllocFor<bool>(n);
         RixRNG::SampleCtx* samples = pool.AllocFor<RixRNG::SampleCtx>(n);
         RtColorRGB* weight = pool.AllocFor<RtColorRGB>(n);      // f / FPdf
-        RtColorRGB* next = pool.AllocFor<RtColorRGB>(n);        // throughput after the bounce
-        bool* nextDiffuse = pool.AllocFor<bool>(n);
+        PathState* next = pool.AllocFor<PathState>(n);          // the path after the bounce
         float* misWeightPdf = pool.AllocFor<float>(n);          // FPdf, for the MIS weight of a light hit
         bool* discrete = pool.AllocFor<bool>(n);
         int rays = 0;
@@ -121,8 +152,11 @@ private:
                 L.Normalize();
                 RtColorRGB f = q.W.SumAtPoint(i);
                 if (f.IsBlack()) continue;
-                if (!m_allowCaustics && diffusePath[i] && q.lobeSampled[i].GetSpecular()) continue;  // a caustic
-                if (s != 0 || !continues) {
+                bool const specular = q.lobeSampled[i].GetSpecular();
+                if (!m_allowCaustics && paths[i].diffusePath && specular) continue;  // a caustic
+                bool const withinDepth = continues && (specular ? paths[i].specularBounces < specularLimit[i]
+                                                                : paths[i].diffuseBounces < diffuseLimit[i]);
+                if (s != 0 || !withinDepth) {
                     look.add(i, L, 0.0f, throughput[i] * f);  // the light is found along the ray
                     continue;
                 }
@@ -139,8 +173,12 @@ private:
                 shade[rays] = survives && std::isfinite(carried.r) && std::isfinite(carried.g) && std::isfinite(carried.b);
                 samples[rays] = rng.sampleCtxArray[i];
                 weight[rays] = f / q.FPdf[i];
-                next[rays] = carried;
-                nextDiffuse[rays] = diffusePath[i] || q.lobeSampled[i].GetDiffuse();
+                next[rays].throughput = carried;
+                next[rays].diffusePath = paths[i].diffusePath || q.lobeSampled[i].GetDiffuse();
+                next[rays].diffuseBounces = paths[i].diffuseBounces + (specular ? 0 : 1);
+                next[rays].specularBounces = paths[i].specularBounces + (specular ? 1 : 0);
+                next[rays].diffuseLimit = diffuseLimit[i];
+                next[rays].specularLimit = specularLimit[i];
                 misWeightPdf[rays] = q.FPdf[i];
                 discrete[rays] = q.lobeSampled[i].GetDiscrete();
                 ++rays;
@@ -155,15 +193,13 @@ private:
         ictx.TraceIndirect(ctx, rays, index, dir, shade, samples, lightHits, [&](RixShadeBatch& batch) {
             int m = batch.ctx.numPts;
             RixShadingContext::Allocator childPool(&batch.ctx);
-            RtColorRGB* childThroughput = childPool.AllocFor<RtColorRGB>(m);
-            bool* childDiffuse = childPool.AllocFor<bool>(m);
+            PathState* childPaths = childPool.AllocFor<PathState>(m);
             RtColorRGB* childRadiance = childPool.AllocFor<RtColorRGB>(m);
             for (int j = 0; j < m; ++j) {
-                childThroughput[j] = next[batch.source[j]];
-                childDiffuse[j] = nextDiffuse[batch.source[j]];
+                childPaths[j] = next[batch.source[j]];
                 childRadiance[j] = RtColorRGB(0.0f);
             }
-            vertex(batch.ctx, batch.bxdf, batch.rng, ictx, childThroughput, childDiffuse, childRadiance, depth + 1);
+            vertex(batch.ctx, batch.bxdf, batch.rng, ictx, childPaths, childRadiance, depth + 1);
             for (int j = 0; j < m; ++j) radiance[index[batch.source[j]]] += childRadiance[j];
         });
         for (int k = 0; k < rays; ++k) {

@@ -33,7 +33,8 @@
 // vertex, which is f(L -> V) for a reciprocal Bxdf.
 //
 // Parameters
-//   int maxPathLength  [10]  surfaces a path may visit (as PxrPathTracer)
+//   int maxPathLength  [10]  surfaces a path may visit (as PxrPathTracer); it alone bounds
+//                            the paths: the objects' trace depths (Attribute "trace") are not read
 //   int connectPaths   [1]   RenderMan's; connection is always on here
 //   int mergePaths     [0]   RenderMan's vertex merging: not implemented (a warning if 1)
 #include <cmath>

@@ -50,6 +50,12 @@ std::string readScene(std::string const& relative);
 /// `rib` with its Integrator line replaced by `integrator`.
 std::string withIntegrator(std::string rib, std::string const& integrator);
 
+/// RIB that lifts RenderMan's per-object bounce limits (1 diffuse, 2 specular) out of the way,
+/// so that maxPathLength alone bounds a path tracer's paths (written before WorldBegin, it holds
+/// for every shape).
+inline constexpr char const* kDeepTraceDepth =
+    "Attribute \"trace\" \"int maxdiffusedepth\" [1000] \"int maxspeculardepth\" [1000]\n";
+
 /// A folder under the build tree for files a test must write.
 std::string outputDir();
 

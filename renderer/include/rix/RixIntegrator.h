@@ -35,6 +35,12 @@ struct RixLightHit {
     int light = -1;            ///< which light (as numbered for SampleLight)
 };
 
+/// RenderMan's per-object bounce limits (RIB: Attribute "trace"), as a surface sets them.
+struct RixTraceDepth {
+    int maxDiffuse = 1;   ///< "int maxdiffusedepth": diffuse bounces a path may take on from here
+    int maxSpecular = 2;  ///< "int maxspeculardepth": specular (glossy, mirror, refraction) bounces
+};
+
 /// A ray leaving a light: the first step of a light subpath, for
 /// bidirectional integrators (PxrVCM). Lights at infinity cannot start one.
 struct RixLightEmission {
@@ -104,6 +110,12 @@ public:
                             float const* distances, bool* clear) = 0;
     virtual void VisibleLights(RixShadingContext const& ctx, int count, int const* indices, RtVector3 const* dirs,
                                RixLightHit* hits) = 0;
+
+    /// The bounce limits of the surface at point i of ctx. RenderMan's path tracer keeps two
+    /// limits along a path, diffuse and specular, each min(the limit so far, the bounces of that
+    /// kind so far + this surface's value), and continues a path by a lobe's kind only while its
+    /// count is below its limit (PxrPathTracer.cpp shows how). An integrator may ignore them.
+    virtual RixTraceDepth TraceDepth(RixShadingContext const& ctx, int i) const = 0;
 
     /// Traces count rays leaving points indices[k] of ctx in directions dirs[k]. For every ray,
     /// lightHits[k] tells whether it reaches a light before any surface. Rays that hit a surface

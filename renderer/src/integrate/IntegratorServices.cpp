@@ -95,6 +95,18 @@ bool IntegratorServices::Illuminates(int light, RixShadingContext const& ctx, in
     return true;  // not a batch these services shade
 }
 
+RixTraceDepth IntegratorServices::TraceDepth(RixShadingContext const& ctx, int i) const {
+    RixTraceDepth depth;
+    for (auto batch = m_batches.rbegin(); batch != m_batches.rend(); ++batch) {
+        if (*batch != &ctx) continue;
+        auto const& limits = (*batch)->shape(i).traceDepth;
+        depth.maxDiffuse = limits.maxDiffuse;
+        depth.maxSpecular = limits.maxSpecular;
+        break;
+    }
+    return depth;  // not a batch these services shade: RenderMan's defaults
+}
+
 void IntegratorServices::shade(HitRecord const* hits, RixRNG::SampleCtx const* samples, int count,
                                BatchShader::Visitor const& visit) {
     shadeBatches(hits, samples, count, visit);

@@ -38,6 +38,7 @@ public:
     int GetNumLights() const override { return static_cast<int>(m_lights.size()); }
     RixLightSample SampleLight(int light, RtPoint3 const& P, RtFloat2 const& xi) const override;
     bool Illuminates(int light, RixShadingContext const& ctx, int i) const override;
+    RixTraceDepth TraceDepth(RixShadingContext const& ctx, int i) const override;
     bool Unoccluded(RixShadingContext const& ctx, int i, RtVector3 const& dir, float distance) override;
     RixLightHit VisibleLight(RixShadingContext const& ctx, int i, RtVector3 const& dir) override;
     void Unoccluded(RixShadingContext const& ctx, int count, int const* indices, RtVector3 const* dirs,

@@ -74,6 +74,8 @@ public:
     void setBxdf(RixBxdf* bxdf) { m_bxdf = bxdf; }
     void setId(int id) { m_id = id; }
     HitRecord const& hit(int i) const { return m_hits[i]; }
+    /// The shape point i lies on.
+    Shape const& shape(int i) const { return *m_scene.shapes[m_hits[i].geomID]; }
     /// Output `output` of `pattern` for this batch, or nullptr when the
     /// pattern did not compute it. The pattern runs on first use (its own
     /// connected inputs first) and its outputs are kept for the batch.
