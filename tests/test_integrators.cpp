@@ -333,6 +333,11 @@ TEST_CASE("PxrPathTracer keeps RenderMan's per-object trace depths", "[integrato
     CHECK(mean(halves(1, 5), "") == Approx(1.5).epsilon(1e-5));
     CHECK(mean(halves(2, 0), "") == Approx(1.625).epsilon(0.01));
     CHECK(mean(halves(2, 2), "") == Approx(1.75).epsilon(1e-5));
+    // PxrUnified, for which the path tracer stands in, ignores them unless its useTraceDepth is 1.
+    std::string unified = pointLitSphere("PxrUnified", "probe", sphere, "");
+    CHECK(test::meanChannel(test::renderRib(unified, test::withSpp(16)), 0, kAll) == Approx(1.75).epsilon(1e-5));
+    unified.replace(unified.find("[3]\n"), 4, "[3] \"int useTraceDepth\" [1]\n");
+    CHECK(test::meanChannel(test::renderRib(unified, test::withSpp(16)), 0, kAll) == Approx(1.5).epsilon(1e-5));
 }
 
 TEST_CASE(

@@ -23,6 +23,8 @@
 //   int numBxdfSamples   [1]   Bxdf samples at every vertex (the first continues the path)
 //   int allowCaustics    [0]   0: once a path has bounced off a diffuse lobe, a specular
 //                              bounce does not continue it (caustics are noisy for a path tracer)
+//   int useTraceDepth    [1]   PxrUnified's switch, read so that this integrator can stand in
+//                              for it: 0 ignores the trace depths (PxrUnified's default)
 // Russian roulette ends paths from the fourth vertex on with probability
 // 1 - min(0.95, the path's largest throughput channel), and compensates the survivors.
 #include <algorithm>
@@ -54,11 +56,13 @@ int limitHere(int limitSoFar, int bouncesSoFar, int surfaceLimit) {
 
 class PathTracer : public RixIntegrator {
 public:
-    PathTracer(int maxPathLength, int numLightSamples, int numBxdfSamples, bool allowCaustics)
+    PathTracer(int maxPathLength, int numLightSamples, int numBxdfSamples, bool allowCaustics,
+               bool useTraceDepth)
         : m_maxPathLength(maxPathLength),
           m_numLightSamples(numLightSamples),
           m_numBxdfSamples(numBxdfSamples),
-          m_allowCaustics(allowCaustics) {}
+          m_allowCaustics(allowCaustics),
+          m_useTraceDepth(useTraceDepth) {}
 
     void DescribeEffects(int numLights, RixEffects& effects) const override {
         effects.Simulate("camera rays");
@@ -73,8 +77,8 @@ public:
         }
         effects.Simulate(("bxdf sampling (" + std::to_string(m_numBxdfSamples) + " per vertex, MIS)").c_str());
         if (m_maxPathLength > 1) {
-            effects.Simulate(("indirect rays (paths of up to " + std::to_string(m_maxPathLength) +
-                              " vertices, within each surface's trace depths)")
+            effects.Simulate(("indirect rays (paths of up to " + std::to_string(m_maxPathLength) + " vertices" +
+                              (m_useTraceDepth ? ", within each surface's trace depths)" : ")"))
                                  .c_str());
             effects.Simulate("Russian roulette from the fourth vertex");
         } else {
@@ -120,7 +124,7 @@ private:
         int* diffuseLimit = pool.AllocFor<int>(n);
         int* specularLimit = pool.AllocFor<int>(n);
         for (int i = 0; continues && i < n; ++i) {
-            RixTraceDepth const here = ictx.TraceDepth(ctx, i);
+            RixTraceDepth const here = m_useTraceDepth ? ictx.TraceDepth(ctx, i) : RixTraceDepth{INT_MAX, INT_MAX};
             diffuseLimit[i] = limitHere(paths[i].diffuseLimit, paths[i].diffuseBounces, here.maxDiffuse);
             specularLimit[i] = limitHere(paths[i].specularLimit, paths[i].specularBounces, here.maxSpecular);
         }
@@ -213,23 +217,25 @@ private:
     int m_numLightSamples;
     int m_numBxdfSamples;
     bool m_allowCaustics;
+    bool m_useTraceDepth;
 };
 
 }  // namespace
 
 RIX_INTEGRATORCREATE {
-    int maxPathLength, lightSamples, bxdfSamples, caustics;
+    int maxPathLength, lightSamples, bxdfSamples, caustics, useTraceDepth;
     if (!ReadInt(params, messages, "maxPathLength", 10, 1, 1000, maxPathLength) ||
         !ReadInt(params, messages, "numLightSamples", 1, 0, 4096, lightSamples) ||
         !ReadInt(params, messages, "numBxdfSamples", 1, 1, 4096, bxdfSamples) ||
-        !ReadInt(params, messages, "allowCaustics", 0, 0, 1, caustics))
+        !ReadInt(params, messages, "allowCaustics", 0, 0, 1, caustics) ||
+        !ReadInt(params, messages, "useTraceDepth", 1, 0, 1, useTraceDepth))
         return nullptr;
     if (HasParam(params, "maxIndirectBounces")) {
         int bounces;
         if (!ReadInt(params, messages, "maxIndirectBounces", 9, 0, 999, bounces)) return nullptr;
         maxPathLength = bounces + 1;
     }
-    return new PathTracer(maxPathLength, lightSamples, bxdfSamples, caustics != 0);
+    return new PathTracer(maxPathLength, lightSamples, bxdfSamples, caustics != 0, useTraceDepth != 0);
 }
 
 RIX_INTEGRATORDESTROY { delete integrator; }

@@ -184,6 +184,7 @@ Param floatParam(std::string const& name, float value) {
 Param intParam(std::string const& name, int value) {
     Param p = madeParam(name, ParamType::Int);
     p.ints = {value};
+    p.floats = {static_cast<float>(value)};  // as a parsed int has them
     return p;
 }
 

@@ -305,13 +305,19 @@ Renderer::Renderer(Scene& scene, RenderSettings settings, Diagnostics& diagnosti
     if (renderMansGlobalIllumination && !r.loader.has(integrator.name)) {
         // RenderMan's other global-illumination integrators (PxrUnified,
         // PxrUPBP, PxrVPL) compute the same image: the path tracer stands in, with
-        // the path length the scene asked for.
+        // the path length the scene asked for. They ignore the objects' trace depths
+        // (PxrUnified unless its useTraceDepth is 1).
         IntegratorDesc standIn;
         standIn.name = "PxrPathTracer";
         standIn.handle = integrator.handle;
         standIn.where = integrator.where;
-        for (Param const& p : integrator.params.all())
-            if (p.name() == "maxPathLength") standIn.params.add(p);
+        bool traceDepthGiven = false;
+        for (Param const& p : integrator.params.all()) {
+            bool const useTraceDepth = integrator.name == "PxrUnified" && p.name() == "useTraceDepth";
+            if (p.name() == "maxPathLength" || useTraceDepth) standIn.params.add(p);
+            traceDepthGiven = traceDepthGiven || useTraceDepth;
+        }
+        if (!traceDepthGiven) standIn.params.add(intParam("useTraceDepth", 0));
         diagnostics.warn(integrator.where, "Integrator \"" + integrator.name + "\" is one of RenderMan's and no " +
                                                integrator.name + ".so is on the plugin search path: PxrPathTracer renders "
                                                "the same light transport instead (with its maxPathLength)");
