@@ -262,3 +262,10 @@ struct RtMatrix4x4 {
                          v.x * m[0][2] + v.y * m[1][2] + v.z * m[2][2]);
     }
 };
+
+/// RenderMan's per-object bounce limits (RIB: Attribute "trace"), as a surface sets them;
+/// integrators ask for them with RixIntegratorContext::TraceDepth.
+struct RixTraceDepth {
+    int maxDiffuse = 1;   ///< "int maxdiffusedepth": diffuse bounces a path may take on from here
+    int maxSpecular = 2;  ///< "int maxspeculardepth": specular (glossy, mirror, refraction) bounces
+};

@@ -35,12 +35,6 @@ struct RixLightHit {
     int light = -1;            ///< which light (as numbered for SampleLight)
 };
 
-/// RenderMan's per-object bounce limits (RIB: Attribute "trace"), as a surface sets them.
-struct RixTraceDepth {
-    int maxDiffuse = 1;   ///< "int maxdiffusedepth": diffuse bounces a path may take on from here
-    int maxSpecular = 2;  ///< "int maxspeculardepth": specular (glossy, mirror, refraction) bounces
-};
-
 /// A ray leaving a light: the first step of a light subpath, for
 /// bidirectional integrators (PxrVCM). Lights at infinity cannot start one.
 struct RixLightEmission {

@@ -85,26 +85,23 @@ RixLightSample IntegratorServices::SampleLight(int light, RtPoint3 const& P, RtF
     return out;
 }
 
+ShadingContextImpl const* IntegratorServices::batchOf(RixShadingContext const& ctx) const {
+    for (auto batch = m_batches.rbegin(); batch != m_batches.rend(); ++batch)
+        if (*batch == &ctx) return *batch;
+    return nullptr;
+}
+
 bool IntegratorServices::Illuminates(int light, RixShadingContext const& ctx, int i) const {
     if (!m_linkedScene) return true;
-    for (auto batch = m_batches.rbegin(); batch != m_batches.rend(); ++batch) {
-        if (*batch != &ctx) continue;
-        int const link = m_linkedScene->shapes[(*batch)->hit(i).geomID]->lightLink;
-        return link < 0 || m_linkedScene->lightLinks[static_cast<size_t>(link)][static_cast<size_t>(light)];
-    }
-    return true;  // not a batch these services shade
+    ShadingContextImpl const* batch = batchOf(ctx);
+    if (!batch) return true;  // not a batch these services shade
+    int const link = batch->shape(i).lightLink;
+    return link < 0 || m_linkedScene->lightLinks[static_cast<size_t>(link)][static_cast<size_t>(light)];
 }
 
 RixTraceDepth IntegratorServices::TraceDepth(RixShadingContext const& ctx, int i) const {
-    RixTraceDepth depth;
-    for (auto batch = m_batches.rbegin(); batch != m_batches.rend(); ++batch) {
-        if (*batch != &ctx) continue;
-        auto const& limits = (*batch)->shape(i).traceDepth;
-        depth.maxDiffuse = limits.maxDiffuse;
-        depth.maxSpecular = limits.maxSpecular;
-        break;
-    }
-    return depth;  // not a batch these services shade: RenderMan's defaults
+    ShadingContextImpl const* batch = batchOf(ctx);
+    return batch ? batch->shape(i).traceDepth : RixTraceDepth();  // else RenderMan's defaults
 }
 
 void IntegratorServices::shade(HitRecord const* hits, RixRNG::SampleCtx const* samples, int count,

@@ -90,6 +90,8 @@ private:
     /// Shades hits, and hands each batch to visit while remembering its hits (for Illuminates).
     void shadeBatches(HitRecord const* hits, RixRNG::SampleCtx const* samples, int count,
                       BatchShader::Visitor const& visit);
+    /// The batch being integrated that ctx is, or null when ctx is none of them.
+    ShadingContextImpl const* batchOf(RixShadingContext const& ctx) const;
     /// A light reached from point i of ctx that does not light it sends it nothing.
     void unlinkedSendNothing(RixShadingContext const& ctx, int i, RixLightHit& hit) const {
         if (hit.hit && !Illuminates(hit.light, ctx, i)) hit.radiance = RtColorRGB(0.0f);

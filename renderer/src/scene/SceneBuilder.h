@@ -63,7 +63,7 @@ private:
         std::shared_ptr<TransformPath const> motion;
         int material = -1;
         Visibility visibility;
-        TraceDepth traceDepth;
+        RixTraceDepth traceDepth;
         std::string name;
         Vec3 color{1.0f};
         Vec3 opacity{1.0f};

@@ -12,6 +12,7 @@
 #include <memory>
 #include <string>
 
+#include "RiTypesHelper.h"
 #include "core/Error.h"
 #include "core/Math.h"
 #include "scene/shapes/Primvars.h"
@@ -25,13 +26,6 @@ struct Visibility {
     bool indirect = true;
     bool transmission = true;
     bool any() const { return camera || indirect || transmission; }
-};
-
-/// How many diffuse and how many specular bounces a path may take on from an object
-/// (RIB: Attribute "trace" "int maxdiffusedepth" [1] "int maxspeculardepth" [2], RenderMan's defaults).
-struct TraceDepth {
-    int maxDiffuse = 1;
-    int maxSpecular = 2;
 };
 
 /// What the ray tracer reports for a hit, plus the ray that made it.
@@ -181,7 +175,7 @@ public:
     bool hasTextureCoordinates = false;
     float textureCoordinates[8] = {0, 0, 1, 0, 0, 1, 1, 1};
     Visibility visibility;
-    TraceDepth traceDepth;
+    RixTraceDepth traceDepth;  ///< Attribute "trace": how many bounces a path may take on from here
     /// Sides 1: only the outside is visible, so camera rays pass through the
     /// back of it (a room's near wall seen from outside, say). Other rays see both sides.
     bool oneSided = false;
