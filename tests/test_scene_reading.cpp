@@ -1229,6 +1229,50 @@ TEST_CASE("Points keep a value per particle (\"varying color Cs\"), as a lecture
     }
 }
 
+TEST_CASE("Points with normals are disks facing them and points without are spheres as in RenderMan",
+          "[rib]") {
+    // Each scene is one particle of width 1 (radius 0.5) at z = 5, seen along +z from `org`.
+    auto hit = [](std::string const& points, Vec3 org, Vec3* normal = nullptr) {
+        Diagnostics diagnostics(false);
+        Scene scene = test::parseRib("WorldBegin\n" + points, diagnostics);
+        CHECK(diagnostics.entries().empty());  // "N" is used, not warned about
+        REQUIRE(scene.shapes.size() == 1u);
+        RayTracer tracer(scene);
+        HitRecord h = trace(tracer, org, Vec3(0, 0, 1));
+        if (!h.hit()) return -1.0f;
+        if (normal) *normal = scene.shapes[0]->basics(h).N;
+        return h.t;
+    };
+    std::string const at = "Points \"P\" [0 0 5] \"constantwidth\" [1] ";
+    CHECK(hit(at, Vec3(0.0f)) == Approx(4.5f).epsilon(1e-4));  // a sphere's front
+    Vec3 n;
+    CHECK(hit(at + "\"N\" [0 0 -1]", Vec3(0.0f), &n) == Approx(5.0f).epsilon(1e-4));  // a flat disk
+    CHECK(n.z == Approx(-1.0f));
+    CHECK(hit(at + "\"N\" [0 0 -1]", Vec3(0.45f, 0.0f, 0.0f)) == Approx(5.0f).epsilon(1e-4));
+    CHECK(hit(at + "\"N\" [0 0 -1]", Vec3(0.55f, 0.0f, 0.0f)) < 0.0f);  // beyond its radius
+    // Tilted 45 degrees about x: the plane (p - c) . (0, 1, -1) = 0 meets the ray at y = 0.2 at z = 5.2.
+    CHECK(hit(at + "\"varying normal N\" [0 1 -1]", Vec3(0.0f, 0.2f, 0.0f), &n) ==
+          Approx(5.2f).epsilon(1e-4));
+    CHECK(n.y == Approx(std::sqrt(0.5f)).epsilon(1e-4));
+    // Edge on: the disk lies in the plane x = 0, which a ray beside it never crosses.
+    CHECK(hit(at + "\"N\" [1 0 0]", Vec3(0.1f, 0.0f, 0.0f)) < 0.0f);
+    // Normals turn with the object: rotated 90 degrees about y, a disk facing +x faces -z.
+    CHECK(hit("Translate 0 0 5\nRotate 90 0 1 0\nPoints \"P\" [0 0 0] \"constantwidth\" [1] \"N\" [1 0 0]",
+              Vec3(0.0f), &n) == Approx(5.0f).epsilon(1e-4));
+    CHECK(n.z == Approx(-1.0f).epsilon(1e-4));
+    // Two points, one normal for both: both are disks.
+    CHECK(hit("Points \"P\" [0 0 5  1 0 5] \"constantwidth\" [0.5] \"constant normal N\" [0 0 -1]",
+              Vec3(1, 0, 0)) == Approx(5.0f).epsilon(1e-4));
+    Diagnostics diagnostics(false);
+    CHECK_THROWS_WITH(
+        test::parseRib("WorldBegin\nPoints \"P\" [0 0 5  1 0 5] \"N\" [0 0 -1  0 0 -1  0 0 -1]\n",
+                       diagnostics),
+        Catch::Matchers::Contains("test.rib:2:27") &&
+            Catch::Matchers::Contains("\"N\" needs one normal per point (2) or one for all, got 9 numbers"));
+    CHECK_THROWS_WITH(test::parseRib("WorldBegin\nPoints \"P\" [0 0 5] \"N\" [0 0 0]\n", diagnostics),
+                      Catch::Matchers::Contains("\"N\" of point 0 is zero"));
+}
+
 TEST_CASE("area lights from geometry: AreaLightSource and PxrMeshLight shapes become lights or glow", "[rib][lights]") {
     Diagnostics diagnostics(false);
     Scene scene = test::parseRib("WorldBegin\nAttributeBegin\n"

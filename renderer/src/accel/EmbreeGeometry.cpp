@@ -248,7 +248,24 @@ public:
     }
 
     void visit(Points const& points) override {
-        m_geometry = pointGeometry(m_device, RTC_GEOMETRY_TYPE_SPHERE_POINT, points, points.spheres());
+        std::vector<Vec3> const& normals = points.normals();
+        m_geometry = pointGeometry(
+            m_device,
+            normals.empty() ? RTC_GEOMETRY_TYPE_SPHERE_POINT : RTC_GEOMETRY_TYPE_ORIENTED_DISC_POINT, points,
+            points.particles());
+        if (!normals.empty()) {
+            // A disk needs its normal at every step of the motion, turned as the points are moved.
+            unsigned const steps = motionStepCount(points);
+            for (unsigned step = 0; step < steps; ++step) {
+                auto* out = static_cast<Vec3*>(rtcSetNewGeometryBuffer(m_geometry, RTC_BUFFER_TYPE_NORMAL,
+                                                                       step, RTC_FORMAT_FLOAT3, sizeof(Vec3),
+                                                                       normals.size()));
+                Mat4 const inverseMove =
+                    points.motion ? glm::inverse(points.motion->at(stepTime(step, steps))) : Mat4(1.0f);
+                for (size_t i = 0; i < normals.size(); ++i)
+                    out[i] = safeNormalize(transformNormal(inverseMove, normals[i]));
+            }
+        }
         rtcCommitGeometry(m_geometry);
     }
 

@@ -29,6 +29,32 @@ std::vector<Vec3> worldPoints(ParamList const& params, Mat4 const& toWorld, Requ
     return points;
 }
 
+/// Points' "N", in world space: one unit normal per point, or one for all of them (constant or
+/// uniform). Empty when the points have none (or "N" is connected to a pattern).
+std::vector<Vec3> pointNormals(ParamList const& params, Mat4 const& toWorld, size_t points,
+                               RequestReader& in) {
+    Param const* declared = params.find("N");
+    if (!declared || declared->decl.reference) return {};
+    std::vector<float> const* n = params.getFloats(
+        "N", declared->decl.type == ParamType::Vector ? ParamType::Vector : ParamType::Normal);
+    size_t const given = n->size() / 3;
+    if (n->size() % 3 != 0 || (given != 1 && given != points))
+        in.fail(declared->location, "\"N\" needs one normal per point (" + std::to_string(points) +
+                                        ") or one for all, got " + std::to_string(n->size()) + " numbers");
+    Mat4 const toObject = glm::inverse(toWorld);
+    std::vector<Vec3> normals;
+    normals.reserve(points);
+    for (size_t i = 0; i < points; ++i) {
+        size_t const k = given == 1 ? 0 : 3 * i;
+        Vec3 const world = safeNormalize(transformNormal(toObject, Vec3((*n)[k], (*n)[k + 1], (*n)[k + 2])));
+        if (world == Vec3(0.0f))
+            in.fail(declared->location,
+                    "\"N\" of point " + std::to_string(i) + " is zero: a disk needs a direction to face");
+        normals.push_back(world);
+    }
+    return normals;
+}
+
 /// A 4x4 matrix written row by row, as the RI specification writes bases.
 using Rows = std::array<std::array<float, 4>, 4>;
 
@@ -240,16 +266,17 @@ void SceneBuilder::points(RequestReader& in) {
     if (widths && widths->size() != P.size())
         in.fail(in.where(), "\"width\" needs one value per point (" + std::to_string(P.size()) + "), got " +
                                 std::to_string(widths->size()));
-    params.ignore("N");
+    // As in RenderMan: points with normals are disks facing them, points without are spheres.
+    std::vector<Vec3> normals = pointNormals(params, state().transform, P.size(), in);
     PrimvarSet vars = shapePrimvars(params, 0, P.size());  // "varying color Cs": a colour per particle
     params.warnUnused(m_diagnostics, "Points");
     if (P.empty()) return;
     float scale = lengthScale(state().transform);
-    std::vector<Vec4> spheres;
-    spheres.reserve(P.size());
+    std::vector<Vec4> particles;
+    particles.reserve(P.size());
     for (size_t i = 0; i < P.size(); ++i)
-        spheres.emplace_back(P[i], 0.5f * scale * std::fabs(widths ? (*widths)[i] : constantWidth));
-    addShape(std::make_unique<Points>(std::move(spheres)), in.where(), std::move(vars));
+        particles.emplace_back(P[i], 0.5f * scale * std::fabs(widths ? (*widths)[i] : constantWidth));
+    addShape(std::make_unique<Points>(std::move(particles), std::move(normals)), in.where(), std::move(vars));
 }
 
 void SceneBuilder::curves(RequestReader& in) {

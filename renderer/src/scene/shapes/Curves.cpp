@@ -42,8 +42,12 @@ SurfaceTangents Curves::tangentsUnmoved(HitRecord const& hit) const {
 SurfaceBasics Points::basicsUnmoved(HitRecord const& hit) const {
     SurfaceBasics out;
     pointOnRay(hit, out);
+    if (!m_normals.empty()) {  // a disk: flat, facing its normal
+        out.Ng = out.N = m_normals[hit.primID];
+        return out;
+    }
     // The exact sphere normal, from the centre (Embree's is the same up to rounding).
-    Vec4 const& s = m_spheres[hit.primID];
+    Vec4 const& s = m_particles[hit.primID];
     Vec3 n = safeNormalize(out.P - Vec3(s));
     if (n != Vec3(0.0f)) out.Ng = out.N = n;
     return out;

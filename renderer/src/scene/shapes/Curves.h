@@ -36,20 +36,27 @@ private:
     mutable std::shared_ptr<SurfaceEvaluator const> m_evaluator;
 };
 
-/// Points (particles): spheres of a radius each, intersected by Embree's point geometry.
+/// Points (particles), intersected by Embree's point geometry: spheres of a radius each, or,
+/// when the RIB gives them normals, flat disks of that radius facing their normals.
 class Points final : public Shape {
 public:
-    explicit Points(std::vector<Vec4> spheres) : m_spheres(std::move(spheres)) {}
+    /// `normals`: empty (spheres) or one unit normal per particle, world space (disks).
+    explicit Points(std::vector<Vec4> particles, std::vector<Vec3> normals = {})
+        : m_particles(std::move(particles)), m_normals(std::move(normals)) {}
     const char* kind() const override { return "Points"; }
     void accept(ShapeVisitor& visitor) const override { visitor.visit(*this); }
     SurfaceBasics basicsUnmoved(HitRecord const& hit) const override;
     SurfaceTangents tangentsUnmoved(HitRecord const& hit) const override;
-    std::vector<Vec4> const& spheres() const { return m_spheres; }
+    /// Each particle's centre and radius, world space.
+    std::vector<Vec4> const& particles() const { return m_particles; }
+    /// The disks' normals (empty: the particles are spheres).
+    std::vector<Vec3> const& normals() const { return m_normals; }
     /// A particle's own value (uniform: one per point), else the constant one.
     void primvarUnmoved(Primvar const& var, HitRecord const& hit, float* out) const override;
 
 private:
-    std::vector<Vec4> m_spheres;  ///< centre and radius, world space
+    std::vector<Vec4> m_particles;
+    std::vector<Vec3> m_normals;
 };
 
 }  // namespace bxdflab
