@@ -1273,6 +1273,48 @@ TEST_CASE("Points with normals are disks facing them and points without are sphe
                       Catch::Matchers::Contains("\"N\" of point 0 is zero"));
 }
 
+TEST_CASE("Curves with normals are flat ribbons facing them and curves without are round tubes", "[rib]") {
+    // Each scene is one curve along x at z = 5, of width 0.2, seen along +z from `org`.
+    auto hit = [](std::string const& curve, Vec3 org, Vec3* normal = nullptr) {
+        Diagnostics diagnostics(false);
+        Scene scene = test::parseRib("WorldBegin\n" + curve, diagnostics);
+        CHECK(diagnostics.entries().empty());  // "N" is used, not warned about
+        REQUIRE(scene.shapes.size() == 1u);
+        RayTracer tracer(scene);
+        HitRecord h = trace(tracer, org, Vec3(0, 0, 1));
+        if (!h.hit()) return -1.0f;
+        if (normal) *normal = scene.shapes[0]->basics(h).N;
+        return h.t;
+    };
+    std::string const line =
+        "Curves \"linear\" [2] \"nonperiodic\" \"P\" [-1 0 5  1 0 5] \"constantwidth\" [0.2] ";
+    CHECK(hit(line, Vec3(0.0f)) == Approx(4.9f).epsilon(1e-3));  // a tube's front
+    Vec3 n;
+    CHECK(hit(line + "\"N\" [0 0 -1  0 0 -1]", Vec3(0.0f), &n) == Approx(5.0f).epsilon(1e-3));  // flat
+    CHECK(std::fabs(n.z) == Approx(1.0f).epsilon(1e-3));
+    CHECK(hit(line + "\"N\" [0 0 -1  0 0 -1]", Vec3(0.3f, 0.09f, 0.0f)) == Approx(5.0f).epsilon(1e-3));
+    CHECK(hit(line + "\"N\" [0 0 -1  0 0 -1]", Vec3(0.3f, 0.11f, 0.0f)) < 0.0f);  // beyond its half width
+    // Facing +y it is edge on to the camera: a ray just beside the curve's line misses it...
+    CHECK(hit(line + "\"N\" [0 1 0  0 1 0]", Vec3(0.3f, 0.03f, 0.0f)) < 0.0f);
+    // ...and a ribbon that turns from facing the camera to facing +y narrows along its length.
+    std::string const twist = line + "\"N\" [0 0 -1  0 1 0]";
+    CHECK(hit(twist, Vec3(-0.9f, 0.08f, 0.0f)) > 0.0f);
+    CHECK(hit(twist, Vec3(0.9f, 0.08f, 0.0f)) < 0.0f);
+    // One normal for the whole curve, and vertex normals of a cubic curve through its basis.
+    CHECK(hit(line + "\"constant normal N\" [0 0 -1]", Vec3(0.5f, 0.09f, 0.0f)) ==
+          Approx(5.0f).epsilon(1e-3));
+    CHECK(hit("Basis \"b-spline\" 1 \"b-spline\" 1\nCurves \"cubic\" [4] \"nonperiodic\" "
+              "\"P\" [-3 0 5  -1 0 5  1 0 5  3 0 5] \"constantwidth\" [0.2] "
+              "\"vertex normal N\" [0 0 -1  0 0 -1  0 0 -1  0 0 -1]",
+              Vec3(0.0f, 0.09f, 0.0f)) == Approx(5.0f).epsilon(1e-3));
+    Diagnostics diagnostics(false);
+    CHECK_THROWS_WITH(
+        test::parseRib("WorldBegin\n" + line + "\"N\" [0 0 -1]\n", diagnostics),
+        Catch::Matchers::Contains("\"N\" has too few values for the curves (varying: 3 numbers given)"));
+    CHECK_THROWS_WITH(test::parseRib("WorldBegin\n" + line + "\"N\" [0 0 -1  0 0 0]\n", diagnostics),
+                      Catch::Matchers::Contains("\"N\" value 1 is zero"));
+}
+
 TEST_CASE("area lights from geometry: AreaLightSource and PxrMeshLight shapes become lights or glow", "[rib][lights]") {
     Diagnostics diagnostics(false);
     Scene scene = test::parseRib("WorldBegin\nAttributeBegin\n"

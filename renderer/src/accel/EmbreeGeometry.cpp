@@ -159,6 +159,20 @@ RTCGeometry pointGeometry(RTCDevice device, RTCGeometryType type, Shape const& s
     return geometry;
 }
 
+/// The normals of oriented disks and ribbons, at every step of the shape's motion, turned as
+/// setMovingVertices moves its points.
+void setMovingNormals(RTCGeometry geometry, Shape const& shape, std::vector<Vec3> const& normals) {
+    unsigned const steps = motionStepCount(shape);
+    for (unsigned step = 0; step < steps; ++step) {
+        auto* out = static_cast<Vec3*>(rtcSetNewGeometryBuffer(
+            geometry, RTC_BUFFER_TYPE_NORMAL, step, RTC_FORMAT_FLOAT3, sizeof(Vec3), normals.size()));
+        Mat4 const inverseMove =
+            shape.motion ? glm::inverse(shape.motion->at(stepTime(step, steps))) : Mat4(1.0f);
+        for (size_t i = 0; i < normals.size(); ++i)
+            out[i] = safeNormalize(transformNormal(inverseMove, normals[i]));
+    }
+}
+
 /// rtcInterpolate on a geometry it keeps alive: what curves and subdivision
 /// surfaces evaluate their exact surface with.
 class EmbreeEvaluator final : public SurfaceEvaluator {
@@ -237,9 +251,11 @@ public:
 
     void visit(Curves const& curves) override {
         CurveData const& data = curves.data();
-        m_geometry = pointGeometry(
-            m_device, data.cubic ? RTC_GEOMETRY_TYPE_ROUND_BEZIER_CURVE : RTC_GEOMETRY_TYPE_ROUND_LINEAR_CURVE, curves,
-            data.points);
+        RTCGeometryType const type = !data.normals.empty() ? RTC_GEOMETRY_TYPE_NORMAL_ORIENTED_BEZIER_CURVE
+                                     : data.cubic          ? RTC_GEOMETRY_TYPE_ROUND_BEZIER_CURVE
+                                                           : RTC_GEOMETRY_TYPE_ROUND_LINEAR_CURVE;
+        m_geometry = pointGeometry(m_device, type, curves, data.points);
+        if (!data.normals.empty()) setMovingNormals(m_geometry, curves, data.normals);
         void* index = rtcSetNewGeometryBuffer(m_geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT, sizeof(unsigned),
                                               data.segments.size());
         std::memcpy(index, data.segments.data(), data.segments.size() * sizeof(unsigned));
@@ -253,19 +269,7 @@ public:
             m_device,
             normals.empty() ? RTC_GEOMETRY_TYPE_SPHERE_POINT : RTC_GEOMETRY_TYPE_ORIENTED_DISC_POINT, points,
             points.particles());
-        if (!normals.empty()) {
-            // A disk needs its normal at every step of the motion, turned as the points are moved.
-            unsigned const steps = motionStepCount(points);
-            for (unsigned step = 0; step < steps; ++step) {
-                auto* out = static_cast<Vec3*>(rtcSetNewGeometryBuffer(m_geometry, RTC_BUFFER_TYPE_NORMAL,
-                                                                       step, RTC_FORMAT_FLOAT3, sizeof(Vec3),
-                                                                       normals.size()));
-                Mat4 const inverseMove =
-                    points.motion ? glm::inverse(points.motion->at(stepTime(step, steps))) : Mat4(1.0f);
-                for (size_t i = 0; i < normals.size(); ++i)
-                    out[i] = safeNormalize(transformNormal(inverseMove, normals[i]));
-            }
-        }
+        if (!normals.empty()) setMovingNormals(m_geometry, points, normals);
         rtcCommitGeometry(m_geometry);
     }
 

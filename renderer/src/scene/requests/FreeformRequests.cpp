@@ -294,13 +294,34 @@ void SceneBuilder::curves(RequestReader& in) {
     std::string const widthClass = widthParam ? widthParam->decl.storageClass : "varying";
     std::vector<float> const* widths = params.getFloats("width", ParamType::Float);
     float constantWidth = params.getFloat("constantwidth", 1.0f);
-    params.ignore("N");  // ribbons facing N are drawn as round tubes
+    // "N" makes the curves flat ribbons facing it, as RenderMan draws them; without it they are round
+    // tubes. Its storage classes read as width's do (it is varying unless declared otherwise).
+    Param const* normalParam = params.find("N");
+    std::vector<float> const* normals = nullptr;
+    std::string normalClass = "varying";
+    if (normalParam && !normalParam->decl.reference) {
+        normals = params.getFloats(
+            "N", normalParam->decl.type == ParamType::Vector ? ParamType::Vector : ParamType::Normal);
+        normalClass = normalParam->decl.storageClass;
+    }
+    Mat4 const toObject = glm::inverse(state().transform);
+    auto normalValue = [&](size_t at) {
+        if (3 * at + 2 >= normals->size())
+            in.fail(normalParam->location, "\"N\" has too few values for the curves (" + normalClass + ": " +
+                                               std::to_string(normals->size()) + " numbers given)");
+        Vec3 const n = transformNormal(
+            toObject, Vec3((*normals)[3 * at], (*normals)[3 * at + 1], (*normals)[3 * at + 2]));
+        if (n == Vec3(0.0f))
+            in.fail(normalParam->location,
+                    "\"N\" value " + std::to_string(at) + " is zero: a ribbon needs a direction to face");
+        return n;
+    };
     float const scale = lengthScale(state().transform);
     int const step = cubic ? state().vBasis.step : 1;
     Rows const convert = toBezier(state().vBasis);
 
     CurveData data;
-    data.cubic = cubic;
+    data.cubic = cubic || normals;  // Embree's ribbons are Bezier curves: a linear segment is one too
     CurveLayout layout;
     layout.cubic = cubic;
     layout.periodic = periodic;
@@ -331,14 +352,36 @@ void SceneBuilder::curves(RequestReader& in) {
         };
         auto vertexRadius = [&](int k) { return widthValue(first + static_cast<size_t>(periodic ? k % n : k)); };
         auto point = [&](int k) { return P[first + static_cast<size_t>(periodic ? k % n : k)]; };
+        bool const normalPerVertex = normalClass == "vertex";
+        // The normal at the start of segment k, read as radius() reads widths.
+        auto normalAt = [&](int k) {
+            if (normalClass == "constant") return normalValue(0);
+            if (normalClass == "uniform") return normalValue(curve);
+            if (normalPerVertex)
+                return normalValue(first + static_cast<size_t>(periodic ? (k * step) % n : k * step));
+            return normalValue(widthIndex + static_cast<size_t>(periodic ? k % varying : k));
+        };
+        auto vertexNormal = [&](int k) {
+            return normalValue(first + static_cast<size_t>(periodic ? k % n : k));
+        };
         for (int s = 0; s < segments; ++s) {
             data.segments.push_back(static_cast<unsigned>(data.points.size()));
             layout.segments.push_back({static_cast<unsigned>(curve), static_cast<unsigned>(s),
                                        static_cast<unsigned>(first), static_cast<unsigned>(n),
                                        static_cast<unsigned>(widthIndex), static_cast<unsigned>(varying)});
-            if (!cubic) {
+            if (!cubic && !normals) {
                 data.points.emplace_back(point(s), radius(s));
                 data.points.emplace_back(point(s + 1), radius(s + 1));
+                continue;
+            }
+            if (!cubic) {  // a ribbon's straight segment, as the Bezier segment with its points a third apart
+                Vec3 const n0 = normalAt(s), n1 = normalAt(s + 1);
+                for (int i = 0; i < 4; ++i) {
+                    float const f = static_cast<float>(i) / 3.0f;
+                    data.points.emplace_back(point(s) + f * (point(s + 1) - point(s)),
+                                             radius(s) + f * (radius(s + 1) - radius(s)));
+                    data.normals.push_back(n0 + f * (n1 - n0));
+                }
                 continue;
             }
             // Per-vertex widths go through the basis as P does; the others run linearly along the segment.
@@ -359,6 +402,20 @@ void SceneBuilder::curves(RequestReader& in) {
                 }
                 if (!perVertex) r = r0 + (r1 - r0) * static_cast<float>(i) / 3.0f;
                 data.points.emplace_back(c, std::fabs(r));
+            }
+            if (!normals) continue;
+            // Per-vertex normals go through the basis as P does; the others run linearly along the segment.
+            Vec3 const n0 = normalPerVertex ? Vec3(0.0f) : normalAt(s),
+                       n1 = normalPerVertex ? Vec3(0.0f) : normalAt(s + 1);
+            for (int i = 0; i < 4; ++i) {
+                Vec3 normal = n0 + (n1 - n0) * (static_cast<float>(i) / 3.0f);
+                if (normalPerVertex) {
+                    normal = Vec3(0.0f);
+                    for (int m = 0; m < 4; ++m)
+                        normal += convert[static_cast<size_t>(i)][static_cast<size_t>(m)] *
+                                  vertexNormal(s * step + m);
+                }
+                data.normals.push_back(normal);
             }
         }
         first += static_cast<size_t>(n);

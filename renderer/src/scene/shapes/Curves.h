@@ -1,7 +1,8 @@
-// Curves (hair, grass, strokes): round tubes along linear or cubic curves,
-// intersected by Embree's curve geometry. Every cubic basis RenderMan allows
-// (Basis: bezier, b-spline, catmull-rom, hermite, power or a matrix) is turned
-// into Bezier segments, so one Embree type draws them all.
+// Curves (hair, grass, strokes): round tubes along linear or cubic curves, or
+// flat ribbons facing the normals the RIB gives, intersected by Embree's curve
+// geometry. Every cubic basis RenderMan allows (Basis: bezier, b-spline,
+// catmull-rom, hermite, power or a matrix) is turned into Bezier segments, so
+// one Embree type draws each kind.
 #pragma once
 
 #include <vector>
@@ -15,6 +16,9 @@ struct CurveData {
     bool cubic = false;               ///< Bezier segments of 4 points; else linear segments of 2
     std::vector<Vec4> points;
     std::vector<unsigned> segments;   ///< index of each segment's first point
+    /// Empty: round tubes. Else a ribbon: the normal it faces at each control point (Bezier
+    /// segments only), world space.
+    std::vector<Vec3> normals;
 };
 
 class Curves final : public Shape {
