@@ -29,6 +29,13 @@ std::vector<Vec3> worldPoints(ParamList const& params, Mat4 const& toWorld, Requ
     return points;
 }
 
+/// A normal given in object space as the unit normal in world space (`toObject` is the inverse of
+/// the object-to-world transform); zero when it has no direction: zero itself, or too small or
+/// too large for floats once transformed.
+Vec3 worldNormal(Mat4 const& toObject, float const* n) {
+    return safeNormalize(transformNormal(toObject, Vec3(n[0], n[1], n[2])));
+}
+
 /// Points' "N", in world space: one unit normal per point, or one for all of them (constant or
 /// uniform). Empty when the points have none (or "N" is connected to a pattern).
 std::vector<Vec3> pointNormals(ParamList const& params, Mat4 const& toWorld, size_t points,
@@ -46,10 +53,11 @@ std::vector<Vec3> pointNormals(ParamList const& params, Mat4 const& toWorld, siz
     normals.reserve(points);
     for (size_t i = 0; i < points; ++i) {
         size_t const k = given == 1 ? 0 : 3 * i;
-        Vec3 const world = safeNormalize(transformNormal(toObject, Vec3((*n)[k], (*n)[k + 1], (*n)[k + 2])));
+        Vec3 const world = worldNormal(toObject, n->data() + k);
         if (world == Vec3(0.0f))
             in.fail(declared->location,
-                    "\"N\" of point " + std::to_string(i) + " is zero: a disk needs a direction to face");
+                    "\"N\" of point " + std::to_string(i) +
+                        " has no direction for a disk to face (zero, or beyond float range)");
         normals.push_back(world);
     }
     return normals;
@@ -309,11 +317,11 @@ void SceneBuilder::curves(RequestReader& in) {
         if (3 * at + 2 >= normals->size())
             in.fail(normalParam->location, "\"N\" has too few values for the curves (" + normalClass + ": " +
                                                std::to_string(normals->size()) + " numbers given)");
-        Vec3 const n = transformNormal(
-            toObject, Vec3((*normals)[3 * at], (*normals)[3 * at + 1], (*normals)[3 * at + 2]));
+        Vec3 const n = worldNormal(toObject, normals->data() + 3 * at);
         if (n == Vec3(0.0f))
             in.fail(normalParam->location,
-                    "\"N\" value " + std::to_string(at) + " is zero: a ribbon needs a direction to face");
+                    "\"N\" value " + std::to_string(at) +
+                        " has no direction for a ribbon to face (zero, or beyond float range)");
         return n;
     };
     float const scale = lengthScale(state().transform);
