@@ -11,6 +11,7 @@
 #include "scene/Camera.h"
 #include "scene/SceneBuilder.h"
 #include "scene/lights/MeshLight.h"
+#include "scene/shapes/Curves.h"
 #include "scene/shapes/Quadrics.h"
 #include "scene/shapes/TriangleMesh.h"
 #include "support/RenderHelpers.h"
@@ -1269,8 +1270,14 @@ TEST_CASE("Points with normals are disks facing them and points without are sphe
                        diagnostics),
         Catch::Matchers::Contains("test.rib:2:27") &&
             Catch::Matchers::Contains("\"N\" needs one normal per point (2) or one for all, got 9 numbers"));
-    CHECK_THROWS_WITH(test::parseRib("WorldBegin\nPoints \"P\" [0 0 5] \"N\" [0 0 0]\n", diagnostics),
-                      Catch::Matchers::Contains("\"N\" of point 0 has no direction for a disk to face"));
+    // A normal with no direction (zero, or collapsed by a Scale 0) is warned about: the points are spheres.
+    Scene aimless =
+        test::parseRib("WorldBegin\nPoints \"P\" [0 0 5  1 0 5] \"N\" [0 0 -1  0 0 0]\n", diagnostics);
+    REQUIRE(diagnostics.entries().size() == 1u);
+    CHECK_THAT(diagnostics.entries()[0].text,
+               Catch::Matchers::Contains("\"N\" of point 1 has no direction for a disk to face") &&
+                   Catch::Matchers::Contains("drawn as spheres"));
+    CHECK(static_cast<Points const&>(*aimless.shapes.at(0)).normals().empty());
 }
 
 TEST_CASE("Curves with normals are flat ribbons facing them and curves without are round tubes", "[rib]") {
@@ -1311,8 +1318,12 @@ TEST_CASE("Curves with normals are flat ribbons facing them and curves without a
     CHECK_THROWS_WITH(
         test::parseRib("WorldBegin\n" + line + "\"N\" [0 0 -1]\n", diagnostics),
         Catch::Matchers::Contains("\"N\" has too few values for the curves (varying: 3 numbers given)"));
-    CHECK_THROWS_WITH(test::parseRib("WorldBegin\n" + line + "\"N\" [0 0 -1  0 0 0]\n", diagnostics),
-                      Catch::Matchers::Contains("\"N\" value 1 has no direction for a ribbon to face"));
+    Scene aimless =
+        test::parseRib("WorldBegin\nScale 1 0 1\n" + line + "\"N\" [0 0 -1  0 0 -1]\n", diagnostics);
+    CHECK_THAT(diagnostics.entries().back().text,
+               Catch::Matchers::Contains("\"N\" value 0 has no direction for a ribbon to face") &&
+                   Catch::Matchers::Contains("drawn as round tubes"));
+    CHECK(static_cast<Curves const&>(*aimless.shapes.at(0)).data().normals.empty());
 }
 
 TEST_CASE("area lights from geometry: AreaLightSource and PxrMeshLight shapes become lights or glow", "[rib][lights]") {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
+#include <optional>
 
 #include "scene/SceneBuilder.h"
 #include "scene/shapes/BlobbySurface.h"
@@ -37,7 +38,8 @@ Vec3 worldNormal(Mat4 const& toObject, float const* n) {
 }
 
 /// Points' "N", in world space: one unit normal per point, or one for all of them (constant or
-/// uniform). Empty when the points have none (or "N" is connected to a pattern).
+/// uniform). Empty when the points have none (or "N" is connected to a pattern); a normal with no
+/// direction (see worldNormal) is left zero for the caller to report.
 std::vector<Vec3> pointNormals(ParamList const& params, Mat4 const& toWorld, size_t points,
                                RequestReader& in) {
     Param const* declared = params.find("N");
@@ -53,12 +55,7 @@ std::vector<Vec3> pointNormals(ParamList const& params, Mat4 const& toWorld, siz
     normals.reserve(points);
     for (size_t i = 0; i < points; ++i) {
         size_t const k = given == 1 ? 0 : 3 * i;
-        Vec3 const world = worldNormal(toObject, n->data() + k);
-        if (world == Vec3(0.0f))
-            in.fail(declared->location,
-                    "\"N\" of point " + std::to_string(i) +
-                        " has no direction for a disk to face (zero, or beyond float range)");
-        normals.push_back(world);
+        normals.push_back(worldNormal(toObject, n->data() + k));
     }
     return normals;
 }
@@ -276,6 +273,15 @@ void SceneBuilder::points(RequestReader& in) {
                                 std::to_string(widths->size()));
     // As in RenderMan: points with normals are disks facing them, points without are spheres.
     std::vector<Vec3> normals = pointNormals(params, state().transform, P.size(), in);
+    auto const aimless = std::find(normals.begin(), normals.end(), Vec3(0.0f));
+    if (aimless != normals.end()) {
+        // As a Scale by 0 gives them: drawn as they would be without "N" (the warning says why).
+        warnOnce("aimless point normal", params.find("N")->location,
+                 "Points: \"N\" of point " + std::to_string(aimless - normals.begin()) +
+                     " has no direction for a disk to face (zero, or beyond float range); these points are "
+                     "drawn as spheres");
+        normals.clear();
+    }
     PrimvarSet vars = shapePrimvars(params, 0, P.size());  // "varying color Cs": a colour per particle
     params.warnUnused(m_diagnostics, "Points");
     if (P.empty()) return;
@@ -313,15 +319,13 @@ void SceneBuilder::curves(RequestReader& in) {
         normalClass = normalParam->decl.storageClass;
     }
     Mat4 const toObject = glm::inverse(state().transform);
+    std::optional<size_t> aimless;  // the first normal with no direction, if any
     auto normalValue = [&](size_t at) {
         if (3 * at + 2 >= normals->size())
             in.fail(normalParam->location, "\"N\" has too few values for the curves (" + normalClass + ": " +
                                                std::to_string(normals->size()) + " numbers given)");
         Vec3 const n = worldNormal(toObject, normals->data() + 3 * at);
-        if (n == Vec3(0.0f))
-            in.fail(normalParam->location,
-                    "\"N\" value " + std::to_string(at) +
-                        " has no direction for a ribbon to face (zero, or beyond float range)");
+        if (n == Vec3(0.0f) && !aimless) aimless = at;
         return n;
     };
     float const scale = lengthScale(state().transform);
@@ -428,6 +432,13 @@ void SceneBuilder::curves(RequestReader& in) {
         }
         first += static_cast<size_t>(n);
         widthIndex += static_cast<size_t>(varying);
+    }
+    if (aimless) {  // as a Scale by 0 gives them: round tubes, as without "N" (the warning says why)
+        warnOnce("aimless curve normal", normalParam->location,
+                 "Curves: \"N\" value " + std::to_string(*aimless) +
+                     " has no direction for a ribbon to face (zero, or beyond float range); these curves are "
+                     "drawn as round tubes");
+        data.normals.clear();
     }
     layout.vertices = first;
     layout.varyings = widthIndex;
