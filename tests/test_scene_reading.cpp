@@ -267,6 +267,38 @@ TEST_CASE("a surface shader of the scene's own is rendered as the standard one i
     CHECK(test::warningsContaining(diagnostics, "has no parameter") == 0);
 }
 
+TEST_CASE("ColorSamples: colours are written with its numbers and read as the RGB its nRGB gives", "[rib]") {
+    auto materialOf = [](Scene const& scene, size_t shape) -> MaterialDesc const& {
+        return scene.materials[static_cast<size_t>(scene.shapes.at(shape)->material)];
+    };
+    Diagnostics diagnostics(false);
+    // One sample, a grey: a colour is one number (no "given one number" warning: that is its size now).
+    Scene grey = test::parseRib(
+        "ColorSamples [1 1 1] [.3 .59 .11]\nWorldBegin\nColor [0.5]\nOpacity 0.75\n"
+        "Surface \"matte\"\nSphere 1 -1 1 360\n"
+        "Bxdf \"PxrDiffuse\" \"d\" \"color diffuseColor\" [0.25]\nSphere 1 -1 1 360\n",
+        diagnostics);
+    CHECK(diagnostics.entries().empty());
+    CHECK(materialOf(grey, 0).params.getColor("surfaceColor", Vec3(0)) == Vec3(0.5f));
+    CHECK(materialOf(grey, 0).params.getColor("surfaceOpacity", Vec3(0)) == Vec3(0.75f));
+    CHECK(materialOf(grey, 1).params.getColor("diffuseColor", Vec3(0)) == Vec3(0.25f));
+    // Two samples, one red and one blue; an array of two colours takes four numbers.
+    Scene two = test::parseRib(
+        "ColorSamples [1 0 0  0 0 1] [1 0  0 0  0 1]\nWorldBegin\nColor 0.2 0.7\n"
+        "Surface \"matte\"\nSphere 1 -1 1 360\n"
+        "Bxdf \"PxrDiffuse\" \"d\" \"color diffuseColor\" [0.4 0.6]\nSphere 1 -1 1 360\n",
+        diagnostics);
+    CHECK(materialOf(two, 0).params.getColor("surfaceColor", Vec3(0)) == Vec3(0.2f, 0.0f, 0.7f));
+    CHECK(materialOf(two, 1).params.getColor("diffuseColor", Vec3(0)) == Vec3(0.4f, 0.0f, 0.6f));
+    CHECK_THROWS_WITH(
+        test::parseRib("ColorSamples [1 0 0  0 0 1] [1 0  0 0  0 1]\nWorldBegin\nColor [1 0 0]\n",
+                       diagnostics),
+        Catch::Matchers::Contains("test.rib:3:7") && Catch::Matchers::Contains("expected 2 numbers"));
+    CHECK_THROWS_WITH(
+        test::parseRib("ColorSamples [1 1 1] [1 1]\n", diagnostics),
+        Catch::Matchers::Contains("ColorSamples needs nRGB and RGBn of 3 numbers per colour sample each"));
+}
+
 TEST_CASE("classic Surface shaders become the ClassicSurface Bxdf with the Color in effect, a Bxdf wins", "[rib]") {
     // A scene's own copy of a standard shader ("shaders/plastic") is read as the standard one, with a warning.
     for (std::string const folder : {"", "shaders/"}) {

@@ -36,6 +36,14 @@ const char* paramTypeName(ParamType type) {
     return "?";
 }
 
+Vec3 ColorSamples::rgb(float const* numbers) const {
+    if (toRGB.empty()) return Vec3(numbers[0], numbers[1], numbers[2]);
+    Vec3 out(0.0f);
+    for (size_t i = 0; i < count; ++i)
+        out += numbers[i] * Vec3(toRGB[3 * i], toRGB[3 * i + 1], toRGB[3 * i + 2]);
+    return out;
+}
+
 Declarations::Declarations() {
     for (auto const& [name, declaration] : standardDeclarations()) {
         ParamDecl decl;

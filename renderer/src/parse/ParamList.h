@@ -40,8 +40,19 @@ struct ParamDecl {
     bool standard = false;     ///< typed by the built-in table of standard names, not by the RIB
 };
 
+/// How many numbers a colour is written with and how they become RGB, as
+/// ColorSamples sets it (RGB itself until it does).
+struct ColorSamples {
+    size_t count = 3;
+    /// `count` rows of 3 (RI's nRGB): RGB is the sum of number i times row i. Empty: the numbers are RGB.
+    std::vector<float> toRGB;
+    /// The RGB of one colour written as `count` numbers.
+    Vec3 rgb(float const* numbers) const;
+};
+
 /// Declarations known without a Declare request (parse/StandardDeclarations),
-/// plus whatever the RIB declared. Parses "class type name" strings.
+/// plus whatever the RIB declared. Parses "class type name" strings. Holds the
+/// ColorSamples in force too: like a declaration, it says how values are read.
 class Declarations {
 public:
     Declarations();
@@ -50,10 +61,13 @@ public:
     /// neither typed, declared nor standard comes back untyped (type Unknown);
     /// a malformed declaration throws.
     ParamDecl resolve(std::string const& token, SourceLocation const& where) const;
+    void setColorSamples(ColorSamples samples) { m_colorSamples = std::move(samples); }
+    ColorSamples const& colorSamples() const { return m_colorSamples; }
 
 private:
     static bool parseDeclaration(std::string const& text, ParamDecl& out, std::string& error);
     std::map<std::string, ParamDecl> m_known;
+    ColorSamples m_colorSamples;
 };
 
 struct Param {

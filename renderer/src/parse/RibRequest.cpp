@@ -59,6 +59,11 @@ int RequestReader::integer(const char* what) {
     fail(v.where, std::string("expected ") + what + " (a whole number), found " + v.describe());
 }
 
+Vec3 RequestReader::color(const char* what) {
+    ColorSamples const& samples = m_declarations.colorSamples();
+    return samples.rgb(numbers(samples.count, what).data());
+}
+
 std::vector<float> RequestReader::numbers(size_t count, const char* what) {
     std::vector<float> out;
     if (!atEnd() && m_request.args[m_next].kind == RibValue::Kind::NumberArray) {
@@ -164,9 +169,12 @@ ParamList RequestReader::params() {
         if (isString) {
             param.strings = value.strings;
         } else {
-            size_t group = static_cast<size_t>(componentsOf(param.decl.type) * param.decl.arraySize);
+            ColorSamples const& samples = m_declarations.colorSamples();
+            bool const color = param.decl.type == ParamType::Color;
+            size_t group = (color ? samples.count : static_cast<size_t>(componentsOf(param.decl.type))) *
+                           static_cast<size_t>(param.decl.arraySize);
             std::vector<double> numbers = value.numbers;
-            if (param.decl.type == ParamType::Color && param.decl.arraySize == 1 && numbers.size() == 1) {
+            if (color && samples.count == 3 && param.decl.arraySize == 1 && numbers.size() == 1) {
                 // Older files write a grey as one number ("color Cs" .5); RenderMan reads it as that grey.
                 numbers.assign(3, numbers[0]);
                 if (m_diagnostics)
@@ -184,6 +192,14 @@ ParamList RequestReader::params() {
                     param.ints.push_back(static_cast<int>(d));
                 }
                 param.floats.push_back(static_cast<float>(d));
+            }
+            if (color && !samples.toRGB.empty()) {  // colours in ColorSamples' numbers become RGB
+                std::vector<float> rgb;
+                for (size_t at = 0; at < param.floats.size(); at += samples.count) {
+                    Vec3 const c = samples.rgb(param.floats.data() + at);
+                    rgb.insert(rgb.end(), {c.x, c.y, c.z});
+                }
+                param.floats = std::move(rgb);
             }
         }
         list.add(std::move(param));

@@ -44,6 +44,8 @@ public:
     int integer(const char* what);
     /// `count` numbers, given one by one or as one array.
     std::vector<float> numbers(size_t count, const char* what);
+    /// One colour (Color, Opacity): as many numbers as ColorSamples says, given as RGB.
+    Vec3 color(const char* what);
     /// One array of numbers of any length (a lone number counts as an array of one).
     std::vector<float> numberArray(const char* what);
     std::vector<int> intArray(const char* what);

@@ -33,6 +33,7 @@ std::map<std::string, SceneBuilder::Handler> const& SceneBuilder::handlers() {
         {"ScreenWindow", &SceneBuilder::screenWindow},
         {"FrameAspectRatio", &SceneBuilder::frameAspectRatio},
         {"PixelSamples", &SceneBuilder::pixelSamples},
+        {"ColorSamples", &SceneBuilder::colorSamples},
         {"PixelVariance", &SceneBuilder::pixelVariance},
         {"PixelFilter", &SceneBuilder::pixelFilter},
         {"Hider", &SceneBuilder::hider},

@@ -161,6 +161,7 @@ private:
     void setClipping(std::vector<float> const& planes, SourceLocation const& where, std::string const& what);
     void setScreenWindow(std::vector<float> const& window);
     void pixelSamples(RequestReader& in);
+    void colorSamples(RequestReader& in);
     void pixelFilter(RequestReader& in);
     /// PixelFilter's name and widths, checked (an unknown name keeps the filter as it was, with a warning).
     void setPixelFilter(std::string const& name, float xwidth, float ywidth, SourceLocation const& where);

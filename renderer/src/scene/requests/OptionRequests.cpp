@@ -557,6 +557,21 @@ void SceneBuilder::declare(RequestReader& in) {
     m_declarations.declare(name, decl, in.where());
 }
 
+void SceneBuilder::colorSamples(RequestReader& in) {
+    // RI's nRGB (n rows of 3: a colour of n numbers to RGB) and RGBn (its way back, unused here).
+    std::vector<float> toRGB = in.numberArray("nRGB (the colour samples to RGB, 3 numbers a sample)");
+    std::vector<float> fromRGB =
+        in.numberArray("RGBn (RGB to the colour samples, n numbers for each of R, G, B)");
+    in.finish();
+    if (toRGB.empty() || toRGB.size() % 3 != 0 || fromRGB.size() != toRGB.size())
+        in.fail(in.where(), "ColorSamples needs nRGB and RGBn of 3 numbers per colour sample each, got " +
+                                std::to_string(toRGB.size()) + " and " + std::to_string(fromRGB.size()));
+    ColorSamples samples;
+    samples.count = toRGB.size() / 3;
+    samples.toRGB = std::move(toRGB);
+    m_declarations.setColorSamples(std::move(samples));
+}
+
 void SceneBuilder::frameBegin(RequestReader& in) {
     int number = in.atEnd() ? static_cast<int>(m_frames.size()) : in.integer("frame number");
     in.finish();

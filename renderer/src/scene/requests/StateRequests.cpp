@@ -455,18 +455,17 @@ void SceneBuilder::traceDepthLimit(ParamList const& params, std::string const& n
 }
 
 void SceneBuilder::color(RequestReader& in) {
-    std::vector<float> c = in.numbers(3, "red green blue");
+    state().color = in.color("red green blue");
     in.finish();
-    state().color = Vec3(c[0], c[1], c[2]);
     state().colorSet = true;
 }
 
 void SceneBuilder::opacity(RequestReader& in) {
-    std::vector<float> c = in.numbers(3, "red green blue");
+    Vec3 const c = in.color("red green blue");
     in.finish();
-    state().opacity = Vec3(c[0], c[1], c[2]);
+    state().opacity = c;
     // Classic surface shaders show through (ClassicSurface's presence); a Bxdf ignores Opacity, as in RenderMan.
-    if (c[0] != c[1] || c[1] != c[2])
+    if (c.x != c.y || c.y != c.z)
         warnOnce("opacity", in.where(),
                  "Opacity with unequal colours is rendered as their mean: a classic surface shows what lies behind "
                  "it in grey, not tinted");
