@@ -25,6 +25,21 @@ HitRecord trace(RayTracer const& tracer, Vec3 org, Vec3 dir) {
     return tracer.intersect(org, glm::normalize(dir), 0.0f, kInfinity, 0.0f, RayKind::Camera, counts);
 }
 
+/// How far along +z from `org` a ray meets the one shape `shape` (a line after WorldBegin) makes,
+/// -1 for a miss; `normal`, when given, receives the shading normal there. The shape must read
+/// without a warning.
+float distanceAlongZ(std::string const& shape, Vec3 org, Vec3* normal = nullptr) {
+    Diagnostics diagnostics(false);
+    Scene scene = test::parseRib("WorldBegin\n" + shape, diagnostics);
+    CHECK(diagnostics.entries().empty());
+    REQUIRE(scene.shapes.size() == 1u);
+    RayTracer tracer(scene);
+    HitRecord h = trace(tracer, org, Vec3(0, 0, 1));
+    if (!h.hit()) return -1.0f;
+    if (normal) *normal = scene.shapes[0]->basics(h).N;
+    return h.t;
+}
+
 std::string const kTwoFrames =
     "FrameBegin 1\n  Display \"a.exr\" \"file\" \"rgba\"\n  Format 32 16 1\n  Projection \"perspective\" \"fov\" [40]\n"
     "  WorldBegin\n    Sphere 1 -1 1 360\n  WorldEnd\nFrameEnd\n"
@@ -1264,38 +1279,30 @@ TEST_CASE("Points keep a value per particle (\"varying color Cs\"), as a lecture
 
 TEST_CASE("Points with normals are disks facing them and points without are spheres as in RenderMan",
           "[rib]") {
-    // Each scene is one particle of width 1 (radius 0.5) at z = 5, seen along +z from `org`.
-    auto hit = [](std::string const& points, Vec3 org, Vec3* normal = nullptr) {
-        Diagnostics diagnostics(false);
-        Scene scene = test::parseRib("WorldBegin\n" + points, diagnostics);
-        CHECK(diagnostics.entries().empty());  // "N" is used, not warned about
-        REQUIRE(scene.shapes.size() == 1u);
-        RayTracer tracer(scene);
-        HitRecord h = trace(tracer, org, Vec3(0, 0, 1));
-        if (!h.hit()) return -1.0f;
-        if (normal) *normal = scene.shapes[0]->basics(h).N;
-        return h.t;
-    };
+    // Each scene is one particle of width 1 (radius 0.5) at z = 5, seen along +z (distanceAlongZ: "N" is
+    // used, not warned about).
     std::string const at = "Points \"P\" [0 0 5] \"constantwidth\" [1] ";
-    CHECK(hit(at, Vec3(0.0f)) == Approx(4.5f).epsilon(1e-4));  // a sphere's front
+    CHECK(distanceAlongZ(at, Vec3(0.0f)) == Approx(4.5f).epsilon(1e-4));  // a sphere's front
     Vec3 n;
-    CHECK(hit(at + "\"N\" [0 0 -1]", Vec3(0.0f), &n) == Approx(5.0f).epsilon(1e-4));  // a flat disk
+    CHECK(distanceAlongZ(at + "\"N\" [0 0 -1]", Vec3(0.0f), &n) ==
+          Approx(5.0f).epsilon(1e-4));  // a flat disk
     CHECK(n.z == Approx(-1.0f));
-    CHECK(hit(at + "\"N\" [0 0 -1]", Vec3(0.45f, 0.0f, 0.0f)) == Approx(5.0f).epsilon(1e-4));
-    CHECK(hit(at + "\"N\" [0 0 -1]", Vec3(0.55f, 0.0f, 0.0f)) < 0.0f);  // beyond its radius
+    CHECK(distanceAlongZ(at + "\"N\" [0 0 -1]", Vec3(0.45f, 0.0f, 0.0f)) == Approx(5.0f).epsilon(1e-4));
+    CHECK(distanceAlongZ(at + "\"N\" [0 0 -1]", Vec3(0.55f, 0.0f, 0.0f)) < 0.0f);  // beyond its radius
     // Tilted 45 degrees about x: the plane (p - c) . (0, 1, -1) = 0 meets the ray at y = 0.2 at z = 5.2.
-    CHECK(hit(at + "\"varying normal N\" [0 1 -1]", Vec3(0.0f, 0.2f, 0.0f), &n) ==
+    CHECK(distanceAlongZ(at + "\"varying normal N\" [0 1 -1]", Vec3(0.0f, 0.2f, 0.0f), &n) ==
           Approx(5.2f).epsilon(1e-4));
     CHECK(n.y == Approx(std::sqrt(0.5f)).epsilon(1e-4));
     // Edge on: the disk lies in the plane x = 0, which a ray beside it never crosses.
-    CHECK(hit(at + "\"N\" [1 0 0]", Vec3(0.1f, 0.0f, 0.0f)) < 0.0f);
+    CHECK(distanceAlongZ(at + "\"N\" [1 0 0]", Vec3(0.1f, 0.0f, 0.0f)) < 0.0f);
     // Normals turn with the object: rotated 90 degrees about y, a disk facing +x faces -z.
-    CHECK(hit("Translate 0 0 5\nRotate 90 0 1 0\nPoints \"P\" [0 0 0] \"constantwidth\" [1] \"N\" [1 0 0]",
+    CHECK(distanceAlongZ(
+              "Translate 0 0 5\nRotate 90 0 1 0\nPoints \"P\" [0 0 0] \"constantwidth\" [1] \"N\" [1 0 0]",
               Vec3(0.0f), &n) == Approx(5.0f).epsilon(1e-4));
     CHECK(n.z == Approx(-1.0f).epsilon(1e-4));
     // Two points, one normal for both: both are disks.
-    CHECK(hit("Points \"P\" [0 0 5  1 0 5] \"constantwidth\" [0.5] \"constant normal N\" [0 0 -1]",
-              Vec3(1, 0, 0)) == Approx(5.0f).epsilon(1e-4));
+    CHECK(distanceAlongZ("Points \"P\" [0 0 5  1 0 5] \"constantwidth\" [0.5] \"constant normal N\" [0 0 -1]",
+                         Vec3(1, 0, 0)) == Approx(5.0f).epsilon(1e-4));
     Diagnostics diagnostics(false);
     CHECK_THROWS_WITH(
         test::parseRib("WorldBegin\nPoints \"P\" [0 0 5  1 0 5] \"N\" [0 0 -1  0 0 -1  0 0 -1]\n",
@@ -1313,39 +1320,32 @@ TEST_CASE("Points with normals are disks facing them and points without are sphe
 }
 
 TEST_CASE("Curves with normals are flat ribbons facing them and curves without are round tubes", "[rib]") {
-    // Each scene is one curve along x at z = 5, of width 0.2, seen along +z from `org`.
-    auto hit = [](std::string const& curve, Vec3 org, Vec3* normal = nullptr) {
-        Diagnostics diagnostics(false);
-        Scene scene = test::parseRib("WorldBegin\n" + curve, diagnostics);
-        CHECK(diagnostics.entries().empty());  // "N" is used, not warned about
-        REQUIRE(scene.shapes.size() == 1u);
-        RayTracer tracer(scene);
-        HitRecord h = trace(tracer, org, Vec3(0, 0, 1));
-        if (!h.hit()) return -1.0f;
-        if (normal) *normal = scene.shapes[0]->basics(h).N;
-        return h.t;
-    };
+    // Each scene is one curve along x at z = 5, of width 0.2, seen along +z (distanceAlongZ: "N" is used, not
+    // warned about).
     std::string const line =
         "Curves \"linear\" [2] \"nonperiodic\" \"P\" [-1 0 5  1 0 5] \"constantwidth\" [0.2] ";
-    CHECK(hit(line, Vec3(0.0f)) == Approx(4.9f).epsilon(1e-3));  // a tube's front
+    CHECK(distanceAlongZ(line, Vec3(0.0f)) == Approx(4.9f).epsilon(1e-3));  // a tube's front
     Vec3 n;
-    CHECK(hit(line + "\"N\" [0 0 -1  0 0 -1]", Vec3(0.0f), &n) == Approx(5.0f).epsilon(1e-3));  // flat
+    CHECK(distanceAlongZ(line + "\"N\" [0 0 -1  0 0 -1]", Vec3(0.0f), &n) ==
+          Approx(5.0f).epsilon(1e-3));  // flat
     CHECK(std::fabs(n.z) == Approx(1.0f).epsilon(1e-3));
-    CHECK(hit(line + "\"N\" [0 0 -1  0 0 -1]", Vec3(0.3f, 0.09f, 0.0f)) == Approx(5.0f).epsilon(1e-3));
-    CHECK(hit(line + "\"N\" [0 0 -1  0 0 -1]", Vec3(0.3f, 0.11f, 0.0f)) < 0.0f);  // beyond its half width
+    CHECK(distanceAlongZ(line + "\"N\" [0 0 -1  0 0 -1]", Vec3(0.3f, 0.09f, 0.0f)) ==
+          Approx(5.0f).epsilon(1e-3));
+    CHECK(distanceAlongZ(line + "\"N\" [0 0 -1  0 0 -1]", Vec3(0.3f, 0.11f, 0.0f)) <
+          0.0f);  // beyond its half width
     // Facing +y it is edge on to the camera: a ray just beside the curve's line misses it...
-    CHECK(hit(line + "\"N\" [0 1 0  0 1 0]", Vec3(0.3f, 0.03f, 0.0f)) < 0.0f);
+    CHECK(distanceAlongZ(line + "\"N\" [0 1 0  0 1 0]", Vec3(0.3f, 0.03f, 0.0f)) < 0.0f);
     // ...and a ribbon that turns from facing the camera to facing +y narrows along its length.
     std::string const twist = line + "\"N\" [0 0 -1  0 1 0]";
-    CHECK(hit(twist, Vec3(-0.9f, 0.08f, 0.0f)) > 0.0f);
-    CHECK(hit(twist, Vec3(0.9f, 0.08f, 0.0f)) < 0.0f);
+    CHECK(distanceAlongZ(twist, Vec3(-0.9f, 0.08f, 0.0f)) > 0.0f);
+    CHECK(distanceAlongZ(twist, Vec3(0.9f, 0.08f, 0.0f)) < 0.0f);
     // One normal for the whole curve, and vertex normals of a cubic curve through its basis.
-    CHECK(hit(line + "\"constant normal N\" [0 0 -1]", Vec3(0.5f, 0.09f, 0.0f)) ==
+    CHECK(distanceAlongZ(line + "\"constant normal N\" [0 0 -1]", Vec3(0.5f, 0.09f, 0.0f)) ==
           Approx(5.0f).epsilon(1e-3));
-    CHECK(hit("Basis \"b-spline\" 1 \"b-spline\" 1\nCurves \"cubic\" [4] \"nonperiodic\" "
-              "\"P\" [-3 0 5  -1 0 5  1 0 5  3 0 5] \"constantwidth\" [0.2] "
-              "\"vertex normal N\" [0 0 -1  0 0 -1  0 0 -1  0 0 -1]",
-              Vec3(0.0f, 0.09f, 0.0f)) == Approx(5.0f).epsilon(1e-3));
+    CHECK(distanceAlongZ("Basis \"b-spline\" 1 \"b-spline\" 1\nCurves \"cubic\" [4] \"nonperiodic\" "
+                         "\"P\" [-3 0 5  -1 0 5  1 0 5  3 0 5] \"constantwidth\" [0.2] "
+                         "\"vertex normal N\" [0 0 -1  0 0 -1  0 0 -1  0 0 -1]",
+                         Vec3(0.0f, 0.09f, 0.0f)) == Approx(5.0f).epsilon(1e-3));
     Diagnostics diagnostics(false);
     CHECK_THROWS_WITH(
         test::parseRib("WorldBegin\n" + line + "\"N\" [0 0 -1]\n", diagnostics),
