@@ -269,6 +269,41 @@ TEST_CASE("Motion blur: a patch sweeping across the view covers each column for 
     checkSweep(rib, "motion blur: 1 shape moves");
 }
 
+TEST_CASE("Motion blur: shadow rays leave at the time of the ray that found their point",
+          "[render][motion]") {
+    // The sweep above as a shadow: the camera sees a white wall at z = 2, lit along +z by a distant light
+    // and by a sphere light far behind the camera and off to one side, out of the sun's way (a light sample
+    // and a Bxdf sample per point, so each batch of points traces shadow rays twice). A strip the camera
+    // cannot see sweeps between them as the patch does, so column x lies in its shadow for 1 - x of the time:
+    // lit x of it.
+    auto scene = [](bool occluder) {
+        return std::string(
+                   "Format 16 2 1\nShutter 0 1\nProjection \"orthographic\"\nScreenWindow 0 1 0 1\n"
+                   "Integrator \"PxrDirectLighting\" \"d\"\nWorldBegin\n"
+                   "AttributeBegin\nLight \"PxrDistantLight\" \"sun\" \"float intensity\" [50000] "
+                   "\"float angleExtent\" [0]\nAttributeEnd\n"
+                   "AttributeBegin\nTranslate 0 -300 -1000\nLight \"PxrSphereLight\" \"far\" "
+                   "\"float intensity\" [4e5]\nAttributeEnd\n"
+                   "Bxdf \"PxrDiffuse\" \"white\" \"color diffuseColor\" [1 1 1]\n"
+                   "Patch \"bilinear\" \"P\" [-5 -5 2  5 -5 2  -5 5 2  5 5 2]\n") +
+               (occluder ? "AttributeBegin\nAttribute \"visibility\" \"int camera\" [0]\n"
+                           "MotionBegin [0 1]\nTranslate -1 0 0\nTranslate 0 0 0\nMotionEnd\n"
+                           "Patch \"bilinear\" \"P\" [0 -1 1  1 -1 1  0 2 1  1 2 1]\nAttributeEnd\n"
+                         : "") +
+               "WorldEnd\n";
+    };
+    test::RenderOutcome const open = test::renderRib(scene(false), test::withSpp(64));
+    test::RenderOutcome const swept = test::renderRib(scene(true), test::withSpp(1024));
+    REQUIRE(swept.width == 16);
+    double const lit = open.channel(8, 0, 0);
+    REQUIRE(lit > 0.0);
+    for (int x = 0; x < 16; ++x) {
+        INFO("column " << x);
+        for (int y = 0; y < 2; ++y)
+            CHECK(swept.channel(x, y, 0) / lit == Approx((x + 0.5) / 16.0).margin(0.05));
+    }
+}
+
 TEST_CASE("Motion blur: shading sees the time of its ray", "[render][motion]") {
     // PxrVariable "time" shows the builtin k_time: spread evenly over an open shutter, 0 when it does not open.
     std::string const world =

@@ -13,7 +13,9 @@ namespace {
 float shadowReach(float distance) { return std::isinf(distance) ? kInfinity : distance * (1.0f - 1e-4f); }
 
 /// Where and when rays leaving the points of a batch start: pushed off each surface, at the
-/// shutter time the point was seen at.
+/// shutter time the point was seen at. Make one before taking a mark of the arena: the context
+/// computes what it is asked for the first time (its shutter times, most often) in that arena, and
+/// keeps it for the rest of its life, so it must not be released with the mark.
 class RayStarts {
 public:
     explicit RayStarts(RixShadingContext const& ctx) {
@@ -129,9 +131,9 @@ bool IntegratorServices::Unoccluded(RixShadingContext const& ctx, int i, RtVecto
 void IntegratorServices::Unoccluded(RixShadingContext const& ctx, int count, int const* indices,
                                     RtVector3 const* dirs, float const* distances, bool* clear) {
     if (count <= 0) return;
+    RayStarts const starts(ctx);
     MemoryArena::Mark mark = m_arena.mark();
     ShadowStream stream(m_arena, static_cast<size_t>(count));
-    RayStarts starts(ctx);
     // Rays of no length (lights without shadows) are clear and not traced: ray[k] is ray k's place in
     // the stream, or -1.
     int* ray = m_arena.allocArray<int>(static_cast<size_t>(count));
@@ -185,11 +187,11 @@ RixLightHit IntegratorServices::VisibleLight(RixShadingContext const& ctx, int i
 void IntegratorServices::VisibleLights(RixShadingContext const& ctx, int count, int const* indices,
                                        RtVector3 const* dirs, RixLightHit* hits) {
     if (count <= 0) return;
+    RayStarts const starts(ctx);
     MemoryArena::Mark mark = m_arena.mark();
     size_t const size = static_cast<size_t>(count);
     ShadowStream stream(m_arena, size);
     int* hitOf = m_arena.allocArray<int>(size);  // which of the hits each shadow ray tests
-    RayStarts starts(ctx);
     for (int k = 0; k < count; ++k) {
         Vec3 const d = toVec3(dirs[k]), start = starts.at(indices[k], d);
         hits[k] = lightAlong(start, d, kInfinity);
@@ -208,9 +210,9 @@ void IntegratorServices::VisibleLights(RixShadingContext const& ctx, int count, 
 void IntegratorServices::TraceIndirect(RixShadingContext const& ctx, int count, int const* indices,
                                        RtVector3 const* dirs, bool const* shade, RixRNG::SampleCtx const* samples,
                                        RixLightHit* lightHits, std::function<void(RixShadeBatch&)> const& visit) {
+    RayStarts const starts(ctx);
     MemoryArena::Mark mark = m_arena.mark();
     HitRecord* hits = m_arena.allocArray<HitRecord>(static_cast<size_t>(std::max(1, count)));
-    RayStarts starts(ctx);
     for (int k = 0; k < count; ++k) {
         Vec3 d = glm::normalize(toVec3(dirs[k]));
         hits[k] = m_tracer.tracer().intersect(starts.at(indices[k], d), d, 0.0f, kInfinity, starts.time(indices[k]),
