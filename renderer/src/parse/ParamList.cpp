@@ -335,6 +335,12 @@ std::vector<float> const* ParamList::getFloats(std::string const& name, ParamTyp
     return &p->floats;
 }
 
+std::vector<float> const* ParamList::getNormals(std::string const& name) const {
+    Param const* p = find(name);
+    if (!p || p->decl.reference) return nullptr;
+    return getFloats(name, p->decl.type == ParamType::Vector ? ParamType::Vector : ParamType::Normal);
+}
+
 std::vector<int> const* ParamList::getInts(std::string const& name) const {
     Param const* p = take(name);
     if (!p) return nullptr;

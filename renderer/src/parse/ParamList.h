@@ -140,6 +140,9 @@ public:
     /// Array getters (any length); absent gives an empty vector.
     std::vector<float> const* getFloats(std::string const& name, ParamType type) const;
     std::vector<int> const* getInts(std::string const& name) const;
+    /// A shape's normals ("N"): a normal or vector array, three numbers each. Null when absent or
+    /// connected to a pattern (a reference, which no shape reads).
+    std::vector<float> const* getNormals(std::string const& name) const;
 
     /// Warns once for each parameter that no one read (typos, unsupported
     /// options), and for each untyped one that is not a standard name; a

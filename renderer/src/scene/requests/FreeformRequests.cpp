@@ -42,14 +42,13 @@ Vec3 worldNormal(Mat4 const& toObject, float const* n) {
 /// direction (see worldNormal) is left zero for the caller to report.
 std::vector<Vec3> pointNormals(ParamList const& params, Mat4 const& toWorld, size_t points,
                                RequestReader& in) {
-    Param const* declared = params.find("N");
-    if (!declared || declared->decl.reference) return {};
-    std::vector<float> const* n = params.getFloats(
-        "N", declared->decl.type == ParamType::Vector ? ParamType::Vector : ParamType::Normal);
+    std::vector<float> const* n = params.getNormals("N");
+    if (!n) return {};
     size_t const given = n->size() / 3;
     if (n->size() % 3 != 0 || (given != 1 && given != points))
-        in.fail(declared->location, "\"N\" needs one normal per point (" + std::to_string(points) +
-                                        ") or one for all, got " + std::to_string(n->size()) + " numbers");
+        in.fail(params.find("N")->location, "\"N\" needs one normal per point (" + std::to_string(points) +
+                                                ") or one for all, got " + std::to_string(n->size()) +
+                                                " numbers");
     Mat4 const toObject = glm::inverse(toWorld);
     std::vector<Vec3> normals;
     normals.reserve(points);
@@ -310,14 +309,9 @@ void SceneBuilder::curves(RequestReader& in) {
     float constantWidth = params.getFloat("constantwidth", 1.0f);
     // "N" makes the curves flat ribbons facing it, as RenderMan draws them; without it they are round
     // tubes. Its storage classes read as width's do (it is varying unless declared otherwise).
+    std::vector<float> const* normals = params.getNormals("N");
     Param const* normalParam = params.find("N");
-    std::vector<float> const* normals = nullptr;
-    std::string normalClass = "varying";
-    if (normalParam && !normalParam->decl.reference) {
-        normals = params.getFloats(
-            "N", normalParam->decl.type == ParamType::Vector ? ParamType::Vector : ParamType::Normal);
-        normalClass = normalParam->decl.storageClass;
-    }
+    std::string const normalClass = normals ? normalParam->decl.storageClass : "varying";
     Mat4 const toObject = glm::inverse(state().transform);
     std::optional<size_t> aimless;  // the first normal with no direction, if any
     auto normalValue = [&](size_t at) {
@@ -354,28 +348,24 @@ void SceneBuilder::curves(RequestReader& in) {
                                         std::to_string(widths->size()) + " given)");
             return 0.5f * scale * std::fabs((*widths)[at]);
         };
-        // The radius at the start of segment k (k = segments: the end of the last one).
+        // Control vertex k of this curve, as an index into a vertex value ("P", vertex width or N).
+        auto vertexAt = [&](int k) { return first + static_cast<size_t>(periodic ? k % n : k); };
+        // Where a value of storage class `storage` for the start of segment k sits (k = segments:
+        // the end of the last one).
+        auto segmentStart = [&](std::string const& storage, int k) -> size_t {
+            if (storage == "constant") return 0;
+            if (storage == "uniform") return curve;
+            if (storage == "vertex") return vertexAt(k * step);
+            return widthIndex + static_cast<size_t>(periodic ? k % varying : k);
+        };
         auto radius = [&](int k) {
-            if (!widths) return 0.5f * scale * std::fabs(constantWidth);
-            if (widthClass == "constant") return widthValue(0);
-            if (widthClass == "uniform") return widthValue(curve);
-            if (perVertex) return widthValue(first + static_cast<size_t>(periodic ? (k * step) % n : k * step));
-            return widthValue(widthIndex + static_cast<size_t>(periodic ? k % varying : k));
+            return widths ? widthValue(segmentStart(widthClass, k)) : 0.5f * scale * std::fabs(constantWidth);
         };
-        auto vertexRadius = [&](int k) { return widthValue(first + static_cast<size_t>(periodic ? k % n : k)); };
-        auto point = [&](int k) { return P[first + static_cast<size_t>(periodic ? k % n : k)]; };
+        auto vertexRadius = [&](int k) { return widthValue(vertexAt(k)); };
+        auto point = [&](int k) { return P[vertexAt(k)]; };
         bool const normalPerVertex = normalClass == "vertex";
-        // The normal at the start of segment k, read as radius() reads widths.
-        auto normalAt = [&](int k) {
-            if (normalClass == "constant") return normalValue(0);
-            if (normalClass == "uniform") return normalValue(curve);
-            if (normalPerVertex)
-                return normalValue(first + static_cast<size_t>(periodic ? (k * step) % n : k * step));
-            return normalValue(widthIndex + static_cast<size_t>(periodic ? k % varying : k));
-        };
-        auto vertexNormal = [&](int k) {
-            return normalValue(first + static_cast<size_t>(periodic ? k % n : k));
-        };
+        auto normalAt = [&](int k) { return normalValue(segmentStart(normalClass, k)); };
+        auto vertexNormal = [&](int k) { return normalValue(vertexAt(k)); };
         for (int s = 0; s < segments; ++s) {
             data.segments.push_back(static_cast<unsigned>(data.points.size()));
             layout.segments.push_back({static_cast<unsigned>(curve), static_cast<unsigned>(s),

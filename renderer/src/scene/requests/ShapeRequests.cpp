@@ -46,13 +46,12 @@ std::vector<Vec3> patchPoints(ParamList const& params, RequestReader& in, int nu
 /// A bilinear patch's "N": one normal per control point (vertex and varying
 /// are the same there), or nothing when the patch has none.
 std::optional<std::vector<Vec3>> bilinearNormals(ParamList const& params, RequestReader& in, size_t points) {
-    Param const* declared = params.find("N");
-    if (!declared || declared->decl.reference) return std::nullopt;
-    std::vector<float> const* n = params.getFloats("N", declared->decl.type == ParamType::Vector ? ParamType::Vector
-                                                                                              : ParamType::Normal);
+    std::vector<float> const* n = params.getNormals("N");
+    if (!n) return std::nullopt;
     if (n->size() != 3 * points)
-        in.fail(declared->location, "\"N\" needs one normal per control point (" + std::to_string(points) + "), got " +
-                                        std::to_string(n->size()) + " numbers");
+        in.fail(params.find("N")->location, "\"N\" needs one normal per control point (" +
+                                                std::to_string(points) + "), got " +
+                                                std::to_string(n->size()) + " numbers");
     std::vector<Vec3> normals;
     for (size_t i = 0; i < points; ++i) normals.emplace_back((*n)[3 * i], (*n)[3 * i + 1], (*n)[3 * i + 2]);
     return normals;
