@@ -526,3 +526,29 @@ TEST_CASE("a Bxdf's evaluation domain is kept: no light through a reflecting sur
             CHECK(test::meanChannel(inFront, 0, kAll) > 0.05);
         }
 }
+
+TEST_CASE("an integrator may ask the batch it traces from for builtins and memory inside TraceIndirect's callback",
+          "[integrators][memory]") {
+    // A floor facing the camera and a wall behind the camera facing the floor: every floor point's
+    // ray toward the viewer is shaded on the wall while the floor's batch is still open. The test
+    // integrator paints a pixel white when what it took from the floor's batch there outlived the
+    // callback, red when it changed, blue when there was nothing to shade.
+    std::string const rib = "Format 16 16 1\nProjection \"orthographic\"\nScreenWindow -1 1 -1 1\n"
+                            "Integrator \"parentmemory\" \"test\"\nTranslate 0 0 5\nWorldBegin\n"
+                            "Bxdf \"PxrDiffuse\" \"d\"\n"
+                            "Polygon \"P\" [-2 -2 0  2 -2 0  2 2 0  -2 2 0]\n"
+                            "Polygon \"P\" [-9 -9 -6  9 -9 -6  9 9 -6  -9 9 -6]\nWorldEnd\n";
+    test::RenderOutcome const image = test::renderRib(rib, test::withSpp(2));
+    REQUIRE(image.width == 16);
+    int white = 0, red = 0, blue = 0;
+    for (int y = 0; y < 16; ++y)
+        for (int x = 0; x < 16; ++x) {
+            float const r = image.channel(x, y, 0), g = image.channel(x, y, 1), b = image.channel(x, y, 2);
+            white += r == 1.0f && g == 1.0f && b == 1.0f;
+            red += r > 0.0f && g == 0.0f && b == 0.0f;
+            blue += r == 0.0f && g == 0.0f && b > 0.0f;
+        }
+    CHECK(blue == 0);  // every floor point's ray was shaded on the wall
+    CHECK(red == 0);
+    CHECK(white == 16 * 16);
+}

@@ -2,6 +2,8 @@
 #include <catch2/catch.hpp>
 
 #include "shade/LobeTable.h"
+#include <algorithm>
+#include <cstdint>
 #include <set>
 #include <string>
 #include <thread>
@@ -12,6 +14,7 @@
 #include "RixPattern.h"
 #include "RixPredefinedStrings.hpp"
 #include "RixShadingUtils.h"
+#include "shade/BatchMemory.h"
 #include "shade/MemoryArena.h"
 
 
@@ -372,6 +375,35 @@ TEST_CASE("the shading memory pool does not grow when batches repeat", "[memory]
     // Memory handed out is aligned and usable.
     auto* p = static_cast<double*>(arena.allocate(sizeof(double) * 8, 64));
     CHECK(reinterpret_cast<uintptr_t>(p) % 64 == 0);
+}
+
+TEST_CASE("a shading context's memory lasts as long as the context, even when asked for inside a deeper mark",
+          "[memory]") {
+    bxdflab::MemoryArena arena(4096);
+    bxdflab::MemoryArena::Mark batch = arena.mark();
+    CHECK(arena.depth() == 1);
+    bxdflab::BatchMemory context(arena);
+    int* early = context.allocArray<int>(100);  // asked for at the context's own depth
+    for (int k = 0; k < 100; ++k) early[k] = k;
+    bxdflab::MemoryArena::Mark deeper = arena.mark();  // a bounce traced from this batch
+    CHECK(arena.depth() == 2);
+    int* late = context.allocArray<int>(100);  // the context asked again from inside it
+    auto* bounce = static_cast<char*>(arena.allocate(64, 16));
+    CHECK(reinterpret_cast<std::uintptr_t>(late) % alignof(std::max_align_t) == 0);
+    for (int k = 0; k < 100; ++k) late[k] = -k;
+    CHECK((bounce < reinterpret_cast<char*>(late) || bounce >= reinterpret_cast<char*>(late + 100)));
+    arena.release(deeper);
+    CHECK(arena.depth() == 1);
+    // What the arena hands out next reuses what the deeper mark freed, and not the context's.
+    for (int round = 0; round < 64; ++round) {
+        auto* reused = static_cast<int*>(arena.allocate(50 * sizeof(int), 16));
+        std::fill(reused, reused + 50, 7777);
+    }
+    bool intact = true;
+    for (int k = 0; k < 100; ++k) intact = intact && early[k] == k && late[k] == -k;
+    CHECK(intact);
+    arena.release(batch);
+    CHECK(arena.depth() == 0);
 }
 
 TEST_CASE("lobes are told apart by kind and light path expression id, as in RenderMan", "[api]") {

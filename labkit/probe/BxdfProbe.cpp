@@ -9,6 +9,7 @@
 #include "RixBxdfScratch.h"
 #include "scene/SceneBuilder.h"
 #include "shade/BxdfInstance.h"
+#include "shade/BatchMemory.h"
 #include "shade/MemoryArena.h"
 #include "shade/PluginLoader.h"
 #include "shade/PluginSearchPath.h"
@@ -43,7 +44,7 @@ class ProbeShadingContext final : public RixShadingContext {
 public:
     ProbeShadingContext(BxdfInstance const& material, std::vector<ProbePoint> const& points, MemoryArena& arena,
                         RixInterface* messages, std::optional<int> firstShare, bool coloursOnly)
-        : m_material(material), m_arena(arena), m_messages(messages), m_firstShare(firstShare),
+        : m_material(material), m_memory(arena), m_messages(messages), m_firstShare(firstShare),
           m_coloursOnly(coloursOnly) {
         numPts = static_cast<int>(points.size());
         auto n = static_cast<size_t>(numPts);
@@ -88,9 +89,9 @@ protected:
     RixSCDetail PrimVar(RtUString const name, RixSCType wanted, void const** result, RtFloat const** radius,
                         void const* fill) const override {
         bool const st = wanted == k_RixSCFloat2 && name == RtUString("st");
-        float* values = fill || st ? primvarValues(wanted, fill, numPts, m_arena) : nullptr;
+        float* values = fill || st ? primvarValues(wanted, fill, numPts, m_memory) : nullptr;
         *result = values;
-        if (radius) *radius = values ? primvarValues(k_RixSCFloat, nullptr, numPts, m_arena) : nullptr;
+        if (radius) *radius = values ? primvarValues(k_RixSCFloat, nullptr, numPts, m_memory) : nullptr;
         if (!st) return k_RixSCInvalidDetail;
         for (int i = 0; i < numPts; ++i) {
             values[2 * i] = static_cast<float const*>(m_builtins[k_s])[i];
@@ -118,13 +119,13 @@ protected:
     RixSCDetail Param(int id, int arrayIndex, RixSCType wanted, size_t elementSize, void const** result,
                       void const* dflt, bool promote) const override {
         RixSCDetail detail = evalUniformParam(m_material.params(), {id, arrayIndex, wanted, elementSize, dflt, promote},
-                                              result, numPts, m_arena);
+                                              result, numPts, m_memory);
         bool const scaled = wanted == k_RixSCColor || (wanted == k_RixSCFloat && !m_coloursOnly);
         bool const turned = !m_coloursOnly && (wanted == k_RixSCVector || wanted == k_RixSCNormal);
         if (!m_firstShare || !promote || !*result || !(scaled || turned)) return detail;
         size_t const floats = elementSize / sizeof(float), count = floats * static_cast<size_t>(numPts);
         auto const* same = static_cast<float const*>(*result);
-        float* varied = m_arena.allocArray<float>(count);
+        float* varied = m_memory.allocArray<float>(count);
         for (size_t k = 0; k < count; ++k) {
             float const share = BxdfProbe::varyingShare(static_cast<int>(k / floats) + *m_firstShare);
             // A direction scaled is the same direction: a vector is turned instead,
@@ -139,7 +140,7 @@ protected:
         return m_material.params().describe(id, type, cinfo, arrayLength);
     }
     void* Allocate(size_t bytes, size_t alignment) const override {
-        auto* block = static_cast<unsigned char*>(m_arena.allocate(bytes + kGuardBytes, alignment));
+        auto* block = static_cast<unsigned char*>(m_memory.allocate(bytes + kGuardBytes, alignment));
         std::memset(block, kPoisonByte, bytes);
         std::memset(block + bytes, kGuardByte, kGuardBytes);
         m_guards.push_back(block + bytes);
@@ -158,7 +159,7 @@ private:
     static constexpr size_t kGuardBytes = 64;  // a whole colour or vector and then some, past any array
     static constexpr unsigned char kGuardByte = 0xA5;
     BxdfInstance const& m_material;
-    MemoryArena& m_arena;
+    mutable BatchMemory m_memory;
     RixInterface* m_messages;
     std::optional<int> m_firstShare;  ///< set: parameters vary per point, point 0 taking this share
     bool m_coloursOnly;               ///< only colours vary

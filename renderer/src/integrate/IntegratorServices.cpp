@@ -13,9 +13,9 @@ namespace {
 float shadowReach(float distance) { return std::isinf(distance) ? kInfinity : distance * (1.0f - 1e-4f); }
 
 /// Where and when rays leaving the points of a batch start: pushed off each surface, at the
-/// shutter time the point was seen at. Make one before taking a mark of the arena: the context
-/// computes what it is asked for the first time (its shutter times, most often) in that arena, and
-/// keeps it for the rest of its life, so it must not be released with the mark.
+/// shutter time the point was seen at. Make one before taking a mark of the arena: what the
+/// context computes when first asked (its shutter times, most often) then comes from the arena
+/// itself, not from the slower memory of its own it takes inside a deeper mark (BatchMemory).
 class RayStarts {
 public:
     explicit RayStarts(RixShadingContext const& ctx) {

@@ -53,6 +53,7 @@ MemoryArena::Allocation MemoryArena::takeLarge(size_t size) {
 void MemoryArena::release(Mark const& m) {
     m_current = m.block;
     m_offset = m.offset;
+    m_depth = m.depth;
     while (m_large.size() > m.large) {
         m_spare.push_back(std::move(m_large.back()));
         m_large.pop_back();

@@ -27,14 +27,19 @@ public:
 
     /// A position in the arena. release(mark) frees everything allocated
     /// after mark() was taken, so nested users (a path tracer's bounces) can
-    /// free their own memory while an outer batch's stays valid.
+    /// free their own memory while an outer batch's stays valid. Marks nest:
+    /// each is released before the one taken ahead of it.
     struct Mark {
         size_t block = 0, offset = 0, large = 0;
+        size_t depth = 0;  ///< depth() when the mark was taken
     };
-    Mark mark() const { return {m_current, m_offset, m_large.size()}; }
+    Mark mark() { return {m_current, m_offset, m_large.size(), m_depth++}; }
     void release(Mark const& m);
     /// Frees everything (keeps the blocks for reuse).
     void reset() { release(Mark{}); }
+    /// How many marks are taken and not yet released: memory allocated now is
+    /// freed when the innermost of them is.
+    size_t depth() const { return m_depth; }
 
     /// Bytes currently held from the system (blocks, large allocations and
     /// released large allocations kept for reuse).
@@ -54,6 +59,7 @@ private:
     std::vector<Allocation> m_spare;   ///< released large allocations, reused by later large requests
     size_t m_current = 0;              ///< index of the block being filled
     size_t m_offset = 0;               ///< bytes used in it
+    size_t m_depth = 0;                ///< marks taken and not released
 };
 
 }  // namespace bxdflab

@@ -16,8 +16,8 @@ bool isTriple(RixSCType type) {
     return type == k_RixSCPoint || type == k_RixSCVector || type == k_RixSCNormal || type == k_RixSCColor;
 }
 
-void const* replicate(void const* value, size_t elementSize, int count, MemoryArena& arena) {
-    auto* out = static_cast<std::byte*>(arena.allocate(elementSize * static_cast<size_t>(count), 16));
+void const* replicate(void const* value, size_t elementSize, int count, BatchMemory& memory) {
+    auto* out = static_cast<std::byte*>(memory.allocate(elementSize * static_cast<size_t>(count), 16));
     for (int i = 0; i < count; ++i) std::memcpy(out + elementSize * static_cast<size_t>(i), value, elementSize);
     return out;
 }
@@ -41,14 +41,14 @@ bool isFloatBuiltin(RixShadingContext::BuiltinId id) {
 }
 
 RixSCDetail evalUniformParam(NodeParams const& node, ParamQuery const& query, void const** result, int numPts,
-                             MemoryArena& arena) {
+                             BatchMemory& memory) {
     int const id = query.id, arrayIndex = query.arrayIndex;
     RixSCType const wanted = query.wanted;
     size_t const elementSize = query.elementSize;
     void const* const dflt = query.dflt;
     bool const promote = query.promote;
     auto fallback = [&](RixSCDetail detail) {
-        *result = promote && dflt ? replicate(dflt, elementSize, numPts, arena) : dflt;
+        *result = promote && dflt ? replicate(dflt, elementSize, numPts, memory) : dflt;
         return detail;
     };
     ParamValue const* value = node.value(id);
@@ -74,7 +74,7 @@ RixSCDetail evalUniformParam(NodeParams const& node, ParamQuery const& query, vo
         }
     }
     if (!source) return fallback(k_RixSCInvalidDetail);
-    *result = promote ? replicate(source, elementSize, numPts, arena) : source;
+    *result = promote ? replicate(source, elementSize, numPts, memory) : source;
     return k_RixSCUniform;
 }
 
@@ -85,7 +85,7 @@ ShadingContextImpl::ShadingContextImpl(Scene const& scene, BxdfInstance const& m
       m_material(material),
       m_hits(hits),
       m_pixelSpread(pixelSpread),
-      m_arena(arena),
+      m_memory(arena),
       m_messages(messages),
       m_counters(counters),
       m_textures(textures) {
@@ -93,10 +93,10 @@ ShadingContextImpl::ShadingContextImpl(Scene const& scene, BxdfInstance const& m
 }
 
 void ShadingContextImpl::computeSurfaceGroup() const {
-    auto* P = m_arena.allocArray<RtPoint3>(static_cast<size_t>(numPts));
-    auto* Nn = m_arena.allocArray<RtNormal3>(static_cast<size_t>(numPts));
-    auto* Ngn = m_arena.allocArray<RtNormal3>(static_cast<size_t>(numPts));
-    auto* biasR = m_arena.allocArray<float>(static_cast<size_t>(numPts));
+    auto* P = m_memory.allocArray<RtPoint3>(static_cast<size_t>(numPts));
+    auto* Nn = m_memory.allocArray<RtNormal3>(static_cast<size_t>(numPts));
+    auto* Ngn = m_memory.allocArray<RtNormal3>(static_cast<size_t>(numPts));
+    auto* biasR = m_memory.allocArray<float>(static_cast<size_t>(numPts));
     for (int i = 0; i < numPts; ++i) {
         SurfaceBasics b = m_scene.shapes[m_hits[i].geomID]->basics(m_hits[i]);
         P[i] = toRt(b.P);
@@ -116,7 +116,7 @@ void ShadingContextImpl::computeSurfaceGroup() const {
 
 void ShadingContextImpl::computeParameterGroup() const {
     float* uvst[4];
-    for (auto& array : uvst) array = m_arena.allocArray<float>(static_cast<size_t>(numPts));
+    for (auto& array : uvst) array = m_memory.allocArray<float>(static_cast<size_t>(numPts));
     for (int i = 0; i < numPts; ++i) {
         Shape const& shape = *m_scene.shapes[m_hits[i].geomID];
         SurfaceParameters p = shape.parameters(m_hits[i]);
@@ -139,9 +139,9 @@ void ShadingContextImpl::computeParameterGroup() const {
 }
 
 void ShadingContextImpl::computeView() const {
-    auto* Vn = m_arena.allocArray<RtVector3>(static_cast<size_t>(numPts));
-    auto* VLen = m_arena.allocArray<float>(static_cast<size_t>(numPts));
-    auto* PRadius = m_arena.allocArray<float>(static_cast<size_t>(numPts));
+    auto* Vn = m_memory.allocArray<RtVector3>(static_cast<size_t>(numPts));
+    auto* VLen = m_memory.allocArray<float>(static_cast<size_t>(numPts));
+    auto* PRadius = m_memory.allocArray<float>(static_cast<size_t>(numPts));
     for (int i = 0; i < numPts; ++i) {
         float len = glm::length(m_hits[i].dir);
         Vn[i] = toRt(-m_hits[i].dir / len);
@@ -158,11 +158,11 @@ void ShadingContextImpl::computeTangentGroup() const {
     if (!m_builtins[k_VLen]) computeView();
     auto const* Nn = static_cast<RtNormal3 const*>(m_builtins[k_Nn]);
     auto const* VLen = static_cast<float const*>(m_builtins[k_VLen]);
-    auto* dPdu = m_arena.allocArray<RtVector3>(static_cast<size_t>(numPts));
-    auto* dPdv = m_arena.allocArray<RtVector3>(static_cast<size_t>(numPts));
-    auto* Tn = m_arena.allocArray<RtVector3>(static_cast<size_t>(numPts));
-    auto* du = m_arena.allocArray<float>(static_cast<size_t>(numPts));
-    auto* dv = m_arena.allocArray<float>(static_cast<size_t>(numPts));
+    auto* dPdu = m_memory.allocArray<RtVector3>(static_cast<size_t>(numPts));
+    auto* dPdv = m_memory.allocArray<RtVector3>(static_cast<size_t>(numPts));
+    auto* Tn = m_memory.allocArray<RtVector3>(static_cast<size_t>(numPts));
+    auto* du = m_memory.allocArray<float>(static_cast<size_t>(numPts));
+    auto* dv = m_memory.allocArray<float>(static_cast<size_t>(numPts));
     for (int i = 0; i < numPts; ++i) {
         SurfaceTangents t = m_scene.shapes[m_hits[i].geomID]->tangents(m_hits[i]);
         dPdu[i] = toRt(t.dPdu);
@@ -202,14 +202,14 @@ int ShadingContextImpl::Builtin(BuiltinId id, RixSCType wanted, void const** res
             case k_s:
             case k_t: computeParameterGroup(); break;
             case k_dPdtime: {
-                auto* velocity = m_arena.allocArray<RtVector3>(static_cast<size_t>(numPts));
+                auto* velocity = m_memory.allocArray<RtVector3>(static_cast<size_t>(numPts));
                 for (int i = 0; i < numPts; ++i)
                     velocity[i] = toRt(m_scene.shapes[m_hits[i].geomID]->velocity(m_hits[i]));
                 m_builtins[id] = velocity;
                 break;
             }
             case k_time: {
-                auto* time = m_arena.allocArray<RtFloat>(static_cast<size_t>(numPts));
+                auto* time = m_memory.allocArray<RtFloat>(static_cast<size_t>(numPts));
                 for (int i = 0; i < numPts; ++i) time[i] = m_hits[i].time;
                 m_builtins[id] = time;
                 break;
@@ -242,14 +242,14 @@ RixSCDetail ShadingContextImpl::evalParam(NodeParams const& node, int id, int ar
                 *result = out->value;
                 return k_RixSCVarying;
             }
-            *result = promote ? replicate(out->value, elementSize, numPts, m_arena) : out->value;
+            *result = promote ? replicate(out->value, elementSize, numPts, m_memory) : out->value;
             return k_RixSCUniform;
         }
     }
     if (!link && !m_scene.primvarNames.empty() &&
         primvarOverride(node, id, wanted, elementSize, result, dflt) == k_RixSCVarying)
         return k_RixSCVarying;
-    return evalUniformParam(node, {id, arrayIndex, wanted, elementSize, dflt, promote}, result, numPts, m_arena);
+    return evalUniformParam(node, {id, arrayIndex, wanted, elementSize, dflt, promote}, result, numPts, m_memory);
 }
 
 RixSCDetail ShadingContextImpl::primvarOverride(NodeParams const& node, int id, RixSCType wanted, size_t elementSize,
@@ -259,8 +259,8 @@ RixSCDetail ShadingContextImpl::primvarOverride(NodeParams const& node, int id, 
     if (!numeric || !*name || !m_scene.primvarNames.count(name)) return k_RixSCInvalidDetail;
     int const components = static_cast<int>(elementSize / sizeof(float));
     void const* own = nullptr;
-    evalUniformParam(node, {id, -1, wanted, elementSize, dflt, false}, &own, numPts, m_arena);
-    float* values = m_arena.allocArray<float>(static_cast<size_t>(numPts * components));
+    evalUniformParam(node, {id, -1, wanted, elementSize, dflt, false}, &own, numPts, m_memory);
+    float* values = m_memory.allocArray<float>(static_cast<size_t>(numPts * components));
     bool found = false;
     for (int i = 0; i < numPts; ++i) {
         float* out = values + i * components;
@@ -397,9 +397,9 @@ bool primvarMatches(Primvar const& var, RixSCType wanted) {
 
 }  // namespace
 
-float* primvarValues(RixSCType wanted, void const* fill, int numPts, MemoryArena& arena) {
+float* primvarValues(RixSCType wanted, void const* fill, int numPts, BatchMemory& memory) {
     int const components = valuesPerElement(wanted);
-    float* values = arena.allocArray<float>(static_cast<size_t>(numPts * components));
+    float* values = memory.allocArray<float>(static_cast<size_t>(numPts * components));
     for (int i = 0; i < numPts; ++i)
         for (int c = 0; c < components; ++c)
             values[i * components + c] = fill ? static_cast<float const*>(fill)[c] : 0.0f;
@@ -411,10 +411,10 @@ RixSCDetail ShadingContextImpl::PrimVar(RtUString const name, RixSCType wanted, 
     *result = nullptr;
     int const components = valuesPerElement(wanted);
     std::string const wantedName = name.CStr() ? name.CStr() : "";
-    float* values = primvarValues(wanted, fill, numPts, m_arena);
+    float* values = primvarValues(wanted, fill, numPts, m_memory);
     // Primvars here have no filter width: a radius asked for is zero, made only once there is a value.
     auto zeroRadius = [&] {
-        if (radius) *radius = primvarValues(k_RixSCFloat, nullptr, numPts, m_arena);
+        if (radius) *radius = primvarValues(k_RixSCFloat, nullptr, numPts, m_memory);
     };
     if (wanted == k_RixSCFloat2 && wantedName == "st") {
         // Every surface has texture coordinates, as in RenderMan: the builtins

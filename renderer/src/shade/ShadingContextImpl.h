@@ -18,6 +18,7 @@
 #include "RixShading.h"
 #include "scene/Scene.h"
 #include "RixPattern.h"
+#include "shade/BatchMemory.h"
 #include "shade/BxdfInstance.h"
 #include "shade/MemoryArena.h"
 #include "shade/PatternInstance.h"
@@ -38,11 +39,11 @@ struct ParamQuery {
 /// batch of numPts points, ignoring connections (shared by every
 /// RixShadingContext the renderer builds, the probe's included).
 RixSCDetail evalUniformParam(NodeParams const& node, ParamQuery const& query, void const** result, int numPts,
-                             MemoryArena& arena);
+                             BatchMemory& memory);
 
 /// numPts values of a primvar's type, each `fill` (or zeros without one):
 /// GetPrimVar's answer before the shapes give theirs.
-float* primvarValues(RixSCType wanted, void const* fill, int numPts, MemoryArena& arena);
+float* primvarValues(RixSCType wanted, void const* fill, int numPts, BatchMemory& memory);
 
 /// Whether a builtin is one float per point (the others are three).
 bool isFloatBuiltin(RixShadingContext::BuiltinId id);
@@ -89,7 +90,7 @@ protected:
     int Builtin(BuiltinId id, RixSCType wanted, void const** result) const override;
     RixSCDetail Param(int id, int arrayIndex, RixSCType wanted, size_t elementSize, void const** result,
                       void const* dflt, bool promote) const override;
-    void* Allocate(size_t bytes, size_t alignment) const override { return m_arena.allocate(bytes, alignment); }
+    void* Allocate(size_t bytes, size_t alignment) const override { return m_memory.allocate(bytes, alignment); }
     int ParamInfo(int id, RixSCType* type, RixSCConnectionInfo* cinfo, int* arrayLength) const override;
     int TransformValues(TransformInterpretation interpretation, RtUString const fromSpace, RtUString const toSpace,
                         RtFloat3* values, RtFloat* radius) const override;
@@ -117,7 +118,7 @@ private:
     BxdfInstance const& m_material;
     HitRecord const* m_hits;
     float m_pixelSpread;
-    MemoryArena& m_arena;
+    mutable BatchMemory m_memory;  ///< everything the context hands out
     RixInterface* m_messages;
     BuiltinCounters& m_counters;
     mutable void* m_builtins[k_numBuiltins] = {};
