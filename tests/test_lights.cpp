@@ -665,6 +665,47 @@ TEST_CASE("a file lit by classic light shaders and naming no integrator renders 
     CHECK(ris.stats.integrator == "PxrDefault");
 }
 
+TEST_CASE("in a file lit by classic light shaders a surface given no shader is PRMan's defaultsurface",
+          "[lights][classic]") {
+    // defaultsurface: Cs (Ka + Kd (I.N)^2) with Ka 0.2 and Kd 0.8, lit by no light. A wall facing the
+    // camera shows its Color whether or not the file's light reaches it; the same wall seen at 60
+    // degrees shows 0.2 + 0.8 / 4 of it.
+    std::string const head = "Format 8 8 1\nProjection \"orthographic\"\nScreenWindow -0.01 0.01 -0.01 0.01\nWorldBegin\n";
+    std::string const wall = "Color [0.3 0.6 0.9]\nPolygon \"P\" [-10 -10 5  10 -10 5  10 10 5  -10 10 5]\n";
+    std::string const light = "LightSource \"distantlight\" 1 \"intensity\" [0.7]\n";
+    auto mean = [](test::RenderOutcome const& r, int c) {
+        return test::meanChannel(r, c, [](int, int) { return true; });
+    };
+    RenderSettings settings;
+    settings.spp = 4;
+    // Before its light, off the wall's light list: with RIS's PxrDiffuse it was black.
+    auto before = test::renderRib(head + wall + light + "WorldEnd\n", settings);
+    CHECK(before.stats.integrator == "PxrDirectLighting");
+    CHECK(mean(before, 0) == Approx(0.3).epsilon(1e-3));
+    CHECK(mean(before, 1) == Approx(0.6).epsilon(1e-3));
+    CHECK(mean(before, 2) == Approx(0.9).epsilon(1e-3));
+    // After it, lit by it: still only its Color, the light adds nothing.
+    auto after = test::renderRib(head + light + wall + "WorldEnd\n", settings);
+    CHECK(mean(after, 1) == Approx(0.6).epsilon(1e-3));
+    // Turned 60 degrees about y: (I.N)^2 = 1/4.
+    auto turned = test::renderRib(head + light + "Translate 0 0 5\nRotate 60 0 1 0\nTranslate 0 0 -5\n" + wall +
+                                      "WorldEnd\n",
+                                  settings);
+    CHECK(mean(turned, 1) == Approx(0.6 * (0.2 + 0.8 * 0.25)).epsilon(1e-3));
+    // A shape's own Cs takes the Color's place.
+    auto own = test::renderRib(head + light +
+                                   "Polygon \"P\" [-10 -10 5  10 -10 5  10 10 5  -10 10 5] \"Cs\" [1 0 0  1 0 0  1 0 0  1 0 0]\n"
+                                   "WorldEnd\n",
+                               settings);
+    CHECK(mean(own, 0) == Approx(1.0).epsilon(1e-3));
+    CHECK(mean(own, 1) == 0.0);
+    // A file without classic lights keeps RenderMan's RIS default: PxrDiffuse under PxrDefault's headlight.
+    auto ris = test::renderRib(head + wall + "WorldEnd\n", settings);
+    CHECK(ris.stats.integrator == "PxrDefault");
+    CHECK(mean(ris, 1) == Approx(0.6).epsilon(0.02));
+    CHECK(mean(ris, 0) / mean(ris, 1) == Approx(0.5).epsilon(1e-3));
+}
+
 TEST_CASE("a classic arealight gives what a point light of its intensity would, whatever its size", "[lights][classic]") {
     // BMRT's arealight sends intensity / d^2 from each point it samples: a small square 5 units from a
     // matte surface gives it intensity / 25 at any size.

@@ -455,6 +455,12 @@ void SceneBuilder::finishFrame() {
                 checkTexture(p.strings[0], p.location, "Pattern \"" + node.plugin + "\" \"" + node.handle + "\"",
                              image->second);
     }
+    // A file lit by classic light shaders and naming no integrator was written for RenderMan before
+    // RIS, whose surface shaders gathered those lights: PxrDirectLighting renders it that way, where
+    // RIS's PxrDefault would light it from the camera and leave its lights unused. Its shapes given
+    // no shader were PRMan's defaultsurface then.
+    bool const classicLit = !m_scene.integrator.given && m_firstClassicLight && !m_scene.lights.empty();
+    if (classicLit) shadeUnshadedAsClassic();
     // The classic shaders' ambient term sums every ambientlight of the world, wherever it was given.
     for (MaterialDesc& material : m_scene.materials)
         if (material.plugin == "ClassicSurface")
@@ -465,10 +471,7 @@ void SceneBuilder::finishFrame() {
             std::to_string(m_shapesOutsideDetail) +
             (m_shapesOutsideDetail == 1 ? " shape is a representation" : " shapes are representations") +
             " that DetailRange does not draw at its model's detail (level of detail)");
-    // A file lit by classic light shaders and naming no integrator was written for RenderMan before
-    // RIS, whose surface shaders gathered those lights: PxrDirectLighting renders it that way, where
-    // RIS's PxrDefault would light it from the camera and leave its lights unused.
-    if (!m_scene.integrator.given && m_firstClassicLight && !m_scene.lights.empty()) {
+    if (classicLit) {
         m_scene.integrator.name = "PxrDirectLighting";
         m_scene.integrator.where = *m_firstClassicLight;
         m_diagnostics.info(m_firstClassicLight->str() +
@@ -520,6 +523,7 @@ void SceneBuilder::finishFrame() {
     m_scene.lightLinks.clear();
     m_scene.dropped.clear();
     m_defaultMaterials.clear();
+    m_unshaded.clear();
     m_emissiveMaterials.clear();
     m_lightHandles.clear();
     for (auto& a : m_attributes) a.material = -1;

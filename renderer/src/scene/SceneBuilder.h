@@ -310,6 +310,9 @@ private:
     int defaultMaterial();
     /// The default material of a shape with "Cs" primvars: the classic matte shader, which reads them.
     int primvarColorMaterial();
+    /// In a world lit by classic light shaders, the materials of shapes given no shader at all
+    /// become PRMan's defaultsurface, as they were before RIS.
+    void shadeUnshadedAsClassic();
     /// The material of the classic Surface shader in effect, with the current Color.
     int classicMaterial();
     /// With an area light in effect, a shape that has a light of its own kind (a
@@ -469,6 +472,12 @@ private:
     bool m_archiveMissing = false;  // an archive was not found: objects it defined may be missing too
     int m_archivesNotFound = 0;     // the first few list the places tried, the rest one line each
     std::map<std::string, int> m_defaultMaterials;
+    /// The materials of shapes given no Surface and no Bxdf, with the Color and Opacity then in effect.
+    struct Unshaded {
+        int material;
+        Vec3 color, opacity;
+    };
+    std::vector<Unshaded> m_unshaded;
     std::map<std::string, int> m_patternHandles;  ///< handle -> the latest Pattern of that name
     std::map<std::shared_ptr<AreaLightDesc>, int> m_emissiveMaterials;
     std::map<std::string, Mat4> m_namedSpaces;  ///< CoordinateSystem

@@ -256,6 +256,8 @@ int SceneBuilder::primvarColorMaterial() {
     state().surface = matte;
     int index = classicMaterial();
     state().surface = saved;
+    if (m_unshaded.empty() || m_unshaded.back().material != index)
+        m_unshaded.push_back({index, state().color, state().opacity});
     return index;
 }
 
@@ -282,7 +284,25 @@ int SceneBuilder::defaultMaterial() {
     int index = static_cast<int>(m_scene.materials.size());
     m_scene.materials.push_back(std::move(material));
     m_defaultMaterials[key] = index;
+    m_unshaded.push_back({index, c, o});
     return index;
+}
+
+void SceneBuilder::shadeUnshadedAsClassic() {
+    // PRMan shaded a surface given no shader with its defaultsurface: lit by no light, brighter
+    // where it faces the camera. RIS's PxrDiffuse in its place would leave a shape the file's lights
+    // do not reach (its own light list, or none of them) black.
+    for (Unshaded const& unshaded : m_unshaded) {
+        MaterialDesc& material = m_scene.materials[static_cast<size_t>(unshaded.material)];
+        SourceLocation const where = material.where;
+        material = MaterialDesc();
+        material.plugin = "ClassicSurface";
+        material.handle = "default material (defaultsurface, RenderMan's before RIS)";
+        material.where = where;
+        material.params.add(stringParam("shader", "defaultsurface"));
+        material.params.add(colorParam("surfaceColor", unshaded.color));
+        material.params.add(colorParam("surfaceOpacity", unshaded.opacity));
+    }
 }
 
 void SceneBuilder::makeLightFrom(std::string const& request, std::string const& type, std::string const& handle,
