@@ -312,6 +312,15 @@ TEST_CASE("ColorSamples: colours are written with its numbers and read as the RG
     CHECK_THROWS_WITH(
         test::parseRib("ColorSamples [1 1 1] [1 1]\n", diagnostics),
         Catch::Matchers::Contains("ColorSamples needs nRGB and RGBn of 3 numbers per colour sample each"));
+    // An option, it ends with its frame: the next frame writes colours as RGB again.
+    LoadOptions second;
+    second.frame = 2;
+    Scene after = test::parseRib("FrameBegin 1\nColorSamples [1 1 1] [.3 .59 .11]\nWorldBegin\nColor [0.5]\n"
+                                 "Surface \"matte\"\nSphere 1 -1 1 360\nWorldEnd\nFrameEnd\n"
+                                 "FrameBegin 2\nWorldBegin\nColor [0.1 0.2 0.3]\nSurface \"matte\"\n"
+                                 "Sphere 1 -1 1 360\nWorldEnd\nFrameEnd\n",
+                                 diagnostics, "frames.rib", second);
+    CHECK(materialOf(after, 0).params.getColor("surfaceColor", Vec3(0)) == Vec3(0.1f, 0.2f, 0.3f));
 }
 
 TEST_CASE("classic Surface shaders become the ClassicSurface Bxdf with the Color in effect, a Bxdf wins", "[rib]") {

@@ -61,7 +61,11 @@ int RequestReader::integer(const char* what) {
 
 Vec3 RequestReader::color(const char* what) {
     ColorSamples const& samples = m_declarations.colorSamples();
-    return samples.rgb(numbers(samples.count, what).data());
+    // Under ColorSamples a colour is written as its samples, not as red, green and blue.
+    std::string const named = samples.toRGB.empty() ? std::string(what)
+                                                    : "a colour of " + std::to_string(samples.count) +
+                                                          " ColorSamples";
+    return samples.rgb(numbers(samples.count, named.c_str()).data());
 }
 
 std::vector<float> RequestReader::numbers(size_t count, const char* what) {
@@ -69,7 +73,8 @@ std::vector<float> RequestReader::numbers(size_t count, const char* what) {
     if (!atEnd() && m_request.args[m_next].kind == RibValue::Kind::NumberArray) {
         RibValue const& v = take(what, "numbers");
         if (v.numbers.size() != count)
-            fail(v.where, std::string("expected ") + std::to_string(count) + " numbers for " + what + ", found " +
+            fail(v.where, std::string("expected ") + std::to_string(count) + (count == 1 ? " number" : " numbers") +
+                              " for " + what + ", found " +
                               std::to_string(v.numbers.size()));
         for (double d : v.numbers) out.push_back(static_cast<float>(d));
     } else {

@@ -501,6 +501,7 @@ private:
     struct SavedFrame {
         SceneOptions options;
         std::vector<Attributes> attributes;
+        ColorSamples colorSamples;  ///< an option too, though kept with the declarations
     };
     std::vector<SavedFrame> m_frames;
     /// An open IfBegin block.

@@ -576,7 +576,7 @@ void SceneBuilder::frameBegin(RequestReader& in) {
     int number = in.atEnd() ? static_cast<int>(m_frames.size()) : in.integer("frame number");
     in.finish();
     // A frame's options and state are its own: FrameEnd restores those before it.
-    m_frames.push_back({static_cast<SceneOptions const&>(m_scene), m_attributes});
+    m_frames.push_back({static_cast<SceneOptions const&>(m_scene), m_attributes, m_declarations.colorSamples()});
     m_frameNumber = number;
 }
 
@@ -590,6 +590,7 @@ void SceneBuilder::frameEnd(RequestReader& in) {
     }
     static_cast<SceneOptions&>(m_scene) = m_frames.back().options;
     m_attributes = m_frames.back().attributes;
+    m_declarations.setColorSamples(m_frames.back().colorSamples);
     m_frames.pop_back();
     m_frameNumber = m_frames.empty() ? -1 : m_frameNumber;
 }
