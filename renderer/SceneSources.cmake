@@ -49,6 +49,7 @@ set(RIX_SCENE_SOURCES
   scene/shapes/CurvePrimvars.cpp
   scene/shapes/Curves.cpp
   scene/shapes/NurbsSurface.cpp
+  scene/shapes/TrimCurves.cpp
   scene/shapes/BlobbySurface.cpp
   scene/lights/AreaLights.cpp
   scene/lights/MeshLight.cpp

@@ -1823,3 +1823,43 @@ TEST_CASE("dicing controls and 8-bit or float quantizing are accepted without a 
     CHECK_THROWS_WITH(test::parseRib("WorldBegin\nShadingInterpolation \"bumpy\"\nWorldEnd\n", diagnostics),
                       Catch::Contains("test.rib:2:1") && Catch::Contains("\"constant\" or \"smooth\""));
 }
+
+TEST_CASE("TrimCurve cuts a NuPatch where its loops say, for camera and shadow rays alike", "[rib][geometry]") {
+    // A 2 x 2 patch at z = 5, (u, v) = ((x + 1) / 2, (y + 1) / 2): an outer loop around its whole
+    // domain (linear) and a circle of radius 0.25 about its middle (rational quadratic, u and v
+    // written times w, as homogeneous points are). The odd winding rule keeps the ring between them,
+    // so a disk of radius 0.5 in the middle is cut out.
+    std::string const trim = "TrimCurve [1 1] [2 3] [0 0 1 2 3 4 4  0 0 0 .25 .25 .5 .5 .75 .75 1 1 1] [0 0] [4 1] [5 9]\n"
+                             "  [0 1 1 0 0  0.75 0.53033 0.5 0.176777 0.25 0.176777 0.5 0.53033 0.75]\n  [0 0 1 1 0  0.5 0.53033 0.75 0.53033 0.5 0.176777 0.25 0.176777 0.5]\n  [1 1 1 1 1  1 0.707107 1 0.707107 1 0.707107 1 0.707107 1]\n";
+    std::string const patch = "NuPatch 2 2 [0 0 1 1] 0 1 2 2 [0 0 1 1] 0 1 \"P\" [-1 -1 5  1 -1 5  -1 1 5  1 1 5]\n";
+    CHECK(distanceAlongZ(patch, Vec3(0.0f)) == Approx(5.0f));
+    CHECK(distanceAlongZ(trim + patch, Vec3(0.0f)) == -1.0f);
+    CHECK(distanceAlongZ(trim + patch, Vec3(0.45f, 0.0f, 0.0f)) == -1.0f);  // just inside the circle
+    CHECK(distanceAlongZ(trim + patch, Vec3(0.0f, -0.45f, 0.0f)) == -1.0f);
+    CHECK(distanceAlongZ(trim + patch, Vec3(0.55f, 0.0f, 0.0f)) == Approx(5.0f));  // just outside it
+    CHECK(distanceAlongZ(trim + patch, Vec3(0.36f, 0.36f, 0.0f)) == Approx(5.0f));  // 0.509 from the middle
+    CHECK(distanceAlongZ(trim + patch, Vec3(0.34f, 0.34f, 0.0f)) == -1.0f);        // 0.481
+    // "sense" "outside" keeps the disk alone.
+    std::string const outside = "Attribute \"trimcurve\" \"sense\" \"outside\"\n";
+    CHECK(distanceAlongZ(outside + trim + patch, Vec3(0.0f)) == Approx(5.0f));
+    CHECK(distanceAlongZ(outside + trim + patch, Vec3(0.7f, 0.0f, 0.0f)) == -1.0f);
+    // An attribute: a patch after the block that gave it is whole.
+    CHECK(distanceAlongZ("AttributeBegin\n" + trim + "AttributeEnd\n" + patch, Vec3(0.0f)) == Approx(5.0f));
+
+    // Shadow rays pass through the hole and stop on the ring.
+    Diagnostics diagnostics(false);
+    Scene scene = test::parseRib("WorldBegin\n" + trim + patch, diagnostics);
+    RayTracer tracer(scene);
+    RayCounts counts;
+    CHECK_FALSE(tracer.occluded(Vec3(0.0f), Vec3(0, 0, 1), 0.0f, 10.0f, 0.0f, counts));
+    CHECK(tracer.occluded(Vec3(0.7f, 0.0f, 0.0f), Vec3(0, 0, 1), 0.0f, 10.0f, 0.0f, counts));
+
+    // Arrays that do not fit together are an error at the request.
+    CHECK_THROWS_WITH(test::parseRib("WorldBegin\nTrimCurve [1] [2] [0 0 1 1] [0] [1] [2] [0 1] [0 1] [1]\n",
+                                     diagnostics),
+                      Catch::Matchers::Contains("test.rib:2:1") &&
+                          Catch::Matchers::Contains("u, v and w need one value per control point (2)"));
+    CHECK_THROWS_WITH(test::parseRib("WorldBegin\nTrimCurve [1] [2] [0 0 1] [0] [1] [2] [0 1] [0 1] [1 1]\n",
+                                     diagnostics),
+                      Catch::Matchers::Contains("knot needs 4 values, got 3"));
+}

@@ -99,6 +99,16 @@ void refuseHoleHits(const RTCFilterFunctionNArguments* args) {
             args->valid[i] = 0;
 }
 
+/// A trimmed NuPatch is tessellated whole; hits where its trim curves cut it away are refused, so
+/// its edges follow the curves exactly, for every kind of ray.
+void refuseTrimmedHits(const RTCFilterFunctionNArguments* args) {
+    auto const* mesh = static_cast<TriangleMesh const*>(args->geometryUserPtr);
+    for (unsigned i = 0; i < args->N; ++i)
+        if (args->valid[i] == -1 && mesh->trimmedAway(RTCHitN_primID(args->hit, args->N, i),
+                                                       RTCHitN_u(args->hit, args->N, i), RTCHitN_v(args->hit, args->N, i)))
+            args->valid[i] = 0;
+}
+
 /// Embree subdivides each face until its edges span about this many segments
 /// on screen-independent terms: enough for smooth silhouettes at course sizes.
 constexpr float kTessellationRate = 6.0f;
@@ -228,6 +238,11 @@ public:
         auto* indices = static_cast<unsigned*>(rtcSetNewGeometryBuffer(
             m_geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), data.triangleCount()));
         std::memcpy(indices, data.indices.data(), data.indices.size() * sizeof(unsigned));
+        if (data.trim.loops) {
+            rtcSetGeometryUserData(m_geometry, const_cast<TriangleMesh*>(&mesh));
+            rtcSetGeometryIntersectFilterFunction(m_geometry, refuseTrimmedHits);
+            rtcSetGeometryOccludedFilterFunction(m_geometry, refuseTrimmedHits);
+        }
         rtcCommitGeometry(m_geometry);
     }
 

@@ -90,6 +90,10 @@ private:
         bool textureCoordinatesSet = false;
         std::array<float, 8> textureCoordinates{{0, 0, 1, 0, 0, 1, 1, 1}};
         SplineBasis uBasis = SplineBasis::bezier(), vBasis = SplineBasis::bezier();
+        /// TrimCurve: the loops that trim the NuPatches that follow (null: none), and
+        /// Attribute "trimcurve" "sense": whether they keep the outside of the loops.
+        std::shared_ptr<TrimLoops const> trimLoops;
+        bool trimKeepsOutside = false;
         std::map<std::string, Mat4> scopedSpaces;  ///< ScopedCoordinateSystem
         std::map<std::string, std::string> user;   ///< Attribute "user" values, which conditions read
         /// A classic Surface shader in effect (when no Bxdf is): its name and parameters.

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
 #include <optional>
+#include <stdexcept>
 
 #include "scene/SceneBuilder.h"
 #include "scene/shapes/BlobbySurface.h"
@@ -232,6 +233,7 @@ void SceneBuilder::nuPatch(RequestReader& in) {
     }
     bool flip = state().reverseOrientation != mirrors(state().transform);
     MeshData mesh = buildNurbsPatch(d, state().transform, flip, in.where());
+    if (state().trimLoops) mesh.trim = {state().trimLoops, state().trimKeepsOutside};
     addNurbsPrimvars(mesh, params, d);
     PrimvarSet vars = shapePrimvars(params);
     params.warnUnused(m_diagnostics, "NuPatch");
@@ -239,8 +241,56 @@ void SceneBuilder::nuPatch(RequestReader& in) {
 }
 
 void SceneBuilder::trimCurve(RequestReader& in) {
-    in.skipRemaining();
-    warnOnce("trim curves", in.where(), "TrimCurve is not applied: NuPatch surfaces are drawn untrimmed");
+    // RIB leaves out nloops: it is the length of ncurves.
+    std::vector<int> const ncurves = in.intArray("ncurves");
+    std::vector<int> const order = in.intArray("order");
+    std::vector<float> const knot = in.numberArray("knot");
+    std::vector<float> const min = in.numberArray("min"), max = in.numberArray("max");
+    std::vector<int> const n = in.intArray("n");
+    std::vector<float> const u = in.numberArray("u"), v = in.numberArray("v"), w = in.numberArray("w");
+    in.finish();
+    auto fail = [&](std::string const& why) { in.fail(in.where(), why); };
+    size_t curves = 0;
+    for (int c : ncurves) {
+        if (c < 0 || c > 1'000'000) fail("a loop's number of curves must be between 0 and 1000000");
+        curves += static_cast<size_t>(c);
+    }
+    if (order.size() != curves || min.size() != curves || max.size() != curves || n.size() != curves)
+        fail("order, min, max and n need one value per curve (" + std::to_string(curves) + ")");
+    size_t knots = 0, points = 0;
+    for (size_t c = 0; c < curves; ++c) {
+        if (n[c] < 1 || order[c] < 1 || n[c] > 4096 || order[c] > 64)
+            fail("curve " + std::to_string(c) + " needs 1 to 4096 points and an order from 1 to 64");
+        knots += static_cast<size_t>(n[c] + order[c]);
+        points += static_cast<size_t>(n[c]);
+    }
+    if (points > 100'000) fail("at most 100000 control points in all, got " + std::to_string(points));
+    if (knot.size() != knots) fail("knot needs " + std::to_string(knots) + " values, got " + std::to_string(knot.size()));
+    if (u.size() != points || v.size() != points || w.size() != points)
+        fail("u, v and w need one value per control point (" + std::to_string(points) + ")");
+    std::vector<std::vector<TrimCurveDesc>> loops;
+    size_t curve = 0, knotAt = 0, pointAt = 0;
+    for (int count : ncurves) {
+        std::vector<TrimCurveDesc>& loop = loops.emplace_back();
+        for (int k = 0; k < count; ++k, ++curve) {
+            TrimCurveDesc& c = loop.emplace_back();
+            c.order = order[curve];
+            c.min = min[curve];
+            c.max = max[curve];
+            size_t const pointCount = static_cast<size_t>(n[curve]);
+            c.knots.assign(knot.begin() + static_cast<long>(knotAt),
+                           knot.begin() + static_cast<long>(knotAt + pointCount + static_cast<size_t>(c.order)));
+            for (size_t i = pointAt; i < pointAt + pointCount; ++i) c.uvw.emplace_back(u[i], v[i], w[i]);
+            knotAt += pointCount + static_cast<size_t>(c.order);
+            pointAt += pointCount;
+        }
+    }
+    try {
+        auto trim = std::make_shared<TrimLoops const>(loops);
+        state().trimLoops = trim->loopCount() > 0 ? trim : nullptr;
+    } catch (std::invalid_argument const& e) {
+        fail(e.what());
+    }
 }
 
 void SceneBuilder::blobby(RequestReader& in) {

@@ -428,6 +428,15 @@ void SceneBuilder::attribute(RequestReader& in) {
         state().lightMute = params.getInt("mute", state().lightMute) != 0;
     } else if (category == "grouping") {
         if (Param const* membership = params.take("membership")) state().membership = groupNames(*membership);
+    } else if (category == "trimcurve") {
+        if (Param const* sense = params.take("sense")) {
+            std::string const which = sense->strings.empty() ? "" : sense->strings[0];
+            if (which == "inside" || which == "outside")
+                state().trimKeepsOutside = which == "outside";
+            else
+                m_diagnostics.warn(sense->location, "Attribute \"trimcurve\" \"sense\" is \"inside\" or \"outside\", not \"" +
+                                                        which + "\"; left as it was");
+        }
     } else if (category == "identifier") {
         if (Param const* name = params.take("name")) state().name = name->strings.empty() ? state().name : name->strings[0];
         for (auto const& p : params.all()) p.used = true;  // shadinggroup, id: labels only

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "scene/shapes/Shape.h"
+#include "scene/shapes/TrimCurves.h"
 
 namespace bxdflab {
 
@@ -24,6 +25,8 @@ struct MeshData {
     /// vertex, Uniform ones a value per triangle, or either is read at the
     /// mesh's uv (a patch mesh's, whose "st" then gives s and t).
     PrimvarSet primvars;
+    /// A NuPatch's trim curves, in the (u, v) of `uv` (no loops: untrimmed).
+    Trim trim;
 
     size_t triangleCount() const { return indices.size() / 3; }
     /// Appends another mesh with the same attributes.
@@ -65,6 +68,11 @@ public:
     void deform(std::shared_ptr<PointSteps const> steps) override;
     /// +1 or -1: the sign that turns (p1 - p0) x (p2 - p0) into the facet normal.
     float orientation() const { return m_orientation; }
+    /// Whether the mesh's trim curves cut away the point at barycentric (b1, b2) of triangle prim
+    /// (the ray tracer refuses hits there).
+    bool trimmedAway(unsigned prim, float b1, float b2) const {
+        return m_data.trim.loops && !m_data.trim.keeps(uvAt(prim, b1, b2));
+    }
 
 private:
     template <typename T>
