@@ -277,6 +277,23 @@ TEST_CASE("classic paintedplastic multiplies Cs by its texture map at (s, t), an
         test::parseRib("WorldBegin\nLight \"PxrDomeLight\" \"sky\" \"string lightColorMap\" [\"sky.tex\"]\n", diagnostics);
         CHECK(test::warningsContaining(diagnostics, "\"sky.tex\" does not exist") == 1);
     }
+    SECTION("a shader of the scene's own that names a texture maps its colour with it, as paintedplastic does") {
+        std::string const own = "Surface \"textura\" \"Ka\" [1] \"Kd\" [0] \"texturename\" [\"ramp.tex\"]\n"
+                                "Patch \"bilinear\" \"P\" [-1 1 0  1 1 0  -1 -1 0  1 -1 0]\nWorldEnd\n";
+        auto r = test::renderRib("MakeTexture \"" + picture + "\" \"./ramp.tex\" \"periodic\" \"periodic\" \"gaussian\" 2 2\n" +
+                                     head + world + own,
+                                 fewSamples());
+        REQUIRE(r.messages.size() == 1u);
+        CHECK(r.messages[0].text.find("rendered as \"matte\"") != std::string::npos);
+        CHECK(r.messages[0].text.find("its texturename maps its colour") != std::string::npos);
+        for (int y : {2, 5, 10, 13}) CHECK(r.channel(8, y, 1) == Approx(1.0f - pixelV(y)).margin(0.03));
+        // A metal's texturename is its environment: not a colour map.
+        auto metal = test::renderRib("MakeTexture \"" + picture + "\" \"./ramp.tex\" \"periodic\" \"periodic\" \"gaussian\" 2 2\n" +
+                                         head + world + "Surface \"mymetal\" \"texturename\" [\"ramp.tex\"]\n" +
+                                         "Patch \"bilinear\" \"P\" [-1 1 0  1 1 0  -1 -1 0  1 -1 0]\nWorldEnd\n",
+                                     fewSamples());
+        CHECK(metal.stats.textureLookups == 0u);
+    }
     SECTION("a texture that is not there: one located warning, and the surface keeps Cs") {
         auto r = test::renderRib(head + world + surface, fewSamples());
         REQUIRE(r.messages.size() == 1u);

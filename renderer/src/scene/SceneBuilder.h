@@ -293,7 +293,8 @@ private:
     /// patterns declared so far (a located warning, and no connection, for a handle not declared before).
     std::map<std::string, Connection> connectionsOf(ParamList const& params, std::string const& owner);
     /// Gives a classic shader's texture map to `shader` through a pattern node that reads it.
-    void classicTexture(std::string const& file, SourceLocation const& where, MaterialDesc& shader);
+    void classicTexture(std::string const& file, SourceLocation const& where, MaterialDesc& shader,
+                        std::string const& owner);
     /// A texture file the scene names: one that is not found is a missing file, said once
     /// with what `owner` does without it (`consequence`).
     void checkTexture(std::string const& file, SourceLocation const& where, std::string const& owner,

@@ -111,6 +111,7 @@ std::map<std::string, Connection> SceneBuilder::connectionsOf(ParamList const& p
 
 void SceneBuilder::surface(RequestReader& in) {
     std::string name = in.string("surface shader name");
+    std::string const given = name;  // what messages call it, whatever it is rendered as
     ParamList params = in.params();
     std::vector<std::string> const* known = classicSurfaceParameters(name);
     // "shaders/plastic": a compiled shader the scene brings along, most often a copy
@@ -127,9 +128,11 @@ void SceneBuilder::surface(RequestReader& in) {
     bool lookalike = false;
     if (!known) {
         auto const [like, why] = lookalikeSurface(base, params);
+        bool const mapped = like != "metal" && params.has("texturename");
         warnOnce("surface " + name, in.where(),
                  "Surface \"" + name + "\" is a shader this renderer does not have: rendered as \"" + like + "\", " +
-                     why + ", with the parameters of it that it gives (its others are ignored)");
+                     why + ", with the parameters of it that it gives (its others are ignored" +
+                     (mapped ? "; its texturename maps its colour, as paintedplastic's does" : "") + ")");
         name = like;
         known = classicSurfaceParameters(like);
         lookalike = true;
@@ -143,7 +146,13 @@ void SceneBuilder::surface(RequestReader& in) {
     for (Param const& p : params.all()) {
         if (isRendererMetadata(p.name())) continue;
         bool const standard = std::find(known->begin(), known->end(), p.name()) != known->end();
-        if (lookalike && (!standard || p.name() == "texturename")) {
+        // A texture map: paintedplastic's colour, and most often a shader of the scene's own too,
+        // written from it; a metal's texturename is its environment map, which is not read.
+        bool const colourMap = p.name() == "texturename" && (name == "paintedplastic" || (lookalike && name != "metal"));
+        if (colourMap) {
+            std::string const file = p.strings.empty() ? "" : p.strings[0];
+            if (!file.empty() && building()) classicTexture(file, p.location, *shader, "Surface \"" + given + "\"");
+        } else if (lookalike && (!standard || p.name() == "texturename")) {
             p.used = true;  // said once above
         } else if (!standard) {
             std::string list;
@@ -156,9 +165,6 @@ void SceneBuilder::surface(RequestReader& in) {
             warnOnce("shinymetal reflection", p.location,
                      "Surface \"shinymetal\": its reflection of an environment map (Kr, texturename) is not "
                      "rendered; it shades as metal");
-        } else if (p.name() == "texturename") {
-            std::string const file = p.strings.empty() ? "" : p.strings[0];
-            if (!file.empty() && building()) classicTexture(file, p.location, *shader);
         } else {
             shader->params.add(p);
         }
@@ -166,7 +172,8 @@ void SceneBuilder::surface(RequestReader& in) {
     state().surface = shader;
 }
 
-void SceneBuilder::classicTexture(std::string const& file, SourceLocation const& where, MaterialDesc& shader) {
+void SceneBuilder::classicTexture(std::string const& file, SourceLocation const& where, MaterialDesc& shader,
+                                  std::string const& owner) {
     // The classic texture(texturename) at the surface's s and t, as a PxrTexture
     // node: its t runs down the image (t = 0 is the top row, invertT 0), and a
     // file that cannot be read leaves the colour as it is (missingColor white).
@@ -177,7 +184,7 @@ void SceneBuilder::classicTexture(std::string const& file, SourceLocation const&
     node.params.add(stringParam("filename", file));
     node.params.add(intParam("invertT", 0));
     node.params.add(colorParam("missingColor", Vec3(1.0f)));
-    checkTexture(file, where, "Surface \"" + shader.handle + "\"", "the surface keeps its colour");
+    checkTexture(file, where, owner, "the surface keeps its colour");
     Param link;
     link.decl.name = "textureColor";
     link.decl.type = ParamType::Color;
