@@ -31,6 +31,7 @@ public:
     template <typename T> T* allocArray(size_t count) {
         return static_cast<T*>(allocate(sizeof(T) * count, alignof(T)));
     }
+
 private:
     void* allocateOwn(size_t bytes, size_t alignment);
 
