@@ -193,6 +193,54 @@ TEST_CASE("PxrOcclusion: an open plane is white, a corner under a sphere is dark
     CHECK(shadowed > 0.5);
 }
 
+TEST_CASE("PxrOcclusion reads RenderMan's parameters: distributions and maxDistance 0 as no limit",
+          "[integrators][occlusion]") {
+    // A point on a plane under a parallel disk (unseen by the camera) at height 1 and radius 1: the
+    // disk covers the cone of half-angle 45 degrees about the normal. Open share of the sky: cosine
+    // weighted 1 - sin^2(45) = 0.5, uniform cos(45) = 0.707.
+    auto open = [](std::string const& parameters) {
+        std::string const rib =
+            "Format 4 4 1\nProjection \"orthographic\"\nScreenWindow -0.01 0.01 -0.01 0.01\n"
+            "Integrator \"PxrOcclusion\" \"ao\" \"int numSamples\" [64] " + parameters + "\n"
+            "Rotate -90 1 0 0\nTranslate 0 -10 0\n"  // looking straight down at the plane y = 0
+            "WorldBegin\n"
+            "  Polygon \"P\" [-10 0 -10  10 0 -10  10 0 10  -10 0 10]\n"
+            "  AttributeBegin\n  Attribute \"visibility\" \"int camera\" [0]\n  Translate 0 1 0\n"
+            "  Rotate 90 1 0 0\n  Disk 0 1 360\n  AttributeEnd\n"
+            "WorldEnd\n";
+        RenderSettings settings;
+        settings.spp = 64;
+        auto r = test::renderRib(rib, settings);
+        double sum = 0.0;
+        for (int y = 0; y < r.height; ++y)
+            for (int x = 0; x < r.width; ++x) sum += r.channel(x, y, 0);
+        return std::make_pair(sum / (r.width * r.height), r);
+    };
+    // RenderMan's defaults, written out as exporters write them: maxDistance 0 is no limit.
+    auto cosine = open("\"int distribution\" [1] \"float maxDistance\" [0] \"float cosineSpread\" [1] "
+                       "\"float falloff\" [0] \"int useAlbedo\" [0]");
+    CHECK(cosine.first == Approx(0.5).margin(0.02));
+    CHECK_FALSE(cosine.second.anyMessageContains("not used"));
+    CHECK(open("").first == Approx(0.5).margin(0.02));
+    CHECK(open("\"int distribution\" [0]").first == Approx(std::sqrt(0.5)).margin(0.02));
+    // Seen from straight above, the mirror direction is the normal: reflection matches cosine.
+    CHECK(open("\"int distribution\" [2]").first == Approx(0.5).margin(0.02));
+    // The disk is 1 away: within a reach of 0.5 nothing blocks.
+    CHECK(open("\"float maxDistance\" [0.5]").first == Approx(1.0));
+    // What is not rendered is said.
+    auto spread = open("\"float cosineSpread\" [0.5] \"float falloff\" [1] \"int useAlbedo\" [1]");
+    CHECK(spread.second.anyMessageContains("cosineSpread 0.5 is not used"));
+    CHECK(spread.second.anyMessageContains("falloff 1 is not used"));
+    CHECK(spread.second.anyMessageContains("useAlbedo 1 is not used"));
+    try {
+        open("\"int distribution\" [3]");
+        FAIL("expected an error");
+    } catch (RibError const& e) {
+        CHECK_THAT(e.what(), Catch::Matchers::StartsWith("test.rib:4:1"));
+        CHECK_THAT(e.what(), Catch::Matchers::Contains("distribution must be between 0 and 2"));
+    }
+}
+
 TEST_CASE(
     "PxrVisualizer: shaded by facing ratio and bxdf as PxrDefault and normals and st and flat and a normal "
     "check",
