@@ -451,6 +451,16 @@ TEST_CASE("a pattern with RenderMan's manifold structs: struct output and input,
     auto member = shown(half + "Pattern \"manifold\" \"m2\" \"reference point manifold.Q\" [\"m1:result.Q\"]\n",
                         "m2:resultT");
     CHECK(member.channel(8, 4, 0) == Approx(0.5f * pixelV(4)).margin(0.01));
+    // Unconnected, as exporters write every default out: "struct manifold" [] leaves the plugin's own
+    // manifold; a struct given values says it ignores them.
+    auto unconnected = shown("Pattern \"manifold\" \"m2\" \"float scale\" [0.5] \"struct manifold\" []\n",
+                             "m2:resultS");
+    for (int k : {1, 8, 14}) CHECK(unconnected.channel(k, 8, 0) == Approx(0.5f * pixelU(k)).margin(0.01));
+    CHECK_FALSE(unconnected.anyMessageContains("manifold"));
+    auto valued = shown("Pattern \"manifold\" \"m2\" \"float scale\" [0.5] \"struct manifold\" [1 2 3]\n",
+                        "m2:resultS");
+    CHECK(valued.channel(8, 8, 0) == Approx(0.5f * pixelU(8)).margin(0.01));
+    CHECK(valued.anyMessageContains("parameter \"manifold\": a struct holds no values"));
 }
 
 TEST_CASE("Transform moves points to object space, to a named coordinate system, and leaves unknown spaces alone",

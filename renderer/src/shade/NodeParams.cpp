@@ -86,6 +86,15 @@ NodeParams::NodeParams(std::string const& kind, ShadingPlugin const& plugin, Par
         bool const needsType = written.decl.untyped && !written.decl.reference;
         if (needsType) typed = typedByPlugin(written, info, owner);
         Param const& p = needsType ? typed : written;
+        // A struct is only ever connected. RenderMan writes an unconnected one, as exporters
+        // write every default, as "struct manifold" []: the plugin keeps its own default.
+        if (!p.decl.reference && !p.decl.untyped && p.decl.type == ParamType::Unknown) {
+            if (!p.floats.empty() || !p.ints.empty() || !p.strings.empty())
+                diagnostics.warn(p.location, owner + " parameter \"" + p.name() + "\": a struct holds no values, it is "
+                                                 "connected (\"reference struct " + p.name() + "\" [\"node:output\"]); "
+                                                 "ignored");
+            continue;
+        }
         // RenderMan's structs (a manifold) travel as a point here: see RixPattern.h.
         bool structOk = p.decl.reference && p.decl.type == ParamType::Unknown && info.type == k_RixSCPoint;
         // A reference only names its pattern: where the declaration's type and the plugin's are both
