@@ -416,6 +416,14 @@ TEST_CASE("Imager background and clamptoalpha, and PxrBackgroundDisplayFilter, f
     auto filter = render("DisplayFilter \"PxrBackgroundDisplayFilter\" \"bg\" \"color backgroundColor\" [0 1 0]");
     CHECK(pixel(filter, 3) == V{0, 1, 0, 0});
     CHECK(pixel(filter, 0) == V{3, 2, 1, 1});
+    // Its sample filter does the same to every sample: the same pixels.
+    auto samples = render("SampleFilter \"PxrBackgroundSampleFilter\" \"bg\" \"color backgroundColor\" [0 1 0]");
+    CHECK(pixel(samples, 3) == V{0, 1, 0, 0});
+    CHECK(pixel(samples, 0) == V{3, 2, 1, 1});
+    CHECK(samples.messages.empty());
+    auto otherSamples = render("SampleFilter \"PxrGradeSampleFilter\" \"g\" \"color gain\" [2 2 2]");
+    CHECK(pixel(otherSamples, 0) == V{3, 2, 1, 1});
+    CHECK(otherSamples.anyMessageContains("test.rib:4:1: SampleFilter \"PxrGradeSampleFilter\" is not one this renderer has"));
     // clamptoalpha: no channel above alpha.
     CHECK(pixel(render("Imager \"clamptoalpha\""), 0) == V{1, 1, 1, 1});
     // Another imager or display filter: a warning, and the image as it is.

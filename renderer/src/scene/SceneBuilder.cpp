@@ -41,6 +41,7 @@ std::map<std::string, SceneBuilder::Handler> const& SceneBuilder::handlers() {
         {"Imager", &SceneBuilder::imager},
         {"Exposure", &SceneBuilder::exposure},
         {"DisplayFilter", &SceneBuilder::displayFilter},
+        {"SampleFilter", &SceneBuilder::sampleFilter},
         {"Integrator", &SceneBuilder::integrator},
         {"Option", &SceneBuilder::option},
         {"Declare", &SceneBuilder::declare},

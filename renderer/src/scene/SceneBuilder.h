@@ -183,6 +183,9 @@ private:
     /// write them there: "string filter", "float[2] filterwidth", "float[2] exposure").
     void displayFilterAndExposure(ParamList const& params);
     void displayFilter(RequestReader& in);
+    void sampleFilter(RequestReader& in);
+    /// DisplayFilter and SampleFilter: RenderMan's background filter of each, others skipped with a warning.
+    void backgroundFilter(RequestReader& in, std::string const& request, std::string const& background);
     void integrator(RequestReader& in);
     void option(RequestReader& in);
     /// Option "Ri": the camera and image requests as RenderMan 21+ writes them.

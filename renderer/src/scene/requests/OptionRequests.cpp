@@ -391,17 +391,27 @@ void SceneBuilder::setExposure(float gain, float gamma, SourceLocation const& wh
 }
 
 void SceneBuilder::displayFilter(RequestReader& in) {
-    std::string const name = in.string("display filter plugin name");
-    in.string("display filter handle");
+    backgroundFilter(in, "DisplayFilter", "PxrBackgroundDisplayFilter");
+}
+
+void SceneBuilder::sampleFilter(RequestReader& in) {
+    backgroundFilter(in, "SampleFilter", "PxrBackgroundSampleFilter");
+}
+
+void SceneBuilder::backgroundFilter(RequestReader& in, std::string const& request, std::string const& background) {
+    std::string const what = request == "DisplayFilter" ? "display filter" : "sample filter";
+    std::string const name = in.string((what + " plugin name").c_str());
+    in.string((what + " handle").c_str());
     ParamList params = in.params();
-    if (name != "PxrBackgroundDisplayFilter") {
+    if (name != background) {
         for (Param const& p : params.all()) p.used = true;
-        warnOnce("display filter " + name, in.where(),
-                 "DisplayFilter \"" + name + "\" is not one this renderer has (it has PxrBackgroundDisplayFilter); skipped");
+        warnOnce(request + " " + name, in.where(),
+                 request + " \"" + name + "\" is not one this renderer has (it has " + background + "); skipped");
         return;
     }
-    // Composes the image over a colour; alpha is left as rendered.
-    std::string const owner = "DisplayFilter \"" + name + "\"";
+    // Composes the image over a colour; alpha is left as rendered. The sample filter does it to each
+    // camera sample, which, as compositing is linear, comes to the same pixels.
+    std::string const owner = request + " \"" + name + "\"";
     params.typeUntyped({{"backgroundColor", ParamType::Color}}, owner);
     ImageFinish& finish = m_scene.finish;
     finish.overBackground = true;
