@@ -1573,6 +1573,19 @@ TEST_CASE("a PxrSurface with no diffuse and a coloured specular face (an exporte
     CHECK(centre("\"float diffuseGain\" [0] \"color specularFaceColor\" [3 3 3]").x <= 1.01f);
 }
 
+TEST_CASE("PxrBlack stands in as what it is: black and opaque", "[rib][plugins]") {
+    // A ball under a white sky of radiance 1, in front of a white wall that is seen around it.
+    std::string const rib = "Format 8 8 1\nProjection \"perspective\" \"fov\" [30]\nIntegrator \"PxrPathTracer\" \"p\"\n"
+                            "WorldBegin\nLight \"PxrDomeLight\" \"sky\"\nTranslate 0 0 5\nBxdf \"PxrBlack\" \"hole\"\n"
+                            "Sphere 1 -1 1 360\nBxdf \"PxrDiffuse\" \"wall\" \"color diffuseColor\" [1 1 1]\n"
+                            "Polygon \"P\" [-9 -9 1.2  9 -9 1.2  9 9 1.2  -9 9 1.2]\nWorldEnd\n";
+    auto r = test::renderRib(rib, test::withSpp(16));
+    for (int c = 0; c < 3; ++c) CHECK(r.channel(4, 4, c) == 0.0f);
+    CHECK(r.channel(4, 4, 3) == 1.0f);      // opaque: nothing of the wall shows through
+    CHECK(r.channel(0, 0, 0) > 0.3f);        // the wall around it is lit
+    CHECK(r.anyMessageContains("PxrDiffuse in black, which is what PxrBlack is"));
+}
+
 TEST_CASE("a stand-in keeps a cut-out (presence below 1 or textured), but for glass, which says it renders it opaque",
           "[rib][plugins]") {
     auto render = [](std::string const& material, std::string const& params, std::string const& pattern = "") {

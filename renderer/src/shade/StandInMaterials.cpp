@@ -169,6 +169,11 @@ std::optional<StandIn> standInFor(MaterialDesc const& material, std::vector<Patt
         out.add(floatParam("metallic", 1.0f));
         out.add(floatParam("roughness", std::sqrt(std::clamp(floatOf(in, "roughness").value_or(0.01f), 0.0f, 1.0f))));
         s.note = "a PxrDisney metal (its eta and kappa are not used)";
+    } else if (name == "PxrBlack") {
+        // Reflects, transmits and emits nothing, and is opaque: exactly a diffuse surface of albedo 0.
+        s.material.plugin = "PxrDiffuse";
+        out.add(colorParam("diffuseColor", Vec3(0.0f)));
+        s.note = "PxrDiffuse in black, which is what PxrBlack is: it reflects nothing";
     } else {
         // PxrLMDiffuse, PxrDiffuse-likes and anything else: a diffuse surface in its colour.
         s.material.plugin = "PxrDiffuse";
