@@ -424,6 +424,11 @@ TEST_CASE("Imager background and clamptoalpha, and PxrBackgroundDisplayFilter, f
     auto otherSamples = render("SampleFilter \"PxrGradeSampleFilter\" \"g\" \"color gain\" [2 2 2]");
     CHECK(pixel(otherSamples, 0) == V{3, 2, 1, 1});
     CHECK(otherSamples.anyMessageContains("test.rib:4:1: SampleFilter \"PxrGradeSampleFilter\" is not one this renderer has"));
+    // Combiners name the filters they combine by handle, in RenderMan's own parameter types.
+    CHECK(render("SampleFilter \"PxrSampleFilterCombiner\" \"all\" \"reference samplefilter[2] filter\" [\"a\" \"b\"]")
+              .anyMessageContains("SampleFilter \"PxrSampleFilterCombiner\" is not one"));
+    CHECK(render("DisplayFilter \"PxrDisplayFilterCombiner\" \"all\" \"reference displayfilter[2] filter\" [\"a\" \"b\"]")
+              .anyMessageContains("DisplayFilter \"PxrDisplayFilterCombiner\" is not one"));
     // clamptoalpha: no channel above alpha.
     CHECK(pixel(render("Imager \"clamptoalpha\""), 0) == V{1, 1, 1, 1});
     // Another imager or display filter: a warning, and the image as it is.

@@ -115,6 +115,8 @@ bool Declarations::parseDeclaration(std::string const& text, ParamDecl& out, std
         {"mpoint", ParamType::Matrix},
         // RenderMan's structs (layered materials) are passed whole to plugins this renderer does not have.
         {"struct", ParamType::Unknown},
+        // Filters naming other filters by handle (PxrSampleFilterCombiner's "reference samplefilter[2] filter").
+        {"samplefilter", ParamType::Unknown}, {"displayfilter", ParamType::Unknown}, {"lightfilter", ParamType::Unknown},
     };
     auto found = types.find(type);
     if (found == types.end()) {
