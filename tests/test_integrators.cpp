@@ -208,9 +208,7 @@ TEST_CASE("PxrOcclusion reads RenderMan's parameters: distributions and maxDista
             "  AttributeBegin\n  Attribute \"visibility\" \"int camera\" [0]\n  Translate 0 1 0\n"
             "  Rotate 90 1 0 0\n  Disk 0 1 360\n  AttributeEnd\n"
             "WorldEnd\n";
-        RenderSettings settings;
-        settings.spp = 64;
-        auto r = test::renderRib(rib, settings);
+        auto r = test::renderRib(rib, test::withSpp(64));
         double sum = 0.0;
         for (int y = 0; y < r.height; ++y)
             for (int x = 0; x < r.width; ++x) sum += r.channel(x, y, 0);
