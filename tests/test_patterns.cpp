@@ -460,7 +460,7 @@ TEST_CASE("a pattern with RenderMan's manifold structs: struct output and input,
     auto valued = shown("Pattern \"manifold\" \"m2\" \"float scale\" [0.5] \"struct manifold\" [1 2 3]\n",
                         "m2:resultS");
     CHECK(valued.channel(8, 8, 0) == Approx(0.5f * pixelU(8)).margin(0.01));
-    CHECK(valued.anyMessageContains("parameter \"manifold\": a struct holds no values"));
+    CHECK(valued.anyMessageContains("parameter \"manifold\": a struct or filter reference holds no values"));
 }
 
 TEST_CASE("Transform moves points to object space, to a named coordinate system, and leaves unknown spaces alone",

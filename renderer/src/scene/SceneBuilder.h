@@ -185,7 +185,9 @@ private:
     void displayFilter(RequestReader& in);
     void sampleFilter(RequestReader& in);
     /// DisplayFilter and SampleFilter: RenderMan's background filter of each, others skipped with a warning.
-    void backgroundFilter(RequestReader& in, std::string const& request, std::string const& background);
+    /// `what` is how messages name the request ("display filter").
+    void backgroundFilter(RequestReader& in, std::string const& request, std::string const& what,
+                          std::string const& background);
     void integrator(RequestReader& in);
     void option(RequestReader& in);
     /// Option "Ri": the camera and image requests as RenderMan 21+ writes them.

@@ -391,15 +391,15 @@ void SceneBuilder::setExposure(float gain, float gamma, SourceLocation const& wh
 }
 
 void SceneBuilder::displayFilter(RequestReader& in) {
-    backgroundFilter(in, "DisplayFilter", "PxrBackgroundDisplayFilter");
+    backgroundFilter(in, "DisplayFilter", "display filter", "PxrBackgroundDisplayFilter");
 }
 
 void SceneBuilder::sampleFilter(RequestReader& in) {
-    backgroundFilter(in, "SampleFilter", "PxrBackgroundSampleFilter");
+    backgroundFilter(in, "SampleFilter", "sample filter", "PxrBackgroundSampleFilter");
 }
 
-void SceneBuilder::backgroundFilter(RequestReader& in, std::string const& request, std::string const& background) {
-    std::string const what = request == "DisplayFilter" ? "display filter" : "sample filter";
+void SceneBuilder::backgroundFilter(RequestReader& in, std::string const& request, std::string const& what,
+                                    std::string const& background) {
     std::string const name = in.string((what + " plugin name").c_str());
     in.string((what + " handle").c_str());
     ParamList params = in.params();
