@@ -115,6 +115,34 @@ class PrmanModule(unittest.TestCase):
         self.assertTrue(os.path.exists(kept), run.stderr)
         shutil.rmtree(os.path.dirname(kept))
 
+    def test_relative_search_paths_are_the_scripts_folders(self):
+        # The RIB rendered sits in a folder of its own; the script's "./assets/" and
+        # "./textures/" are beside the script, where RenderMan looks for them.
+        os.makedirs("assets")
+        os.makedirs("textures")
+        with open(os.path.join("assets", "ball.rib"), "w") as archive:
+            archive.write('Sphere 1 -1 1 360\n')
+        made = subprocess.run([shutil.which("oiiotool"), "--pattern", "constant:color=1,0,0", "8x8", "3",
+                               "-o", os.path.join("textures", "red.exr")], capture_output=True, text=True)
+        self.assertEqual(made.returncode, 0, made.stderr)
+        script = ("import prman\nri = prman.Ri()\nri.Begin('__render')\n"
+                  "ri.Option('searchpath', {'string archive': './assets/:@', 'string texture': './textures/:@'})\n"
+                  "ri.Display('found.exr', 'file', 'rgba')\nri.Format(16, 16, 1)\n"
+                  "ri.Projection(ri.PERSPECTIVE, {ri.FOV: 30})\nri.WorldBegin()\nri.Translate(0, 0, 5)\n"
+                  "ri.Pattern('PxrTexture', 'tex', {'string filename': 'red.exr'})\n"
+                  "ri.Bxdf('PxrConstant', 'c', {'reference color emitColor': ['tex:resultRGB']})\n"
+                  "ri.ReadArchive('ball.rib')\nri.WorldEnd()\nri.End()\n")
+        env = dict(os.environ, PYTHONPATH=os.path.dirname(prman.__file__), RIXRENDER=RIXRENDER,
+                   RIXRENDER_ARGS="--spp 1")
+        run = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, env=env)
+        self.assertEqual(run.returncode, 0, run.stderr)
+        self.assertNotIn("not found", run.stderr)
+        self.assertNotIn("does not exist", run.stderr)
+        # The ball fills the middle of the image with the texture's red.
+        centre = subprocess.run([shutil.which("oiiotool"), "found.exr", "--cut", "2x2+7+7", "--printstats"],
+                                capture_output=True, text=True)
+        self.assertIn("Stats Avg: 1.000000 0.000000 0.000000 1.000000", centre.stdout, centre.stdout)
+
     def test_calls_outside_begin_and_values_of_no_rib_type_are_errors(self):
         ri = prman.Ri()
         with self.assertRaisesRegex(prman.Error, "before ri.Begin"):

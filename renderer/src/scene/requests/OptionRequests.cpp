@@ -485,9 +485,18 @@ void SceneBuilder::option(RequestReader& in) {
                 for (std::string const& folder : previous) add(folder);  // the path so far
             } else if (item == "@") {
                 continue;  // the built-in default is always searched last
+            } else if (fs::path(item).is_absolute()) {
+                add(item);
             } else {
-                fs::path path(item);
-                add(path.is_relative() ? (fs::path(currentDirectory()) / path).lexically_normal().string() : item);
+                // RenderMan reads a relative folder from the folder it runs in, which is where a
+                // Python script that renders with "__render" keeps its assets. A scene rendered
+                // from elsewhere means its own folder: both are searched, the scene's first.
+                fs::path const besideScene = (fs::path(currentDirectory()) / item).lexically_normal();
+                add(besideScene.string());
+                std::error_code error;
+                fs::path const fromWorkingFolder = fs::absolute(item, error).lexically_normal();
+                if (!error && fs::absolute(besideScene, error).lexically_normal() != fromWorkingFolder)
+                    add(fromWorkingFolder.string());
             }
         }
     };
