@@ -104,9 +104,9 @@ void SceneBuilder::readArchiveNamed(std::string const& name, SourceLocation cons
     else
         for (std::string const& folder : m_archiveSearchPath)
             if (fs::path(folder).is_absolute()) absolutes.push_back(fs::path(folder) / path);
-    // Looked for below the including file's folder, the scene's folder and the
-    // scene's ancestors (an exporter's project folder holds its scenes a few
-    // levels down: <project>/renderman/<scene>/rib/<frame>/).
+    // Looked for below the including file's folder, the scene's folder, the folder
+    // the renderer runs in (each once) and the scene's ancestors (an exporter's
+    // project folder holds its scenes a few levels down: <project>/renderman/<scene>/rib/<frame>/).
     fs::path scene = fs::path(m_fileStack.front()).parent_path();
     if (scene.empty()) scene = ".";
     std::vector<fs::path> ancestors;  // the scene folder's parents, nearest first
@@ -116,7 +116,19 @@ void SceneBuilder::readArchiveNamed(std::string const& name, SourceLocation cons
         ancestor = ancestor.parent_path();
         if (ancestor.has_relative_path()) ancestors.push_back(ancestor);
     }
-    std::vector<fs::path> roots = {fs::path(currentDirectory()), scene};
+    std::vector<fs::path> nearRoots;
+    std::error_code noWorkingFolder;  // deleted under the renderer: then it is not looked in
+    fs::path const workingFolder = fs::current_path(noWorkingFolder);
+    for (fs::path const& root : {fs::path(currentDirectory()), scene, workingFolder}) {
+        std::error_code error;
+        if (root.empty()) continue;
+        fs::path const full = fs::absolute(root, error).lexically_normal();
+        bool const seen = std::any_of(nearRoots.begin(), nearRoots.end(), [&](fs::path const& earlier) {
+            return fs::absolute(earlier, error).lexically_normal() == full;
+        });
+        if (!seen) nearRoots.push_back(root);
+    }
+    std::vector<fs::path> roots = nearRoots;
     roots.insert(roots.end(), ancestors.begin(), ancestors.end());
     for (fs::path const& absolute : absolutes) {
         std::vector<fs::path> parts(absolute.begin(), absolute.end());
@@ -149,9 +161,12 @@ void SceneBuilder::readArchiveNamed(std::string const& name, SourceLocation cons
             read(candidate);
             return;
         }
-    if (!absolutes.empty())
-        tried += "\n    (and every end of the absolute paths under " + roots[0].string() + ", " + roots[1].string() +
-                 " and the scene's folder's " + std::to_string(ancestors.size()) + " parents)";
+    if (!absolutes.empty()) {
+        std::string under;
+        for (fs::path const& root : nearRoots) under += (under.empty() ? "" : ", ") + root.string();
+        tried += "\n    (and every end of the absolute paths under " + under + " and the scene's folder's " +
+                 std::to_string(ancestors.size()) + " parents)";
+    }
     // RenderMan renders on without a missing archive; so does this renderer, unless --strict.
     // An exporter's scene read without its archive files names dozens: after
     // the first few, each is one line.
