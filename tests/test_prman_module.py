@@ -4,6 +4,7 @@ and Begin("__render") renders it with rixrender.
     python3 tests/test_prman_module.py path/to/rixrender
 """
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -142,6 +143,25 @@ class PrmanModule(unittest.TestCase):
         centre = subprocess.run([shutil.which("oiiotool"), "found.exr", "--cut", "2x2+7+7", "--printstats"],
                                 capture_output=True, text=True)
         self.assertIn("Stats Avg: 1.000000 0.000000 0.000000 1.000000", centre.stdout, centre.stdout)
+
+    def test_procedural2_writes_the_names_renderman_reads(self):
+        with open("ball.rib", "w") as archive:
+            archive.write("Sphere 1 -1 1 360\n")
+        ri = prman.Ri()
+        ri.Begin("delayed.rib")
+        ri.WorldBegin()
+        ri.Procedural2(ri.Proc2DelayedReadArchive, ri.SimpleBound,
+                       {"string filename": ["ball.rib"], "float[6] __bound": [-1, 1, -1, 1, -1, 1]})
+        ri.WorldEnd()
+        ri.End()
+        with open("delayed.rib") as written:
+            self.assertIn('Procedural2 "DelayedReadArchive2" "SimpleBound" "string filename" ["ball.rib"]',
+                          written.read())
+        rendered = subprocess.run([RIXRENDER, "--spp", "1", "delayed.rib"], capture_output=True, text=True)
+        self.assertEqual(rendered.returncode, 0, rendered.stderr)
+        self.assertNotIn("warning", rendered.stderr)
+        hits = re.search(r"rays: \d+ camera, (\d+) shadow", rendered.stderr)  # a shadow ray from each hit
+        self.assertTrue(hits and int(hits.group(1)) > 0, rendered.stderr)  # the archive's ball was read
 
     def test_calls_outside_begin_and_values_of_no_rib_type_are_errors(self):
         ri = prman.Ri()

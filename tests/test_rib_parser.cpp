@@ -788,6 +788,15 @@ TEST_CASE("archives are read out of zip files (\"bundle.zip!member.rib\"), also 
         CHECK(dynamic_cast<Sphere const*>(scene.shapes[2].get()) != nullptr);
         CHECK(test::warningsContaining(diagnostics, "") == 0);
     }
+    SECTION("Procedural2 with the bound named as Python scripts name it (RenderMan's __ names are its own)") {
+        Diagnostics diagnostics(false);
+        Scene scene = load("Procedural2 \"DelayedReadArchive2\" \"SimpleBound\" \"string filename\" "
+                           "[\"geo/cache.zip!shapes/sphere.rib\"] \"float[6] __bound\" [-1 1 -1 1 -1 1] "
+                           "\"int __immediatesubdivide\" [0]\n",
+                           diagnostics);
+        CHECK(scene.shapes.size() == 1u);
+        CHECK(test::warningsContaining(diagnostics, "") == 0);
+    }
     SECTION("an error inside a member is located in it") {
         Diagnostics diagnostics(false);
         std::string message;

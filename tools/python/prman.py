@@ -115,7 +115,8 @@ _TOKENS = {
     "BILINEAR": "bilinear", "BICUBIC": "bicubic", "PRIMITIVE": "primitive", "UNION": "union",
     "INTERSECTION": "intersection", "DIFFERENCE": "difference", "INSIDE": "inside", "OUTSIDE": "outside",
     "LH": "lh", "RH": "rh", "NAME": "name", "SimpleBound": "SimpleBound",
-    "Proc2DelayedReadArchive": "DelayedReadArchive", "ProcDelayedReadArchive": "DelayedReadArchive",
+    "Proc2DelayedReadArchive": "DelayedReadArchive2", "ProcDelayedReadArchive": "DelayedReadArchive",
+    "Proc2DynamicLoad": "DynamicLoad",
     "ProcRunProgram": "RunProgram", "ProcDynamicLoad": "DynamicLoad", "ProcFree": None,
     "PRMAN_VERSION_STR": "24.0",  # the RenderMan whose RIB this renderer reads
 }
