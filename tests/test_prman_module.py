@@ -96,13 +96,16 @@ class PrmanModule(unittest.TestCase):
     def test_render_target_renders_at_end_and_cleans_up(self):
         os.environ["RIXRENDER"] = RIXRENDER
         os.environ["RIXRENDER_ARGS"] = "--quiet --spp 1"
-        ri = prman.Ri()
-        ri.Begin(ri.RENDER)
-        write_scene(ri)
-        rib = ri._path
-        ri.End()
-        self.assertTrue(os.path.exists("scene.exr"))  # written where the script runs
-        self.assertFalse(os.path.exists(os.path.dirname(rib)))  # the RIB rendered is gone
+        for target in (prman.Ri().RENDER, "launch:prman? -ctrl $ctrlin $ctrlout"):
+            ri = prman.Ri()
+            ri.Begin(target)
+            write_scene(ri)
+            rib = ri._path
+            ri.End()
+            self.assertTrue(os.path.exists("scene.exr"), target)  # written where the script runs
+            self.assertFalse(os.path.exists(os.path.dirname(rib)), target)  # the RIB rendered is gone
+            self.assertEqual(os.listdir("."), ["scene.exr"], target)  # and no file named after the target
+            os.remove("scene.exr")
 
     def test_a_failed_render_keeps_its_rib_and_says_where(self):
         os.environ["RIXRENDER"] = RIXRENDER

@@ -141,10 +141,11 @@ class Ri:
     # Begin and End: where the RIB goes.
 
     def Begin(self, name="__render"):
-        """Starts a RIB stream: to the file `name`, or, for "__render" (ri.RENDER), to a render at End()."""
+        """Starts a RIB stream: to the file `name`, or, for "__render" (ri.RENDER), to a render at End().
+        "launch:prman? ..." (RenderMan's renderer in a process of its own) renders at End() too."""
         if self._out is not None:
             raise Error("Begin inside Begin: call End first")
-        self._target = name or "__render"
+        self._target = "__render" if not name or name.startswith("launch:") else name
         if self._target == "__render":
             # Named after the script, so that a message about a line of it says whose RIB it is.
             script = os.path.basename(sys.argv[0]) if sys.argv and sys.argv[0].endswith(".py") else "scene.py"
