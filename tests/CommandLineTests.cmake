@@ -57,12 +57,13 @@ set_tests_properties(cli.crashing_plugin cli.plugin_jumps_out_of_code cli.plugin
 add_cli_failure(unknown_format "unknown image format \".bmpx\"" ${PROJECT_SOURCE_DIR}/scenes/ch06/diffuse.rib --spp 1 -o out.bmpx)
 add_cli_failure(corrupt_image_strict "corrupt-image.rib:4:5: PxrDomeLight: cannot read lightColorMap .*corrupt-sky.exr" ${BAD}/corrupt-image.rib --strict -o out.exr)
 # An image that cannot be decoded is a missing one (a warning without --strict); a Git LFS
-# pointer left where the image should be is named as one.
+# pointer or an empty file left where the image should be is named as one.
 add_test(NAME cli.corrupt_image_warns COMMAND rixrender --quiet --spp 1 -o corrupt-image.exr ${BAD}/corrupt-image.rib
          WORKING_DIRECTORY ${CLI_OUT})
 set_tests_properties(cli.corrupt_image_warns PROPERTIES LABELS "cli;sanitize" PASS_REGULAR_EXPRESSION
   "corrupt-image.rib:4:5: PxrDomeLight: cannot read lightColorMap .*corrupt-sky.exr.*rendering without it.*wrote corrupt-image.exr")
 add_cli_failure(lfs_pointer_image "lfs-pointer.rib:4:5: PxrDomeLight: cannot read lightColorMap .*lfs-sky.exr\": it is a Git LFS pointer, not the image" ${BAD}/lfs-pointer.rib --strict -o out.exr)
+add_cli_failure(empty_image "empty-image.rib:4:5: PxrDomeLight: cannot read lightColorMap .*empty-sky.exr\": it is empty \\(0 bytes\\)" ${BAD}/empty-image.rib --strict -o out.exr)
 add_test(NAME cli.lfs_pointer_texture COMMAND rixrender --quiet --spp 1 -o lfs-texture.exr ${BAD}/lfs-pointer-texture.rib
          WORKING_DIRECTORY ${CLI_OUT})
 set_tests_properties(cli.lfs_pointer_texture PROPERTIES LABELS "cli;sanitize" PASS_REGULAR_EXPRESSION

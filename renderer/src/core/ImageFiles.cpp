@@ -51,7 +51,11 @@ void writeImage(std::string const& path, std::vector<float> const& pixels, int w
 }
 
 std::string notAnImageBecause(std::string const& path) {
-    return fileIsGitLfsPointer(path) ? "it is " + gitLfsPointerNote("image") : std::string();
+    if (fileIsGitLfsPointer(path)) return "it is " + gitLfsPointerNote("image");
+    std::error_code error;
+    if (std::filesystem::is_regular_file(path, error) && std::filesystem::file_size(path, error) == 0 && !error)
+        return "it is empty (0 bytes): the file was not copied or downloaded whole";
+    return {};
 }
 
 }  // namespace bxdflab

@@ -71,7 +71,8 @@ void writeImage(std::string const& path, std::vector<float> const& pixels, int w
 
 /// Why an image file that cannot be decoded may be no image at all: a
 /// repository cloned without Git LFS holds small text pointers in place of
-/// its images. The explanation to add to the reader's error, or empty.
+/// its images, and a copy or download that failed leaves an empty file. The
+/// explanation to add to the reader's error, or empty.
 std::string notAnImageBecause(std::string const& path);
 
 }  // namespace bxdflab

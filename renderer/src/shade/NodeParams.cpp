@@ -90,8 +90,9 @@ NodeParams::NodeParams(std::string const& kind, ShadingPlugin const& plugin, Par
         // write every default, as "struct manifold" []: the plugin keeps its own default.
         if (!p.decl.reference && !p.decl.untyped && p.decl.type == ParamType::Unknown) {
             if (!p.floats.empty() || !p.ints.empty() || !p.strings.empty())
-                diagnostics.warn(p.location, owner + " parameter \"" + p.name() + "\": a struct or filter reference holds "
-                                                 "no values, only a connection (\"reference struct " + p.name() +
+                diagnostics.warn(p.location, owner + " parameter \"" + p.name() +
+                                                 "\": a struct or filter reference holds no values, only a "
+                                                 "connection (\"reference struct " + p.name() +
                                                  "\" [\"node:output\"]); ignored");
             continue;
         }
