@@ -5,6 +5,7 @@
 set(RIX_SCENE_SOURCES
   core/CrashReport.cpp
   core/Diagnostics.cpp
+  core/Folders.cpp
   core/GitLfs.cpp
   core/ImageFiles.cpp
   core/PixelFilter.cpp

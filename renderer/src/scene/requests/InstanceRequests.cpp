@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <sstream>
 
+#include "core/Folders.h"
 #include "core/GitLfs.h"
 #include "parse/RibParser.h"
 #include "parse/ZipMember.h"
@@ -110,23 +111,22 @@ void SceneBuilder::readArchiveNamed(std::string const& name, SourceLocation cons
     fs::path scene = fs::path(m_fileStack.front()).parent_path();
     if (scene.empty()) scene = ".";
     std::vector<fs::path> ancestors;  // the scene folder's parents, nearest first
-    std::error_code absoluteError;
-    fs::path ancestor = fs::absolute(scene, absoluteError).lexically_normal();
-    for (int level = 0; level < kArchiveAncestorLevels && !absoluteError && ancestor.has_relative_path(); ++level) {
+    fs::path ancestor = absoluteFolder(scene);
+    for (int level = 0; level < kArchiveAncestorLevels && ancestor.has_relative_path(); ++level) {
         ancestor = ancestor.parent_path();
         if (ancestor.has_relative_path()) ancestors.push_back(ancestor);
     }
     std::vector<fs::path> nearRoots;
+    std::vector<fs::path> nearRootsSpelledOut;  // their absolute spellings, to name each folder once
     std::error_code noWorkingFolder;  // deleted under the renderer: then it is not looked in
     fs::path const workingFolder = fs::current_path(noWorkingFolder);
     for (fs::path const& root : {fs::path(currentDirectory()), scene, workingFolder}) {
-        std::error_code error;
         if (root.empty()) continue;
-        fs::path const full = fs::absolute(root, error).lexically_normal();
-        bool const seen = std::any_of(nearRoots.begin(), nearRoots.end(), [&](fs::path const& earlier) {
-            return fs::absolute(earlier, error).lexically_normal() == full;
-        });
-        if (!seen) nearRoots.push_back(root);
+        fs::path const full = absoluteFolder(root);
+        if (std::find(nearRootsSpelledOut.begin(), nearRootsSpelledOut.end(), full) != nearRootsSpelledOut.end())
+            continue;
+        nearRootsSpelledOut.push_back(full);
+        nearRoots.push_back(root);
     }
     std::vector<fs::path> roots = nearRoots;
     roots.insert(roots.end(), ancestors.begin(), ancestors.end());

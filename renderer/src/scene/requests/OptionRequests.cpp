@@ -7,6 +7,7 @@
 #include <optional>
 #include <sstream>
 
+#include "core/Folders.h"
 #include "core/PixelFilter.h"
 #include "scene/DisplayChannels.h"
 #include "scene/SceneBuilder.h"
@@ -493,9 +494,8 @@ void SceneBuilder::option(RequestReader& in) {
                 // from elsewhere means its own folder: both are searched, the scene's first.
                 fs::path const besideScene = (fs::path(currentDirectory()) / item).lexically_normal();
                 add(besideScene.string());
-                std::error_code error;
-                fs::path const fromWorkingFolder = fs::absolute(item, error).lexically_normal();
-                if (!error && fs::absolute(besideScene, error).lexically_normal() != fromWorkingFolder)
+                fs::path const fromWorkingFolder = absoluteFolder(item);
+                if (!fromWorkingFolder.empty() && absoluteFolder(besideScene) != fromWorkingFolder)
                     add(fromWorkingFolder.string());
             }
         }
