@@ -6,6 +6,8 @@
 #include <catch2/catch.hpp>
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 
 #include "core/ImageFiles.h"
 #include "support/RenderHelpers.h"
@@ -350,6 +352,20 @@ TEST_CASE("bad networks: located errors for wrong handles, outputs and types, wa
                                  fewSamples());
         CHECK(r.anyMessageContains("Pattern \"osl\" cannot be used"));
         CHECK(r.channel(8, 8, 0) == Approx(1.0f));  // PxrConstant's default emitColor is white
+    }
+    SECTION("a pattern that is an OSL shader on the shader search path: said to be OSL, not a missing .so") {
+        std::string const folder = test::outputDir() + "/osl-shaders";
+        std::filesystem::create_directories(folder);
+        std::ofstream(folder + "/dimples.oso") << "OpenShadingLanguage 1.00\nshader dimples\n";
+        auto r = test::renderRib("Option \"searchpath\" \"string shader\" [\"" + folder + "\"]\n" + kHead +
+                                     "Pattern \"dimples\" \"d\"\n"
+                                     "Bxdf \"PxrConstant\" \"c\" \"reference color emitColor\" [\"d:Cout\"]\n" +
+                                     kSquare,
+                                 fewSamples());
+        CHECK(r.anyMessageContains("Pattern \"d\" cannot be used (\"dimples\" is the OSL shader " + folder +
+                                   "/dimples.oso, and this renderer runs only patterns written in C++"));
+        CHECK_FALSE(r.anyMessageContains("searchpath"));  // the shader search path is read, not skipped
+        CHECK(r.channel(8, 8, 0) == Approx(1.0f));
     }
     SECTION("a missing pattern plugin used by three Patterns: said once in full, the others counted") {
         std::string threeUses;

@@ -231,8 +231,14 @@ void Renderer::Impl::loadPatterns(std::vector<MaterialDesc> const& usedMaterials
         try {
             plugin = &loader.pattern(desc.plugin, desc.where);
         } catch (RenderError const& e) {
-            // Like a missing texture: the render goes on, and says what it lacks.
-            diagnostics.warn(desc.where, "Pattern \"" + desc.handle + "\" cannot be used (" + e.what() +
+            // Like a missing texture: the render goes on, and says what it lacks. RenderMan runs
+            // a pattern of an OSL shader's name as OSL, which has no C++ plugin to find here.
+            std::string const why = desc.oslShader.empty()
+                                        ? std::string(e.what())
+                                        : "\"" + desc.plugin + "\" is the OSL shader " + desc.oslShader +
+                                              ", and this renderer runs only patterns written in C++ with the Rix "
+                                              "API (a " + desc.plugin + ".so on the plugin search path)";
+            diagnostics.warn(desc.where, "Pattern \"" + desc.handle + "\" cannot be used (" + why +
                                              "); the parameters connected to it keep their own values");
             missing.emplace(desc.plugin, Missing{&desc, 0});
             continue;

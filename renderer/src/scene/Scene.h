@@ -89,6 +89,9 @@ struct PatternDesc {
     ParamList params;
     SourceLocation where;
     std::map<std::string, Connection> connections;
+    /// An OSL shader of the plugin's name ("dimples.oso") on the shader search path or beside
+    /// the RIB, which RenderMan would run here; empty when there is none.
+    std::string oslShader;
 };
 
 /// An area light given by geometry: AreaLightSource (RenderMan 20 and the

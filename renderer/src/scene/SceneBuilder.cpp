@@ -456,6 +456,14 @@ void SceneBuilder::finishFrame() {
                 checkTexture(p.strings[0], p.location, "Pattern \"" + node.plugin + "\" \"" + node.handle + "\"",
                              image->second);
     }
+    std::map<std::string, std::string> oslShaders;  // plugin name -> its OSL shader file, looked for once
+    for (size_t i = 0; i < reached.size(); ++i) {
+        if (!reached[i]) continue;
+        PatternDesc& node = m_scene.patterns[i];
+        auto [known, firstTime] = oslShaders.try_emplace(node.plugin);
+        if (firstTime) known->second = oslShaderNamed(node.plugin);
+        node.oslShader = known->second;
+    }
     // A file lit by classic light shaders and naming no integrator was written for RenderMan before
     // RIS, whose surface shaders gathered those lights: PxrDirectLighting renders it that way, where
     // RIS's PxrDefault would light it from the camera and leave its lights unused. Its shapes given

@@ -304,6 +304,9 @@ private:
     /// with what `owner` does without it (`consequence`).
     void checkTexture(std::string const& file, SourceLocation const& where, std::string const& owner,
                       std::string const& consequence);
+    /// The OSL shader (name.oso, or its source name.osl) on the shader search path, beside the
+    /// scene or in the working folder; empty when there is none.
+    std::string oslShaderNamed(std::string const& name) const;
     /// MakeTexture, MakeLatLongEnvironment: the texture named is read from the picture.
     void makeTexture(RequestReader& in);
     void makeLatLongEnvironment(RequestReader& in);
@@ -468,6 +471,7 @@ private:
     } m_pbrtDirective;  ///< the first pbrt directive met, if any
     std::vector<std::string> m_fileStack;
     std::vector<std::string> m_archiveSearchPath;
+    std::vector<std::string> m_shaderSearchPath;  ///< where RenderMan finds OSL shaders (.oso)
     // Where a DynamicLoad plugin or a RunProgram program is looked for.
     std::vector<std::string> m_proceduralSearchPath;
     /// The programs of "RunProgram" procedurals, running while the scene is read, by the string naming them.

@@ -502,6 +502,7 @@ void SceneBuilder::option(RequestReader& in) {
     };
     update(m_scene.pluginSearchPath, "rixplugin");
     update(m_archiveSearchPath, "archive");
+    update(m_shaderSearchPath, "shader");
     update(m_scene.textureSearchPath, "texture");
     update(m_proceduralSearchPath, "procedural");
     for (auto const& p : params.all())

@@ -85,6 +85,20 @@ void SceneBuilder::pattern(RequestReader& in) {
     m_scene.patterns.push_back(std::move(node));
 }
 
+std::string SceneBuilder::oslShaderNamed(std::string const& name) const {
+    if (name.find('/') != std::string::npos) return {};
+    std::vector<fs::path> folders(m_shaderSearchPath.begin(), m_shaderSearchPath.end());
+    folders.push_back(fs::path(m_scene.file).parent_path());
+    folders.push_back(".");  // where RenderMan's users run oslc
+    for (fs::path const& folder : folders)
+        for (char const* extension : {".oso", ".osl"}) {
+            fs::path const file = folder / (name + extension);
+            std::error_code error;
+            if (fs::is_regular_file(file, error)) return file.lexically_normal().string();
+        }
+    return {};
+}
+
 std::map<std::string, Connection> SceneBuilder::connectionsOf(ParamList const& params, std::string const& owner) {
     std::map<std::string, Connection> connections;
     for (Param const& p : params.all()) {
