@@ -68,6 +68,19 @@ TEST_CASE("lexer: single-quoted strings and strings that span lines", "[rib]") {
     CHECK(lexer.next().text == "a\nb");
 }
 
+TEST_CASE("lexer: a sign after a whole number starts the next one, as in \"Scale 1 1-1\"", "[rib]") {
+    RibLexer lexer("Scale 1 1-1 [0.5-.25 2e-3+4 -1.5E+2-7]", "t.rib");
+    CHECK(lexer.next().text == "Scale");
+    std::vector<double> numbers;
+    for (RibToken token = lexer.next(); token.kind != RibToken::Kind::End; token = lexer.next())
+        if (token.kind == RibToken::Kind::Number) numbers.push_back(token.number);
+    CHECK(numbers == std::vector<double>{1, 1, -1, 0.5, -0.25, 2e-3, 4, -150, -7});
+    // The third number begins at its sign: errors and warnings point there.
+    RibLexer located("Scale 1 1-1", "t.rib");
+    for (int k = 0; k < 3; ++k) located.next();
+    CHECK(located.next().location.column == 10);
+}
+
 TEST_CASE("lexer: requests, numbers, strings, arrays and comments with positions", "[rib]") {
     RibLexer lexer("Sphere 1 -2.5e1 \"a \\\"q\\\"\" # comment\n[ 3 ]", "t.rib");
     RibToken t = lexer.next();
@@ -161,6 +174,13 @@ TEST_CASE("malformed RIB gives file:line:col and what was expected", "[rib][erro
         // A shell line left at the top of a RIB file (a real one has "set -x"): the whole word is shown.
         {"set -x\nFormat 10 10 1", "bad.rib:1:5", "malformed number '-x'"},
         {"Translate 1.5.2x 0 0", "bad.rib:1:11", "malformed number '1.5.2x'"},
+        {"Translate 1--2 0 0", "bad.rib:1:12", "malformed number '--2'"},
+        // A missing closing quote: the next quote closes the string lines later, and the error met
+        // after it points back at where the string opened, also across the quotes read the wrong way round.
+        {"ReadArchive \"a.rib\nAttributeBegin\nAttribute \"identifier\" \"string name\" [\"x\"]\nReadArchive "
+         "\"geo/b.rib\"\nAttributeEnd",
+         "bad.rib:4:17", "(the string opened at bad.rib:1:13 runs on past its line: is its closing quote missing?)"},
+        {"Translate 1 2e 0", "bad.rib:1:13", "malformed number '2e'"},
         {"WorldBegin\nTranslate 3e38 0 0\nPolygon \"P\" [0 0 0 3e38 0 0 0 1 0]", "bad.rib:3:1", "not finite once transformed"},
         {"WorldBegin\nScale 1e30 1 1\nScale 1e30 1 1", "bad.rib:3:1", "finite"},
         {"WorldBegin\nPointsPolygons [3] [0 1 7] \"P\" [0 0 0 1 0 0 0 1 0]", "bad.rib:2:1", "out of range"},

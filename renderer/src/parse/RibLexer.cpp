@@ -275,19 +275,40 @@ RibToken RibLexer::scan() {
             }
             token.text += s;  // a string may span lines
         }
+        if (m_line != token.location.line) {
+            MultiLineString& last = m_lastMultiLineString;
+            bool const sameSlip = last.closedOnLine > 0 && token.location.line - last.closedOnLine <= last.kReach;
+            last = {sameSlip ? last.opened : token.location, m_line};
+        }
         return token;
     }
     if (std::isdigit(static_cast<unsigned char>(c)) || c == '-' || c == '+' || c == '.') {
         size_t start = m_pos;
-        while (std::isdigit(static_cast<unsigned char>(current())) || current() == '-' || current() == '+' ||
-               current() == '.' || current() == 'e' || current() == 'E')
+        // sign? digits [. digits] [(e|E) sign? digits]. A sign after that starts the next number,
+        // as in RenderMan's reading of "Scale 1 1-1"; any other character run on is an error below.
+        auto digits = [this] {
+            while (std::isdigit(static_cast<unsigned char>(current()))) advance();
+        };
+        if (current() == '-' || current() == '+') advance();
+        digits();
+        if (current() == '.') {
             advance();
+            digits();
+        }
+        if (current() == 'e' || current() == 'E') {
+            advance();
+            if (current() == '-' || current() == '+') advance();
+            digits();
+        }
         token.text = m_text.substr(start, m_pos - start);
+        bool const runsOn = std::isdigit(static_cast<unsigned char>(current())) || current() == '.';
         char* end = nullptr;
         token.number = std::strtod(token.text.c_str(), &end);
-        if (end != token.text.c_str() + token.text.size()) {
+        if (runsOn || end != token.text.c_str() + token.text.size()) {
             // Show the whole word ("-x" of a shell line, "1.2.3a"), not only the part read as a number.
-            while (std::isalnum(static_cast<unsigned char>(current())) || current() == '_' || current() == '.') advance();
+            while (std::isalnum(static_cast<unsigned char>(current())) || current() == '_' || current() == '.' ||
+                   current() == '-' || current() == '+')
+                advance();
             throw RibError(token.location, "malformed number '" + m_text.substr(start, m_pos - start) + "'");
         }
         // RIB numbers are 32-bit floats: a larger one would silently become infinite.

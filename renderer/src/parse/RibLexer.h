@@ -35,6 +35,17 @@ public:
     RibToken next();
     RibToken const& peek();
 
+    /// The last string read that ran over a line end: where it opened, and the line it closed on.
+    /// Such strings are rare in RIB; one is most often a missing closing quote, which the next
+    /// quote, lines later, closes. Every quote after it is then read the wrong way round, so
+    /// further such strings that follow within `kReach` lines keep the first one's opening.
+    struct MultiLineString {
+        static constexpr int kReach = 10;
+        SourceLocation opened;
+        int closedOnLine = 0;
+    };
+    MultiLineString const& lastMultiLineString() const { return m_lastMultiLineString; }
+
 private:
     RibToken scan();
     /// A token of the binary encoding, starting with byte `code` (>= 0200).
@@ -64,6 +75,7 @@ private:
     std::vector<float> m_pendingFloats;  ///< the rest of a binary float array
     size_t m_pendingIndex = 0;
     bool m_inBinaryArray = false;
+    MultiLineString m_lastMultiLineString;
 };
 
 }  // namespace bxdflab

@@ -42,10 +42,9 @@ RibValue readArray(RibLexer& lexer, RibToken const& open) {
     }
 }
 
-}  // namespace
 
-void parseRib(std::string const& text, std::string const& fileName, RequestHandler const& handler) {
-    RibLexer lexer(text, fileName);
+/// Reads requests to the end of the text, handing each to `handler`.
+void readRequests(RibLexer& lexer, RequestHandler const& handler) {
     for (;;) {
         RibToken token = lexer.next();
         if (token.kind == RibToken::Kind::End) return;
@@ -79,6 +78,30 @@ void parseRib(std::string const& text, std::string const& fileName, RequestHandl
             request.args.push_back(std::move(value));
         }
         handler(request);
+    }
+}
+
+/// `error` with a pointer back to a string that ran over lines just before it: a missing closing
+/// quote is closed by the next quote, and the text after it then fails lines away from the mistake.
+RibError pointingAtOpenQuote(RibError const& error, RibLexer::MultiLineString const& string) {
+    std::string const located = error.what();
+    std::string const message = located.substr(std::min(located.size(), error.location.str().size() + 2));
+    return RibError(error.location, message + " (the string opened at " + string.opened.str() +
+                                        " runs on past its line: is its closing quote missing?)");
+}
+}  // namespace
+
+void parseRib(std::string const& text, std::string const& fileName, RequestHandler const& handler) {
+    RibLexer lexer(text, fileName);
+    try {
+        readRequests(lexer, handler);
+    } catch (RibError const& error) {
+        RibLexer::MultiLineString const& string = lexer.lastMultiLineString();
+        bool const justAfter = string.closedOnLine > 0 && error.location.file == fileName &&
+                               error.location.line >= string.closedOnLine &&
+                               error.location.line - string.closedOnLine <= string.kReach;
+        if (justAfter) throw pointingAtOpenQuote(error, string);
+        throw;
     }
 }
 
