@@ -67,7 +67,10 @@ add_cli_failure(empty_image "empty-image.rib:4:5: PxrDomeLight: cannot read ligh
 add_test(NAME cli.lfs_pointer_texture COMMAND rixrender --quiet --spp 1 -o lfs-texture.exr ${BAD}/lfs-pointer-texture.rib
          WORKING_DIRECTORY ${CLI_OUT})
 set_tests_properties(cli.lfs_pointer_texture PROPERTIES LABELS "cli;sanitize" PASS_REGULAR_EXPRESSION
-  "texture \"lfs-sky.exr\" cannot be read \\(it is a Git LFS pointer, not the image")
+  "lfs-pointer-texture.rib:3:30: Pattern \"PxrTexture\" \"tex\": texture \"lfs-sky.exr\" cannot be read \\(it is a Git LFS pointer, not the image")
+# An empty texture file is named at the RIB line that names it, and is an error under --strict.
+add_cli_failure(empty_texture "empty-texture.rib:3:30: Pattern \"PxrTexture\" \"tex\": texture \"empty-sky.exr\" cannot be read \\(it is empty \\(0 bytes\\)"
+                ${BAD}/empty-texture.rib --strict -o out.exr)
 add_cli_failure(scene_is_a_folder "\".*bad-input\" is a folder, not a RIB file" ${BAD} -o out.exr)
 add_cli_failure(no_world "no-world.rib: there is no WorldBegin" ${BAD}/no-world.rib -o out.exr)
 # Usage errors exit with status 2.

@@ -17,7 +17,7 @@ namespace bxdflab {
 struct TextureLocator {
     std::vector<std::string> folders;             ///< searched in order for a relative name
     std::map<std::string, std::string> madeFrom;  ///< MakeTexture: texture name -> picture name
-    std::set<std::string> reportedMissing;        ///< not found when the scene was read, and said so then
+    std::set<std::string> reportedMissing;        ///< not found (or no image) when the scene was read, and said so then
 
     /// The file to read for `name`, or nothing when no place has it.
     std::optional<std::string> find(std::string const& name) const;

@@ -73,10 +73,11 @@ private:
         } else if (!m_system->get_imagespec(file, 0, spec)) {
             std::string why = m_system->geterror(), pointer = notAnImageBecause(file.string());
             why = why.substr(0, why.find('\n'));  // OpenImageIO says it again on a second line
-            if (std::error_code error; !std::filesystem::exists(file.string(), error)) {
-                if (!m_locator.reportedMissing.count(name))
-                    m_diagnostics.warn("texture \"" + name + "\" does not exist (looked for from " +
-                                       m_locator.searchedPlaces() + "); its lookups return missingColor");
+            if (m_locator.reportedMissing.count(name)) {
+                // said with its RIB line when the scene was read
+            } else if (std::error_code error; !std::filesystem::exists(file.string(), error)) {
+                m_diagnostics.warn("texture \"" + name + "\" does not exist (looked for from " +
+                                   m_locator.searchedPlaces() + "); its lookups return missingColor");
             } else {
                 m_diagnostics.warn("texture \"" + name + "\" cannot be read (" + (pointer.empty() ? why : pointer) +
                                    "); its lookups return missingColor");

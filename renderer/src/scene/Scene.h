@@ -168,7 +168,8 @@ struct Scene : SceneOptions {
     std::map<std::string, Mat4> coordinateSystems;
     /// Things dropped at load, e.g. "light 'fill' has zero intensity" (for the stats).
     std::vector<std::string> dropped;
-    /// Textures the scene names that were not found when it was read (and said so, with the RIB line).
+    /// Textures the scene names that were not found, or hold no image (empty, a Git LFS pointer), when it
+    /// was read (and said so, with the RIB line).
     std::set<std::string> missingTextures;
 
     /// Where the files textures name are found: the texture search path, then the RIB's folder.

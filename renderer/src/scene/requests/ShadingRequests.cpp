@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <utility>
 
+#include "core/ImageFiles.h"
 #include "core/Spelling.h"
 #include "scene/SceneBuilder.h"
 #include "scene/lights/InfiniteLights.h"
@@ -215,9 +216,17 @@ void SceneBuilder::checkTexture(std::string const& file, SourceLocation const& w
                                 std::string const& consequence) {
     // Said here, where the RIB line is known; the texture service then does not say it again.
     TextureLocator const textures = m_scene.textureLocator();
-    if (file.empty() || textures.find(file) || !m_scene.missingTextures.insert(file).second) return;
-    missingFile(where, owner + ": texture \"" + file + "\" does not exist (looked for from " + textures.searchedPlaces() +
-                           "); " + consequence);
+    if (file.empty() || m_scene.missingTextures.count(file)) return;
+    std::optional<std::string> const found = textures.find(file);
+    // A file that is there but holds no image (empty, a Git LFS pointer) is said here too.
+    std::string const notAnImage = found ? notAnImageBecause(*found) : std::string();
+    if (found && notAnImage.empty()) return;
+    m_scene.missingTextures.insert(file);
+    if (found)
+        missingFile(where, owner + ": texture \"" + file + "\" cannot be read (" + notAnImage + "); " + consequence);
+    else
+        missingFile(where, owner + ": texture \"" + file + "\" does not exist (looked for from " +
+                               textures.searchedPlaces() + "); " + consequence);
 }
 
 void SceneBuilder::makeTexture(RequestReader& in) { madeTexture(in, true); }
