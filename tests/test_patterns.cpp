@@ -351,6 +351,9 @@ TEST_CASE("bad networks: located errors for wrong handles, outputs and types, wa
                                      kSquare,
                                  fewSamples());
         CHECK(r.anyMessageContains("Pattern \"osl\" cannot be used"));
+        // Named as RenderMan's, and the RIB line is said once, at the start of the warning.
+        CHECK(r.anyMessageContains("(\"PxrOSL\" is one of RenderMan's patterns, which this renderer does not "
+                                   "have: Pattern plugin \"PxrOSL\" not found"));
         CHECK(r.channel(8, 8, 0) == Approx(1.0f));  // PxrConstant's default emitColor is white
     }
     SECTION("a pattern that is an OSL shader on the shader search path: said to be OSL, not a missing .so") {

@@ -233,11 +233,15 @@ void Renderer::Impl::loadPatterns(std::vector<MaterialDesc> const& usedMaterials
         } catch (RenderError const& e) {
             // Like a missing texture: the render goes on, and says what it lacks. RenderMan runs
             // a pattern of an OSL shader's name as OSL, which has no C++ plugin to find here.
-            std::string const why = desc.oslShader.empty()
-                                        ? std::string(e.what())
-                                        : "\"" + desc.plugin + "\" is the OSL shader " + desc.oslShader +
-                                              ", and this renderer runs only patterns written in C++ with the Rix "
-                                              "API (a " + desc.plugin + ".so on the plugin search path)";
+            std::string why = e.what();
+            std::string const located = desc.where.str() + ": ";  // said once, at the start of the warning
+            if (why.compare(0, located.size(), located) == 0) why.erase(0, located.size());
+            if (!desc.oslShader.empty())
+                why = "\"" + desc.plugin + "\" is the OSL shader " + desc.oslShader +
+                      ", and this renderer runs only patterns written in C++ with the Rix API (a " + desc.plugin +
+                      ".so on the plugin search path)";
+            else if (desc.plugin.compare(0, 3, "Pxr") == 0)
+                why = "\"" + desc.plugin + "\" is one of RenderMan's patterns, which this renderer does not have: " + why;
             diagnostics.warn(desc.where, "Pattern \"" + desc.handle + "\" cannot be used (" + why +
                                              "); the parameters connected to it keep their own values");
             missing.emplace(desc.plugin, Missing{&desc, 0});
