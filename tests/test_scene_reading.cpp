@@ -282,6 +282,15 @@ TEST_CASE("a surface shader of the scene's own is rendered as the standard one i
     CHECK(test::warningsContaining(diagnostics, "has no parameter") == 0);
 }
 
+TEST_CASE("Surface naming one of RenderMan's Bxdfs says how a Bxdf is given", "[rib]") {
+    Diagnostics diagnostics(false);
+    test::parseRib("WorldBegin\nSurface \"PxrDisney\"\nSphere 1 -1 1 360\n", diagnostics);
+    CHECK(test::warningsContaining(diagnostics, "test.rib:2:1: Surface \"PxrDisney\" is a shader this renderer does "
+                                                "not have") == 1);
+    CHECK(test::warningsContaining(diagnostics, "; \"PxrDisney\" is a Bxdf, given with Bxdf \"PxrDisney\" "
+                                                "\"handle\"") == 1);
+}
+
 TEST_CASE("ColorSamples: colours are written with its numbers and read as the RGB its nRGB gives", "[rib]") {
     auto materialOf = [](Scene const& scene, size_t shape) -> MaterialDesc const& {
         return scene.materials[static_cast<size_t>(scene.shapes.at(shape)->material)];

@@ -42,7 +42,6 @@ RibValue readArray(RibLexer& lexer, RibToken const& open) {
     }
 }
 
-
 /// Reads requests to the end of the text, handing each to `handler`.
 void readRequests(RibLexer& lexer, RequestHandler const& handler) {
     for (;;) {

@@ -144,10 +144,14 @@ void SceneBuilder::surface(RequestReader& in) {
     if (!known) {
         auto const [like, why] = lookalikeSurface(base, params);
         bool const mapped = like != "metal" && params.has("texturename");
+        // RenderMan's own materials (PxrDisney, PxrSurface, ...) are Bxdfs, which Surface does not give.
+        bool const renderMansBxdf = base.compare(0, 3, "Pxr") == 0;
         warnOnce("surface " + name, in.where(),
                  "Surface \"" + name + "\" is a shader this renderer does not have: rendered as \"" + like + "\", " +
                      why + ", with the parameters of it that it gives (its others are ignored" +
-                     (mapped ? "; its texturename maps its colour, as paintedplastic's does" : "") + ")");
+                     (mapped ? "; its texturename maps its colour, as paintedplastic's does" : "") + ")" +
+                     (renderMansBxdf ? "; \"" + base + "\" is a Bxdf, given with Bxdf \"" + base + "\" \"handle\""
+                                     : ""));
         name = like;
         known = classicSurfaceParameters(like);
         lookalike = true;
