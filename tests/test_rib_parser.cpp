@@ -317,12 +317,17 @@ TEST_CASE("a name that is no RIB request is told apart from an unsupported one, 
     CHECK(scene.shapes.size() == 1);
     std::vector<std::string> warnings = test::warningTexts(diagnostics);
     REQUIRE(warnings.size() == 4u);
-    CHECK_THAT(warnings[0], Catch::Matchers::Contains("unsupported request Atmosphere"));
+    // A skipped shading request says what it takes out of the image.
+    CHECK_THAT(warnings[0], Catch::Matchers::Contains("unsupported request Atmosphere skipped: volumes are not rendered"));
     CHECK_THAT(warnings[1], Catch::Matchers::StartsWith("test.rib:3:1"));
     CHECK_THAT(warnings[1], Catch::Matchers::Contains("TransforBegin is not a RIB request; skipped (did you mean TransformBegin?)"));
     CHECK_THAT(warnings[2], Catch::Matchers::Contains("sphere is not a RIB request; skipped (did you mean Sphere?)"));
     CHECK_THAT(warnings[3], Catch::Matchers::Contains("Frobnicate is not a RIB request; skipped"));
     CHECK_THAT(warnings[3], !Catch::Matchers::Contains("did you mean"));
+    Diagnostics displaced(false);
+    parseRib("WorldBegin\nDisplace \"PxrDisplace\" \"d\" \"float dispAmount\" [0.1]\nSphere 1 -1 1 360\n", displaced);
+    CHECK(test::warningsContaining(displaced, "test.rib:2:1: unsupported request Displace skipped: displacement is "
+                                              "not rendered, so surfaces keep their own shape") == 1);
 }
 
 TEST_CASE("a pbrt scene is named as one at its second pbrt directive, and one stray pbrt word is only a warning", "[rib]") {

@@ -359,6 +359,16 @@ void SceneBuilder::refuseIfPbrt(RibRequest const& request) {
 }
 
 std::string SceneBuilder::unknownRequestMessage(std::string const& name) {
+    // What a skipped shading request takes out of the image, for the requests scenes use most.
+    static std::map<std::string, std::string> const lost = {
+        {"Displace", "displacement is not rendered, so surfaces keep their own shape"},
+        {"Displacement", "displacement is not rendered, so surfaces keep their own shape"},
+        {"Atmosphere", "volumes are not rendered, so light crosses the space between surfaces unchanged"},
+        {"Interior", "volumes are not rendered, so light crosses the space between surfaces unchanged"},
+        {"Exterior", "volumes are not rendered, so light crosses the space between surfaces unchanged"},
+    };
+    if (auto const found = lost.find(name); found != lost.end())
+        return "unsupported request " + name + " skipped: " + found->second;
     if (isRibRequest(name)) return "unsupported request " + name + " skipped";
     if (isPbrtDirective(name)) return name + " is not a RIB request but a directive of pbrt's scene format; skipped";
     // Not a RIB request at all: usually a slip of the keyboard, which RIB
