@@ -25,14 +25,20 @@ struct SourceLocation {
 class RenderError : public std::runtime_error {
 public:
     using std::runtime_error::runtime_error;
+    /// What went wrong without where: for a message that is quoted inside another one at the same place.
+    virtual std::string message() const { return what(); }
 };
 
 /// An error located in a RIB file: "file:line:col: message".
 class RibError : public RenderError {
 public:
     RibError(SourceLocation where, std::string const& message)
-        : RenderError(where.str() + ": " + message), location(std::move(where)) {}
+        : RenderError(where.str() + ": " + message), location(std::move(where)), m_message(message) {}
+    std::string message() const override { return m_message; }
     SourceLocation location;
+
+private:
+    std::string m_message;
 };
 
 /// An exception a plugin threw while shading, with the plugin and the RIB

@@ -83,9 +83,7 @@ void readRequests(RibLexer& lexer, RequestHandler const& handler) {
 /// `error` with a pointer back to a string that ran over lines just before it: a missing closing
 /// quote is closed by the next quote, and the text after it then fails lines away from the mistake.
 RibError pointingAtOpenQuote(RibError const& error, RibLexer::MultiLineString const& string) {
-    std::string const located = error.what();
-    std::string const message = located.substr(std::min(located.size(), error.location.str().size() + 2));
-    return RibError(error.location, message + " (the string opened at " + string.opened.str() +
+    return RibError(error.location, error.message() + " (the string opened at " + string.opened.str() +
                                         " runs on past its line: is its closing quote missing?)");
 }
 }  // namespace

@@ -144,6 +144,12 @@ std::string caseInsensitiveMatch(std::string const& folder, std::string const& n
     return best.empty() ? "" : (fs::path(folder) / best).string();
 }
 
+/// Stops at the statement that names the plugin, where there is one.
+[[noreturn]] void refuse(SourceLocation const& where, std::string const& message) {
+    if (where.known()) throw RibError(where, message);
+    throw RenderError(message);
+}
+
 /// The plugins the folders hold, by name (their file names without ".so"), sorted.
 std::vector<std::string> pluginNames(std::vector<std::string> const& folders) {
     std::vector<std::string> names;
@@ -179,9 +185,7 @@ std::string PluginLoader::locate(std::string const& name) const {
 bool PluginLoader::has(std::string const& name) const { return m_plugins.count(name) > 0 || !locate(name).empty(); }
 
 std::string PluginLoader::find(std::string const& name, const char* kind, SourceLocation const& where) const {
-    std::string prefix = where.known() ? where.str() + ": " : "";
-    if (name.find('/') != std::string::npos)
-        throw RenderError(prefix + "plugin names may not contain '/': \"" + name + "\"");
+    if (name.find('/') != std::string::npos) refuse(where, "plugin names may not contain '/': \"" + name + "\"");
     std::string found = locate(name);
     if (!found.empty()) {
         std::string spelled = fs::path(found).stem().string();
@@ -196,7 +200,7 @@ std::string PluginLoader::find(std::string const& name, const char* kind, Source
     for (auto const& folder : m_searchPath) searched += "\n    " + folder;
     std::string const near = closestSpelling(name, pluginNames(m_searchPath));
     std::string const hint = near.empty() ? "" : " (did you mean \"" + near + "\"?)";
-    throw RenderError(prefix + kind + " plugin \"" + name + "\" not found" + hint + ": no " + name +
+    refuse(where, std::string(kind) + " plugin \"" + name + "\" not found" + hint + ": no " + name +
                       ".so in any folder of the plugin search path:" + searched +
                       "\n  (add a folder with --plugin-path, $RIX_PLUGIN_PATH or Option \"searchpath\" "
                       "\"string rixplugin\")");
