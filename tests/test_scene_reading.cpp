@@ -289,6 +289,12 @@ TEST_CASE("Surface naming one of RenderMan's Bxdfs says how a Bxdf is given", "[
                                                 "not have") == 1);
     CHECK(test::warningsContaining(diagnostics, "; \"PxrDisney\" is a Bxdf, given with Bxdf \"PxrDisney\" "
                                                 "\"handle\"") == 1);
+    // RenderMan's Lama family is named by its prefix too; a shader of a scene's own gets no such hint.
+    Diagnostics lama(false);
+    test::parseRib("WorldBegin\nSurface \"LamaDiffuse\"\nSphere 1 -1 1 360\nSurface \"myDisney\"\nSphere 1 -1 1 360\n",
+                   lama);
+    CHECK(test::warningsContaining(lama, "\"LamaDiffuse\" is a Bxdf, given with Bxdf") == 1);
+    CHECK(test::warningsContaining(lama, "\"myDisney\" is a Bxdf") == 0);
 }
 
 TEST_CASE("ColorSamples: colours are written with its numbers and read as the RGB its nRGB gives", "[rib]") {

@@ -24,6 +24,7 @@
 #include "core/CrashReport.h"
 #include "core/ImageFiles.h"
 #include "core/PixelFilter.h"
+#include "core/RenderManNames.h"
 #include "render/SampleSchedule.h"
 #include "scene/Camera.h"
 #include "scene/PatternReach.h"
@@ -233,14 +234,12 @@ void Renderer::Impl::loadPatterns(std::vector<MaterialDesc> const& usedMaterials
         } catch (RenderError const& e) {
             // Like a missing texture: the render goes on, and says what it lacks. RenderMan runs
             // a pattern of an OSL shader's name as OSL, which has no C++ plugin to find here.
-            std::string why = e.what();
-            std::string const located = desc.where.str() + ": ";  // said once, at the start of the warning
-            if (why.compare(0, located.size(), located) == 0) why.erase(0, located.size());
+            std::string why = e.message();  // its place is desc.where, said once at the start of the warning
             if (!desc.oslShader.empty())
                 why = "\"" + desc.plugin + "\" is the OSL shader " + desc.oslShader +
                       ", and this renderer runs only patterns written in C++ with the Rix API (a " + desc.plugin +
                       ".so on the plugin search path)";
-            else if (desc.plugin.compare(0, 3, "Pxr") == 0)
+            else if (isRenderMansOwnName(desc.plugin))
                 why = "\"" + desc.plugin + "\" is one of RenderMan's patterns, which this renderer does not have: " + why;
             diagnostics.warn(desc.where, "Pattern \"" + desc.handle + "\" cannot be used (" + why +
                                              "); the parameters connected to it keep their own values");

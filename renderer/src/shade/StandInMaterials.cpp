@@ -2,10 +2,10 @@
 
 #include <algorithm>
 
+#include "core/RenderManNames.h"
+
 namespace bxdflab {
 namespace {
-
-bool isRenderMansOwn(std::string const& name) { return name.rfind("Pxr", 0) == 0 || name.rfind("Lama", 0) == 0; }
 
 /// The parameter `name` as a plain (not connected) value of `type`; one written
 /// without a type counts when its values can be that type, as RenderMan would
@@ -91,7 +91,7 @@ void applyGain(MaterialDesc& standIn, std::string const& to, float gain, std::ve
 
 std::optional<StandIn> standInFor(MaterialDesc const& material, std::vector<PatternDesc>& patterns) {
     std::string const& name = material.plugin;
-    if (!isRenderMansOwn(name)) return std::nullopt;
+    if (!isRenderMansOwnName(name)) return std::nullopt;
     ParamList const& in = material.params;
     StandIn s;
     s.material.handle = material.handle;

@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "core/ImageFiles.h"
+#include "core/RenderManNames.h"
 #include "core/Spelling.h"
 #include "scene/SceneBuilder.h"
 #include "scene/lights/InfiniteLights.h"
@@ -145,7 +146,7 @@ void SceneBuilder::surface(RequestReader& in) {
         auto const [like, why] = lookalikeSurface(base, params);
         bool const mapped = like != "metal" && params.has("texturename");
         // RenderMan's own materials (PxrDisney, PxrSurface, ...) are Bxdfs, which Surface does not give.
-        bool const renderMansBxdf = base.compare(0, 3, "Pxr") == 0;
+        bool const renderMansBxdf = isRenderMansOwnName(base);
         warnOnce("surface " + name, in.where(),
                  "Surface \"" + name + "\" is a shader this renderer does not have: rendered as \"" + like + "\", " +
                      why + ", with the parameters of it that it gives (its others are ignored" +
@@ -384,7 +385,7 @@ void SceneBuilder::makeLightFrom(std::string const& request, std::string const& 
     warnIfLightMoves(where);
     m_lightHandles[handle] = m_scene.lights.size();
     m_scene.lights.push_back(std::move(light));
-    if (request == "LightSource" && type.rfind("Pxr", 0) != 0) {
+    if (request == "LightSource" && !isRenderMansOwnName(type)) {
         if (!m_firstClassicLight) m_firstClassicLight = where;
         // RenderMan's classic light list: the light is on for the shapes that follow, in this block.
         state().lightList.insert(handle);
@@ -486,7 +487,7 @@ void SceneBuilder::startAreaLight(std::string const& shader, std::string const& 
     // RenderMan for Maya 20 writes each light as its own shader, named by its node:
     // "<project>/shaders/PxrStdEnvMapLightShape1_rfm"; the node's name tells the kind.
     std::string const base = std::filesystem::path(shader).filename().string();
-    area->classic = base.rfind("Pxr", 0) != 0;
+    area->classic = !isRenderMansOwnName(base);
     if (!area->classic) {
         area->radiance = risLightRadiance(shader, params, where);
         area->daylight = base.rfind("PxrStdEnvDayLight", 0) == 0;
