@@ -175,6 +175,9 @@ TEST_CASE("malformed RIB gives file:line:col and what was expected", "[rib][erro
         {"set -x\nFormat 10 10 1", "bad.rib:1:5", "malformed number '-x'"},
         {"Translate 1.5.2x 0 0", "bad.rib:1:11", "malformed number '1.5.2x'"},
         {"Translate 1--2 0 0", "bad.rib:1:12", "malformed number '--2'"},
+        // A letter run on is not a request that follows: no request starts in the middle of a word.
+        {"Translate 1e5e3 0 0", "bad.rib:1:11", "malformed number '1e5e3'"},
+        {"Sphere 1 -1 1 360A", "bad.rib:1:15", "malformed number '360A'"},
         // A missing closing quote: the next quote closes the string lines later, and the error met
         // after it points back at where the string opened, also across the quotes read the wrong way round.
         {"ReadArchive \"a.rib\nAttributeBegin\nAttribute \"identifier\" \"string name\" [\"x\"]\nReadArchive "

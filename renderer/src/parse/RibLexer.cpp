@@ -285,7 +285,8 @@ RibToken RibLexer::scan() {
     if (std::isdigit(static_cast<unsigned char>(c)) || c == '-' || c == '+' || c == '.') {
         size_t start = m_pos;
         // sign? digits [. digits] [(e|E) sign? digits]. A sign after that starts the next number,
-        // as in RenderMan's reading of "Scale 1 1-1"; any other character run on is an error below.
+        // as in RenderMan's reading of "Scale 1 1-1"; a digit, point or letter run on ("1.5.2", "1e5e3",
+        // "360A") is an error below, as no number or request starts there.
         auto digits = [this] {
             while (std::isdigit(static_cast<unsigned char>(current()))) advance();
         };
@@ -301,7 +302,7 @@ RibToken RibLexer::scan() {
             digits();
         }
         token.text = m_text.substr(start, m_pos - start);
-        bool const runsOn = std::isdigit(static_cast<unsigned char>(current())) || current() == '.';
+        bool const runsOn = std::isalnum(static_cast<unsigned char>(current())) || current() == '.' || current() == '_';
         char* end = nullptr;
         token.number = std::strtod(token.text.c_str(), &end);
         if (runsOn || end != token.text.c_str() + token.text.size()) {
