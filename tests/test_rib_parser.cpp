@@ -331,6 +331,12 @@ TEST_CASE("a name that is no RIB request is told apart from an unsupported one, 
     parseRib("WorldBegin\nDisplace \"PxrDisplace\" \"d\" \"float dispAmount\" [0.1]\nSphere 1 -1 1 360\n", displaced);
     CHECK(test::warningsContaining(displaced, "test.rib:2:1: unsupported request Displace skipped: displacement is "
                                               "not rendered, so surfaces keep their own shape") == 1);
+    // RenderMan's request for volume samples (exporters write it in every frame) is a request, not a typo.
+    Diagnostics volumeSamples(false);
+    parseRib("VolumePixelSamples 1 1\nWorldBegin\nSphere 1 -1 1 360\n", volumeSamples);
+    CHECK(test::warningsContaining(volumeSamples, "test.rib:1:1: unsupported request VolumePixelSamples skipped: it "
+                                                  "sets how finely volumes are sampled") == 1);
+    CHECK(test::warningsContaining(volumeSamples, "not a RIB request") == 0);
 }
 
 TEST_CASE("a pbrt scene is named as one at its second pbrt directive, and one stray pbrt word is only a warning", "[rib]") {

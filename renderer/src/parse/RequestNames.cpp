@@ -81,6 +81,7 @@ constexpr std::array kRequests = {
     "VPAtmosphere",
     "VPInterior",
     "VPSurface",
+    "VolumePixelSamples",
     // Transformations.
     "Identity",
     "Transform",
