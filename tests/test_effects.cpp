@@ -109,6 +109,14 @@ TEST_CASE("PxrDefault lights an unlit scene with a headlight and samples no Bxdf
     CHECK(lit.channel(12, 12, 0) == Approx(r.channel(12, 12, 0)));
     CHECK(lit.anyMessageContains("the scene names no Integrator, so PxrDefault lights it from the camera, as in "
                                  "RenderMan, and its light is not used; Integrator \"PxrDirectLighting\""));
+
+    // A light this renderer cannot render leaves only the headlight, and a note says that it lights the image.
+    auto unrenderable = test::renderRib(
+        sceneWith("Bxdf \"diffuse\" \"d\" \"color diffuseColor\" [1 1 1]", "LightSource \"envlight\" \"e\"\n", ""));
+    CHECK(unrenderable.channel(12, 12, 0) == Approx(r.channel(12, 12, 0)));
+    CHECK(unrenderable.anyMessageContains("the scene's one light is not one this renderer can render, so it is lit "
+                                          "from the camera only"));
+    CHECK_FALSE(r.anyMessageContains("lit from the camera only"));  // a scene without lights asks for the headlight
 }
 
 TEST_CASE("motion blur is simulated only when something moves while the shutter is open", "[effects][motion]") {

@@ -394,6 +394,12 @@ Renderer::Renderer(Scene& scene, RenderSettings settings, Diagnostics& diagnosti
                              " it from the camera, as in RenderMan, and " + unused +
                              " not used; Integrator \"PxrDirectLighting\" \"d\" (or \"PxrPathTracer\") before WorldBegin "
                              "renders with them");
+        } else if (scene.unrenderableLights > 0) {
+            // Its lights were warned about one by one; what lights the image instead is said here.
+            diagnostics.info(std::string(scene.unrenderableLights == 1 ? "the scene's one light is not"
+                                                                       : "none of the scene's lights is") +
+                             " one this renderer can render, so it is lit from the camera only (the headlight "
+                             "PxrDefault gives every scene); the image shows its shapes, not its lighting");
         }
     } else {
         for (auto const& light : scene.lights) r.shadingLights.push_back(light.get());

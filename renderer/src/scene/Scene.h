@@ -161,6 +161,8 @@ struct Scene : SceneOptions {
     /// parameter of the same name takes its values from the primvar.
     std::set<std::string> primvarNames;
     std::vector<std::unique_ptr<Light>> lights;
+    /// Lights the scene gives that this renderer cannot render (a light shader or plugin it does not have).
+    int unrenderableLights = 0;
     /// Light linking: lightLinks[k][l] says whether light l lights the shapes whose lightLink is k.
     std::vector<std::vector<bool>> lightLinks;
     /// The coordinate systems named by CoordinateSystem and ScopedCoordinateSystem

@@ -352,6 +352,7 @@ void SceneBuilder::makeLightFrom(std::string const& request, std::string const& 
                           [this](SourceLocation const& at, std::string const& message) { missingFile(at, message); });
         if (!light) {
             warnOnce("light " + type, where, unsupportedLightMessage(type));
+            ++m_scene.unrenderableLights;
             return;
         }
         // Exporters write every parameter of every light: each unused name is said once.
@@ -366,7 +367,10 @@ void SceneBuilder::makeLightFrom(std::string const& request, std::string const& 
             warnOnce("light shader " + type, where,
                      "LightSource \"" + type + "\" is a shader this renderer does not have; " +
                          (light ? "it is rendered as " + guess : std::string("skipped")));
-        if (!light) return;
+        if (!light) {
+            if (type != "ambientlight") ++m_scene.unrenderableLights;  // the ambient term is kept apart
+            return;
+        }
         if (state().classicLightShadows) light->castsShadows = true;
     }
     light->handle = handle;
