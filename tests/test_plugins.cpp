@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "RixBxdfLobe.h"
 #include "shade/PluginLoader.h"
 #include "shade/PluginSearchPath.h"
 #include "support/RenderHelpers.h"
@@ -51,6 +52,28 @@ TEST_CASE("a plugin written in the course text's style compiles, loads and match
     auto glowing = test::renderRib(withBxdf("Bxdf \"bookdiffuse\" \"g\" \"color emissive_color\" [1 0 0] \"color diffuse_color\" [0 0 0]"));
     CHECK(glowing.channel(12, 12, 0) == 1.0f);
     CHECK(glowing.channel(12, 12, 1) == 0.0f);
+}
+
+TEST_CASE("a sample tagged by assigning the looked-up lobe is valid as in RenderMan's examples", "[plugins]") {
+    // RenderMan's example Bxdfs (and LAIKA's) write lobeSampled[i] = s_lobe and no SetValid(true):
+    // the lobe RixBXLookupLobeByName gives is valid, so the path goes on from it.
+    RixBXLobeSampled nothing;
+    CHECK_FALSE(nothing.GetValid());
+    RixBXLobeSampled const diffuse(false, false, true, false, 1, 0);
+    CHECK(diffuse.GetValid());
+    CHECK(RixBXLobeTraits(diffuse).GetValid());
+
+    std::string rib = withBxdf("Bxdf \"BOOK\" \"b\" \"color diffuse_color\" [0.7 0.7 0.7]");
+    rib.replace(rib.find("\"PxrDirectLighting\""), 19, "\"PxrPathTracer\"");
+    rib.replace(rib.find("WorldBegin\n"), 11, "WorldBegin\n  Patch \"bilinear\" \"P\" [-9 -1 0 9 -1 0 -9 -1 20 9 -1 20]\n");
+    RenderSettings settings;
+    settings.spp = 64;
+    auto told = test::renderRib(std::string(rib).replace(rib.find("BOOK"), 4, "bookdiffuse"), settings);
+    auto assigned = test::renderRib(std::string(rib).replace(rib.find("BOOK"), 4, "bookdiffuse_assigns"), settings);
+    CHECK(told.stats.indirectRays > 0u);
+    CHECK(assigned.stats.indirectRays == told.stats.indirectRays);
+    auto all = [](int, int) { return true; };
+    CHECK(test::meanChannel(assigned, 0, all) == Approx(test::meanChannel(told, 0, all)).epsilon(1e-6));
 }
 
 TEST_CASE("a missing plugin names itself and every folder searched", "[plugins][errors]") {

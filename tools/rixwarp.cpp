@@ -115,7 +115,9 @@ int main(int argc, char** argv) {
         bool pass = valid > 0 && chi.pValue > 0.01 && t.impossible == 0 && counts.nonFinite == 0;
         std::printf("%s at theta %.1f phi %.1f: %ld of %ld samples valid, FPdf integrates to %.4f over the %s\n",
                     plugin.c_str(), theta, phi, valid, counts.total, t.pdfMass, sphere ? "sphere" : "hemisphere");
-        if (valid == 0) std::printf("no sample was valid: GenerateSample never called SetValid(true)\n");
+        if (valid == 0)
+            std::printf("no sample was valid: GenerateSample marked none valid (SetValid(true), or assigning a "
+                        "lobe from RixBXLookupLobeByName)\n");
         else std::printf("sample weight W/FPdf: mean %.4g, largest %.4g\n", weightSum / valid, weightLargest);
         if (counts.nonFinite) std::printf("%ld valid samples had a NaN or infinite direction or pdf\n", counts.nonFinite);
         if (discrete > 0) {

@@ -60,7 +60,9 @@ public:
             RPdf[i] = NdV * F_INVPI;
             w[i] = m_diff[i] * FPdf[i];
             lobeSampled[i] = s_lobe;
+#ifndef BOOK_ASSIGNS_ONLY  // RenderMan's examples stop at the assignment: the looked-up lobe is valid
             lobeSampled[i].SetValid(true);
+#endif
         }
     }
 

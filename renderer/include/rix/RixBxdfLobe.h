@@ -25,12 +25,17 @@ static constexpr int k_RixBXMaxNumUserLobes = 12;
 /// One lobe, as chosen by GenerateSample. "Diffuse" means neither specular nor
 /// user. An INVALID sample ends the path (use it when no direction could be
 /// generated, e.g. below the horizon); a valid sample with zero weight does not.
+/// A default-made lobe is invalid; one made from its kind (as RixBXLookupLobeByName
+/// makes yours) is valid, as in RenderMan, so that the common idiom
+///     lobeSampled[i].SetValid(false);           // first: nothing generated yet
+///     ... lobeSampled[i] = s_diffuseLobe;       // on success: valid, and tagged
+/// works; calling SetValid(true) after the assignment, as the chapters do, says it aloud.
 class RixBXLobeSampled {
 public:
     RixBXLobeSampled() = default;
     RixBXLobeSampled(bool discrete, bool specular, bool reflect, bool user,
                      unsigned char lpeId, unsigned char lobeId)
-        : m_valid(false), m_discrete(discrete), m_specular(specular), m_reflect(reflect),
+        : m_valid(true), m_discrete(discrete), m_specular(specular), m_reflect(reflect),
           m_user(user), m_lpeId(lpeId), m_lobeId(lobeId) {}
 
     void SetValid(bool valid) { m_valid = valid; }
