@@ -61,7 +61,7 @@ TEST_CASE("a sample tagged by assigning the looked-up lobe is valid as in Render
     CHECK_FALSE(nothing.GetValid());
     RixBXLobeSampled const diffuse(false, false, true, false, 1, 0);
     CHECK(diffuse.GetValid());
-    CHECK(RixBXLobeTraits(diffuse).GetValid());
+    CHECK((RixBXLobeTraits::All() & RixBXLobeTraits(diffuse)) == RixBXLobeTraits(diffuse));  // a set, not a sample
 
     std::string rib = withBxdf("Bxdf \"BOOK\" \"b\" \"color diffuse_color\" [0.7 0.7 0.7]");
     rib.replace(rib.find("\"PxrDirectLighting\""), 19, "\"PxrPathTracer\"");

@@ -69,14 +69,14 @@ private:
 class RixBXLobeTraits {
 public:
     RixBXLobeTraits() = default;
-    /// The set holding exactly the given lobe.
+    /// The set holding exactly the given lobe (its kind and direction; whether a
+    /// sample is valid is said of the set written to lobesEvaluated, with SetValid).
     /// Lobes are told apart by kind and light path expression id, as in RenderMan.
     explicit RixBXLobeTraits(RixBXLobeSampled lobe) {
         int bit = lobe.GetUser() ? k_userShift + lobe.GetLpeId() % k_RixBXMaxNumUserLobes
                   : lobe.GetSpecular() ? k_specularShift + lobe.GetLpeId() % k_RixBXMaxNumSpecularLobes
                                        : lobe.GetLpeId() % k_RixBXMaxNumDiffuseLobes;
         m_bits = (1u << bit) | (lobe.GetReflect() ? k_reflectBit : k_transmitBit);
-        if (lobe.GetValid()) m_bits |= k_validBit;
     }
     /// Every lobe in both directions (what a general integrator asks for).
     static RixBXLobeTraits All() { RixBXLobeTraits t; t.SetAll(); return t; }
