@@ -337,6 +337,9 @@ TEST_CASE("a name that is no RIB request is told apart from an unsupported one, 
     CHECK(test::warningsContaining(volumeSamples, "test.rib:1:1: unsupported request VolumePixelSamples skipped: it "
                                                   "sets how finely volumes are sampled") == 1);
     CHECK(test::warningsContaining(volumeSamples, "not a RIB request") == 0);
+    Diagnostics coshader(false);
+    parseRib("WorldBegin\nShader \"texturePj\" \"wood\" \"float tiling\" [1]\nSphere 1 -1 1 360\n", coshader);
+    CHECK(test::warningsContaining(coshader, "unsupported request Shader skipped: co-shaders are not run") == 1);
 }
 
 TEST_CASE("a pbrt scene is named as one at its second pbrt directive, and one stray pbrt word is only a warning", "[rib]") {

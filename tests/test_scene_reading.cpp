@@ -297,6 +297,17 @@ TEST_CASE("Surface naming one of RenderMan's Bxdfs says how a Bxdf is given", "[
     CHECK(test::warningsContaining(lama, "\"myDisney\" is a Bxdf") == 0);
 }
 
+TEST_CASE("a glass shader of a scene's own says that it renders opaque", "[rib]") {
+    Diagnostics diagnostics(false);
+    test::parseRib("WorldBegin\nSurface \"glass\" \"float ior\" [1.5]\nSphere 1 -1 1 360\n"
+                   "Surface \"CT\" \"float Ks\" [0.1]\nSphere 1 -1 1 360\n"
+                   "Surface \"thinfilm\" \"float eta\" [1.33]\nSphere 1 -1 1 360\n",
+                   diagnostics);
+    CHECK(test::warningsContaining(diagnostics, "the light it refracts is not rendered, so it is opaque") == 2);
+    CHECK(test::warningsContaining(diagnostics, "Surface \"CT\" is a shader this renderer does not have: rendered as "
+                                                "\"plastic\"") == 1);
+}
+
 TEST_CASE("ColorSamples: colours are written with its numbers and read as the RGB its nRGB gives", "[rib]") {
     auto materialOf = [](Scene const& scene, size_t shape) -> MaterialDesc const& {
         return scene.materials[static_cast<size_t>(scene.shapes.at(shape)->material)];

@@ -366,6 +366,7 @@ std::string SceneBuilder::unknownRequestMessage(std::string const& name) {
         {"Atmosphere", "volumes are not rendered, so light crosses the space between surfaces unchanged"},
         {"Interior", "volumes are not rendered, so light crosses the space between surfaces unchanged"},
         {"Exterior", "volumes are not rendered, so light crosses the space between surfaces unchanged"},
+        {"Shader", "co-shaders are not run, so the surfaces that call them render without what they add"},
         {"VolumePixelSamples", "it sets how finely volumes are sampled, and volumes are not rendered"},
     };
     if (auto const found = lost.find(name); found != lost.end())

@@ -147,10 +147,16 @@ void SceneBuilder::surface(RequestReader& in) {
         bool const mapped = like != "metal" && params.has("texturename");
         // RenderMan's own materials (PxrDisney, PxrSurface, ...) are Bxdfs, which Surface does not give.
         bool const renderMansBxdf = isRenderMansOwnName(base);
+        // A glass shader traces its own refraction, which no standard shader does: say why it looks solid.
+        bool const refracts = lowered(base).find("glass") != std::string::npos || params.has("ior") ||
+                              params.has("eta") || params.has("Kt");
         warnOnce("surface " + name, in.where(),
                  "Surface \"" + name + "\" is a shader this renderer does not have: rendered as \"" + like + "\", " +
                      why + ", with the parameters of it that it gives (its others are ignored" +
                      (mapped ? "; its texturename maps its colour, as paintedplastic's does" : "") + ")" +
+                     (refracts ? "; the light it refracts is not rendered, so it is opaque (Opacity still shows "
+                                 "what lies behind it)"
+                               : "") +
                      (renderMansBxdf ? "; \"" + base + "\" is a Bxdf, given with Bxdf \"" + base + "\" \"handle\""
                                      : ""));
         name = like;
