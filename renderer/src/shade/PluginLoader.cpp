@@ -201,9 +201,9 @@ std::string PluginLoader::find(std::string const& name, const char* kind, Source
     std::string const near = closestSpelling(name, pluginNames(m_searchPath));
     std::string const hint = near.empty() ? "" : " (did you mean \"" + near + "\"?)";
     refuse(where, std::string(kind) + " plugin \"" + name + "\" not found" + hint + ": no " + name +
-                      ".so in any folder of the plugin search path:" + searched +
-                      "\n  (add a folder with --plugin-path, $RIX_PLUGIN_PATH or Option \"searchpath\" "
-                      "\"string rixplugin\")");
+                  ".so in any folder of the plugin search path:" + searched +
+                  "\n  (add a folder with --plugin-path, $RIX_PLUGIN_PATH or Option \"searchpath\" "
+                  "\"string rixplugin\")");
 }
 
 std::unique_ptr<ShadingPlugin> PluginLoader::load(ShadingPlugin::Kind kind, std::string const& name,
