@@ -73,6 +73,20 @@ add_cli_failure(empty_texture "empty-texture.rib:3:30: Pattern \"PxrTexture\" \"
                 ${BAD}/empty-texture.rib --strict -o out.exr)
 add_cli_failure(scene_is_a_folder "\".*bad-input\" is a folder, not a RIB file" ${BAD} -o out.exr)
 add_cli_failure(no_world "no-world.rib: there is no WorldBegin" ${BAD}/no-world.rib -o out.exr)
+# A file that only makes textures is a pipeline's texture step: it writes them, as RenderMan does, and
+# the next step's scene, which names a texture without making it, reads the file written.
+set(MADE ${CLI_OUT}/made-textures)
+file(MAKE_DIRECTORY ${MADE})
+add_test(NAME cli.make_textures_only COMMAND rixrender --quiet ${CMAKE_CURRENT_SOURCE_DIR}/make-textures/make-sky.rib
+         WORKING_DIRECTORY ${MADE})
+set_tests_properties(cli.make_textures_only PROPERTIES LABELS "cli;sanitize" FIXTURES_SETUP made_textures
+  PASS_REGULAR_EXPRESSION
+  "wrote sky-clamped.tex \\(a texture made from .*sky.exr\\).*wrote sky.tex \\(a latitude-longitude environment map made from")
+add_test(NAME cli.scene_reads_made_texture
+         COMMAND rixrender --quiet --strict --spp 1 -o uses-sky.exr
+                 ${CMAKE_CURRENT_SOURCE_DIR}/make-textures/uses-sky.rib
+         WORKING_DIRECTORY ${MADE})
+set_tests_properties(cli.scene_reads_made_texture PROPERTIES LABELS "cli;sanitize" FIXTURES_REQUIRED made_textures)
 # Usage errors exit with status 2.
 function(add_cli_usage_error name expected)
   add_test(NAME cli.${name}

@@ -1,6 +1,7 @@
 // Pattern networks: connected parameters are varying and carry the pattern's
 // per-point values; patterns run only when asked, once per batch; textures
 // match OpenImageIO's own lookups; bad networks give located messages.
+#include <OpenImageIO/imageio.h>
 #include <OpenImageIO/texture.h>
 
 #include <catch2/catch.hpp>
@@ -10,6 +11,7 @@
 #include <fstream>
 
 #include "core/ImageFiles.h"
+#include "scene/SceneBuilder.h"
 #include "support/RenderHelpers.h"
 
 using namespace bxdflab;
@@ -269,6 +271,51 @@ TEST_CASE("classic paintedplastic multiplies Cs by its texture map at (s, t), an
                                  fewSamples());
         CHECK(r.messages.empty());
         CHECK(r.channel(8, 13, 1) == Approx(1.0f - pixelV(13)).margin(0.03));
+    }
+    SECTION("the texture file a file of Make requests alone writes holds the picture and its wrap modes") {
+        MadeTexture made;
+        made.picture = picture;
+        made.wrapS = "clamp";
+        made.wrapT = "black";
+        std::string const texture = test::outputDir() + "/ramp-made.tex";  // RenderMan's name; TIFF inside
+        std::filesystem::remove(texture);
+        imageFiles().makeTexture(texture, made);
+        ImagePixels const written = imageFiles().read(texture, "made texture");
+        REQUIRE(written.width == size);
+        REQUIRE(written.channels == 3);
+        CHECK(written.pixels == pixels);
+        auto input = OIIO::ImageInput::open(texture);
+        REQUIRE(input);
+        CHECK(input->spec().get_string_attribute("wrapmodes") == "clamp,black");
+        CHECK(input->spec().tile_width > 0);          // tiled, as a texture is
+        CHECK(input->seek_subimage(0, 1));            // and mip-mapped
+        // A scene that names the written file, without making it, renders as one that makes it.
+        std::string const named =
+            "Surface \"paintedplastic\" \"Ka\" [1] \"Kd\" [0] \"Ks\" [0] \"texturename\" [\"" + texture +
+            "\"]\nPatch \"bilinear\" \"P\" [-1 1 0  1 1 0  -1 -1 0  1 -1 0]\nWorldEnd\n";
+        auto r = test::renderRib(head + world + named, fewSamples());
+        CHECK(r.messages.empty());
+        for (int y : {2, 5, 10, 13}) CHECK(r.channel(8, y, 1) == Approx(1.0f - pixelV(y)).margin(0.03));
+        // An environment map is written as one.
+        input.reset();
+        made.environment = true;
+        imageFiles().makeTexture(texture, made);
+        input = OIIO::ImageInput::open(texture);
+        REQUIRE(input);
+        CHECK(input->spec().get_string_attribute("textureformat") == "LatLong Environment");
+    }
+    SECTION("a file that only makes textures is no scene to render: loading it as one says so") {
+        std::string const path = test::outputDir() + "/make-only.rib";
+        std::ofstream(path) << "MakeTexture \"" << picture << "\" \"ramp.tex\" \"periodic\" \"periodic\" \"box\" 1 1\n";
+        Diagnostics diagnostics(false);
+        CHECK_THROWS_WITH(loadScene(path, diagnostics), Catch::Contains("there is no WorldBegin") &&
+                                                            Catch::Contains("(it only makes textures)"));
+        // A wrap mode txmake does not have is said, and the texture wraps around.
+        Scene scene = test::parseRib("MakeTexture \"" + picture + "\" \"ramp.tex\" \"repeat\" \"clamp\" \"box\" 1 1\n"
+                                     "WorldBegin\n", diagnostics);
+        CHECK(test::warningsContaining(diagnostics, "wrap mode \"repeat\" is not periodic, clamp or black") == 1);
+        CHECK(scene.madeTextures.at("ramp.tex").wrapS == "periodic");
+        CHECK(scene.madeTextures.at("ramp.tex").wrapT == "clamp");
     }
     SECTION("a dome light's image made by MakeLatLongEnvironment is its picture") {
         Diagnostics diagnostics(false);

@@ -20,6 +20,9 @@ public:
                std::vector<std::string> const& names) const override {
         loaded().write(path, pixels, width, height, channels, names);
     }
+    void makeTexture(std::string const& texture, MadeTexture const& made) const override {
+        loaded().makeTexture(texture, made);
+    }
     std::unique_ptr<TextureService> openTextures(Diagnostics& diagnostics) const override {
         return loaded().openTextures(diagnostics);
     }

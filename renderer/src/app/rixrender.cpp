@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <map>
 
 #include "CommandLine.h"
 #include "app/ImageModule.h"
@@ -88,6 +89,24 @@ void checkWritable(std::string const& path) {
         throw RenderError("cannot write image \"" + path + "\": folder \"" + parent.string() + "\" is not writable");
     if (fs::exists(path, error) && access(path.c_str(), W_OK) != 0)
         throw RenderError("cannot write image \"" + path + "\": the file is not writable");
+}
+
+/// A file that only makes textures (a pipeline's texture step, RenderMan's txmake as RIB) renders no
+/// frame: it writes its textures, as RenderMan would. With -o they go into -o's folder, so that nothing
+/// is written outside the folder -o chose.
+void writeMadeTextures(std::map<std::string, MadeTexture> const& textures, std::string const& output, int rawFd) {
+    if (rawFd >= 0) throw RenderError("the file only makes textures: it renders no image to write to the descriptor");
+    for (auto const& [name, made] : textures) {
+        fs::path const path =
+            output.empty() ? fs::path(name) : fs::path(output).parent_path() / fs::path(name).filename();
+        checkWritable(path.string());
+        std::error_code error;
+        if (fs::equivalent(path, made.picture, error))
+            throw RibError(made.where, "the texture \"" + name + "\" would be written over its own picture");
+        imageFiles().makeTexture(path.string(), made);
+        std::fprintf(stderr, "rixrender: wrote %s (%s made from %s)\n", path.c_str(),
+                     made.environment ? "a latitude-longitude environment map" : "a texture", made.picture.c_str());
+    }
 }
 
 }  // namespace
@@ -216,6 +235,7 @@ int main(int argc, char** argv) {
         if (load.frame >= 0 && rendered == 0)
             throw RenderError(sceneFile + ": there is no frame " + std::to_string(load.frame) + " (FrameBegin " +
                               std::to_string(load.frame) + ")");
+        if (rendered == 0) writeMadeTextures(scene.madeTextures, output, rawFd);
     } catch (std::exception const& error) {
         std::cerr << "rixrender: error: " << error.what() << '\n';
         return 1;

@@ -46,6 +46,9 @@ public:
     /// Throws RenderError.
     virtual void write(std::string const& path, std::vector<float> const& pixels, int width, int height,
                        int channels, std::vector<std::string> const& names) const = 0;
+    /// Writes the texture file `texture` made from a picture, as RenderMan's
+    /// MakeTexture and MakeLatLongEnvironment do. Throws RenderError.
+    virtual void makeTexture(std::string const& texture, MadeTexture const& made) const = 0;
     /// A texture service for pattern plugins (warnings about unreadable
     /// files go to `diagnostics`); null when the program reads no images.
     virtual std::unique_ptr<TextureService> openTextures(Diagnostics& diagnostics) const = 0;

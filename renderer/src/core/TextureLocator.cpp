@@ -26,7 +26,7 @@ std::optional<std::string> TextureLocator::find(std::string const& name) const {
     // "grid.tex" and "./grid.tex" name the same made texture.
     auto made = madeFrom.find(fs::path(name).lexically_normal().string());
     if (made != madeFrom.end())
-        if (auto picture = onDisk(made->second, folders)) return picture;
+        if (auto picture = onDisk(made->second.picture, folders)) return picture;
     return onDisk(name, folders);
 }
 

@@ -13,6 +13,25 @@
 namespace bxdflab {
 namespace {
 
+/// An image file opened for reading, its declared size checked before any
+/// pixel is decoded: a small file can claim an image of many gigabytes.
+/// Errors start with `prefix`.
+std::unique_ptr<OIIO::ImageInput> openChecked(std::string const& path, std::string const& prefix) {
+    auto input = OIIO::ImageInput::open(path);
+    if (!input) {
+        std::string why = OIIO::geterror(), pointer = notAnImageBecause(path);
+        throw RenderError(prefix + (pointer.empty() ? why : pointer));
+    }
+    OIIO::ImageSpec const& spec = input->spec();
+    long long const pixels = static_cast<long long>(spec.width) * spec.height;
+    if (spec.width <= 0 || spec.height <= 0 || spec.width > kMaxImageSide || spec.height > kMaxImageSide ||
+        pixels > kMaxImagePixels || spec.nchannels <= 0 || spec.nchannels > 16 || spec.depth > 1)
+        throw RenderError(prefix + "it declares " + std::to_string(spec.width) + " x " + std::to_string(spec.height) +
+                          " pixels of " + std::to_string(spec.nchannels) + " channels; at most " +
+                          std::to_string(kMaxImageSide) + " on a side (and 16 channels) are read");
+    return input;
+}
+
 class OiioImageFiles final : public ImageFiles {
 public:
     std::unique_ptr<TextureService> openTextures(Diagnostics& diagnostics) const override {
@@ -20,21 +39,10 @@ public:
     }
 
     ImagePixels read(std::string const& path, std::string const& what) const override {
-        std::string prefix = what + " \"" + path + "\": ";
-        auto input = OIIO::ImageInput::open(path);
-        if (!input) {
-            std::string why = OIIO::geterror(), pointer = notAnImageBecause(path);
-            throw RenderError(prefix + (pointer.empty() ? why : pointer));
-        }
+        std::string const prefix = what + " \"" + path + "\": ";
+        auto input = openChecked(path, prefix);
         OIIO::ImageSpec const& spec = input->spec();
-        // The declared size is checked before any pixel is decoded: a small file
-        // can claim an image of many gigabytes.
-        long long pixels = static_cast<long long>(spec.width) * spec.height;
-        if (spec.width <= 0 || spec.height <= 0 || spec.width > kMaxImageSide || spec.height > kMaxImageSide ||
-            pixels > kMaxImagePixels || spec.nchannels <= 0 || spec.nchannels > 16 || spec.depth > 1)
-            throw RenderError(prefix + "it declares " + std::to_string(spec.width) + " x " + std::to_string(spec.height) +
-                              " pixels of " + std::to_string(spec.nchannels) + " channels; at most " +
-                              std::to_string(kMaxImageSide) + " on a side (and 16 channels) are read");
+        long long const pixels = static_cast<long long>(spec.width) * spec.height;
         ImagePixels image;
         image.width = spec.width;
         image.height = spec.height;
@@ -43,6 +51,20 @@ public:
         if (!input->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, image.pixels.data()))
             throw RenderError(prefix + input->geterror());
         return image;
+    }
+
+    void makeTexture(std::string const& texture, MadeTexture const& made) const override {
+        std::string const prefix = made.where.str() + ": picture \"" + made.picture + "\": ";
+        openChecked(made.picture, prefix);
+        OIIO::ImageSpec config;
+        config.attribute("wrapmodes", made.environment ? "periodic,clamp" : made.wrapS + "," + made.wrapT);
+        // RenderMan's own .tex format is not written: a tiled, mip-mapped TIFF
+        // (OpenEXR for a .exr name), which OpenImageIO reads under any name.
+        std::string const extension = std::filesystem::path(texture).extension().string();
+        config.attribute("maketx:fileformatname", extension == ".exr" ? "openexr" : "tiff");
+        auto const mode = made.environment ? OIIO::ImageBufAlgo::MakeTxEnvLatl : OIIO::ImageBufAlgo::MakeTxTexture;
+        if (!OIIO::ImageBufAlgo::make_texture(mode, made.picture, texture, config))
+            throw RenderError(made.where.str() + ": cannot make texture \"" + texture + "\": " + OIIO::geterror());
     }
 
     void write(std::string const& path, std::vector<float> const& pixels, int width, int height, int channels,

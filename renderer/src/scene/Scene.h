@@ -145,8 +145,8 @@ struct SceneOptions {
     IntegratorDesc integrator;
     std::vector<std::string> pluginSearchPath;  ///< from Option "searchpath" "rixplugin"
     std::vector<std::string> textureSearchPath; ///< from Option "searchpath" "texture" (then the RIB's folder)
-    /// What MakeTexture and MakeLatLongEnvironment made: texture name -> picture name.
-    std::map<std::string, std::string> madeTextures;
+    /// What MakeTexture and MakeLatLongEnvironment made: texture name -> what it is made from.
+    std::map<std::string, MadeTexture> madeTextures;
     int frame = -1;  ///< the FrameBegin number (-1: the file has no frames)
     /// Shutter open close: the span of time one image sees (motion blocks give times in the same units).
     /// Opening and closing at once (the default) sees each motion block at that one moment.

@@ -153,9 +153,18 @@ void SceneBuilder::readFile(std::string const& path) {
         m_inWorld = false;
         finishFrame();
     }
+    bool const onlyMakesTextures = m_framesDone == 0 && !m_scene.madeTextures.empty();
+    if (onlyMakesTextures && m_sink) {
+        // A texture-making step of a pipeline (RenderMan's txmake as RIB): the
+        // program reading frames writes the textures instead.
+        finishInput(path);
+        return;
+    }
     if (m_framesDone == 0)
         throw RenderError(path + ": there is no WorldBegin, so the file describes nothing to render" +
-                          " (a file of shapes alone is an archive, read from a scene with ReadArchive)");
+                          (onlyMakesTextures ? std::string(" (it only makes textures)")
+                                             : " (a file of shapes alone is an archive, read from a scene with"
+                                               " ReadArchive)"));
     if (m_options.frame >= 0 && !m_keptFrame && !m_sink)
         throw RenderError(path + ": there is no frame " + std::to_string(m_options.frame));
     finishInput(path);

@@ -246,13 +246,23 @@ void SceneBuilder::makeLatLongEnvironment(RequestReader& in) { madeTexture(in, f
 
 void SceneBuilder::madeTexture(RequestReader& in, bool wrapModes) {
     // RenderMan makes the texture file from the picture before it renders. Here
-    // the picture itself is read wherever the texture is named: OpenImageIO
-    // tiles, mip-maps and filters it as it would the texture file.
+    // the picture itself is read wherever the scene names the texture: OpenImageIO
+    // tiles, mip-maps and filters it as it would the texture file. Only a file
+    // that makes textures and renders nothing has its textures written (rixrender).
+    MadeTexture made;
+    made.where = in.where();
+    made.environment = !wrapModes;
     std::string const picture = in.string("picture file name");
     std::string const texture = in.string("texture file name");
     if (wrapModes) {  // MakeTexture's; an environment wraps around by itself
-        in.string("s wrap mode");
-        in.string("t wrap mode");
+        made.wrapS = in.string("s wrap mode");
+        made.wrapT = in.string("t wrap mode");
+        for (std::string* mode : {&made.wrapS, &made.wrapT})
+            if (*mode != "periodic" && *mode != "clamp" && *mode != "black") {
+                m_diagnostics.warn(made.where, "MakeTexture: wrap mode \"" + *mode +
+                                                   "\" is not periodic, clamp or black; periodic is used");
+                *mode = "periodic";
+            }
     }
     in.string("filter name");
     in.number("filter width in s");
@@ -264,7 +274,8 @@ void SceneBuilder::madeTexture(RequestReader& in, bool wrapModes) {
     std::error_code lookup;
     fs::path const beside = fs::path(currentDirectory()) / picture;
     bool const found = fs::path(picture).is_relative() && fs::exists(beside, lookup);
-    m_scene.madeTextures[fs::path(texture).lexically_normal().string()] = found ? beside.string() : picture;
+    made.picture = found ? beside.string() : picture;
+    m_scene.madeTextures[fs::path(texture).lexically_normal().string()] = std::move(made);
 }
 
 int SceneBuilder::classicMaterial() {
