@@ -228,6 +228,26 @@ TEST_CASE("stock models (PxrDisney) pass every check of their model manifest", "
     requireCheckPasses(e, check, STOCK_PLUGIN_DIR);
 }
 
+TEST_CASE("PxrDisney's subsurfaceColor colours its flattened diffuse term and is black by default", "[stock]") {
+    // RenderMan's parameter mixes its colour into the diffuse response by subsurface:
+    // f_diffuse = mix(baseColor F_d, subsurfaceColor F_ss, subsurface) / pi. The
+    // specular term is the same in every case, so differences isolate the diffuse one.
+    std::string const grey = "\"color baseColor\" [0.8 0.8 0.8] \"float roughness\" [0.5] ";
+    ProbePoint const point = viewFrom(20.0f, 0.0f);
+    Vec3 const L = direction(40.0f, 120.0f);
+    auto weight = [&](std::string const& extra) { return weightAt(*probe("PxrDisney", grey + extra), point, L); };
+    RtColorRGB const burley = weight("");
+    RtColorRGB const specularOnly = weight("\"float subsurface\" [1]");  // black subsurfaceColor: no diffuse
+    RtColorRGB const red = weight("\"float subsurface\" [1] \"color subsurfaceColor\" [1 0 0]");
+    RtColorRGB const half = weight("\"float subsurface\" [0.5] \"color subsurfaceColor\" [1 0 0]");
+    RtColorRGB const burleyDiffuse = burley - specularOnly, redDiffuse = red - specularOnly;
+    CHECK(burleyDiffuse.g > 0.01f);
+    CHECK(redDiffuse.r > 0.01f);
+    CHECK(redDiffuse.g == Approx(0.0f).margin(1e-6));
+    CHECK(half.g == Approx(specularOnly.g + 0.5f * burleyDiffuse.g).epsilon(1e-4));
+    CHECK(half.r == Approx(specularOnly.r + 0.5f * (burleyDiffuse.r + redDiffuse.r)).epsilon(1e-4));
+}
+
 TEST_CASE("solutions: FPdf integrates to 1 over the hemisphere, or to the valid fraction", "[solutions][pdf]") {
     auto model = GENERATE(from_range(kModels));
     auto viewTheta = GENERATE(0.0f, 60.0f);

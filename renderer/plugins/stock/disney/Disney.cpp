@@ -122,6 +122,7 @@ Disney::Point Disney::point(int i) const {
     RtColorRGB dielectric = mix(RtColorRGB(1.0f), tint, m_params.specularTint[i]) * (0.08f * RixMax(m_params.specular[i], 0.0f));
     p.specular0 = mix(dielectric, base, metallic);
     p.subsurface = RixClamp(m_params.subsurface[i], 0.0f, 1.0f);
+    p.subsurfaceColor = m_params.subsurfaceColor[i] * (1.0f - metallic);
     p.roughness = RixClamp(m_params.roughness[i], 0.0f, 1.0f);
     float aspect = std::sqrt(1.0f - 0.9f * RixClamp(m_params.anisotropic[i], 0.0f, 1.0f));
     float alpha = p.roughness * p.roughness;
@@ -132,7 +133,7 @@ Disney::Point Disney::point(int i) const {
 
     // Selection probabilities from rough albedo estimates: Schlick's Fresnel
     // averaged over the cosine-weighted hemisphere is C0 + (1 - C0) / 21.
-    float diffuse = (p.diffuseColor + p.sheenColor * 0.1f).Luminance();
+    float diffuse = (mix(p.diffuseColor, p.subsurfaceColor, p.subsurface) + p.sheenColor * 0.1f).Luminance();
     float specular = (p.specular0 + (RtColorRGB(1.0f) - p.specular0) * (1.0f / 21.0f)).Luminance();
     float clearcoat = p.clearcoat * (0.04f + 0.96f / 21.0f);
     float total = RixMax(diffuse, 0.0f) + RixMax(specular, 0.0f) + clearcoat;
@@ -189,7 +190,8 @@ bool Disney::evaluate(int i, RtVector3 const& L, RtColorRGB& diffuse, RtColorRGB
     float fss90 = p.roughness * LdotH * LdotH;
     float fss = (1.0f + (fss90 - 1.0f) * FL) * (1.0f + (fss90 - 1.0f) * FV);
     float ss = 1.25f * (fss * (1.0f / (cosL + cosV) - 0.5f) + 0.5f);
-    diffuse = p.diffuseColor * (RixMix(fd, ss, p.subsurface) * F_INVPI * cosL) + p.sheenColor * (FH * cosL);
+    diffuse = p.diffuseColor * ((1.0f - p.subsurface) * fd * F_INVPI * cosL) +
+              p.subsurfaceColor * (p.subsurface * ss * F_INVPI * cosL) + p.sheenColor * (FH * cosL);
 
     // Specular: D F G / (4 cos_L cos_V), times cos_L.
     Local l = toLocal(p, L), v = toLocal(p, V), h = toLocal(p, Hw);

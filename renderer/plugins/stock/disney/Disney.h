@@ -2,7 +2,8 @@
 // Shading at Disney"), the material RenderMan 20-21 scenes and exporters use
 // most. One artist-friendly set of parameters drives five terms:
 //
-//   f = (1 - metallic) [ baseColor / pi * mix(F_d, F_ss, subsurface)     diffuse
+//   f = (1 - metallic) [ mix(baseColor F_d, subsurfaceColor F_ss,        diffuse
+//                            subsurface) / pi
 //                        + sheen * C_sheen * (1 - L.H)^5 ]                sheen
 //     + D_s(H) F_s(L.H) G_s(L, V) / (4 cos_L cos_V)                       specular
 //     + clearcoat / 4 * D_c(H) F_c(L.H) G_c(L, V) / (4 cos_L cos_V)       clearcoat
@@ -17,6 +18,10 @@
 // and its flattened "subsurface" variant (Hanrahan-Krueger-like):
 //   F_ss = 1.25 [ S (1 / (cos_L + cos_V) - 0.5) + 0.5 ],
 //   S = (1 + (F_SS90 - 1)(1 - cos_L)^5)(1 + (F_SS90 - 1)(1 - cos_V)^5), F_SS90 = roughness (L.H)^2.
+// The flattened variant takes its own colour, subsurfaceColor: RenderMan's
+// parameter is "the colour to mix with the diffuse response according to
+// subsurface", black by default, so subsurface 1 with no subsurfaceColor has
+// no diffuse at all, as in RenderMan.
 //
 // Specular: anisotropic GGX (Trowbridge-Reitz) with alpha = roughness^2
 // stretched by aspect = sqrt(1 - 0.9 anisotropic):
@@ -50,6 +55,7 @@
 //   color baseColor       [0.2 0.5 0.8]
 //   color emitColor       [0 0 0]        emitted radiance
 //   float subsurface      [0]            0: Burley diffuse, 1: the flattened variant
+//   color subsurfaceColor [0 0 0]        the flattened variant's colour
 //   float metallic        [0]
 //   float specular        [0.5]          0.5 is a reflectance of 4% (index 1.5)
 //   float specularTint    [0]
@@ -78,6 +84,7 @@ struct DisneyParams {
     RtColorRGB const* baseColor;
     RtColorRGB const* emitColor;
     float const* subsurface;
+    RtColorRGB const* subsurfaceColor;
     float const* metallic;
     float const* specular;
     float const* specularTint;
@@ -113,7 +120,8 @@ public:
     struct Point {
         RtNormal3 N;
         RtVector3 u, v;           ///< tangent frame (u along dPdu when anisotropic)
-        RtColorRGB diffuseColor;  ///< (1 - metallic) baseColor
+        RtColorRGB diffuseColor;     ///< (1 - metallic) baseColor
+        RtColorRGB subsurfaceColor;  ///< (1 - metallic) subsurfaceColor
         RtColorRGB sheenColor;    ///< (1 - metallic) sheen C_sheen
         RtColorRGB specular0;     ///< C0
         float subsurface, roughness, alphaU, alphaV;

@@ -10,7 +10,7 @@ namespace {
 class PxrDisneyFactory : public stockbxdfs::StockBxdfWithPresence {
 public:
     enum ParamId {
-        k_baseColor, k_emitColor, k_subsurface, k_metallic, k_specular, k_specularTint, k_roughness,
+        k_baseColor, k_emitColor, k_subsurface, k_subsurfaceColor, k_metallic, k_specular, k_specularTint, k_roughness,
         k_anisotropic, k_sheen, k_sheenTint, k_clearcoat, k_clearcoatGloss, k_bumpNormal, k_presence
     };
     PxrDisneyFactory() : StockBxdfWithPresence(k_presence) {}
@@ -20,6 +20,7 @@ public:
             RixSCParamInfo(RtUString("baseColor"), k_RixSCColor, k_RixSCScatterInput),
             RixSCParamInfo(RtUString("emitColor"), k_RixSCColor, k_RixSCScatterInput),
             RixSCParamInfo(RtUString("subsurface"), k_RixSCFloat, k_RixSCScatterInput),
+            RixSCParamInfo(RtUString("subsurfaceColor"), k_RixSCColor, k_RixSCScatterInput),
             RixSCParamInfo(RtUString("metallic"), k_RixSCFloat, k_RixSCScatterInput),
             RixSCParamInfo(RtUString("specular"), k_RixSCFloat, k_RixSCScatterInput),
             RixSCParamInfo(RtUString("specularTint"), k_RixSCFloat, k_RixSCScatterInput),
@@ -51,6 +52,7 @@ public:
         sCtx->EvalParam(k_baseColor, -1, &p.baseColor, &m_baseColor, true);
         sCtx->EvalParam(k_emitColor, -1, &p.emitColor, &m_black, true);
         sCtx->EvalParam(k_subsurface, -1, &p.subsurface, &m_zero, true);
+        sCtx->EvalParam(k_subsurfaceColor, -1, &p.subsurfaceColor, &m_black, true);
         sCtx->EvalParam(k_metallic, -1, &p.metallic, &m_zero, true);
         sCtx->EvalParam(k_specular, -1, &p.specular, &m_half, true);
         sCtx->EvalParam(k_specularTint, -1, &p.specularTint, &m_zero, true);
