@@ -119,6 +119,22 @@ class PrmanModule(unittest.TestCase):
         self.assertTrue(os.path.exists(kept), run.stderr)
         shutil.rmtree(os.path.dirname(kept))
 
+    def test_a_script_that_never_calls_end_is_told_nothing_was_rendered(self):
+        script = ("import prman\nri = prman.Ri()\nri.Begin('__render')\nri.WorldBegin()\n"
+                  "ri.Sphere(1, -1, 1, 360)\nri.WorldEnd()\n")
+        env = dict(os.environ, PYTHONPATH=os.path.dirname(prman.__file__), RIXRENDER=RIXRENDER)
+        run = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, env=env)
+        self.assertEqual(run.returncode, 0, run.stderr)
+        self.assertIn("was never closed by ri.End(), so nothing was rendered", run.stderr)
+        kept = run.stderr.split("(the RIB written is at ")[1].split(")")[0]
+        with open(kept) as written:
+            self.assertIn("Sphere 1 -1 1 360", written.read())
+        shutil.rmtree(os.path.dirname(kept))
+        # A script that does call End hears nothing of the kind.
+        run = subprocess.run([sys.executable, "-c", script.replace("__render", "ended.rib") + "ri.End()\n"],
+                             capture_output=True, text=True, env=env)
+        self.assertEqual(run.stderr, "")
+
     def test_relative_search_paths_are_the_scripts_folders(self):
         # The RIB rendered sits in a folder of its own; the script's "./assets/" and
         # "./textures/" are beside the script, where RenderMan looks for them.

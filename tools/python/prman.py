@@ -24,6 +24,7 @@ rixrender is the one named by $RIXRENDER, else the one built beside this folder
 (RIXRENDER_ARGS="--spp 4 --resolution-scale 0.5" for a quick look).
 """
 
+import atexit
 import numbers
 import os
 import shlex
@@ -155,6 +156,20 @@ class Ri:
             self._path = self._target
         self._out = open(self._path, "w")
         self._out.write("##RenderMan RIB\nversion 3.04\n")
+        atexit.register(self._say_if_unended)
+
+    def _say_if_unended(self):
+        # A script that never calls End renders nothing, in RenderMan too; say so rather than end silently.
+        if self._out is None:
+            return
+        self._out.close()
+        self._out = None
+        if self._target == "__render":
+            sys.stderr.write("prman: ri.Begin(\"__render\") was never closed by ri.End(), so nothing was rendered "
+                             "(the RIB written is at %s)\n" % self._path)
+        else:
+            sys.stderr.write("prman: ri.Begin(\"%s\") was never closed by ri.End(); the file holds the calls "
+                             "made before the script ended\n" % self._path)
 
     def End(self):
         """Ends the stream; for "__render", renders it with rixrender from the current folder."""
@@ -162,6 +177,7 @@ class Ri:
             raise Error("End without Begin")
         self._out.close()
         self._out = None
+        atexit.unregister(self._say_if_unended)
         if self._target != "__render":
             return
         options = shlex.split(os.environ.get("RIXRENDER_ARGS", ""))
