@@ -415,6 +415,25 @@ TEST_CASE("a classic shader's parameters are its own: others are warned about by
     CHECK(scene.patterns.empty());              // no texture is read for shinymetal
 }
 
+TEST_CASE("texturename raytrace is RenderMan's traced lookup and never a missing texture", "[rib]") {
+    // Classic scenes hand "raytrace" to environment() and shadow() to trace rays instead of reading a map.
+    Diagnostics diagnostics(false);
+    Scene scene = test::parseRib("WorldBegin\nSurface \"back\" \"Ad\" [0.05] \"texturename\" [\"raytrace\"]\n"
+                                 "Sphere 1 -1 1 360\n"
+                                 "Surface \"paintedplastic\" \"texturename\" [\"raytrace\"]\nSphere 1 -1 1 360\n"
+                                 "Surface \"shinymetal\" \"texturename\" [\"raytrace\"]\nSphere 1 -1 1 360\n",
+                                 diagnostics);
+    std::vector<std::string> const warnings = test::warningTexts(diagnostics);
+    for (std::string const& w : warnings) CHECK_THAT(w, !Catch::Matchers::Contains("does not exist"));
+    REQUIRE(warnings.size() == 3u);
+    CHECK_THAT(warnings[0], Catch::Matchers::Contains("Surface \"back\" is a shader this renderer does not have"));
+    CHECK_THAT(warnings[0], !Catch::Matchers::Contains("maps its colour"));
+    CHECK_THAT(warnings[1], Catch::Matchers::StartsWith("test.rib:2:"));
+    CHECK_THAT(warnings[1], Catch::Matchers::Contains("texturename \"raytrace\" is RenderMan's name for a lookup"));
+    CHECK_THAT(warnings[2], Catch::Matchers::Contains("Surface \"shinymetal\": its ray-traced reflection"));
+    CHECK(scene.patterns.empty());  // no texture node: nothing is read
+}
+
 TEST_CASE("Imager background and clamptoalpha, and PxrBackgroundDisplayFilter, finish each pixel", "[rib][film]") {
     // A 4 x 4 view whose left half is a square glowing 3, whose right half is empty.
     auto render = [](std::string const& imager) {

@@ -144,7 +144,8 @@ void SceneBuilder::surface(RequestReader& in) {
     bool lookalike = false;
     if (!known) {
         auto const [like, why] = lookalikeSurface(base, params);
-        bool const mapped = like != "metal" && params.has("texturename");
+        bool const mapped =
+            like != "metal" && params.has("texturename") && params.getString("texturename", "") != kRayTraced;
         // RenderMan's own materials (PxrDisney, PxrSurface, ...) are Bxdfs, which Surface does not give.
         bool const renderMansBxdf = isRenderMansOwnName(base);
         // A glass shader traces its own refraction, which no standard shader does: say why it looks solid.
@@ -177,7 +178,13 @@ void SceneBuilder::surface(RequestReader& in) {
         bool const colourMap = p.name() == "texturename" && (name == "paintedplastic" || (lookalike && name != "metal"));
         if (colourMap) {
             std::string const file = p.strings.empty() ? "" : p.strings[0];
-            if (!file.empty() && building()) classicTexture(file, p.location, *shader, "Surface \"" + given + "\"");
+            if (file == kRayTraced)
+                warnOnce("raytrace texturename", p.location,
+                         "Surface \"" + given + "\": texturename \"raytrace\" is RenderMan's name for a lookup that "
+                         "traces rays (environment or shadow), not a texture file: the colour is not mapped, and what "
+                         "the shader traces with it is not rendered");
+            else if (!file.empty() && building())
+                classicTexture(file, p.location, *shader, "Surface \"" + given + "\"");
         } else if (lookalike && (!standard || p.name() == "texturename")) {
             p.used = true;  // said once above
         } else if (!standard) {
@@ -188,9 +195,12 @@ void SceneBuilder::surface(RequestReader& in) {
                                                (meant.empty() ? "" : "did you mean \"" + meant + "\"? ") +
                                                "its parameters: " + (list.empty() ? "none" : list) + ")");
         } else if (name == "shinymetal" && (p.name() == "Kr" || p.name() == "texturename")) {
+            bool const traced = params.getString("texturename", "") == kRayTraced;
             warnOnce("shinymetal reflection", p.location,
-                     "Surface \"shinymetal\": its reflection of an environment map (Kr, texturename) is not "
-                     "rendered; it shades as metal");
+                     std::string("Surface \"shinymetal\": its ") +
+                         (traced ? "ray-traced reflection (Kr, texturename \"raytrace\")"
+                                 : "reflection of an environment map (Kr, texturename)") +
+                         " is not rendered; it shades as metal");
         } else {
             shader->params.add(p);
         }
