@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "scene/Camera.h"
+#include "scene/SceneBuilder.h"
 #include "scene/lights/DayLight.h"
 #include "support/RenderHelpers.h"
 
@@ -663,6 +664,19 @@ TEST_CASE("a file lit by classic light shaders and naming no integrator renders 
     // RIS lights: RenderMan's RIS default.
     auto ris = test::renderRib(head + "Light \"PxrDistantLight\" \"l\"\n" + matte, settings);
     CHECK(ris.stats.integrator == "PxrDefault");
+    // A file of frames is told once, by its first: its frames are lit alike.
+    Diagnostics diagnostics(false);
+    Scene scene;
+    SceneBuilder builder(scene, diagnostics);
+    std::vector<std::string> integrators;
+    builder.setFrameSink([&](Scene& frame) { integrators.push_back(frame.integrator.name); });
+    std::string const frame = head + "LightSource \"distantlight\" 1\n" + matte;
+    builder.readText("FrameBegin 1\n" + frame + "FrameEnd\nFrameBegin 2\n" + frame + "FrameEnd\n", "frames.rib");
+    CHECK(integrators == std::vector<std::string>{"PxrDirectLighting", "PxrDirectLighting"});
+    int notes = 0;
+    for (auto const& entry : diagnostics.entries())
+        if (entry.text.find("names no Integrator and is lit by classic light shaders") != std::string::npos) ++notes;
+    CHECK(notes == 1);
 }
 
 TEST_CASE("in a file lit by classic light shaders a surface given no shader is PRMan's defaultsurface",

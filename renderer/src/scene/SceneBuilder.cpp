@@ -504,10 +504,12 @@ void SceneBuilder::finishFrame() {
     if (classicLit) {
         m_scene.integrator.name = "PxrDirectLighting";
         m_scene.integrator.where = *m_firstClassicLight;
-        m_diagnostics.info(m_firstClassicLight->str() +
-                           ": the scene names no Integrator and is lit by classic light shaders, so it renders with "
-                           "PxrDirectLighting and its lights, as RenderMan before RIS did (Integrator \"PxrDefault\" "
-                           "\"d\" before WorldBegin lights it from the camera, as RIS does)");
+        // Said for the first frame only: the frames of one file are lit alike.
+        if (m_warnedKinds.insert("note: classic lighting").second)
+            m_diagnostics.info(m_firstClassicLight->str() +
+                               ": the scene names no Integrator and is lit by classic light shaders, so it renders "
+                               "with PxrDirectLighting and its lights, as RenderMan before RIS did (Integrator "
+                               "\"PxrDefault\" \"d\" before WorldBegin lights it from the camera, as RIS does)");
     }
     // Illuminate: a light off for every shape lights nothing and is dropped; one on
     // for some shapes and off for others lights only the first (linkLights). A
