@@ -23,6 +23,7 @@ set(RIX_SCENE_SOURCES
   scene/SceneBuilder.cpp
   scene/DisplayChannels.cpp
   scene/PatternReach.cpp
+  scene/ShaderSource.cpp
   scene/requests/OptionRequests.cpp
   scene/requests/StateRequests.cpp
   scene/requests/ShadingRequests.cpp

@@ -4,12 +4,15 @@
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <map>
 #include <sstream>
 
 #include "accel/RayTracer.h"
 #include "scene/Camera.h"
 #include "scene/SceneBuilder.h"
+#include "scene/ShaderSource.h"
 #include "scene/lights/MeshLight.h"
 #include "scene/shapes/Curves.h"
 #include "scene/shapes/Quadrics.h"
@@ -413,6 +416,61 @@ TEST_CASE("a classic shader's parameters are its own: others are warned about by
     CHECK(metal.params.getFloat("Ks", 0.0f) == 0.8f);
     CHECK_FALSE(metal.params.has("Kd"));  // not handed on: ClassicSurface's metal would have no use for it
     CHECK(scene.patterns.empty());              // no texture is read for shinymetal
+}
+
+TEST_CASE("a surface shader's source gives its declared defaults of plain numbers", "[rib]") {
+    std::string const source =
+        "/* a wood of the scene's own */\n#include \"common.h\"\n"
+        "surface wood(float Ka = 1.2; float Kd = .04, Ks = 0.55; // weights\n"
+        "  uniform float roughness = (0.1 + 0); color specularcolor = color \"rgb\" (1, 0.5, 0.25);\n"
+        "  string texturename = \"a;b\"; output varying color Cbase = 1; float Kr = -2)\n{ Ci = 0; }\n";
+    ShaderDefaults const declared = surfaceShaderDefaults(source, "wood");
+    CHECK(declared.at("Ka") == std::vector<float>{1.2f});
+    CHECK(declared.at("Kd") == std::vector<float>{0.04f});
+    CHECK(declared.at("Ks") == std::vector<float>{0.55f});  // shares Kd's declaration
+    CHECK(declared.at("specularcolor") == std::vector<float>{1.0f, 0.5f, 0.25f});
+    CHECK(declared.at("Cbase") == std::vector<float>{1.0f, 1.0f, 1.0f});
+    CHECK(declared.at("Kr") == std::vector<float>{-2.0f});
+    CHECK(declared.count("roughness") == 0);    // an expression is not read
+    CHECK(declared.count("texturename") == 0);  // nor a string
+    CHECK(surfaceShaderDefaults(source, "oak").empty());
+    CHECK(surfaceShaderDefaults("surface wood(float Kd = 1;", "wood").empty());  // never closed
+    CHECK(surfaceShaderDefaults("surface wood(float Kd = 1)", "wo.od").empty());
+    // A megabyte of space where a parser might recurse once per character: read without a crash.
+    std::string const spaces(1 << 20, ' ');
+    ShaderDefaults const spaced =
+        surfaceShaderDefaults("surface" + spaces + "wood" + spaces + "(color Cs = (" + spaces + "1, 1, 1))", "wood");
+    CHECK(spaced.empty());
+}
+
+TEST_CASE("a shader of the scene's own is rendered with the defaults its source declares for the standard "
+          "parameters",
+          "[rib]") {
+    // wood.sl dims its diffuse to 0.04: the scene's lights are bright for it. The RIB gives roughness only.
+    std::string const folder = test::outputDir() + "/shader-source";
+    std::filesystem::create_directories(folder);
+    std::ofstream(folder + "/wood.sl") << "surface wood(float Ka = 1.2; float Kd = .04; float Ks = 0.55;\n"
+                                          "  float roughness = .1; color specularcolor = (1, 0.5, 0.25))\n{ }\n";
+    std::string const world = "WorldBegin\nSurface \"wood\" \"roughness\" [0.3]\nSphere 1 -1 1 360\n";
+    Diagnostics diagnostics(false);
+    Scene scene = test::parseRib("Option \"searchpath\" \"string shader\" [\"" + folder + "\"]\n" + world, diagnostics);
+    REQUIRE(scene.shapes.size() == 1u);
+    MaterialDesc const& wood = scene.materials[static_cast<size_t>(scene.shapes[0]->material)];
+    CHECK(wood.params.getString("shader", "") == "plastic");  // its source declares a Ks
+    CHECK(wood.params.getFloat("Kd", 1.0f) == 0.04f);
+    CHECK(wood.params.getFloat("Ka", 1.0f) == 1.2f);
+    CHECK(wood.params.getFloat("Ks", 1.0f) == 0.55f);
+    CHECK(wood.params.getFloat("roughness", 1.0f) == 0.3f);  // what the RIB gives wins
+    CHECK(wood.params.getColor("specularcolor", Vec3(0.0f)) == Vec3(1.0f, 0.5f, 0.25f));
+    CHECK(test::warningsContaining(diagnostics, "and the defaults its source wood.sl declares for Ka, Kd, "
+                                                "Ks, specularcolor") == 1);
+    // Without its source, the standard shader's own defaults.
+    Diagnostics without(false);
+    Scene alone = test::parseRib(world, without);
+    MaterialDesc const& plain = alone.materials[static_cast<size_t>(alone.shapes[0]->material)];
+    CHECK(plain.params.getString("shader", "") == "matte");
+    CHECK_FALSE(plain.params.has("Kd"));
+    CHECK(test::warningsContaining(without, "declares") == 0);
 }
 
 TEST_CASE("texturename raytrace is RenderMan's traced lookup and never a missing texture", "[rib]") {

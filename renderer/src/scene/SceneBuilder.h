@@ -22,6 +22,7 @@
 #include "parse/RibRequest.h"
 #include "scene/Motion.h"
 #include "scene/ProceduralProgram.h"
+#include "scene/ShaderSource.h"
 #include "scene/Scene.h"
 #include "scene/shapes/MeshBuilders.h"
 
@@ -307,6 +308,11 @@ private:
     /// The OSL shader (name.oso, or its source name.osl) on the shader search path, beside the
     /// scene or in the working folder; empty when there is none.
     std::string oslShaderNamed(std::string const& name) const;
+    /// The file name + one of `extensions` on the shader search path, beside the scene or in the
+    /// working folder; empty when there is none.
+    std::string shaderFileNamed(std::string const& name, std::vector<char const*> const& extensions) const;
+    /// The defaults surface shader `shader` declares in source file `source` (read once).
+    ShaderDefaults const& declaredDefaults(std::string const& source, std::string const& shader);
     /// MakeTexture, MakeLatLongEnvironment: the texture named is read from the picture.
     void makeTexture(RequestReader& in);
     void makeLatLongEnvironment(RequestReader& in);
@@ -471,6 +477,7 @@ private:
     } m_pbrtDirective;  ///< the first pbrt directive met, if any
     std::vector<std::string> m_fileStack;
     std::vector<std::string> m_archiveSearchPath;
+    std::map<std::string, ShaderDefaults> m_declaredDefaults;  ///< by source file and shader name
     std::vector<std::string> m_shaderSearchPath;  ///< where RenderMan finds OSL shaders (.oso)
     // Where a DynamicLoad plugin or a RunProgram program is looked for.
     std::vector<std::string> m_proceduralSearchPath;

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include <filesystem>
+#include <fstream>
 #include <utility>
 
 #include "core/ImageFiles.h"
@@ -39,14 +40,15 @@ std::vector<std::string> const* classicSurfaceParameters(std::string const& shad
 
 /// The standard shader an unknown one most likely is, and why: the one its
 /// name holds ("RCPlastic", "TLFresnelPlastic", "rsmetal", "RCMatte"), else
-/// plastic when it has a specular weight Ks, else matte, which most shaders
+/// plastic when it has a specular weight Ks (given, or declared in its source), else matte, which most shaders
 /// of a scene's own grew from: its Ka * ambient() is lit by the scene's
 /// ambientlight as theirs would be.
-std::pair<std::string, std::string> lookalikeSurface(std::string const& name, ParamList const& params) {
+std::pair<std::string, std::string> lookalikeSurface(std::string const& name, ParamList const& params,
+                                                     bool sourceHasKs) {
     std::string const lower = lowered(name);
     for (char const* standard : {"plastic", "matte", "metal", "constant"})
         if (lower.find(standard) != std::string::npos) return {standard, "the standard one its name suggests"};
-    if (params.has("Ks")) return {"plastic", "the standard one its specular weight Ks suggests"};
+    if (params.has("Ks") || sourceHasKs) return {"plastic", "the standard one its specular weight Ks suggests"};
     return {"matte", "the standard shader most shaders of a scene's own grew from"};
 }
 
@@ -89,16 +91,33 @@ void SceneBuilder::pattern(RequestReader& in) {
 
 std::string SceneBuilder::oslShaderNamed(std::string const& name) const {
     if (name.find('/') != std::string::npos) return {};
+    return shaderFileNamed(name, {".oso", ".osl"});
+}
+
+std::string SceneBuilder::shaderFileNamed(std::string const& name, std::vector<char const*> const& extensions) const {
     std::vector<fs::path> folders(m_shaderSearchPath.begin(), m_shaderSearchPath.end());
     folders.push_back(fs::path(m_scene.file).parent_path());
-    folders.push_back(".");  // where RenderMan's users run oslc
+    folders.push_back(".");  // where RenderMan's users compile their shaders
     for (fs::path const& folder : folders)
-        for (char const* extension : {".oso", ".osl"}) {
+        for (char const* extension : extensions) {
             fs::path const file = folder / (name + extension);
             std::error_code error;
             if (fs::is_regular_file(file, error)) return file.lexically_normal().string();
         }
     return {};
+}
+
+ShaderDefaults const& SceneBuilder::declaredDefaults(std::string const& source, std::string const& shader) {
+    auto [entry, added] = m_declaredDefaults.try_emplace(source + '\n' + shader);
+    if (!added) return entry->second;
+    // A parameter list is at the top of its file: a file larger than any shader is read no further.
+    constexpr size_t kLongestRead = 1 << 20;
+    std::ifstream in(source, std::ios::binary);
+    std::string text(kLongestRead, '\0');
+    in.read(text.data(), static_cast<std::streamsize>(text.size()));
+    text.resize(static_cast<size_t>(in.gcount()));
+    entry->second = surfaceShaderDefaults(text, shader);
+    return entry->second;
 }
 
 std::map<std::string, Connection> SceneBuilder::connectionsOf(ParamList const& params, std::string const& owner) {
@@ -142,8 +161,22 @@ void SceneBuilder::surface(RequestReader& in) {
     // A shader of the scene's own is rendered as the standard one it most likely resembles, with the
     // standard parameters it shares (most were written from the standard shaders).
     bool lookalike = false;
+    ShaderDefaults declared;  // what its source, when the scene brings it, declares
+    std::string sourceDefaults;
     if (!known) {
-        auto const [like, why] = lookalikeSurface(base, params);
+        std::string const source = base.empty() ? std::string() : shaderFileNamed(name, {".sl"});
+        if (!source.empty()) declared = declaredDefaults(source, base);
+        auto const [like, why] = lookalikeSurface(base, params, declared.count("Ks") > 0);
+        for (std::string const& standard : *classicSurfaceParameters(like)) {
+            auto const value = declared.find(standard);
+            if (params.has(standard) || value == declared.end()) continue;
+            bool const colour = standard == "specularcolor";
+            if (value->second.size() != (colour ? 3u : 1u)) continue;
+            Param const p = colour ? colorParam(standard, Vec3(value->second[0], value->second[1], value->second[2]))
+                                   : floatParam(standard, value->second[0]);
+            params.add(p);
+            sourceDefaults += (sourceDefaults.empty() ? "" : ", ") + standard;
+        }
         bool const mapped =
             like != "metal" && params.has("texturename") && params.getString("texturename", "") != kRayTraced;
         // RenderMan's own materials (PxrDisney, PxrSurface, ...) are Bxdfs, which Surface does not give.
@@ -155,6 +188,9 @@ void SceneBuilder::surface(RequestReader& in) {
                  "Surface \"" + name + "\" is a shader this renderer does not have: rendered as \"" + like + "\", " +
                      why + ", with the parameters of it that it gives (its others are ignored" +
                      (mapped ? "; its texturename maps its colour, as paintedplastic's does" : "") + ")" +
+                     (sourceDefaults.empty() ? ""
+                                             : " and the defaults its source " + fs::path(source).filename().string() +
+                                                   " declares for " + sourceDefaults) +
                      (refracts ? "; the light it refracts is not rendered, so it is opaque (Opacity still shows "
                                  "what lies behind it)"
                                : "") +

@@ -1,0 +1,24 @@
+// The parameter defaults a classic shader's source declares. A scene's own
+// surface shader (wood.sl beside the RIB) is rendered as the standard shader it
+// most resembles; the defaults it declares for the standard parameters (its Kd
+// of 0.04, say) are what the scene was lit for, where the RIB does not give them.
+#pragma once
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace bxdflab {
+
+/// A shader's parameter defaults by name: one value for a float, three for a colour.
+using ShaderDefaults = std::map<std::string, std::vector<float>>;
+
+/// The defaults of the surface shader `shader` declared in RenderMan Shading
+/// Language source `text`, for parameters whose default is a plain number (a
+/// float, or a grey colour) or a colour of three numbers ("color (1, 0.5, 0)",
+/// "color \"rgb\" (1, 0.5, 0)").
+/// Defaults written as expressions or of other types are left out; a source
+/// without that shader gives none.
+ShaderDefaults surfaceShaderDefaults(std::string const& text, std::string const& shader);
+
+}  // namespace bxdflab
