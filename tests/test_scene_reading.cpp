@@ -464,6 +464,17 @@ TEST_CASE("a shader of the scene's own is rendered with the defaults its source 
     CHECK(wood.params.getColor("specularcolor", Vec3(0.0f)) == Vec3(1.0f, 0.5f, 0.25f));
     CHECK(test::warningsContaining(diagnostics, "and the defaults its source wood.sl declares for Ka, Kd, "
                                                 "Ks, specularcolor") == 1);
+    // A copy of a standard shader the scene brings, declared in one list of floats.
+    std::filesystem::create_directories(folder + "/shaders");
+    std::ofstream(folder + "/shaders/metal.sl") << "surface\nmetal\n(\n  float Ka=1,\n  Ks=3,\n  roughness=.1;)\n{ }\n";
+    Diagnostics copies(false);
+    Scene copied = test::parseRib("WorldBegin\nSurface \"shaders/metal\"\nSphere 1 -1 1 360\n", copies,
+                                  folder + "/copy.rib");
+    MaterialDesc const& metal = copied.materials[static_cast<size_t>(copied.shapes[0]->material)];
+    CHECK(metal.params.getString("shader", "") == "metal");
+    CHECK(metal.params.getFloat("Ks", 1.0f) == 3.0f);
+    CHECK(test::warningsContaining(copies, "rendered as the standard \"metal\" with the defaults its source "
+                                           "metal.sl declares for Ka, Ks, roughness") == 1);
     // Without its source, the standard shader's own defaults.
     Diagnostics without(false);
     Scene alone = test::parseRib(world, without);

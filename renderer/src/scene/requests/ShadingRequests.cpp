@@ -149,34 +149,42 @@ void SceneBuilder::surface(RequestReader& in) {
     std::string const given = name;  // what messages call it, whatever it is rendered as
     ParamList params = in.params();
     std::vector<std::string> const* known = classicSurfaceParameters(name);
+    std::string const base = std::filesystem::path(name).filename().string();
+    // A shader the scene brings (its source beside it or on the shader search path) declares
+    // its own defaults: the scene was lit for them (a diffuse weight of 0.04, a metal's Ks of 3).
+    std::string const source = known || base.empty() ? std::string() : shaderFileNamed(name, {".sl"});
+    ShaderDefaults const declared = source.empty() ? ShaderDefaults() : declaredDefaults(source, base);
+    auto const useDeclared = [&](std::string const& standardShader) {
+        std::string list;
+        for (std::string const& standard : *classicSurfaceParameters(standardShader)) {
+            auto const value = declared.find(standard);
+            bool const colour = standard == "specularcolor";
+            if (params.has(standard) || value == declared.end() || value->second.size() != (colour ? 3u : 1u))
+                continue;
+            std::vector<float> const& v = value->second;
+            params.add(colour ? colorParam(standard, Vec3(v[0], v[1], v[2])) : floatParam(standard, v[0]));
+            list += (list.empty() ? "" : ", ") + standard;
+        }
+        return list.empty() ? std::string()
+                            : "the defaults its source " + fs::path(source).filename().string() + " declares for " +
+                                  list;
+    };
     // "shaders/plastic": a compiled shader the scene brings along, most often a copy
     // of the standard one; the standard one is the closest this renderer can come.
-    std::string const base = std::filesystem::path(name).filename().string();
     if (!known && base != name && (known = classicSurfaceParameters(base))) {
+        std::string const sourceDefaults = useDeclared(base);
         warnOnce("surface " + name, in.where(),
                  "Surface \"" + name + "\" is a shader file of the scene's own, which this renderer cannot run; it is "
-                 "rendered as the standard \"" + base + "\"");
+                 "rendered as the standard \"" + base + "\"" +
+                     (sourceDefaults.empty() ? "" : " with " + sourceDefaults));
         name = base;
     }
     // A shader of the scene's own is rendered as the standard one it most likely resembles, with the
     // standard parameters it shares (most were written from the standard shaders).
     bool lookalike = false;
-    ShaderDefaults declared;  // what its source, when the scene brings it, declares
-    std::string sourceDefaults;
     if (!known) {
-        std::string const source = base.empty() ? std::string() : shaderFileNamed(name, {".sl"});
-        if (!source.empty()) declared = declaredDefaults(source, base);
         auto const [like, why] = lookalikeSurface(base, params, declared.count("Ks") > 0);
-        for (std::string const& standard : *classicSurfaceParameters(like)) {
-            auto const value = declared.find(standard);
-            if (params.has(standard) || value == declared.end()) continue;
-            bool const colour = standard == "specularcolor";
-            if (value->second.size() != (colour ? 3u : 1u)) continue;
-            Param const p = colour ? colorParam(standard, Vec3(value->second[0], value->second[1], value->second[2]))
-                                   : floatParam(standard, value->second[0]);
-            params.add(p);
-            sourceDefaults += (sourceDefaults.empty() ? "" : ", ") + standard;
-        }
+        std::string const sourceDefaults = useDeclared(like);
         bool const mapped =
             like != "metal" && params.has("texturename") && params.getString("texturename", "") != kRayTraced;
         // RenderMan's own materials (PxrDisney, PxrSurface, ...) are Bxdfs, which Surface does not give.
@@ -188,9 +196,7 @@ void SceneBuilder::surface(RequestReader& in) {
                  "Surface \"" + name + "\" is a shader this renderer does not have: rendered as \"" + like + "\", " +
                      why + ", with the parameters of it that it gives (its others are ignored" +
                      (mapped ? "; its texturename maps its colour, as paintedplastic's does" : "") + ")" +
-                     (sourceDefaults.empty() ? ""
-                                             : " and the defaults its source " + fs::path(source).filename().string() +
-                                                   " declares for " + sourceDefaults) +
+                     (sourceDefaults.empty() ? "" : " and " + sourceDefaults) +
                      (refracts ? "; the light it refracts is not rendered, so it is opaque (Opacity still shows "
                                  "what lies behind it)"
                                : "") +
