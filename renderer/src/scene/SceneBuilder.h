@@ -311,8 +311,9 @@ private:
     /// The file name + one of `extensions` on the shader search path, beside the scene or in the
     /// working folder; empty when there is none.
     std::string shaderFileNamed(std::string const& name, std::vector<char const*> const& extensions) const;
-    /// The defaults surface shader `shader` declares in source file `source` (read once).
-    ShaderDefaults const& declaredDefaults(std::string const& source, std::string const& shader);
+    /// The source of surface shader `name` (name.sl, found as shaderFileNamed finds it) and the
+    /// defaults it declares; looked for and read once per name and shader search path.
+    DeclaredDefaults const& declaredDefaults(std::string const& name);
     /// MakeTexture, MakeLatLongEnvironment: the texture named is read from the picture.
     void makeTexture(RequestReader& in);
     void makeLatLongEnvironment(RequestReader& in);
@@ -477,7 +478,7 @@ private:
     } m_pbrtDirective;  ///< the first pbrt directive met, if any
     std::vector<std::string> m_fileStack;
     std::vector<std::string> m_archiveSearchPath;
-    std::map<std::string, ShaderDefaults> m_declaredDefaults;  ///< by source file and shader name
+    std::map<std::string, DeclaredDefaults> m_declaredDefaults;  ///< by shader name and search path
     std::vector<std::string> m_shaderSearchPath;  ///< where RenderMan finds OSL shaders (.oso)
     // Where a DynamicLoad plugin or a RunProgram program is looked for.
     std::vector<std::string> m_proceduralSearchPath;

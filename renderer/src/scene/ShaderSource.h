@@ -13,6 +13,12 @@ namespace bxdflab {
 /// A shader's parameter defaults by name: one value for a float, three for a colour.
 using ShaderDefaults = std::map<std::string, std::vector<float>>;
 
+/// A shader source a scene brings, and the defaults it declares (none when there is no file).
+struct DeclaredDefaults {
+    std::string file;  ///< the source file read, empty when none was found
+    ShaderDefaults values;
+};
+
 /// The defaults of the surface shader `shader` declared in RenderMan Shading
 /// Language source `text`, for parameters whose default is a plain number (a
 /// float, or a grey colour) or a colour of three numbers ("color (1, 0.5, 0)",

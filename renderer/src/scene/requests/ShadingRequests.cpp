@@ -107,16 +107,21 @@ std::string SceneBuilder::shaderFileNamed(std::string const& name, std::vector<c
     return {};
 }
 
-ShaderDefaults const& SceneBuilder::declaredDefaults(std::string const& source, std::string const& shader) {
-    auto [entry, added] = m_declaredDefaults.try_emplace(source + '\n' + shader);
+DeclaredDefaults const& SceneBuilder::declaredDefaults(std::string const& name) {
+    std::string key = name;
+    for (std::string const& folder : m_shaderSearchPath) key += '\n' + folder;
+    auto [entry, added] = m_declaredDefaults.try_emplace(key);
     if (!added) return entry->second;
+    std::string const shader = fs::path(name).filename().string();
+    entry->second.file = shader.empty() ? std::string() : shaderFileNamed(name, {".sl"});
+    if (entry->second.file.empty()) return entry->second;
     // A parameter list is at the top of its file: a file larger than any shader is read no further.
     constexpr size_t kLongestRead = 1 << 20;
-    std::ifstream in(source, std::ios::binary);
+    std::ifstream in(entry->second.file, std::ios::binary);
     std::string text(kLongestRead, '\0');
     in.read(text.data(), static_cast<std::streamsize>(text.size()));
     text.resize(static_cast<size_t>(in.gcount()));
-    entry->second = surfaceShaderDefaults(text, shader);
+    entry->second.values = surfaceShaderDefaults(text, shader);
     return entry->second;
 }
 
@@ -152,8 +157,9 @@ void SceneBuilder::surface(RequestReader& in) {
     std::string const base = std::filesystem::path(name).filename().string();
     // A shader the scene brings (its source beside it or on the shader search path) declares
     // its own defaults: the scene was lit for them (a diffuse weight of 0.04, a metal's Ks of 3).
-    std::string const source = known || base.empty() ? std::string() : shaderFileNamed(name, {".sl"});
-    ShaderDefaults const declared = source.empty() ? ShaderDefaults() : declaredDefaults(source, base);
+    static DeclaredDefaults const none;
+    DeclaredDefaults const& source = known ? none : declaredDefaults(name);
+    ShaderDefaults const& declared = source.values;
     auto const useDeclared = [&](std::string const& standardShader) {
         std::string list;
         for (std::string const& standard : *classicSurfaceParameters(standardShader)) {
@@ -166,8 +172,8 @@ void SceneBuilder::surface(RequestReader& in) {
             list += (list.empty() ? "" : ", ") + standard;
         }
         return list.empty() ? std::string()
-                            : "the defaults its source " + fs::path(source).filename().string() + " declares for " +
-                                  list;
+                            : "the defaults its source " + fs::path(source.file).filename().string() +
+                                  " declares for " + list;
     };
     // "shaders/plastic": a compiled shader the scene brings along, most often a copy
     // of the standard one; the standard one is the closest this renderer can come.
