@@ -816,13 +816,83 @@ TEST_CASE("RIS lights' shadow controls: enableShadows 0 lights what lies behind 
     CHECK(test::warningTexts(quiet).empty());
     CHECK(behindBlocker(defaults) == 0.0);
 
-    // A grey shadow or a light kept out of the diffuse lobe would change the image: not modelled, so said.
+    // A grey shadow would change the image: not modelled, so said (a light kept out of the diffuse
+    // lobe is modelled: see the multipliers' test).
     Diagnostics told(false);
     behindBlocker("\"color shadowColor\" [0.5 0.5 0.5] \"float diffuse\" [0]", &told);
     std::vector<std::string> const warnings = test::warningTexts(told);
-    REQUIRE(warnings.size() == 2u);
+    REQUIRE(warnings.size() == 1u);
     CHECK_THAT(warnings[0], Catch::Matchers::EndsWith("parameter \"shadowColor\" is not used; ignored"));
-    CHECK_THAT(warnings[1], Catch::Matchers::EndsWith("parameter \"diffuse\" is not used; ignored"));
+}
+
+TEST_CASE("a light's diffuse and specular multipliers scale what diffuse and specular lobes take straight from it "
+          "in every integrator",
+          "[lights]") {
+    // A rect light the camera does not see, over a square of `bxdf`; the mean red of the image.
+    auto lit = [](std::string const& integrator, std::string const& bxdf, std::string const& multipliers) {
+        std::string rib = "Format 16 16 1\nProjection \"perspective\" \"fov\" [20]\nIntegrator \"" + integrator +
+                          "\" \"i\"\nWorldBegin\nAttributeBegin\nAttribute \"visibility\" \"int camera\" [0]\n"
+                          "Translate 0 0 3\nLight \"PxrRectLight\" \"key\" \"float intensity\" [4] " + multipliers +
+                          "\nAttributeEnd\n" + bxdf + "\nPolygon \"P\" [-4 -4 5  4 -4 5  4 4 5  -4 4 5]\nWorldEnd\n";
+        return test::meanChannel(test::renderRib(rib, test::withSpp(16)), 0, [](int, int) { return true; });
+    };
+    auto multipliers = [](char const* diffuse, char const* specular) {
+        return std::string("\"float diffuse\" [") + diffuse + "] \"float specular\" [" + specular + "]";
+    };
+    std::string const plastic = "Bxdf \"plastic\" \"p\" \"color diffuseColor\" [0.5 0.5 0.5] "
+                                "\"color specularColor\" [0.3 0.3 0.3] \"float gloss\" [0.5]";
+    std::string const matte = "Bxdf \"diffuse\" \"d\" \"color diffuseColor\" [0.8 0.8 0.8]";
+    for (std::string integrator : {"PxrDirectLighting", "PxrPathTracer", "PxrVCM"}) {
+        CAPTURE(integrator);
+        double const full = lit(integrator, plastic, multipliers("1", "1"));
+        double const diffuseOnly = lit(integrator, plastic, multipliers("1", "0"));
+        double const specularOnly = lit(integrator, plastic, multipliers("0", "1"));
+        REQUIRE(full > 0.01);
+        CHECK(full == lit(integrator, plastic, ""));  // 1 and 1 are RenderMan's defaults
+        CHECK(lit(integrator, plastic, multipliers("0", "0")) == 0.0);
+        CHECK(lit(integrator, plastic, multipliers("0.5", "0.5")) == Approx(full / 2).epsilon(1e-5));
+        // Each lobe's share is its own: the two shares make up the whole.
+        CHECK(diffuseOnly > 0.05 * full);
+        CHECK(specularOnly > 0.05 * full);
+        CHECK(diffuseOnly + specularOnly == Approx(full).epsilon(1e-4));
+        CHECK(lit(integrator, plastic, multipliers("2", "1")) == Approx(full + diffuseOnly).epsilon(1e-4));
+        // A diffuse surface takes only the diffuse multiplier.
+        double const matteFull = lit(integrator, matte, "");
+        CHECK(lit(integrator, matte, multipliers("1", "0")) == matteFull);
+        CHECK(lit(integrator, matte, multipliers("0", "3")) == 0.0);
+    }
+
+    // A classic light shader's "__nondiffuse" and "__nonspecular" 1 leave it out of diffuse() and specular().
+    auto classic = [](std::string const& surface, std::string const& switches) {
+        std::string rib = "Format 16 16 1\nProjection \"perspective\" \"fov\" [20]\nWorldBegin\n"
+                          "LightSource \"pointlight\" 1 \"intensity\" [20] \"from\" [0 1 2] " + switches + "\n" +
+                          surface + "\nPolygon \"P\" [-4 -4 5  4 -4 5  4 4 5  -4 4 5]\nWorldEnd\n";
+        return test::meanChannel(test::renderRib(rib, test::withSpp(4)), 0, [](int, int) { return true; });
+    };
+    double const plasticLit = classic("Surface \"plastic\"", "");
+    REQUIRE(plasticLit > 0.01);
+    CHECK(classic("Surface \"matte\"", "\"float __nondiffuse\" [1]") == 0.0);
+    CHECK(classic("Surface \"matte\"", "\"__nonspecular\" [1]") == classic("Surface \"matte\"", ""));
+    double const diffusePart = classic("Surface \"plastic\"", "\"float __nonspecular\" [1]");
+    double const specularPart = classic("Surface \"plastic\"", "\"float __nondiffuse\" [1]");
+    CHECK(diffusePart > 0.0);
+    CHECK(specularPart > 0.0);
+    CHECK(diffusePart + specularPart == Approx(plasticLit).epsilon(1e-4));
+    CHECK(classic("Surface \"plastic\"", "\"float __nondiffuse\" [0] \"float __nonspecular\" [0]") == plasticLit);
+
+    // Read quietly, and a negative or non-finite multiplier is a located error.
+    Diagnostics quiet(false);
+    test::parseRib("WorldBegin\nLight \"PxrRectLight\" \"key\" \"float diffuse\" [0.5] \"float specular\" [2]\nWorldEnd\n",
+                   quiet);
+    CHECK(test::warningTexts(quiet).empty());
+    for (char const* bad : {"\"float diffuse\" [-1]", "\"specular\" [-0.5]"}) {
+        CAPTURE(bad);
+        Diagnostics diagnostics(false);
+        CHECK_THROWS_WITH(test::parseRib(std::string("WorldBegin\nLight \"PxrDiskLight\" \"key\" ") + bad + "\nWorldEnd\n",
+                                         diagnostics),
+                          Catch::Matchers::Contains("test.rib:2:") &&
+                              Catch::Matchers::Contains("diffuse and specular multipliers must be finite and not negative"));
+    }
 }
 
 TEST_CASE("an area light shader without geometry (plausibleArealight) is a light of its shape, radiance intensity x "

@@ -431,13 +431,14 @@ TEST_CASE("a parameter nobody reads names the one its reader asked for when it i
     Diagnostics many(false);
     std::string lights;
     for (char const* handle : {"key", "fill", "rim"})
-        lights += std::string("Light \"PxrRectLight\" \"") + handle + "\" \"float specular\" [0.3] \"float shadowFalloff\" [2]\n";
-    parseRib("WorldBegin\n" + lights + "Light \"PxrDiskLight\" \"d\" \"float specular\" [0.5]\nWorldEnd\n", many);
+        lights += std::string("Light \"PxrRectLight\" \"") + handle +
+                  "\" \"color shadowColor\" [0.3 0.3 0.3] \"float shadowFalloff\" [2]\n";
+    parseRib("WorldBegin\n" + lights + "Light \"PxrDiskLight\" \"d\" \"color shadowColor\" [0.5 0.5 0.5]\nWorldEnd\n", many);
     std::vector<std::string> const once = test::warningTexts(many);
     REQUIRE(once.size() == 3u);  // the rect lights' two names, and the disk light's own
-    CHECK(once[0] == "test.rib:2:28: PxrRectLight \"key\": parameter \"specular\" is not used; ignored");
+    CHECK(once[0] == "test.rib:2:28: PxrRectLight \"key\": parameter \"shadowColor\" is not used; ignored");
     CHECK_THAT(once[1], Catch::Matchers::Contains("PxrRectLight \"key\": parameter \"shadowFalloff\""));
-    CHECK_THAT(once[2], Catch::Matchers::Contains("PxrDiskLight \"d\": parameter \"specular\""));
+    CHECK_THAT(once[2], Catch::Matchers::Contains("PxrDiskLight \"d\": parameter \"shadowColor\""));
 }
 
 TEST_CASE("RenderMan's older visibility attributes: transmission as a string, typed or not, and trace", "[rib]") {
@@ -1021,6 +1022,27 @@ TEST_CASE("what 1990s RIB files write: mpoint, a standard name as a shader's own
     Scene rest = parseRib("WorldBegin\nReadArchive \"objects.rib\"\nObjectInstance 1\nSphere 1 -1 1 360\n", lenient);
     CHECK(rest.shapes.size() == 1u);
     CHECK(test::warningsContaining(lenient, "no object \"1\" was defined with ObjectBegin (perhaps in the archive") == 1);
+}
+
+TEST_CASE("a standard int name given a fraction is a plugin's own parameter: PxrDisney's or a light's specular 0.5",
+          "[rib]") {
+    // "specular" is also the visibility attribute's int; a Bxdf or a light means its own float by it.
+    auto mean = [](std::string const& specular) {
+        std::string rib = "Format 16 16 1\nWorldBegin\nBxdf \"PxrDisney\" \"d\" " + specular +
+                          "\nSphere 1 -1 1 360\nWorldEnd\n";
+        return test::meanChannel(test::renderRib(rib, test::withSpp(2)), 0, [](int, int) { return true; });
+    };
+    double const typed = mean("\"float specular\" [0.5]");
+    CHECK(mean("\"specular\" [0.5]") == typed);
+    CHECK(mean("\"specular\" [0]") < typed);
+    Diagnostics diagnostics(false);
+    Scene scene = parseRib("WorldBegin\nLight \"PxrRectLight\" \"key\" \"specular\" [0.5] \"diffuse\" [0.25]\n", diagnostics);
+    REQUIRE(scene.lights.size() == 1u);
+    CHECK(scene.lights[0]->specularMultiplier == 0.5f);
+    CHECK(scene.lights[0]->diffuseMultiplier == 0.25f);
+    // Where the standard name is meant, a fraction is still an error.
+    CHECK_THAT(ribErrorOf("WorldBegin\nAttribute \"visibility\" \"specular\" [0.5]\n"),
+               Catch::Matchers::Contains("parameter \"specular\" is an int but has value 0.5"));
 }
 
 TEST_CASE("a missing archive, sky image or texture is a warning naming what was tried, --strict makes it an error",

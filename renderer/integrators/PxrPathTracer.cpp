@@ -134,7 +134,7 @@ private:
         RtVector3* dir = pool.AllocFor<RtVector3>(n);
         bool* shade = pool.AllocFor<bool>(n);
         RixRNG::SampleCtx* samples = pool.AllocFor<RixRNG::SampleCtx>(n);
-        RtColorRGB* weight = pool.AllocFor<RtColorRGB>(n);      // f / FPdf
+        LobeWeight* weight = pool.AllocFor<LobeWeight>(n);      // f / FPdf
         PathState* next = pool.AllocFor<PathState>(n);          // the path after the bounce
         float* misWeightPdf = pool.AllocFor<float>(n);          // FPdf, for the MIS weight of a light hit
         bool* discrete = pool.AllocFor<bool>(n);
@@ -154,14 +154,15 @@ private:
                     continue;
                 }
                 L.Normalize();
-                RtColorRGB f = q.W.SumAtPoint(i);
+                LobeWeight const lobes = LobeWeight::at(q.W, i);
+                RtColorRGB const& f = lobes.all;
                 if (f.IsBlack()) continue;
                 bool const specular = q.lobeSampled[i].GetSpecular();
                 if (!m_allowCaustics && paths[i].diffusePath && specular) continue;  // a caustic
                 bool const withinDepth = continues && (specular ? paths[i].specularBounces < specularLimit[i]
                                                                 : paths[i].diffuseBounces < diffuseLimit[i]);
                 if (s != 0 || !withinDepth) {
-                    look.add(i, L, 0.0f, throughput[i] * f);  // the light is found along the ray
+                    look.add(i, L, 0.0f, lobes * throughput[i]);  // the light is found along the ray
                     continue;
                 }
                 RtColorRGB carried = throughput[i] * f / q.FPdf[i];
@@ -176,7 +177,7 @@ private:
                 dir[rays] = L;
                 shade[rays] = survives && std::isfinite(carried.r) && std::isfinite(carried.g) && std::isfinite(carried.b);
                 samples[rays] = rng.sampleCtxArray[i];
-                weight[rays] = f / q.FPdf[i];
+                weight[rays] = lobes / q.FPdf[i];
                 next[rays].throughput = carried;
                 next[rays].diffusePath = paths[i].diffusePath || q.lobeSampled[i].GetDiffuse();
                 next[rays].diffuseBounces = paths[i].diffuseBounces + (specular ? 0 : 1);
@@ -209,7 +210,8 @@ private:
         for (int k = 0; k < rays; ++k) {
             if (!lightHits[k].hit) continue;
             float w = discrete[k] ? 1.0f : RixPowerHeuristic(nB, misWeightPdf[k], nL, lightHits[k].pdf);
-            accumulate(ictx, radiance[index[k]], throughput[index[k]] * weight[k] * lightHits[k].radiance * (w / nB));
+            RtColorRGB const lit = weight[k].litBy(lightHits[k].diffuse, lightHits[k].specular);
+            accumulate(ictx, radiance[index[k]], throughput[index[k]] * lit * lightHits[k].radiance * (w / nB));
         }
     }
 

@@ -203,6 +203,7 @@ private:
         bool lightTracing;            ///< also joined to the camera (light tracing)
         bool const* deltaLight;       ///< per camera point: its light is a point light
         int const* lightIndex;        ///< per camera point: the light its subpath starts on
+        RixLightEmission const* emitted;  ///< per camera point: the ray leaving that light
         float* neeOverEmit;           ///< per camera point: see lightSideSum (set at the first light vertex)
     };
 
@@ -262,7 +263,7 @@ private:
                 if (!shadow.clear[k]) continue;
                 int const i = shadow.point[k];
                 RixLightSample const& ls = sample[i];
-                RtColorRGB const& f = shadow.weight[k];
+                RtColorRGB const f = shadow.weight[k].litBy(ls.diffuse, ls.specular);
                 float weight;
                 if (!emits) {
                     // A light at infinity: only Bxdf sampling competes.
@@ -363,7 +364,8 @@ private:
             carried[i] = e.radiance * (cosine / (choice * e.pdfArea * e.pdfDir));
         }
         LightPath path{level,        joins,      maxLightSurfaces, lightTracing ? m_maxPathLength : maxLightSurfaces,
-                       lightTracing, deltaLight, lightIndex,       neeOverEmit};
+                       lightTracing, deltaLight, lightIndex,       rays,
+                       neeOverEmit};
         float* pdfDir = scratch.pdfDir.data();
         for (int i = 0; i < n; ++i) pdfDir[i] = rays[i].pdfDir;
         ictx.TraceEmitted(n, rays, samples, [&](RixShadeBatch& batch) {
@@ -389,8 +391,8 @@ private:
             for (int i = 0; i < n; ++i) {
                 Connection const& c = joins[i * maxLightSurfaces + round];
                 if (!c.valid) continue;
-                RtColorRGB f = q.W.SumAtPoint(i);
-                if (f.IsBlack()) continue;
+                LobeWeight const f = LobeWeight::at(q.W, i);
+                if (f.all.IsBlack()) continue;
                 RtVector3 toLight = c.P - P[i];
                 float distance = std::sqrt(toLight.LengthSq());
                 shadow.add(i, toLight / distance, distance, f);
@@ -406,7 +408,8 @@ private:
                 float revPrevious = revOfPrevious(level, i, q.RPdf[i], false);
                 float sum = cameraSideSum(&level, i, c.pdfRevCamera, revPrevious, false, 1.0f, emitters.lightTracing) +
                             remapZero(revLightVertex) * remapZero(revLightVertex) * c.lightSum;
-                accumulate(ictx, radiance[i], throughput[i] * shadow.weight[k] * c.carried * (1.0f / ((1.0f + sum) * distSq)));
+                accumulate(ictx, radiance[i],
+                           throughput[i] * shadow.weight[k].all * c.carried * (1.0f / ((1.0f + sum) * distSq)));
             }
         }
     }
@@ -454,7 +457,13 @@ private:
         }
         if (!batch.bxdf.GetAllLobeTraits().HasAny()) return;
         RixBxdfScratch q(ctx);
-        if (path.lightTracing) splatToCamera(batch, ictx, q, path, level, cameraIndex, carried);
+        // The light's diffuse and specular multipliers weigh what the first surface takes of it.
+        auto bxdfWeight = [&](int j) {
+            if (depth != 1) return q.W.SumAtPoint(j);
+            RixLightEmission const& from = path.emitted[cameraIndex[j]];
+            return LobeWeight::at(q.W, j).litBy(from.diffuse, from.specular);
+        };
+        if (path.lightTracing) splatToCamera(batch, ictx, q, path, level, cameraIndex, carried, bxdfWeight);
 
         // Join each vertex to its camera vertex: this Bxdf toward the camera vertex.
         for (int j = 0; j < m && depth <= path.maxSurfaces; ++j) {
@@ -463,7 +472,7 @@ private:
         }
         if (depth <= path.maxSurfaces) q.evaluate(batch.bxdf, batch.rng, ictx);
         for (int j = 0; j < m && depth <= path.maxSurfaces; ++j) {
-            RtColorRGB f = q.W.SumAtPoint(j);
+            RtColorRGB f = bxdfWeight(j);
             if (f.IsBlack() || carried[j].IsBlack()) continue;
             int const i = cameraIndex[j];
             Connection& c = path.joins[i * path.maxSurfaces + depth - 1];
@@ -488,7 +497,7 @@ private:
         int rays = 0;
         for (int j = 0; j < m; ++j) {
             if (!q.lobeSampled[j].GetValid() || !finite(q.Ln[j]) || q.Ln[j].IsZero()) continue;
-            RtColorRGB f = q.W.SumAtPoint(j);
+            RtColorRGB f = bxdfWeight(j);
             if (f.IsBlack()) continue;
             bool discrete = q.lobeSampled[j].GetDiscrete();
             vertex[j].delta = discrete;
@@ -510,8 +519,11 @@ private:
     }
 
     /// t = 1: each light vertex joined to the camera, added to the pixel it lands in.
+    /// bxdfWeight(j): q's weight at point j, as light that reached it along its subpath is weighed.
+    template <class BxdfWeight>
     void splatToCamera(RixShadeBatch& batch, RixIntegratorContext& ictx, RixBxdfScratch& q, LightPath const& path,
-                       SubpathLevel const& level, int const* cameraIndex, RtColorRGB const* carried) {
+                       SubpathLevel const& level, int const* cameraIndex, RtColorRGB const* carried,
+                       BxdfWeight const& bxdfWeight) {
         RixShadingContext const& ctx = batch.ctx;
         int const m = ctx.numPts;
         RixShadingContext::Allocator pool(&ctx);
@@ -526,7 +538,7 @@ private:
         q.evaluate(batch.bxdf, batch.rng, ictx);
         for (int j = 0; j < m; ++j) {
             if (!eye[j].hit) continue;
-            RtColorRGB f = q.W.SumAtPoint(j);
+            RtColorRGB f = bxdfWeight(j);
             if (f.IsBlack()) continue;
             PathVertex const& previous = level.parent->vertex[level.parentIndex[j]];
             float revPrevious = toArea(q.RPdf[j], level.vertex[j].P, previous);
@@ -552,7 +564,7 @@ private:
         RtVector3* dir = pool.AllocFor<RtVector3>(n);
         bool* shade = pool.AllocFor<bool>(n);
         RixRNG::SampleCtx* samples = pool.AllocFor<RixRNG::SampleCtx>(n);
-        RtColorRGB* weight = pool.AllocFor<RtColorRGB>(n);   // f / FPdf
+        LobeWeight* weight = pool.AllocFor<LobeWeight>(n);   // f / FPdf
         float* pdfDir = pool.AllocFor<float>(n);             // FPdf, 0 if discrete
         float* revPrevious = pool.AllocFor<float>(n);
         bool* discrete = pool.AllocFor<bool>(n);
@@ -564,8 +576,8 @@ private:
                 ictx.CountNonFinite();
                 continue;
             }
-            RtColorRGB f = q.W.SumAtPoint(i);
-            if (f.IsBlack()) continue;
+            LobeWeight const f = LobeWeight::at(q.W, i);
+            if (f.all.IsBlack()) continue;
             bool isDiscrete = q.lobeSampled[i].GetDiscrete();
             level.vertex[i].delta = isDiscrete;
             revPrevious[i] = revOfPrevious(level, i, q.RPdf[i], isDiscrete);
@@ -597,7 +609,7 @@ private:
                 int ray = batch.source[j];
                 parentIndex[j] = index[ray];
                 child.vertex[j].pdfFwd = toArea(pdfDir[ray], level.vertex[index[ray]].P, child.vertex[j]);
-                childThroughput[j] = throughput[index[ray]] * weight[ray];
+                childThroughput[j] = throughput[index[ray]] * weight[ray].all;
                 childRadiance[j] = RtColorRGB(0.0f);
             }
             cameraVertex(batch.ctx, batch.bxdf, batch.rng, ictx, emitters, child, childThroughput, childRadiance, depth + 1);
@@ -624,7 +636,7 @@ private:
                 sum += cameraSideSum(&level, i, revCamera, revPrevious[i], discrete[k], ri, emitters.lightTracing);
                 w = 1.0f / (1.0f + sum);
             }
-            accumulate(ictx, radiance[i], throughput[i] * weight[k] * hit.radiance * w);
+            accumulate(ictx, radiance[i], throughput[i] * weight[k].litBy(hit.diffuse, hit.specular) * hit.radiance * w);
         }
     }
 

@@ -43,7 +43,7 @@ typedef const char* RtConstString;
 /// renderer refuses a plugin built against another version with a message
 /// instead of crashing inside it. tests/check_api_version.py fails when the
 /// headers change without this number being reconsidered.
-#define RIX_PLUGIN_API_VERSION 12
+#define RIX_PLUGIN_API_VERSION 13
 extern "C" PRMANEXPORT __attribute__((weak)) int RixPluginApiVersion() { return RIX_PLUGIN_API_VERSION; }
 /// Stack memory that vanishes when the calling function returns. Use it for
 /// small per-call scratch arrays (e.g. random numbers for one batch).

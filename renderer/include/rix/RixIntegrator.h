@@ -24,6 +24,9 @@ struct RixLightSample {
     bool shadows = true;       ///< false: the light casts no shadows (a classic light without a shadow map,
                                ///< a RIS light with enableShadows 0); ask Unoccluded with distance 0, which is
                                ///< always clear
+    float diffuse = 1.0f;      ///< the light's "diffuse" and "specular" multipliers (non-physical artist
+    float specular = 1.0f;     ///< controls): what the Bxdf's diffuse lobes take of this light is multiplied
+                               ///< by diffuse, what its specular lobes take by specular (user lobes: by 1)
 };
 
 /// The light a ray reaches (before any surface), if any.
@@ -33,6 +36,8 @@ struct RixLightHit {
     RtColorRGB radiance;
     float pdf = 0.0f;          ///< the pdf that light's own sampling gives this direction
     int light = -1;            ///< which light (as numbered for SampleLight)
+    float diffuse = 1.0f;      ///< that light's diffuse and specular multipliers, as in RixLightSample
+    float specular = 1.0f;
 };
 
 /// A ray leaving a light: the first step of a light subpath, for
@@ -46,6 +51,8 @@ struct RixLightEmission {
     float pdfArea = 0.0f;      ///< per unit area of the light; 1 for a point light (it has no area)
     float pdfDir = 0.0f;       ///< per unit solid angle around dir
     bool deltaPosition = false;  ///< a point light: no ray can ever reach it
+    float diffuse = 1.0f;      ///< the light's diffuse and specular multipliers, as in RixLightSample: they
+    float specular = 1.0f;     ///< apply at the first surface the ray reaches
 };
 
 /// The densities with which light at point P of a light reaches a receiver:

@@ -58,8 +58,8 @@ void sampleLight(RixShadingContext const& ctx, RixBxdf& bxdf, RixRNG& rng, RixIn
     for (int i = 0; i < n; ++i) {
         RixLightSample const& ls = sample[i];
         if (!(ls.pdf > 0.0f) || ls.radiance.IsBlack()) continue;
-        RtColorRGB const f = q.W.SumAtPoint(i);
-        if (f.IsBlack()) continue;
+        LobeWeight const f = LobeWeight::at(q.W, i);
+        if (f.litBy(ls.diffuse, ls.specular).IsBlack()) continue;
         shadow.add(i, ls.wi, ls.shadows ? ls.distance : 0.0f, f);
     }
 }
@@ -90,7 +90,8 @@ void addLightSamples(RixShadingContext const& ctx, RixBxdf& bxdf, RixRNG& rng, R
                 RixLightSample const& ls = lightSample[i];
                 // Weighted against the chance that Bxdf sampling finds the same light (MIS).
                 float weight = ls.delta ? 1.0f : RixPowerHeuristic(nL, ls.pdf, nB, RixMax(0.0f, q.FPdf[i]));
-                RtColorRGB contribution = shadow.weight[k] * ls.radiance * (weight / (nL * ls.pdf));
+                RtColorRGB contribution =
+                    shadow.weight[k].litBy(ls.diffuse, ls.specular) * ls.radiance * (weight / (nL * ls.pdf));
                 if (throughput) contribution *= throughput[i];
                 accumulate(ictx, radiance[i], contribution);
             }
@@ -108,7 +109,8 @@ void addLightsFound(RixShadingContext const& ctx, RixIntegratorContext& ictx, Ri
         if (!hit[k].hit) continue;
         int const i = rays.point[k];
         float weight = q.lobeSampled[i].GetDiscrete() ? 1.0f : RixPowerHeuristic(nB, q.FPdf[i], nL, hit[k].pdf);
-        accumulate(ictx, radiance[i], rays.weight[k] * hit[k].radiance * (weight / (nB * q.FPdf[i])));
+        RtColorRGB const f = rays.weight[k].litBy(hit[k].diffuse, hit[k].specular);
+        accumulate(ictx, radiance[i], f * hit[k].radiance * (weight / (nB * q.FPdf[i])));
     }
 }
 
@@ -164,8 +166,8 @@ void DirectLighting::Integrate(RixShadingContext const& ctx, RixBxdf& bxdf, RixR
                 ictx.CountNonFinite();
                 continue;
             }
-            RtColorRGB const f = q.W.SumAtPoint(i);
-            if (f.IsBlack()) continue;
+            LobeWeight const f = LobeWeight::at(q.W, i);
+            if (f.all.IsBlack()) continue;
             shadow.add(i, Normalize(q.Ln[i]), 0.0f, f);  // no distance yet: the light is found along the ray
         }
         addLightsFound(ctx, ictx, q, shadow, hit, m_numLightSamples, m_numBxdfSamples, radiance);

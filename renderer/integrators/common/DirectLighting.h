@@ -8,6 +8,34 @@
 
 namespace bxdflab {
 
+/// A Bxdf's weight toward one direction with its diffuse and specular lobes'
+/// parts kept apart: a light's "diffuse" and "specular" multipliers scale them
+/// (RixLightSample), and a ray traced along a Bxdf sample learns which light it
+/// reaches, and so the multipliers, only after it has been traced.
+struct LobeWeight {
+    RtColorRGB all;       ///< every lobe (W.SumAtPoint)
+    RtColorRGB diffuse;   ///< the diffuse lobes' part of it
+    RtColorRGB specular;  ///< the specular lobes' part of it
+    RtColorRGB user;      ///< the user lobes' part, which the multipliers leave alone
+
+    /// Point i's weight in W.
+    static LobeWeight at(RixBXLobeWeights const& W, int i) {
+        LobeWeight w{W.SumAtPoint(i), RtColorRGB(0.0f), RtColorRGB(0.0f), RtColorRGB(0.0f)};
+        for (int k = 0; k < W.GetNumActiveLobes(); ++k) {
+            RixBXLobeSampled const lobe = W.GetActiveLobe(k);
+            (lobe.GetDiffuse() ? w.diffuse : lobe.GetSpecular() ? w.specular : w.user) += W.GetActiveLobeWeights(k)[i];
+        }
+        return w;
+    }
+    /// What the Bxdf takes of light with these multipliers (exactly `all` at the usual 1 and 1).
+    RtColorRGB litBy(float diffuseMultiplier, float specularMultiplier) const {
+        if (diffuseMultiplier == 1.0f && specularMultiplier == 1.0f) return all;
+        return diffuse * diffuseMultiplier + specular * specularMultiplier + user;
+    }
+    LobeWeight operator*(RtColorRGB const& c) const { return {all * c, diffuse * c, specular * c, user * c}; }
+    LobeWeight operator/(float s) const { return {all / s, diffuse / s, specular / s, user / s}; }
+};
+
 /// The shadow rays of one round of samples, gathered to be traced together
 /// (RixIntegratorContext's batched Unoccluded and VisibleLights): ray k leaves
 /// point[k] toward dir[k]; toward a sampled light it must stay clear for
@@ -17,9 +45,9 @@ struct ShadowRays {
         : point(pool.AllocFor<int>(size)),
           dir(pool.AllocFor<RtVector3>(size)),
           distance(pool.AllocFor<float>(size)),
-          weight(pool.AllocFor<RtColorRGB>(size)),
+          weight(pool.AllocFor<LobeWeight>(size)),
           clear(pool.AllocFor<bool>(size)) {}
-    void add(int i, RtVector3 const& towards, float reach, RtColorRGB const& W) {
+    void add(int i, RtVector3 const& towards, float reach, LobeWeight const& W) {
         point[count] = i;
         dir[count] = towards;
         distance[count] = reach;
@@ -30,7 +58,8 @@ struct ShadowRays {
     int* point;
     RtVector3* dir;
     float* distance;
-    RtColorRGB* weight;  ///< what the light found is multiplied by (the Bxdf's W for that direction, times any path throughput)
+    LobeWeight* weight;  ///< what the light found is multiplied by (the Bxdf's W for that direction, times any
+                         ///< path throughput), before the light's multipliers
     bool* clear;
 };
 

@@ -83,7 +83,10 @@ RixLightSample IntegratorServices::SampleLight(int light, RtPoint3 const& P, RtF
     out.radiance = s.radiance;
     out.pdf = s.pdf;
     out.delta = s.delta;
-    out.shadows = m_lights[static_cast<size_t>(light)]->castsShadows;
+    Light const& source = *m_lights[static_cast<size_t>(light)];
+    out.shadows = source.castsShadows;
+    out.diffuse = source.diffuseMultiplier;
+    out.specular = source.specularMultiplier;
     return out;
 }
 
@@ -163,7 +166,8 @@ RixLightHit IntegratorServices::lightAlong(Vec3 const& from, Vec3 const& dir, fl
     LightAlongRay seen = nearestLightAlong(m_lights, from, dir, maxDistance);
     // A light that sends nothing this way (the back of a rect light) is no hit for MIS.
     if (!seen.light || seen.radiance.IsBlack()) return {};
-    return {true, seen.distance, seen.radiance, seen.pdf, seen.index};
+    return {true, seen.distance, seen.radiance, seen.pdf, seen.index, seen.light->diffuseMultiplier,
+            seen.light->specularMultiplier};
 }
 
 bool IntegratorServices::lightEmitsAcross(Vec3 const& from, Vec3 const& dir, float maxDistance,
@@ -257,6 +261,8 @@ RixLightEmission IntegratorServices::SampleEmission(int light, RtFloat2 const& x
     out.pdfArea = e.pdfArea;
     out.pdfDir = e.pdfDir;
     out.deltaPosition = source.isDelta();
+    out.diffuse = source.diffuseMultiplier;
+    out.specular = source.specularMultiplier;
     return out;
 }
 

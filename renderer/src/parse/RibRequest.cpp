@@ -1,9 +1,10 @@
 #include "parse/RibRequest.h"
 
-#include "parse/RequestNames.h"
-
+#include <algorithm>
 #include <cmath>
 #include <sstream>
+
+#include "parse/RequestNames.h"
 
 namespace bxdflab {
 
@@ -146,8 +147,15 @@ ParamList RequestReader::params() {
         param.decl = m_declarations.resolve(nameValue.strings[0], nameValue.where);
         param.location = nameValue.where;
         bool isString = value.kind == RibValue::Kind::String || value.kind == RibValue::Kind::StringArray;
-        if (param.decl.standard && (param.decl.type == ParamType::String) != isString) {
-            // A standard name used for something else (an old shader's own "frequency" 3): kept as written.
+        // Attribute and Option own the standard names; a shader or plugin may mean its own by one.
+        bool const ownsStandardNames = m_request.name == "Attribute" || m_request.name == "Option";
+        bool const fractionForInt = !ownsStandardNames && param.decl.type == ParamType::Int &&
+                                    std::any_of(value.numbers.begin(), value.numbers.end(),
+                                                [](double d) { return !isWholeInt(d); });
+        if (param.decl.standard && ((param.decl.type == ParamType::String) != isString || fractionForInt)) {
+            // A standard name used for something else (an old shader's own "frequency" 3, a light's or
+            // PxrDisney's "specular" 0.5 beside the visibility attribute's int): kept as written, for the
+            // request to type.
             param.decl.type = ParamType::Unknown;
             param.decl.untyped = true;
         }

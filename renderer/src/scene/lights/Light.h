@@ -85,6 +85,9 @@ public:
 
     RtColorRGB color;  ///< intensity * 2^exposure * lightColor
     bool castsShadows = true;  ///< false for classic lights given no shadow map or ray-traced shadows
+    /// RenderMan's non-physical "diffuse" and "specular" controls: what the light's light is
+    /// multiplied by where a diffuse or a specular lobe reflects it straight from the light.
+    float diffuseMultiplier = 1.0f, specularMultiplier = 1.0f;
     Visibility visibility;
     std::string handle;
     /// Attribute "grouping" "membership": the groups a shape's "lighting" subsets may name it by

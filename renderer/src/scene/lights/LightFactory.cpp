@@ -72,6 +72,7 @@ std::unique_ptr<Light> classicAreaLight(std::string const& shader, ParamList con
     Vec3 const radiance = classicAreaLightRadiance(shader, params, light->surfaceArea());
     light->color = RtColorRGB(radiance.x, radiance.y, radiance.z);
     light->castsShadows = true;
+    readClassicLobeSwitches(params, *light);
     guess = std::string("a ") + (twoSided ? "two-sided " : "") + shape + " light " +
             (isPlausible(shader) ? "of radiance intensity x lightcolor" : "giving what a point light of its intensity would");
     return light;
@@ -79,16 +80,28 @@ std::unique_ptr<Light> classicAreaLight(std::string const& shader, ParamList con
 
 }  // namespace
 
-void readCommonLightControls(ParamList const& params, Light& light) {
+void readClassicLobeSwitches(ParamList const& params, Light& light) {
+    auto on = [&params](char const* name) {  // old files give them untyped too
+        Param const* p = params.find(name);
+        return p && !p->floats.empty() && p->floats.front() != 0.0f;
+    };
+    if (on("__nondiffuse")) light.diffuseMultiplier = 0.0f;
+    if (on("__nonspecular")) light.specularMultiplier = 0.0f;
+}
+
+void readCommonLightControls(ParamList const& params, Light& light, SourceLocation const& where) {
     light.castsShadows = params.getFloat("enableShadows", 1.0f) != 0.0f;
+    light.diffuseMultiplier = params.getFloat("diffuse", 1.0f);
+    light.specularMultiplier = params.getFloat("specular", 1.0f);
+    if (!(light.diffuseMultiplier >= 0.0f) || !(light.specularMultiplier >= 0.0f) ||
+        !std::isfinite(light.diffuseMultiplier) || !std::isfinite(light.specularMultiplier))
+        throw RibError(where, "the light's diffuse and specular multipliers must be finite and not negative");
     params.ignore("lightGroup");
     auto atDefault = [&params](char const* name, std::vector<float> const& noEffect) {
         Param const* p = params.find(name);
         if (p && p->floats == noEffect) params.ignore(name);
     };
     atDefault("shadowColor", {0.0f, 0.0f, 0.0f});
-    atDefault("diffuse", {1.0f});
-    atDefault("specular", {1.0f});
     atDefault("shadowDistance", {-1.0f});
     atDefault("shadowFalloff", {-1.0f});
     atDefault("shadowFalloffGamma", {1.0f});
@@ -157,7 +170,7 @@ std::unique_ptr<Light> makeLight(std::string const& type, ParamList const& param
     if (type == "PxrDistantLight")
         radiance *= distantLightIrradianceScale(params.getFloat("angleExtent", kSunAngleExtent), areaNormalize);
     light->color = RtColorRGB(radiance.x, radiance.y, radiance.z);
-    readCommonLightControls(params, *light);
+    readCommonLightControls(params, *light, where);
     return light;
 }
 
@@ -345,6 +358,7 @@ std::unique_ptr<Light> makeClassicLight(std::string const& shader, ParamList con
     // is given no map can only trace its shadows, as its transmission() or shadow(..., "raytrace") does.
     bool const namedShadowed = !guess.empty() && lowerName.find("shadow") != std::string::npos;
     if (namedShadowed) light->castsShadows = true;
+    readClassicLobeSwitches(params, *light);
     for (auto const& p : params.all()) p.used = true;  // shadow maps, samples and other shader options: not modelled
     if (!guess.empty())
         guess = std::string("the ") + light->kind() + " its parameters describe" +

@@ -23,11 +23,16 @@ std::unique_ptr<Light> makeLight(std::string const& type, ParamList const& param
                                  MissingFileReport const& missing);
 
 /// The shadow and bookkeeping controls every RIS light has. enableShadows 0 turns the light's
-/// shadows off. The others are taken where their value changes nothing here (a light group only
+/// shadows off; "diffuse" and "specular" scale what diffuse and specular lobes take straight from
+/// the light (a negative or non-finite multiplier is an error at `where`). The others are taken where their value changes nothing here (a light group only
 /// names an AOV; the rest at their defaults); a value that would change the image stays unread,
 /// so that the caller's "not used" warning names it. makeLight applies it; an area light whose
 /// shape comes later (PxrMeshLight, RenderMan 20's PxrStdAreaLight) is given it with its shape.
-void readCommonLightControls(ParamList const& params, Light& light);
+void readCommonLightControls(ParamList const& params, Light& light, SourceLocation const& where);
+
+/// A classic light shader's "__nondiffuse" and "__nonspecular": set to 1, the shading language's
+/// diffuse() or specular() leaves the light out, which is a multiplier of 0 for those lobes.
+void readClassicLobeSwitches(ParamList const& params, Light& light);
 
 /// The types of the RenderMan light parameters this renderer reads, as
 /// RenderMan's own declarations give them: a RIB may write them without a

@@ -637,7 +637,10 @@ void SceneBuilder::addAreaLight(std::unique_ptr<Light> light, AreaLightDesc cons
     if (area.classic && light->surfaceArea() > 0.0f)
         radiance = classicAreaLightRadiance(area.shader, area.params, light->surfaceArea());
     light->color = RtColorRGB(radiance.x, radiance.y, radiance.z);
-    if (!area.classic) readCommonLightControls(area.params, *light);
+    if (area.classic)
+        readClassicLobeSwitches(area.params, *light);
+    else
+        readCommonLightControls(area.params, *light, area.where);
     light->handle = area.handle;
     light->visibility = state().visibility;
     if (light->color.IsBlack()) {
