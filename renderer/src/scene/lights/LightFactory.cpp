@@ -95,7 +95,9 @@ void readCommonLightControls(ParamList const& params, Light& light, SourceLocati
     light.specularMultiplier = params.getFloat("specular", 1.0f);
     if (!(light.diffuseMultiplier >= 0.0f) || !(light.specularMultiplier >= 0.0f) ||
         !std::isfinite(light.diffuseMultiplier) || !std::isfinite(light.specularMultiplier))
-        throw RibError(where, "the light's diffuse and specular multipliers must be finite and not negative");
+        throw RibError(where, "the light's diffuse and specular multipliers must be finite and not negative (diffuse " +
+                                  std::to_string(light.diffuseMultiplier) + ", specular " +
+                                  std::to_string(light.specularMultiplier) + ")");
     params.ignore("lightGroup");
     auto atDefault = [&params](char const* name, std::vector<float> const& noEffect) {
         Param const* p = params.find(name);
