@@ -7,7 +7,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 
 packages=(
-  g++ cmake ninja-build
+  g++ cmake ninja-build ccache
   libembree-dev libopenimageio-dev openimageio-tools libglm-dev libtbb-dev
   catch2 libcli11-dev nlohmann-json3-dev python3-matplotlib
   clang libclang-rt-14-dev libseccomp-dev
