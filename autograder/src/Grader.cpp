@@ -569,12 +569,32 @@ Grade grade(GradeOptions const& options, Course& course, OutputFolder const& out
             log += "\nCMake could not configure the submission: it " + c.status.describe(configure.limits) + "\n";
         } else {
             Launch build = configure;
-            // -k: a plugin that does not compile costs only its own checks.
-            build.argv = {"cmake", "--build", "/scratch/build", "--parallel", "2", "--", "-k"};
             build.limits.wallSeconds = rubric.value("build_timeout_s", 600.0);
-            Finished b = runToEnd(layout, build);
-            log += b.out + b.err;
-            if (!b.status.ok()) log += "\nThe build " + b.status.describe(build.limits) + "\n";
+            // -k: a plugin that does not compile costs only its own checks.
+            // Returns whether the build named a target the submission does not have.
+            auto buildTargets = [&](std::vector<std::string> const& targets) {
+                build.argv = {"cmake", "--build", "/scratch/build", "--parallel", "2"};
+                if (!targets.empty()) build.argv.push_back("--target");
+                build.argv.insert(build.argv.end(), targets.begin(), targets.end());
+                build.argv.insert(build.argv.end(), {"--", "-k"});
+                Finished b = runToEnd(layout, build);
+                std::string const said = b.out + b.err;
+                bool const unknownTarget = !b.status.ok() && !targets.empty() &&
+                                           (said.find("No rule to make target") != std::string::npos ||
+                                            said.find("unknown target") != std::string::npos);
+                if (unknownTarget) return true;
+                log += said;
+                if (!b.status.ok()) log += "\nThe build " + b.status.describe(build.limits) + "\n";
+                return false;
+            };
+            // Grading some exercises builds only their plugins (the starter names each target
+            // after its plugin); a submission whose CMakeLists names them otherwise is built
+            // whole, as it is when everything is graded.
+            std::vector<std::string> targets;
+            if (!options.only.empty() || !options.chapters.empty())
+                for (Exercise const& e : course.exercises())
+                    if (selected(e, options)) targets.push_back(e.plugin);
+            if (buildTargets(targets)) buildTargets({});
         }
         g.built = configured;
         g.buildLog = log;

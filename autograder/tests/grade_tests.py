@@ -10,6 +10,7 @@ what it checked; exits 1 with lines starting PROBLEM when something is wrong.
 import argparse
 import base64
 import csv
+import glob
 import hashlib
 import io
 import json
@@ -127,8 +128,18 @@ def test_variant(ctx, name):
     built = os.path.join(ctx.build, "plugins/variants", name, v["plugin"] + ".so")
     if not expect(os.path.isfile(built), f"{built} was not built"):
         return
+    rubric = None
+    if v["kind"] == "mutant":
+        # A mutant is graded on the checks its entry names (and on loading), as a rubric that lists
+        # them would grade it: each check decides alone, so the rest would only cost time. A correct
+        # variant is graded on every check, as a student is.
+        path, = glob.glob(os.path.join(ctx.root, "starter", "ch*", v["plugin"], "exercise.json"))
+        manifest = json.load(open(path))
+        named = set(v["fail"]) | {"loads"} | ({"renders"} if "noise" in v["fail"] else set())  # noise reads renders
+        checks = {check: points for check, points in manifest["checks"] if check in named}
+        rubric = ctx.rubric("variant-" + name, chapters={manifest["chapter"]: {v["plugin"]: {"checks": checks}}})
     status, output, _ = ctx.grade("variant-" + name, "--plugins", os.path.join(ctx.build, "plugins/variants", name),
-                                  "--only", v["plugin"])
+                                  "--only", v["plugin"], rubric=rubric)
     if not expect(status == 0, f"rixgrade exited with {status}:\n{output[-2000:]}"):
         return
     checks = checks_of(ctx.results("variant-" + name))
@@ -724,6 +735,32 @@ def test_unsafe(ctx):
                "without the sandbox the buggy starter passes the render check (the solution was rendered instead)")
 
 
+def test_targeted_build(ctx):
+    """Grading some exercises builds only their plugins; a submission whose CMakeLists names a
+    plugin's target otherwise is built whole, and graded as it was."""
+    work = os.path.join(ctx.out, "targeted-build-work")
+    shutil.rmtree(work, ignore_errors=True)
+    cases = {"whole": make_submission(ctx, os.path.join(work, "whole"), whole=True),
+             "renamed": make_submission(ctx, os.path.join(work, "renamed"))}
+    renamed_cmake = MINIMAL_CMAKE.replace("Diffuse.cpp)", "Diffuse.cpp TARGET lambert)").replace(
+        "target_include_directories(diffuse", "target_include_directories(lambert")
+    expect(renamed_cmake != MINIMAL_CMAKE, "the minimal CMakeLists no longer has the lines the test renames")
+    with open(os.path.join(cases["renamed"], "CMakeLists.txt"), "w") as f:
+        f.write(renamed_cmake)
+    for case, folder in cases.items():
+        name = "targeted-build-" + case
+        status, output, _ = ctx.grade(name, "--submission", folder, "--only", "diffuse")
+        if not expect(status == 0, f"{case}: rixgrade exited with {status}:\n{output[-1500:]}"):
+            continue
+        for check, t in checks_of(ctx.results(name)).items():
+            expect(t["status"] == "passed", f"{case}: the solved diffuse fails {check}: {t['output'][:300]}")
+        with open(os.path.join(ctx.out, name, "report.html")) as f:
+            report = f.read()
+        if case == "whole":
+            expect("diffuse.dir" in report, "the build log does not show diffuse being built")
+            expect("specular.dir" not in report, "grading diffuse alone built the specular exercise too")
+
+
 def test_private_folders(ctx):
     """A TMPDIR closed to other users (mode 0700, like /root or a mktemp folder) must not stop grading.
 
@@ -835,6 +872,7 @@ def main():
              "starter": lambda: test_starter(ctx), "repeat": lambda: test_repeat(ctx),
              "gradescope": lambda: test_gradescope(ctx), "unsafe": lambda: test_unsafe(ctx),
              "private_folders": lambda: test_private_folders(ctx),
+             "targeted_build": lambda: test_targeted_build(ctx),
              "rixcheck_crash": lambda: test_rixcheck_crash(ctx)}
     tests[args.kind]()
     if problems:
