@@ -2,8 +2,10 @@
 # The sanitizer build: the renderer, plugins and tests built with
 # AddressSanitizer and UndefinedBehaviorSanitizer into build-sanitize/, then
 # tests run there. Any memory error, leak or undefined behaviour fails a test.
+# Renderer cases tagged [heavy] and corpus files marked heavy take minutes
+# here; they are left to the release build (the script says how many).
 #   scripts/sanitize.sh          the subset scripts/test.sh runs (ctest label "sanitize")
-#   scripts/sanitize.sh --full   every test
+#   scripts/sanitize.sh --full   every other test
 # Run scripts/setup.sh first (scripts/test.sh does).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -24,3 +26,7 @@ else
   cd build-sanitize
   ctest -L sanitize --output-on-failure --parallel "$(nproc)"
 fi
+cases=$(bin/rixtests "[heavy]" --list-test-names-only | grep -c . || true)
+files=$(ctest -N -L heavy | grep -c "Test *#" || true)
+echo "sanitize: left to the release build's ctest, for taking minutes under the sanitizers:" \
+     "renderer cases tagged [heavy]: $cases; corpus files marked heavy: $files"

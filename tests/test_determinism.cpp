@@ -18,7 +18,7 @@ test::RenderOutcome render(std::string const& rib, int threads, uint32_t seed = 
 }
 }  // namespace
 
-TEST_CASE("renders are bit-identical for 1 and 2 threads, and across runs", "[determinism]") {
+TEST_CASE("renders are bit-identical for 1 and 2 threads, and across runs", "[determinism][heavy]") {
     std::string rib = test::readScene("ch06/diffuse.rib");
     REQUIRE_FALSE(rib.empty());
     auto one = render(rib, 1), two = render(rib, 2), again = render(rib, 2);

@@ -83,7 +83,8 @@ TEST_CASE("chapter 10 furnace: a smooth glass sphere in a white sky vanishes, a 
     CHECK(r.stats.indirectRays > 0u);
 }
 
-TEST_CASE("PxrPathTracer with maxPathLength 1 (maxIndirectBounces 0) is PxrDirectLighting", "[integrators][pathtracer]") {
+TEST_CASE("PxrPathTracer with maxPathLength 1 (maxIndirectBounces 0) is PxrDirectLighting",
+          "[integrators][pathtracer][heavy]") {
     std::string rib = readScene("ch06/plastic.rib");
     RenderSettings settings;
     settings.spp = 2;
@@ -105,7 +106,7 @@ TEST_CASE("PxrPathTracer with maxPathLength 1 (maxIndirectBounces 0) is PxrDirec
     CHECK_FALSE(bounces2.anyMessageContains("maxIndirectBounces"));
 }
 
-TEST_CASE("light-only, Bxdf-only and MIS estimates agree on a glossy surface", "[integrators][mis]") {
+TEST_CASE("light-only, Bxdf-only and MIS estimates agree on a glossy surface", "[integrators][mis][heavy]") {
     std::string rib = readScene("ch06/specular.rib");
     RenderSettings settings;
     settings.spp = 64;
@@ -406,7 +407,8 @@ TEST_CASE(
     CHECK(noDiffuse.rgba == render(paths).rgba);  // the specular lobe never met the diffuse limit
 }
 
-TEST_CASE("PxrVCM: a wrong RPdf biases a bidirectional image and leaves a path tracer's alone", "[integrators][vcm]") {
+TEST_CASE("PxrVCM: a wrong RPdf biases a bidirectional image and leaves a path tracer's alone",
+          "[integrators][vcm][heavy]") {
     // RPdf is only read to weigh the ways a path can be made; with the wrong one the
     // weights no longer add up to one for every path, and the furnace is off.
     auto vcm = test::renderRib(pointLitSphere("PxrVCM", "probe_forward_rpdf"), test::withSpp(1024));
@@ -415,7 +417,7 @@ TEST_CASE("PxrVCM: a wrong RPdf biases a bidirectional image and leaves a path t
     CHECK(std::fabs(test::meanChannel(vcm, 0, kAll) - 1.75) > 0.02);  // measured: 1.718
 }
 
-TEST_CASE("PxrVCM and PxrPathTracer agree on a box lit through its ceiling", "[integrators][vcm]") {
+TEST_CASE("PxrVCM and PxrPathTracer agree on a box lit through its ceiling", "[integrators][vcm][heavy]") {
     // The gold sphere throws glossy caustics on the walls: the path tracer must
     // be allowed them (without, it is 1.6% darker).
     std::string rib = readScene("ch11/box.rib");
@@ -434,7 +436,8 @@ TEST_CASE("PxrVCM and PxrPathTracer agree on a box lit through its ceiling", "[i
         CHECK(test::meanChannel(vcm, c, kAll) == Approx(test::meanChannel(paths, c, kAll)).epsilon(0.006));
 }
 
-TEST_CASE("PxrVCM and PxrPathTracer agree where the camera sees a light in front of what it lights", "[integrators][vcm]") {
+TEST_CASE("PxrVCM and PxrPathTracer agree where the camera sees a light in front of what it lights",
+          "[integrators][vcm][heavy]") {
     // A light just in front of a lit wall: the camera sees the light (or, for a one-sided
     // light turned away, its dark back), never the bright wall behind it. Light subpaths
     // joined to the camera must be hidden by the light just as camera rays are; they were
@@ -456,7 +459,7 @@ TEST_CASE("PxrVCM and PxrPathTracer agree where the camera sees a light in front
     }
 }
 
-TEST_CASE("PxrVCM and PxrPathTracer agree on a ceiling above a light that faces down", "[integrators][vcm]") {
+TEST_CASE("PxrVCM and PxrPathTracer agree on a ceiling above a light that faces down", "[integrators][vcm][heavy]") {
     // The ceiling is lit only by the sphere below the light, through the light's
     // place. Light subpaths stopped at the light's face, as camera paths that
     // reach a light do, though lights are no surface they can land on: the
@@ -494,7 +497,7 @@ TEST_CASE("PxrVCM and PxrPathTracer agree on a floor under a rect light: a light
 }
 
 TEST_CASE("PxrVCM and PxrPathTracer agree on a room lit by a two-sided panel just under its ceiling",
-          "[integrators][vcm]") {
+          "[integrators][vcm][heavy]") {
     // Both faces of the panel are lit: a camera path from the ceiling that meets it ends
     // there, so a light path or a connection crossing the panel must be stopped too; they
     // were not, and the room came out 25% too bright.
@@ -512,7 +515,8 @@ TEST_CASE("PxrVCM and PxrPathTracer agree on a room lit by a two-sided panel jus
     CHECK(vcm == Approx(paths).epsilon(0.02));
 }
 
-TEST_CASE("PxrVCM renders a caustic as a path tracer does, and finds it from a small light", "[integrators][vcm]") {
+TEST_CASE("PxrVCM renders a caustic as a path tracer does, and finds it from a small light",
+          "[integrators][vcm][heavy]") {
     std::string scene = readScene("ch04/caustic.rib");
     scene.replace(scene.find("Format 320 240 1"), 16, "Format 64 48 1");
     auto pathTracer = [](std::string const& rib) {

@@ -235,7 +235,7 @@ TEST_CASE("integrators are plugins: a missing one names the folders searched, a 
 }
 
 TEST_CASE("a plugin in the course text's style (SetValid only, pdfs left unwritten) renders like the solution",
-          "[plugins][api]") {
+          "[plugins][api][heavy]") {
     // The chapter 6 scene, with the text-style Bxdf in place of the solution.
     std::string solution = test::readScene("ch06/diffuse.rib"), textStyle = solution;
     textStyle.replace(textStyle.find("Bxdf \"diffuse\""), 14, "Bxdf \"textdiffuse\"");

@@ -598,7 +598,7 @@ TEST_CASE("typed inline declarations, Declare and option values", "[rib]") {
     CHECK(scene.integrator.params.getInt("numLightSamples", 0) == 4);
 }
 
-TEST_CASE("instancing: a redefinition inside a replay is safe, and exponential expansion is refused", "[rib]") {
+TEST_CASE("instancing: a redefinition inside a replay is safe, and exponential expansion is refused", "[rib][heavy]") {
     Diagnostics diagnostics(false);
     // "a" holds [Sphere, ObjectBegin "a", Disk]: replaying it makes a sphere, then starts a new "a"
     // (recording the Disk, ended by the ObjectEnd after the instance) while the old "a" is still

@@ -7,6 +7,8 @@ tests/compat/corpus.json expects for it:
              and each of "warnings" (regular expressions) among the messages;
   "error"    exit status 1 with a message matching "error" (a located one).
 
+An entry marked "heavy" is left out of the sanitizer build's run (tests/CMakeLists.txt).
+
 Usage: check_corpus_file.py RIXRENDER CORPUS_ROOT MANIFEST ID OUTPUT_DIR
 """
 import glob
