@@ -5,7 +5,7 @@
 # Renderer cases tagged [heavy] and corpus files marked heavy take minutes
 # here; they are left to the release build (the script says how many).
 #   scripts/sanitize.sh          the subset scripts/test.sh runs (ctest label "sanitize")
-#   scripts/sanitize.sh --full   every other test
+#   scripts/sanitize.sh --full   every test but the [heavy] renderer cases
 # Run scripts/setup.sh first (scripts/test.sh does).
 set -euo pipefail
 cd "$(dirname "$0")/.."

@@ -130,8 +130,8 @@ def test_variant(ctx, name):
         return
     rubric = None
     if v["kind"] == "mutant":
-        # A mutant is graded on the checks its entry names (and on loading), as a rubric that lists
-        # them would grade it: each check decides alone, so the rest would only cost time. A correct
+        # A mutant is graded on the checks its entry names (and loads, where its manifest has it), as a
+        # rubric that lists them would grade it: each check decides alone, so the rest would only cost time. A correct
         # variant is graded on every check, as a student is.
         path, = glob.glob(os.path.join(ctx.root, "starter", "ch*", v["plugin"], "exercise.json"))
         manifest = json.load(open(path))
