@@ -144,6 +144,100 @@ TEST_CASE("a connected parameter takes the pattern's value at every point", "[pa
     }
 }
 
+TEST_CASE("PxrRamp interpolates its knots along the ramp's shape, PxrChecker alternates two colours",
+          "[patterns]") {
+    auto emitted = [](std::string const& patterns, std::string const& output) {
+        return test::renderRib(kHead + patterns + "Bxdf \"PxrConstant\" \"c\" \"reference color emitColor\" [\"" +
+                                   output + "\"]\n" + kSquare,
+                               fewSamples());
+    };
+    std::string const knots = "\"int colorRamp\" [3] \"float[3] colorRamp_Knots\" [0.25 0.5 0.75] "
+                              "\"color[3] colorRamp_Colors\" [1 0 0  0 1 0  0 0 1] ";
+    SECTION("linear along s: the first colour before the first knot, the last after the last, lines between") {
+        auto r = emitted("Pattern \"PxrRamp\" \"r\" " + knots + "\"string colorRamp_Interpolation\" [\"linear\"]\n",
+                         "r:resultRGB");
+        for (int x : {0, 3, 5, 7, 9, 11, 15}) {
+            float const s = pixelU(x);
+            float const red = s <= 0.25f ? 1.0f : s < 0.5f ? (0.5f - s) / 0.25f : 0.0f;
+            float const blue = s >= 0.75f ? 1.0f : s > 0.5f ? (s - 0.5f) / 0.25f : 0.0f;
+            CHECK(r.channel(x, 8, 0) == Approx(red).margin(0.02));
+            CHECK(r.channel(x, 8, 2) == Approx(blue).margin(0.02));
+            CHECK(r.channel(x, 8, 1) == Approx(1.0f - red - blue).margin(0.02));
+        }
+        CHECK(r.channel(5, 1, 0) == Approx(r.channel(5, 14, 0)).margin(0.01));  // an S ramp does not change along t
+    }
+    SECTION("constant, along t and reversed: each knot's colour up to the next") {
+        auto r = emitted("Pattern \"PxrRamp\" \"r\" \"int rampType\" [1] \"int reverse\" [1] " + knots +
+                             "\"string colorRamp_Interpolation\" [\"constant\"]\n",
+                         "r:resultRGB");
+        for (int y : {0, 2, 5, 7, 9, 12, 15}) {
+            float const x = 1.0f - pixelV(y);  // reversed
+            int const expected = x < 0.5f ? 0 : x < 0.75f ? 1 : 2;
+            for (int c = 0; c < 3; ++c) CHECK(r.channel(8, y, c) == Approx(c == expected ? 1.0f : 0.0f).margin(1e-5));
+        }
+    }
+    SECTION("catmull-rom passes through its knots and runs smoothly between them") {
+        // Knots at the centres of pixel columns 4, 8 and 12: the colour there is the knot's (a pixel
+        // averages the curve over its width, which lifts a minimum a little).
+        auto r = emitted("Pattern \"PxrRamp\" \"r\" \"int colorRamp\" [3] "
+                         "\"float[3] colorRamp_Knots\" [0.28125 0.53125 0.78125] "
+                         "\"color[3] colorRamp_Colors\" [0 0 0  1 1 1  0 0 0]\n",
+                         "r:resultRGB");
+        CHECK(r.channel(8, 8, 0) == Approx(1.0f).margin(0.04));
+        CHECK(r.channel(4, 8, 0) == Approx(0.0f).margin(0.04));
+        CHECK(r.channel(12, 8, 0) == Approx(0.0f).margin(0.04));
+        // Halfway between knots the curve is above the straight line (0.5): it rises smoothly into the peak.
+        CHECK(r.channel(6, 8, 0) > 0.55f);
+        CHECK(r.channel(6, 8, 0) < 1.0f);
+    }
+    SECTION("box and circular ramps measure from the centre; RenderMan 21's positions and colors are read too") {
+        auto box = emitted("Pattern \"PxrRamp\" \"r\" \"int rampType\" [5] \"int colorRamp\" [2] "
+                           "\"float[2] colorRamp_Knots\" [0 1] \"color[2] colorRamp_Colors\" [0 0 0  1 1 1] "
+                           "\"string colorRamp_Interpolation\" [\"linear\"]\n",
+                           "r:resultRGB");
+        CHECK(box.channel(2, 8, 0) == Approx(2.0f * std::fabs(pixelU(2) - 0.5f)).margin(0.02));
+        CHECK(box.channel(8, 13, 0) == Approx(2.0f * std::fabs(pixelV(13) - 0.5f)).margin(0.02));
+        // RenderMan 21: a linear basis (3) whose first and last points only shape the ends.
+        auto old = emitted("Pattern \"PxrRamp\" \"r\" \"int rampType\" [4] \"int useNewRamp\" [0] \"int basis\" [3] "
+                           "\"float positions\" [0 0 1 1] \"color colors\" [0 0 0  0 0 0  1 1 1  1 1 1]\n",
+                           "r:resultRGB");
+        float const dx = pixelU(3) - 0.5f, dy = pixelV(6) - 0.5f;
+        CHECK(old.channel(3, 6, 0) == Approx(2.0f * std::sqrt(dx * dx + dy * dy)).margin(0.02));
+    }
+    SECTION("an interpolation or shape it does not have is a warning, not a silent change") {
+        auto r = emitted("Pattern \"PxrRamp\" \"r\" \"int rampType\" [9] " + knots +
+                             "\"string colorRamp_Interpolation\" [\"hermite\"]\n",
+                         "r:resultRGB");
+        CHECK(r.anyMessageContains("PxrRamp: rampType 9 is not one of the shapes this renderer has"));
+        CHECK(r.anyMessageContains("PxrRamp: colorRamp_Interpolation \"hermite\" is read as \"catmull-rom\""));
+    }
+    SECTION("PxrChecker: half-unit squares of s and t, colorA at (0, 0), finer through a manifold") {
+        auto r = emitted("Pattern \"PxrChecker\" \"k\" \"color colorA\" [1 0 0] \"color colorB\" [0 0 1]\n",
+                         "k:resultRGB");
+        CHECK(r.channel(2, 13, 0) == 1.0f);  // s, t < 0.5
+        CHECK(r.channel(13, 2, 0) == 1.0f);  // s, t > 0.5
+        CHECK(r.channel(13, 13, 2) == 1.0f);
+        CHECK(r.channel(2, 2, 2) == 1.0f);
+        auto fine = emitted("Pattern \"PxrManifold2D\" \"m\" \"float scaleS\" [4] \"float scaleT\" [4]\n"
+                            "Pattern \"PxrChecker\" \"k\" \"reference struct manifold\" [\"m:result\"]\n"
+                            "Pattern \"PxrMix\" \"grey\" \"color color1\" [0 0 0] \"reference float mix\" [\"k:resultR\"]\n",
+                            "grey:resultRGB");  // its red channel alone, as a float
+        for (int x = 0; x < 16; ++x) {
+            int const cells = static_cast<int>(std::floor(8.0f * pixelU(x))) + static_cast<int>(std::floor(8.0f * pixelV(5)));
+            CHECK(fine.channel(x, 5, 0) == (cells % 2 == 0 ? 1.0f : 0.0f));
+        }
+    }
+    SECTION("PxrChecker in three dimensions: cubes of the object's own space") {
+        // The square lies at object z = 0: x and y decide, in object units (the square spans -1..1).
+        auto r = emitted("Pattern \"PxrChecker\" \"k\" \"int dimensions\" [3]\n", "k:resultRGB");
+        for (int x : {1, 6, 9, 14}) {
+            float const objectX = 2.0f * pixelU(x) - 1.0f, objectY = 2.0f * pixelV(3) - 1.0f;
+            int const cells = static_cast<int>(std::floor(2.0f * objectX)) + static_cast<int>(std::floor(2.0f * objectY));
+            CHECK(r.channel(x, 3, 0) == ((cells % 2 + 2) % 2 == 0 ? 1.0f : 0.0f));
+        }
+    }
+}
+
 TEST_CASE("patterns run only for the parameters asked for, each once per batch", "[patterns]") {
     SECTION("no connections: no pattern runs, no texture is read, unreached patterns are not even loaded") {
         auto r = test::renderRib(kHead + "Pattern \"PxrTexture\" \"t\" \"string filename\" [\"none.tx\"]\n"
