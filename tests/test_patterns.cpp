@@ -238,6 +238,31 @@ TEST_CASE("PxrRamp interpolates its knots along the ramp's shape, PxrChecker alt
     }
 }
 
+TEST_CASE("a polygon without texture coordinates has RenderMan's per-face (u, v): a quad's run across it",
+          "[patterns][primvars]") {
+    // The square as a Polygon, corners written from the top left: (u, v) = (0, 0) there, (1, 0) at the
+    // top right, (1, 1) at the bottom right. A T ramp through t = v then lies in straight rows (split
+    // into triangles, each with its own barycentric (u, v), it would bend at the diagonal).
+    auto r = test::renderRib(kHead + "Pattern \"PxrVariable\" \"st\" \"string variable\" [\"t\"]\n"
+                                     "Bxdf \"PxrConstant\" \"c\" \"reference color emitColor\" [\"st:resultRGB\"]\n"
+                                     "Polygon \"P\" [-1 1 0  1 1 0  1 -1 0  -1 -1 0]\n",
+                             fewSamples());
+    for (int x : {1, 6, 9, 14})
+        for (int y : {1, 7, 12}) CHECK(r.channel(x, y, 0) == Approx(1.0f - pixelV(y)).margin(0.02));
+    auto u = test::renderRib(kHead + "Pattern \"PxrVariable\" \"u\" \"string variable\" [\"u\"]\n"
+                                     "Bxdf \"PxrConstant\" \"c\" \"reference color emitColor\" [\"u:resultRGB\"]\n"
+                                     "PointsPolygons [4] [0 1 2 3] \"P\" [-1 1 0  1 1 0  1 -1 0  -1 -1 0]\n",
+                             fewSamples());
+    for (int x : {1, 6, 9, 14})
+        for (int y : {1, 7, 12}) CHECK(u.channel(x, y, 0) == Approx(pixelU(x)).margin(0.02));
+    // A triangle keeps its barycentric coordinates: u along its first edge, v along its last.
+    auto tri = test::renderRib(kHead + "Pattern \"PxrVariable\" \"v\" \"string variable\" [\"v\"]\n"
+                                       "Bxdf \"PxrConstant\" \"c\" \"reference color emitColor\" [\"v:resultRGB\"]\n"
+                                       "Polygon \"P\" [-1 -1 0  1 -1 0  -1 1 0]\n",
+                               fewSamples());
+    CHECK(tri.channel(2, 4, 0) == Approx(pixelV(4)).margin(0.02));
+}
+
 TEST_CASE("patterns run only for the parameters asked for, each once per batch", "[patterns]") {
     SECTION("no connections: no pattern runs, no texture is read, unreached patterns are not even loaded") {
         auto r = test::renderRib(kHead + "Pattern \"PxrTexture\" \"t\" \"string filename\" [\"none.tx\"]\n"

@@ -105,6 +105,24 @@ void tessellate(MeshData& mesh, int nu, int nv, SurfaceFunction const& surface, 
 
 }  // namespace
 
+namespace {
+
+/// A polygon's (u, v) where its RIB gives no texture coordinates: as in RenderMan, each face
+/// has its own. A quad's run from 0 to 1 across it, corner by corner in the order written
+/// ((0, 0), (1, 0), (1, 1), (0, 1)), so that a ramp or checker through (s, t) lies straight
+/// on it; a triangle's are its barycentric coordinates, its corners as written at (0, 0),
+/// (1, 0) and (0, 1); a larger face's, or one with holes, each of its triangles' own
+/// (corner `cornerInTriangle` of the triangle there).
+Vec2 faceParameters(size_t faceCorners, size_t faceLoops, int cornerInFace, size_t cornerInTriangle) {
+    static Vec2 const quad[4] = {Vec2(0, 0), Vec2(1, 0), Vec2(1, 1), Vec2(0, 1)};
+    static Vec2 const triangle[3] = {Vec2(0, 0), Vec2(1, 0), Vec2(0, 1)};
+    if (faceLoops == 1 && faceCorners == 4) return quad[cornerInFace];
+    if (faceLoops == 1 && faceCorners == 3) return triangle[cornerInFace];
+    return triangle[cornerInTriangle];
+}
+
+}  // namespace
+
 MeshData buildPolygonMesh(std::vector<int> const& loopsPerFace, std::vector<int> const& verticesPerLoop,
                           std::vector<int> const& vertexIndices, ParamList const& params, Mat4 const& toWorld,
                           SourceLocation const& where) {
@@ -206,6 +224,8 @@ MeshData buildPolygonMesh(std::vector<int> const& loopsPerFace, std::vector<int>
                                            *tVar.at(static_cast<int>(face), corner, vertex));
                     mesh.st.push_back(value);
                     mesh.uv.push_back(value);
+                } else {
+                    mesh.uv.push_back(faceParameters(corners.size(), faceLoops.size(), local, c));
                 }
                 mesh.indices.push_back(id);
             }
