@@ -106,6 +106,65 @@ TEST_CASE("PxrPathTracer with maxPathLength 1 (maxIndirectBounces 0) is PxrDirec
     CHECK_FALSE(bounces2.anyMessageContains("maxIndirectBounces"));
 }
 
+TEST_CASE("PxrPathTracer reads an exporter's full parameter list: roulette and clamping as written",
+          "[integrators][pathtracer]") {
+    // A white sphere on a white floor in the sun: each receives light the other bounced. (The sun is
+    // not seen by the camera, so every pixel's light comes through the integrator.)
+    auto scene = [](std::string const& parameters) {
+        return "Format 24 18 1\nProjection \"perspective\" \"fov\" [50]\n"
+               "Integrator \"PxrPathTracer\" \"p\" \"int maxPathLength\" [6] " + parameters + "\n" +
+               test::kDeepTraceDepth + "Translate 0 -0.3 4\nRotate -20 1 0 0\nWorldBegin\n"
+               "AttributeBegin\nRotate 60 1 0 0\nLight \"PxrDistantLight\" \"sun\" \"float intensity\" [30000]\n"
+               "AttributeEnd\nBxdf \"PxrDiffuse\" \"white\" \"color diffuseColor\" [0.9 0.9 0.9]\n"
+               "Sphere 1 -1 1 360\nTranslate 0 -1 0\nRotate 90 1 0 0\nDisk 0 4 360\nWorldEnd\n";
+    };
+    RenderSettings settings;
+    settings.spp = 16;
+    // What RenderMan for Maya and Blender exporters write, all at RenderMan's defaults but the clamp.
+    std::string const exported =
+        "\"string sampleMode\" [\"bxdf\"] \"int numIndirectSamples\" [1] \"int numDiffuseSamples\" [1] "
+        "\"int numSpecularSamples\" [1] \"int numSubsurfaceSamples\" [1] \"int numRefractionSamples\" [1] "
+        "\"int maxContinuationLength\" [-1] \"int maxNonStochasticOpacityEvents\" [0] \"int accumOpacity\" [0] "
+        "\"string imagePlaneSubset\" [\"rman__imageplane\"] \"int rouletteDepth\" [4] "
+        "\"float rouletteThreshold\" [0.2] \"int clampDepth\" [2]";
+    auto plain = test::renderRib(scene(""), settings);
+    auto written = test::renderRib(scene(exported), settings);
+    CHECK(written.messages.empty());
+    // Unbiased either way (roulette only changes which paths go on): the same picture within noise.
+    double const plainMean = test::meanChannel(plain, 1, kAll), writtenMean = test::meanChannel(written, 1, kAll);
+    CHECK(writtenMean == Approx(plainMean).epsilon(0.03));
+    // Roulette below 0.2 only spares the paths it used to end above it: more bounces are traced.
+    CHECK(written.stats.indirectRays > plain.stats.indirectRays);
+    // No roulette at all, by either parameter: the same paths, sample for sample.
+    auto noThreshold = test::renderRib(scene("\"float rouletteThreshold\" [0]"), settings);
+    auto lateRoulette = test::renderRib(scene("\"int rouletteDepth\" [100]"), settings);
+    CHECK(noThreshold.rgba == lateRoulette.rgba);
+    CHECK(noThreshold.stats.indirectRays > plain.stats.indirectRays);
+
+    // Clamping from the camera ray (depth 1): no pixel sample is brighter than the clamp.
+    auto clampAll = test::renderRib(scene("\"int clampDepth\" [1] \"float clampLuminance\" [0.05]"), settings);
+    CHECK(test::meanChannel(clampAll, 1, kAll) > 0.01);  // not black: clamped, not cut
+    for (size_t i = 0; i + 3 < clampAll.rgba.size(); i += 4) {
+        float const luminance = 0.2126f * clampAll.rgba[i] + 0.7152f * clampAll.rgba[i + 1] + 0.0722f * clampAll.rgba[i + 2];
+        CHECK(luminance <= 0.05f + 1e-4f);
+    }
+    // From the first bounce (depth 2): direct light stays whole, the bounced light is clamped away to
+    // almost nothing, so the picture lies between direct lighting alone and the unclamped one.
+    auto direct = test::renderRib(scene("").replace(scene("").find("\"int maxPathLength\" [6]"), 24,
+                                                      "\"int maxPathLength\" [1]"),
+                                  settings);
+    auto clampBounces = test::renderRib(scene("\"float clampLuminance\" [0.001]"), settings);
+    double const directMean = test::meanChannel(direct, 1, kAll);
+    double const clampedMean = test::meanChannel(clampBounces, 1, kAll);
+    CHECK(plainMean > 1.08 * directMean);  // the scene has bounced light to clamp
+    CHECK(clampedMean == Approx(directMean).epsilon(0.05));
+
+    // What it does not do is said: more indirect samples, or per-lobe counts.
+    auto manual = test::renderRib(scene("\"string sampleMode\" [\"manual\"] \"int numIndirectSamples\" [4]"), settings);
+    CHECK(manual.anyMessageContains("sampleMode \"manual\" is read as \"bxdf\""));
+    CHECK(manual.anyMessageContains("numIndirectSamples 4 is not used"));
+}
+
 TEST_CASE("light-only, Bxdf-only and MIS estimates agree on a glossy surface", "[integrators][mis][heavy]") {
     std::string rib = readScene("ch06/specular.rib");
     RenderSettings settings;

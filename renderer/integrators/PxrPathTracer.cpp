@@ -25,8 +25,18 @@
 //                              bounce does not continue it (caustics are noisy for a path tracer)
 //   int useTraceDepth    [1]   PxrUnified's switch, read so that this integrator can stand in
 //                              for it: 0 ignores the trace depths (PxrUnified's default)
-// Russian roulette ends paths from the fourth vertex on with probability
-// 1 - min(0.95, the path's largest throughput channel), and compensates the survivors.
+//   int rouletteDepth    [4]   the path length (vertices) from which Russian roulette may end a path
+//   float rouletteThreshold    unwritten: roulette weighs every path, which survives with
+//                              probability min(0.95, its largest throughput channel); written: only
+//                              paths whose largest channel is below it, surviving with that channel
+//                              over the threshold (RenderMan's exporters write 0.2; 0 turns it off)
+//   float clampLuminance       unwritten: no clamping; written (RenderMan's exporters write 10):
+//   int clampDepth       [2]   what each ray from the clampDepth-th on brings back to the pixel is
+//                              scaled down to at most this luminance (fewer fireflies, less light)
+// Roulette compensates the survivors, so it adds noise and no bias; clamping adds bias.
+// RenderMan's other parameters are read where this integrator already does what they
+// ask (sampleMode "bxdf" with one indirect sample, whose numDiffuseSamples and the like
+// RenderMan ignores too) and warned about where it does not.
 #include <algorithm>
 #include <climits>
 #include <cmath>
@@ -54,15 +64,30 @@ int limitHere(int limitSoFar, int bouncesSoFar, int surfaceLimit) {
         std::min<long long>(limitSoFar, static_cast<long long>(bouncesSoFar) + surfaceLimit));
 }
 
+/// How paths end early and how bright a bounce may be (see the parameters above).
+struct PathLimits {
+    int rouletteDepth = 4;
+    float rouletteThreshold = -1.0f;  ///< below 0: every path meets the roulette
+    int clampDepth = 2;
+    float clampLuminance = -1.0f;     ///< at or below 0: no clamping
+};
+
+/// `radiance` scaled down, if need be, to a luminance of at most `limit`.
+RtColorRGB clampedTo(RtColorRGB const& radiance, float limit) {
+    float const luminance = radiance.Luminance();
+    return luminance > limit ? radiance * (limit / luminance) : radiance;
+}
+
 class PathTracer : public RixIntegrator {
 public:
     PathTracer(int maxPathLength, int numLightSamples, int numBxdfSamples, bool allowCaustics,
-               bool useTraceDepth)
+               bool useTraceDepth, PathLimits limits)
         : m_maxPathLength(maxPathLength),
           m_numLightSamples(numLightSamples),
           m_numBxdfSamples(numBxdfSamples),
           m_allowCaustics(allowCaustics),
-          m_useTraceDepth(useTraceDepth) {}
+          m_useTraceDepth(useTraceDepth),
+          m_limits(limits) {}
 
     void DescribeEffects(int numLights, RixEffects& effects) const override {
         effects.Simulate("camera rays");
@@ -80,7 +105,18 @@ public:
             effects.Simulate(("indirect rays (paths of up to " + std::to_string(m_maxPathLength) + " vertices" +
                               (m_useTraceDepth ? ", within each surface's trace depths)" : ")"))
                                  .c_str());
-            effects.Simulate("Russian roulette from the fourth vertex");
+            std::string roulette = "Russian roulette from vertex " + std::to_string(m_limits.rouletteDepth);
+            if (m_limits.rouletteThreshold == 0.0f)
+                effects.Skip("Russian roulette", "rouletteThreshold is 0");
+            else
+                effects.Simulate((m_limits.rouletteThreshold > 0.0f
+                                      ? roulette + ", for paths below " + std::to_string(m_limits.rouletteThreshold)
+                                      : roulette)
+                                     .c_str());
+            if (m_limits.clampLuminance > 0.0f)
+                effects.Simulate(("clamping what each ray from depth " + std::to_string(m_limits.clampDepth) +
+                                  " brings back to luminance " + std::to_string(m_limits.clampLuminance))
+                                     .c_str());
         } else {
             effects.Skip("indirect rays", "maxPathLength is 1");
         }
@@ -97,6 +133,8 @@ public:
         PathState* paths = pool.AllocFor<PathState>(n);
         for (int i = 0; i < n; ++i) paths[i] = PathState();
         vertex(ctx, bxdf, rng, ictx, paths, radiance, 1);
+        if (clamps(1))
+            for (int i = 0; i < n; ++i) radiance[i] = clampedTo(radiance[i], m_limits.clampLuminance);
     }
 
 private:
@@ -167,9 +205,8 @@ private:
                 }
                 RtColorRGB carried = throughput[i] * f / q.FPdf[i];
                 bool survives = true;
-                if (depth >= 3) {
+                if (float p = survivalProbability(carried, depth + 1); p < 1.0f) {
                     // Russian roulette: end weak paths early, boost the survivors.
-                    float p = RixMin(0.95f, carried.ChannelMax());
                     survives = rng.DrawSample1D(i) < p;
                     if (survives) carried /= p;
                 }
@@ -205,7 +242,10 @@ private:
                 childRadiance[j] = RtColorRGB(0.0f);
             }
             vertex(batch.ctx, batch.bxdf, batch.rng, ictx, childPaths, childRadiance, depth + 1);
-            for (int j = 0; j < m; ++j) radiance[index[batch.source[j]]] += childRadiance[j];
+            bool const clamp = clamps(depth + 1);
+            for (int j = 0; j < m; ++j)
+                radiance[index[batch.source[j]]] +=
+                    clamp ? clampedTo(childRadiance[j], m_limits.clampLuminance) : childRadiance[j];
         });
         for (int k = 0; k < rays; ++k) {
             if (!lightHits[k].hit) continue;
@@ -215,12 +255,48 @@ private:
         }
     }
 
+    /// The chance that a path carrying `throughput` goes on to a path of `length` vertices (1: roulette
+    /// does not take part).
+    float survivalProbability(RtColorRGB const& throughput, int length) const {
+        if (length < m_limits.rouletteDepth || m_limits.rouletteThreshold == 0.0f) return 1.0f;
+        float const strongest = throughput.ChannelMax();
+        if (m_limits.rouletteThreshold < 0.0f) return RixMin(0.95f, strongest);
+        return strongest < m_limits.rouletteThreshold ? strongest / m_limits.rouletteThreshold : 1.0f;
+    }
+
+    /// Whether what a ray of this depth (the camera ray's is 1) brings back is clamped.
+    bool clamps(int rayDepth) const { return m_limits.clampLuminance > 0.0f && rayDepth >= m_limits.clampDepth; }
+
     int m_maxPathLength;
     int m_numLightSamples;
     int m_numBxdfSamples;
     bool m_allowCaustics;
     bool m_useTraceDepth;
+    PathLimits m_limits;
 };
+
+/// Reads RenderMan's parameters that ask for what this integrator does anyway (so that an
+/// exporter's full parameter list renders without a warning for each), and warns where one
+/// asks for something else.
+void readRenderManDefaults(RixParameterList const* params, RixMessages* messages) {
+    std::string const sampleMode = ReadString(params, "sampleMode", "bxdf");
+    if (sampleMode != "bxdf")
+        messages->Warning("sampleMode \"%s\" is read as \"bxdf\": each camera hit continues one path, "
+                          "whichever lobe its Bxdf samples (numDiffuseSamples and the like are not used)",
+                          sampleMode.c_str());
+    // In "bxdf" mode RenderMan ignores the per-lobe counts as well.
+    for (char const* perLobe :
+         {"numDiffuseSamples", "numSpecularSamples", "numSubsurfaceSamples", "numRefractionSamples"})
+        HasParam(params, perLobe);
+    int indirect = 1;
+    if (ReadInt(params, messages, "numIndirectSamples", 1, 0, 1 << 20, indirect) && indirect != 1)
+        messages->Warning("numIndirectSamples %d is not used: each camera hit continues one path (more pixel "
+                          "samples give the same effect)", indirect);
+    // Volumes' continuation rays and opacity events: this renderer's paths have neither.
+    for (char const* unneeded : {"maxContinuationLength", "maxNonStochasticOpacityEvents", "accumOpacity",
+                                 "imagePlaneSubset"})
+        HasParam(params, unneeded);
+}
 
 }  // namespace
 
@@ -237,7 +313,15 @@ RIX_INTEGRATORCREATE {
         if (!ReadInt(params, messages, "maxIndirectBounces", 9, 0, 999, bounces)) return nullptr;
         maxPathLength = bounces + 1;
     }
-    return new PathTracer(maxPathLength, lightSamples, bxdfSamples, caustics != 0, useTraceDepth != 0);
+    PathLimits limits;
+    if (!ReadInt(params, messages, "rouletteDepth", 4, 1, 1 << 20, limits.rouletteDepth) ||
+        !ReadInt(params, messages, "clampDepth", 2, 1, 1 << 20, limits.clampDepth))
+        return nullptr;
+    if (HasParam(params, "rouletteThreshold"))
+        limits.rouletteThreshold = std::max(0.0f, ReadFloat(params, "rouletteThreshold", 0.2f));
+    if (HasParam(params, "clampLuminance")) limits.clampLuminance = ReadFloat(params, "clampLuminance", 10.0f);
+    readRenderManDefaults(params, messages);
+    return new PathTracer(maxPathLength, lightSamples, bxdfSamples, caustics != 0, useTraceDepth != 0, limits);
 }
 
 RIX_INTEGRATORDESTROY { delete integrator; }

@@ -180,7 +180,8 @@ private:
         RtInt const newRampByDefault = 1;
         RtInt const* useNewRamp;
         sCtx->EvalParam(k_useNewRamp, -1, &useNewRamp, &newRampByDefault);
-        bool const oldForm = *useNewRamp == 0 || (lengthOf(sCtx, k_colorRamp_Knots) == 0 && lengthOf(sCtx, k_positions) > 0);
+        bool const oldForm = *useNewRamp == 0 ||
+                             (lengthOf(sCtx, k_colorRamp_Knots) == 0 && lengthOf(sCtx, k_positions) > 0);
         Ramp ramp;
         int const knotsId = oldForm ? k_positions : k_colorRamp_Knots;
         int const colorsId = oldForm ? k_colors : k_colorRamp_Colors;
