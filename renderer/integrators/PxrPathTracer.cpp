@@ -21,6 +21,7 @@
 //                              bounces: N bounces is maxPathLength N + 1 (0 = direct only)
 //   int numLightSamples  [1]   light samples per light at every vertex
 //   int numBxdfSamples   [1]   Bxdf samples at every vertex (the first continues the path)
+//   int numIndirectSamples [1] paths each camera hit continues (each also a Bxdf sample there)
 //   int allowCaustics    [0]   0: once a path has bounced off a diffuse lobe, a specular
 //                              bounce does not continue it (caustics are noisy for a path tracer)
 //   int useTraceDepth    [1]   PxrUnified's switch, read so that this integrator can stand in
@@ -35,8 +36,8 @@
 //                              scaled down to at most this luminance (fewer fireflies, less light)
 // Roulette compensates the survivors, so it adds noise and no bias; clamping adds bias.
 // RenderMan's other parameters are read where this integrator already does what they
-// ask (sampleMode "bxdf" with one indirect sample, whose numDiffuseSamples and the like
-// RenderMan ignores too) and warned about where it does not.
+// ask (sampleMode "bxdf", whose numDiffuseSamples and the like RenderMan ignores too)
+// and warned about where it does not.
 #include <algorithm>
 #include <climits>
 #include <cmath>
@@ -80,11 +81,12 @@ RtColorRGB clampedTo(RtColorRGB const& radiance, float limit) {
 
 class PathTracer : public RixIntegrator {
 public:
-    PathTracer(int maxPathLength, int numLightSamples, int numBxdfSamples, bool allowCaustics,
-               bool useTraceDepth, PathLimits limits)
+    PathTracer(int maxPathLength, int numLightSamples, int numBxdfSamples, int numIndirectSamples,
+               bool allowCaustics, bool useTraceDepth, PathLimits limits)
         : m_maxPathLength(maxPathLength),
           m_numLightSamples(numLightSamples),
           m_numBxdfSamples(numBxdfSamples),
+          m_numIndirectSamples(numIndirectSamples),
           m_allowCaustics(allowCaustics),
           m_useTraceDepth(useTraceDepth),
           m_limits(limits) {}
@@ -102,7 +104,8 @@ public:
         }
         effects.Simulate(("bxdf sampling (" + std::to_string(m_numBxdfSamples) + " per vertex, MIS)").c_str());
         if (m_maxPathLength > 1) {
-            effects.Simulate(("indirect rays (paths of up to " + std::to_string(m_maxPathLength) + " vertices" +
+            effects.Simulate(("indirect rays (" + std::to_string(m_numIndirectSamples) +
+                              " per camera hit; paths of up to " + std::to_string(m_maxPathLength) + " vertices" +
                               (m_useTraceDepth ? ", within each surface's trace depths)" : ")"))
                                  .c_str());
             std::string roulette = "Russian roulette from vertex " + std::to_string(m_limits.rouletteDepth);
@@ -150,13 +153,18 @@ private:
         //    that reaches one simply adds what it emits.
         if (!addEmission(ctx, bxdf, ictx, throughput, radiance)) return;
 
+        // Camera hits continue numIndirectSamples paths each, deeper vertices one. Each
+        // continuing ray is also one of the vertex's Bxdf samples of the light it reaches.
+        int const continuations = depth == 1 ? m_numIndirectSamples : 1;
+        int const bxdfSamples = std::max(m_numBxdfSamples, continuations);
+
         // 2. Next-event estimation.
-        addLightSamples(ctx, bxdf, rng, ictx, m_numLightSamples, m_numBxdfSamples, throughput, radiance);
+        addLightSamples(ctx, bxdf, rng, ictx, m_numLightSamples, bxdfSamples, throughput, radiance);
 
         // 3. Bxdf samples: light they reach directly, and where the path goes next.
         int const lightSamples = ictx.GetNumLights() == 0 ? 0 : m_numLightSamples;
         float const nL = static_cast<float>(lightSamples);
-        float const nB = static_cast<float>(m_numBxdfSamples);
+        float const nB = static_cast<float>(bxdfSamples);
         bool const continues = depth < m_maxPathLength;
         // This surface's trace depths, folded into each path's limits.
         int* diffuseLimit = pool.AllocFor<int>(n);
@@ -167,21 +175,22 @@ private:
             specularLimit[i] = limitHere(paths[i].specularLimit, paths[i].specularBounces, here.maxSpecular);
         }
         RixBxdfScratch q(ctx);
-        // The continuation rays (the first Bxdf sample of each point).
-        int* index = pool.AllocFor<int>(n);
-        RtVector3* dir = pool.AllocFor<RtVector3>(n);
-        bool* shade = pool.AllocFor<bool>(n);
-        RixRNG::SampleCtx* samples = pool.AllocFor<RixRNG::SampleCtx>(n);
-        LobeWeight* weight = pool.AllocFor<LobeWeight>(n);      // f / FPdf
-        PathState* next = pool.AllocFor<PathState>(n);          // the path after the bounce
-        float* misWeightPdf = pool.AllocFor<float>(n);          // FPdf, for the MIS weight of a light hit
-        bool* discrete = pool.AllocFor<bool>(n);
+        // The continuation rays (the first `continuations` Bxdf samples of each point).
+        int const most = n * continuations;
+        int* index = pool.AllocFor<int>(most);
+        RtVector3* dir = pool.AllocFor<RtVector3>(most);
+        bool* shade = pool.AllocFor<bool>(most);
+        RixRNG::SampleCtx* samples = pool.AllocFor<RixRNG::SampleCtx>(most);
+        LobeWeight* weight = pool.AllocFor<LobeWeight>(most);      // f / FPdf
+        PathState* next = pool.AllocFor<PathState>(most);          // the path after the bounce
+        float* misWeightPdf = pool.AllocFor<float>(most);          // FPdf, for the MIS weight of a light hit
+        bool* discrete = pool.AllocFor<bool>(most);
         int rays = 0;
         // The other Bxdf samples only look for light: one shadow ray each, a round's traced together.
         ShadowRays look(pool, n);
         RixLightHit* lookHits = pool.AllocFor<RixLightHit>(n);
 
-        for (int s = 0; s < m_numBxdfSamples; ++s) {
+        for (int s = 0; s < bxdfSamples; ++s) {
             q.generate(bxdf, rng, ictx);
             look.count = 0;
             for (int i = 0; i < n; ++i) {
@@ -199,11 +208,11 @@ private:
                 if (!m_allowCaustics && paths[i].diffusePath && specular) continue;  // a caustic
                 bool const withinDepth = continues && (specular ? paths[i].specularBounces < specularLimit[i]
                                                                 : paths[i].diffuseBounces < diffuseLimit[i]);
-                if (s != 0 || !withinDepth) {
+                if (s >= continuations || !withinDepth) {
                     look.add(i, L, 0.0f, lobes * throughput[i]);  // the light is found along the ray
                     continue;
                 }
-                RtColorRGB carried = throughput[i] * f / q.FPdf[i];
+                RtColorRGB carried = throughput[i] * f / (q.FPdf[i] * static_cast<float>(continuations));
                 bool survives = true;
                 if (float p = survivalProbability(carried, depth + 1); p < 1.0f) {
                     // Russian roulette: end weak paths early, boost the survivors.
@@ -213,7 +222,9 @@ private:
                 index[rays] = i;
                 dir[rays] = L;
                 shade[rays] = survives && std::isfinite(carried.r) && std::isfinite(carried.g) && std::isfinite(carried.b);
-                samples[rays] = rng.sampleCtxArray[i];
+                // Each further path from a point draws numbers of its own.
+                samples[rays] =
+                    s == 0 ? rng.sampleCtxArray[i] : rng.sampleCtxArray[i].NewDomain(static_cast<uint32_t>(s));
                 weight[rays] = lobes / q.FPdf[i];
                 next[rays].throughput = carried;
                 next[rays].diffusePath = paths[i].diffusePath || q.lobeSampled[i].GetDiffuse();
@@ -225,7 +236,7 @@ private:
                 discrete[rays] = q.lobeSampled[i].GetDiscrete();
                 ++rays;
             }
-            addLightsFound(ctx, ictx, q, look, lookHits, lightSamples, m_numBxdfSamples, radiance);
+            addLightsFound(ctx, ictx, q, look, lookHits, lightSamples, bxdfSamples, radiance);
         }
         if (rays == 0) return;
 
@@ -270,6 +281,7 @@ private:
     int m_maxPathLength;
     int m_numLightSamples;
     int m_numBxdfSamples;
+    int m_numIndirectSamples;
     bool m_allowCaustics;
     bool m_useTraceDepth;
     PathLimits m_limits;
@@ -281,17 +293,13 @@ private:
 void readRenderManDefaults(RixParameterList const* params, RixMessages* messages) {
     std::string const sampleMode = ReadString(params, "sampleMode", "bxdf");
     if (sampleMode != "bxdf")
-        messages->Warning("sampleMode \"%s\" is read as \"bxdf\": each camera hit continues one path, "
-                          "whichever lobe its Bxdf samples (numDiffuseSamples and the like are not used)",
+        messages->Warning("sampleMode \"%s\" is read as \"bxdf\": each camera hit continues numIndirectSamples "
+                          "paths, whichever lobes its Bxdf samples (numDiffuseSamples and the like are not used)",
                           sampleMode.c_str());
     // In "bxdf" mode RenderMan ignores the per-lobe counts as well.
     for (char const* perLobe :
          {"numDiffuseSamples", "numSpecularSamples", "numSubsurfaceSamples", "numRefractionSamples"})
         HasParam(params, perLobe);
-    int indirect = 1;
-    if (ReadInt(params, messages, "numIndirectSamples", 1, 0, 1 << 20, indirect) && indirect != 1)
-        messages->Warning("numIndirectSamples %d is not used: each camera hit continues one path (more pixel "
-                          "samples give the same effect)", indirect);
     // Volumes' continuation rays and opacity events: this renderer's paths have neither.
     for (char const* unneeded : {"maxContinuationLength", "maxNonStochasticOpacityEvents", "accumOpacity",
                                  "imagePlaneSubset"})
@@ -320,8 +328,11 @@ RIX_INTEGRATORCREATE {
     if (HasParam(params, "rouletteThreshold"))
         limits.rouletteThreshold = std::max(0.0f, ReadFloat(params, "rouletteThreshold", 0.2f));
     if (HasParam(params, "clampLuminance")) limits.clampLuminance = ReadFloat(params, "clampLuminance", 10.0f);
+    int indirectSamples;
+    if (!ReadInt(params, messages, "numIndirectSamples", 1, 1, 1024, indirectSamples)) return nullptr;
     readRenderManDefaults(params, messages);
-    return new PathTracer(maxPathLength, lightSamples, bxdfSamples, caustics != 0, useTraceDepth != 0, limits);
+    return new PathTracer(maxPathLength, lightSamples, bxdfSamples, indirectSamples, caustics != 0, useTraceDepth != 0,
+                          limits);
 }
 
 RIX_INTEGRATORDESTROY { delete integrator; }
