@@ -144,7 +144,7 @@ TEST_CASE("a connected parameter takes the pattern's value at every point", "[pa
     }
 }
 
-TEST_CASE("PxrRamp interpolates its knots along the ramp's shape, PxrChecker alternates two colours",
+TEST_CASE("PxrRamp interpolates its knots along the ramp shape and PxrChecker alternates two colours",
           "[patterns]") {
     auto emitted = [](std::string const& patterns, std::string const& output) {
         return test::renderRib(kHead + patterns + "Bxdf \"PxrConstant\" \"c\" \"reference color emitColor\" [\"" +
@@ -238,7 +238,83 @@ TEST_CASE("PxrRamp interpolates its knots along the ramp's shape, PxrChecker alt
     }
 }
 
-TEST_CASE("a polygon without texture coordinates has RenderMan's per-face (u, v): a quad's run across it",
+TEST_CASE("PxrBlend and PxrRemap and PxrExposure and PxrToFloat3 combine and adjust colours as documented",
+          "[patterns]") {
+    // Each writes one colour over the whole square; (s, t) from PxrVariable where a point-by-point value is wanted.
+    auto colour = [](std::string const& patterns, std::string const& output) {
+        auto r = test::renderRib(kHead + patterns + "Bxdf \"PxrConstant\" \"c\" \"reference color emitColor\" [\"" +
+                                     output + "\"]\n" + kSquare,
+                                 fewSamples());
+        return RtColorRGB(r.channel(8, 8, 0), r.channel(8, 8, 1), r.channel(8, 8, 2));
+    };
+    auto near = [](RtColorRGB const& c, float r, float g, float b) {
+        CHECK(c.r == Approx(r).margin(1e-4));
+        CHECK(c.g == Approx(g).margin(1e-4));
+        CHECK(c.b == Approx(b).margin(1e-4));
+    };
+    std::string const layers = "\"color topRGB\" [0.2 0.6 1] \"color bottomRGB\" [0.5 0.5 0.25] ";
+    SECTION("PxrBlend: Normal (19, the default) shows the top by its alpha; the modes blend channel by channel") {
+        near(colour("Pattern \"PxrBlend\" \"b\" " + layers + "\"float topA\" [0.25]\n", "b:resultRGB"),
+             0.75f * 0.5f + 0.25f * 0.2f, 0.75f * 0.5f + 0.25f * 0.6f, 0.75f * 0.25f + 0.25f * 1.0f);
+        near(colour("Pattern \"PxrBlend\" \"b\" \"int operation\" [18] " + layers + "\n", "b:resultRGB"),
+             0.1f, 0.3f, 0.25f);  // Multiply
+        near(colour("Pattern \"PxrBlend\" \"b\" \"int operation\" [23] " + layers + "\n", "b:resultRGB"),
+             0.6f, 0.8f, 1.0f);  // Screen: 1 - (1 - b)(1 - t)
+        near(colour("Pattern \"PxrBlend\" \"b\" \"int operation\" [3] " + layers + "\n", "b:resultRGB"),
+             0.2f, 0.5f, 0.25f);  // Darken
+        near(colour("Pattern \"PxrBlend\" \"b\" \"int operation\" [20] " + layers + "\n", "b:resultRGB"),
+             0.2f, 0.6f, 0.5f);  // Overlay: 2bt where b <= 0.5
+        // Linear Dodge (add) goes past 1 only when clampOutput is off.
+        near(colour("Pattern \"PxrBlend\" \"b\" \"int operation\" [15] " + layers + "\n", "b:resultRGB"),
+             0.7f, 1.0f, 1.0f);
+        near(colour("Pattern \"PxrBlend\" \"b\" \"int operation\" [15] \"int clampOutput\" [0] " + layers + "\n",
+                    "b:resultRGB"),
+             0.7f, 1.1f, 1.25f);
+        // A bottom with alpha stands on black; the result's alpha is the two alphas composited.
+        near(colour("Pattern \"PxrBlend\" \"b\" " + layers + "\"float topA\" [0.5] \"float bottomA\" [0.5]\n"
+                    "Pattern \"PxrMix\" \"alpha\" \"color color1\" [0 0 0] \"reference float mix\" [\"b:resultA\"]\n",
+                    "alpha:resultRGB"),
+             0.75f, 0.75f, 0.75f);
+        near(colour("Pattern \"PxrBlend\" \"b\" " + layers + "\"float topA\" [0] \"float bottomA\" [0.5]\n", "b:resultRGB"),
+             0.25f, 0.25f, 0.125f);
+        // Luminosity keeps the bottom's hue and takes the top's luminosity (0.3 r + 0.59 g + 0.11 b).
+        RtColorRGB const lum = colour("Pattern \"PxrBlend\" \"b\" \"int operation\" [17] " + layers + "\n", "b:resultRGB");
+        CHECK(0.3f * lum.r + 0.59f * lum.g + 0.11f * lum.b == Approx(0.3f * 0.2f + 0.59f * 0.6f + 0.11f).margin(1e-4));
+        CHECK(lum.r == Approx(lum.g).margin(1e-4));  // the bottom's red and green are equal: so are the result's
+        auto r = test::renderRib(kHead + "Pattern \"PxrBlend\" \"b\" \"int operation\" [40]\n"
+                                         "Bxdf \"PxrConstant\" \"c\" \"reference color emitColor\" [\"b:resultRGB\"]\n" +
+                                     kSquare,
+                                 fewSamples());
+        CHECK(r.anyMessageContains("PxrBlend: operation 40 is not one of the blend modes (0-26); Normal (19) is used"));
+    }
+    SECTION("PxrRemap: from one range to another; bias and gain of 0.5 change nothing") {
+        near(colour("Pattern \"PxrRemap\" \"m\" \"color inputRGB\" [0.3 0.5 0.9]\n", "m:resultRGB"), 0.3f, 0.5f, 0.9f);
+        near(colour("Pattern \"PxrRemap\" \"m\" \"color inputRGB\" [2 3 5] \"float inputMin\" [2] \"float inputMax\" [4] "
+                    "\"float outputMin\" [0.2] \"float outputMax\" [0.6]\n",
+                    "m:resultRGB"),
+             0.2f, 0.4f, 0.6f);  // 5 is past inputMax: clamped to it
+        RtColorRGB const biased =
+            colour("Pattern \"PxrRemap\" \"m\" \"color inputRGB\" [0.5 0.25 0.5] \"color bias\" [0.8 0.5 0.5] "
+                   "\"color gain\" [0.5 0.5 0.8]\n",
+                   "m:resultRGB");
+        CHECK(biased.r == Approx(0.8f).margin(1e-4));  // bias(0.5) = the bias
+        CHECK(biased.g == Approx(0.25f).margin(1e-4));
+        CHECK(biased.b == Approx(0.5f).margin(1e-4));  // gain keeps 0.5 where it is
+    }
+    SECTION("PxrExposure doubles a colour per stop, PxrToFloat3 makes a colour of floats") {
+        near(colour("Pattern \"PxrExposure\" \"e\" \"color inputRGB\" [0.1 0.2 0.4] \"float stops\" [2]\n", "e:resultRGB"),
+             0.4f, 0.8f, 1.6f);
+        near(colour("Pattern \"PxrToFloat3\" \"f\" \"float input\" [0.3]\n", "f:resultRGB"), 0.3f, 0.3f, 0.3f);
+        // A connected channel makes it build the colour channel by channel; the others keep their values.
+        near(colour("Pattern \"PxrMix\" \"half\" \"float mix\" [0.5]\n"
+                    "Pattern \"PxrToFloat3\" \"f\" \"float input\" [0.3] \"reference float inputG\" [\"half:resultG\"] "
+                    "\"float inputB\" [0.9]\n",
+                    "f:resultRGB"),
+             0.0f, 0.5f, 0.9f);
+    }
+}
+
+TEST_CASE("a polygon without texture coordinates has a (u v) per face as in RenderMan: a quad runs 0 to 1 across",
           "[patterns][primvars]") {
     // The square as a Polygon, corners written from the top left: (u, v) = (0, 0) there, (1, 0) at the
     // top right, (1, 1) at the bottom right. A T ramp through t = v then lies in straight rows (split

@@ -1,0 +1,54 @@
+// PxrExposure — brightens or darkens a colour by photographic stops: each stop
+// doubles it (or, negative, halves it): resultRGB = inputRGB * 2^stops.
+#include <cmath>
+
+#include "PatternHelpers.h"
+
+namespace {
+
+class PxrExposure : public stockpatterns::StockPattern {
+public:
+    enum { k_inputRGB, k_stops, k_resultRGB, k_resultR, k_resultG, k_resultB };
+
+    RixSCParamInfo const* GetParamTable() override {
+        static RixSCParamInfo table[] = {RixSCParamInfo(RtUString("inputRGB"), k_RixSCColor),
+                                         RixSCParamInfo(RtUString("stops"), k_RixSCFloat),
+                                         RixSCParamInfo(RtUString("resultRGB"), k_RixSCColor, k_RixSCOutput),
+                                         RixSCParamInfo(RtUString("resultR"), k_RixSCFloat, k_RixSCOutput),
+                                         RixSCParamInfo(RtUString("resultG"), k_RixSCFloat, k_RixSCOutput),
+                                         RixSCParamInfo(RtUString("resultB"), k_RixSCFloat, k_RixSCOutput),
+                                         RixSCParamInfo()};
+        return table;
+    }
+
+    int ComputeOutputParams(RixShadingContext const* sCtx, RtInt* numOutputs, OutputSpecification** outputs,
+                            RtPointer, RixSCParamInfo const*) override {
+        RtColorRGB const black(0.0f);
+        RtFloat const none = 0.0f;
+        RtColorRGB const* input;
+        RtFloat const* stops;
+        sCtx->EvalParam(k_inputRGB, -1, &input, &black, true);
+        sCtx->EvalParam(k_stops, -1, &stops, &none, true);
+
+        RixShadingContext::Allocator pool(sCtx);
+        OutputSpecification* out = pool.AllocForPattern<OutputSpecification>(4);
+        int count = 0;
+        RtColorRGB* result = stockpatterns::addVaryingOutput<RtColorRGB>(sCtx, out, count, k_resultRGB);
+        RtFloat* red = stockpatterns::addVaryingOutput<RtFloat>(sCtx, out, count, k_resultR);
+        RtFloat* green = stockpatterns::addVaryingOutput<RtFloat>(sCtx, out, count, k_resultG);
+        RtFloat* blue = stockpatterns::addVaryingOutput<RtFloat>(sCtx, out, count, k_resultB);
+        for (int i = 0; i < sCtx->numPts; ++i) {
+            result[i] = input[i] * std::exp2(stops[i]);
+            red[i] = result[i].r;
+            green[i] = result[i].g;
+            blue[i] = result[i].b;
+        }
+        *numOutputs = count;
+        *outputs = out;
+        return 0;
+    }
+};
+
+}  // namespace
+
+STOCK_PATTERN_PLUGIN(PxrExposure)
