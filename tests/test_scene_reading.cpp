@@ -766,6 +766,10 @@ TEST_CASE("Camera saves the camera under a name, and a Display's camera picks th
                                  "Display \"+y.exr\" \"openexr\" \"z\" \"string camera\" [\"top\"]\n"
                                  "DisplayChannel \"color lpe:C<RD>L\" \"string filter\" [\"box\"]\n"
                                  "Camera \"top\" \"float nearClip\" [2] \"float apertureNSides\" [5]\n"
+                                 // What exporters write: RenderMan's defaults, the plain camera this renderer has.
+                                 "Camera \"exported\" \"float shutterOpenTime\" [0] \"float shutterCloseTime\" [1] "
+                                 "\"int apertureNSides\" [0] \"float apertureAngle\" [0] \"float apertureRoundness\" [0] "
+                                 "\"float apertureDensity\" [0] \"float dofaspect\" [1]\n"
                                  "Translate 0 0 5\nWorldBegin\nWorldEnd\n",
                                  diagnostics);
     // A camera no Camera request named: the one at WorldBegin, with a warning.
@@ -773,8 +777,10 @@ TEST_CASE("Camera saves the camera under a name, and a Display's camera picks th
     CHECK(scene.camera.worldToCamera[3][2] == 5.0f);
     // A further display is seen from the first one's camera, with a warning.
     CHECK(test::warningsContaining(diagnostics, "every image of a render is seen from one camera") == 1);
-    // The lens shape is not modelled; DisplayChannel is read, and the Display says whether its channel is made.
+    // The lens shape is not modelled: warned where it is not RenderMan's plain default. DisplayChannel is
+    // read, and the Display says whether its channel is made.
     CHECK(test::warningsContaining(diagnostics, "apertureNSides") == 1);
+    CHECK(test::warningsContaining(diagnostics, "Camera: parameter") == 1);
     CHECK(test::warningsContaining(diagnostics, "DisplayChannel") == 0);
     CHECK(scene.camera.clipNear == 2.0f);
 }

@@ -163,8 +163,21 @@ void SceneBuilder::camera(RequestReader& in) {
     std::string const name = in.string("camera name");
     ParamList params = in.params();
     // Its nearClip and farClip set the clipping planes, as a Clipping request would. Its lens shape and
-    // shutter curve (apertureNSides, shutterOpenTime, ...) are effects not modelled here: warned as unused.
+    // shutter curve (apertureNSides, shutterOpenTime, ...) are effects not modelled here: at RenderMan's
+    // defaults, which exporters write, they describe the plain camera this renderer has and are taken
+    // silently; any other value is warned about as unused.
     params.typeUntyped({{"nearClip", ParamType::Float}, {"farClip", ParamType::Float}}, "Camera");
+    static std::pair<char const*, float> const kPlainCamera[] = {
+        {"shutterOpenTime", 0.0f}, {"shutterCloseTime", 1.0f}, {"apertureNSides", 0.0f}, {"apertureAngle", 0.0f},
+        {"apertureRoundness", 0.0f}, {"apertureDensity", 0.0f}, {"dofaspect", 1.0f}};
+    for (auto const& [parameter, plain] : kPlainCamera) {
+        Param const* written = params.find(parameter);
+        if (!written || written->decl.reference) continue;
+        bool const one = std::max(written->floats.size(), written->ints.size()) == 1;  // an int keeps both
+        bool const isPlain =
+            one && (written->floats.empty() ? static_cast<float>(written->ints[0]) : written->floats[0]) == plain;
+        if (isPlain) params.take(parameter);
+    }
     Param const* nearClip = params.take("nearClip");
     Param const* farClip = params.take("farClip");
     if (nearClip || farClip)
