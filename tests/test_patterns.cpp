@@ -6,6 +6,7 @@
 
 #include <catch2/catch.hpp>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -312,6 +313,50 @@ TEST_CASE("PxrBlend and PxrRemap and PxrExposure and PxrToFloat3 combine and adj
                     "f:resultRGB"),
              0.0f, 0.5f, 0.9f);
     }
+}
+
+TEST_CASE("PxrFractal is a noise in 0 to 1 that varies across the surface and with its variation",
+          "[patterns]") {
+    auto noise = [](std::string const& parameters) {
+        return test::renderRib(kHead + "Pattern \"PxrFractal\" \"f\" \"float frequency\" [4] " + parameters +
+                                   "\nPattern \"PxrToFloat3\" \"grey\" \"reference float input\" [\"f:resultF\"]\n"
+                                   "Bxdf \"PxrConstant\" \"c\" \"reference color emitColor\" [\"grey:resultRGB\"]\n" +
+                                   kSquare,
+                               fewSamples());
+    };
+    auto stats = [](test::RenderOutcome const& r) {
+        double sum = 0, squares = 0, lowest = 1, highest = 0;
+        int const n = r.width * r.height;
+        for (int y = 0; y < r.height; ++y)
+            for (int x = 0; x < r.width; ++x) {
+                double const v = r.channel(x, y, 0);
+                sum += v;
+                squares += v * v;
+                lowest = std::min(lowest, v);
+                highest = std::max(highest, v);
+            }
+        double const mean = sum / n;
+        return std::array<double, 4>{mean, std::sqrt(std::max(0.0, squares / n - mean * mean)), lowest, highest};
+    };
+    auto const plain = noise("");
+    auto const [mean, spread, lowest, highest] = stats(plain);
+    CHECK(lowest >= 0.0);
+    CHECK(highest <= 1.0);
+    CHECK(mean == Approx(0.5).margin(0.15));
+    CHECK(spread > 0.03);  // it varies: not a constant
+    // Another variation is another pattern; the same one, the same pattern.
+    auto const varied = noise("\"float variation\" [1]");
+    double largest = 0;
+    for (size_t i = 0; i < plain.rgba.size(); ++i) largest = std::max(largest, double(std::fabs(plain.rgba[i] - varied.rgba[i])));
+    CHECK(largest > 0.05);
+    CHECK(noise("").rgba == plain.rgba);
+    // Turbulent: absolute values, so darker on average, never below 0.
+    auto const [turbulentMean, turbulentSpread, turbulentLowest, turbulentHighest] = stats(noise("\"int turbulent\" [1]"));
+    CHECK(turbulentMean < mean);
+    CHECK(turbulentLowest >= 0.0);
+    CHECK(turbulentSpread > 0.01);
+    (void)turbulentHighest;
+    CHECK(noise("\"float erosion\" [0.5]").anyMessageContains("PxrFractal: erosion is not modelled"));
 }
 
 TEST_CASE("a polygon without texture coordinates has a (u v) per face as in RenderMan: a quad runs 0 to 1 across",

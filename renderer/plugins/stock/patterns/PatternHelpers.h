@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "RixPattern.h"
+#include "RixPredefinedStrings.hpp"
 
 namespace stockpatterns {
 
@@ -59,6 +60,18 @@ inline RtPoint3* stManifold(RixShadingContext const* sCtx) {
     RtPoint3* q = pool.AllocFor<RtPoint3>(sCtx->numPts);
     for (int i = 0; i < sCtx->numPts; ++i) q[i] = RtPoint3(s[i], t[i], std::max(du[i], dv[i]));
     return q;
+}
+
+/// Each point's position in object space (its shape's own coordinates, before any transformation),
+/// where solid patterns are laid so that they stay on the object as it moves.
+inline RtPoint3 const* objectPositions(RixShadingContext const* sCtx) {
+    RtPoint3 const* P;
+    sCtx->GetBuiltinVar(RixShadingContext::k_P, &P);
+    RixShadingContext::Allocator pool(sCtx);
+    RtPoint3* object = pool.AllocFor<RtPoint3>(sCtx->numPts);
+    for (int i = 0; i < sCtx->numPts; ++i) object[i] = P[i];
+    sCtx->Transform(RixShadingContext::k_AsPoints, Rix::k_current, Rix::k_object, object);
+    return object;
 }
 
 /// The manifold a texture pattern reads at: its connected one (`manifoldId`),

@@ -12,7 +12,6 @@
 #include <cmath>
 
 #include "PatternHelpers.h"
-#include "RixPredefinedStrings.hpp"
 
 namespace {
 
@@ -43,7 +42,8 @@ public:
         sCtx->EvalParam(k_colorB, -1, &colorB, &black, true);
         sCtx->EvalParam(k_dimensions, -1, &dimensions, &two);
         bool const solid = *dimensions == 3;
-        RtPoint3 const* where = solid ? objectPositions(sCtx) : stockpatterns::manifoldOf(sCtx, k_manifold);
+        RtPoint3 const* where =
+            solid ? stockpatterns::objectPositions(sCtx) : stockpatterns::manifoldOf(sCtx, k_manifold);
 
         RixShadingContext::Allocator pool(sCtx);
         OutputSpecification* out = pool.AllocForPattern<OutputSpecification>(4);
@@ -65,18 +65,6 @@ public:
         *numOutputs = count;
         *outputs = out;
         return 0;
-    }
-
-private:
-    /// P in object space (the third of a manifold's coordinates is not a width here).
-    static RtPoint3 const* objectPositions(RixShadingContext const* sCtx) {
-        RtPoint3 const* P;
-        sCtx->GetBuiltinVar(RixShadingContext::k_P, &P);
-        RixShadingContext::Allocator pool(sCtx);
-        RtPoint3* object = pool.AllocFor<RtPoint3>(sCtx->numPts);
-        for (int i = 0; i < sCtx->numPts; ++i) object[i] = P[i];
-        sCtx->Transform(RixShadingContext::k_AsPoints, Rix::k_current, Rix::k_object, object);
-        return object;
     }
 };
 
