@@ -59,8 +59,8 @@ float gradientNoise(float x, float y, float z) {
     float corner[8];
     for (int c = 0; c < 8; ++c) {
         int const ox = c & 1, oy = (c >> 1) & 1, oz = (c >> 2) & 1;
-        corner[c] = gradientDot(hash3(ix + ox, iy + oy, iz + oz), dx - static_cast<float>(ox), dy - static_cast<float>(oy),
-                                dz - static_cast<float>(oz));
+        corner[c] = gradientDot(hash3(ix + ox, iy + oy, iz + oz), dx - static_cast<float>(ox),
+                                dy - static_cast<float>(oy), dz - static_cast<float>(oz));
     }
     float const u = fade(dx), v = fade(dy), w = fade(dz);
     float const x00 = lerp(corner[0], corner[1], u), x10 = lerp(corner[2], corner[3], u);
