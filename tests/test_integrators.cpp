@@ -137,7 +137,7 @@ TEST_CASE("PxrPathTracer reads an exporter's full parameter list: roulette and c
     CHECK(written.stats.indirectRays > plain.stats.indirectRays);
     // No roulette at all, by either parameter: the same paths, sample for sample.
     auto noThreshold = test::renderRib(scene("\"float rouletteThreshold\" [0]"), settings);
-    auto lateRoulette = test::renderRib(scene("\"int rouletteDepth\" [100]"), settings);
+    auto lateRoulette = test::renderRib(scene("\"int rouletteDepth\" [10000000]"), settings);  // as a public scene writes
     CHECK(noThreshold.rgba == lateRoulette.rgba);
     CHECK(noThreshold.stats.indirectRays > plain.stats.indirectRays);
 

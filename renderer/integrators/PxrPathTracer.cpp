@@ -322,14 +322,21 @@ RIX_INTEGRATORCREATE {
         maxPathLength = bounces + 1;
     }
     PathLimits limits;
-    if (!ReadInt(params, messages, "rouletteDepth", 4, 1, 1 << 20, limits.rouletteDepth) ||
-        !ReadInt(params, messages, "clampDepth", 2, 1, 1 << 20, limits.clampDepth))
+    // Scenes turn roulette off with a depth no path reaches (a public one writes 10000000).
+    if (!ReadInt(params, messages, "rouletteDepth", 4, 0, INT_MAX, limits.rouletteDepth) ||
+        !ReadInt(params, messages, "clampDepth", 2, 0, INT_MAX, limits.clampDepth))
         return nullptr;
     if (HasParam(params, "rouletteThreshold"))
         limits.rouletteThreshold = std::max(0.0f, ReadFloat(params, "rouletteThreshold", 0.2f));
     if (HasParam(params, "clampLuminance")) limits.clampLuminance = ReadFloat(params, "clampLuminance", 10.0f);
     int indirectSamples;
-    if (!ReadInt(params, messages, "numIndirectSamples", 1, 1, 1024, indirectSamples)) return nullptr;
+    if (!ReadInt(params, messages, "numIndirectSamples", 1, 1, INT_MAX, indirectSamples)) return nullptr;
+    int const mostIndirectSamples = 256;  // each is a ray per camera hit: more would only exhaust memory
+    if (indirectSamples > mostIndirectSamples) {
+        messages->Warning("numIndirectSamples %d is more than %d paths per camera hit; %d are traced",
+                          indirectSamples, mostIndirectSamples, mostIndirectSamples);
+        indirectSamples = mostIndirectSamples;
+    }
     readRenderManDefaults(params, messages);
     return new PathTracer(maxPathLength, lightSamples, bxdfSamples, indirectSamples, caustics != 0, useTraceDepth != 0,
                           limits);
