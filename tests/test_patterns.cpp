@@ -467,6 +467,43 @@ TEST_CASE("PxrTexture reads what OpenImageIO's texture system reads, a missing f
         CHECK(blurred.channel(8, 8, 0) == Approx(sharp.channel(8, 8, 0)).margin(0.02));
         CHECK(blurred.channel(8, 8, 2) == Approx(0.25f).margin(1e-3));
     }
+    SECTION("a grey image is grey; resultA is an image's alpha, 1 where it has none") {
+        std::vector<float> grey(static_cast<size_t>(size * size), 0.4f), rgba(static_cast<size_t>(size * size * 4));
+        for (size_t i = 0; i < rgba.size(); i += 4) {
+            rgba[i] = 0.9f;
+            rgba[i + 1] = 0.6f;
+            rgba[i + 2] = 0.3f;
+            rgba[i + 3] = 0.25f;
+        }
+        std::string const greyFile = test::outputDir() + "/grey.exr", rgbaFile = test::outputDir() + "/decal.exr";
+        writeImage(greyFile, grey, size, size, 1);
+        writeImage(rgbaFile, rgba, size, size, 4);
+        auto shown = [](std::string const& image, std::string const& output) {
+            auto r = test::renderRib(kHead + "Pattern \"PxrTexture\" \"t\" \"string filename\" [\"" + image + "\"]\n"
+                                             "Pattern \"PxrMix\" \"alpha\" \"color color1\" [0 0 0] "
+                                             "\"reference float mix\" [\"t:resultA\"]\n"
+                                             "Bxdf \"PxrConstant\" \"c\" \"reference color emitColor\" [\"" + output + "\"]\n" +
+                                         kSquare,
+                                     fewSamples());
+            return RtColorRGB(r.channel(8, 8, 0), r.channel(8, 8, 1), r.channel(8, 8, 2));
+        };
+        RtColorRGB const greyColour = shown(greyFile, "t:resultRGB");
+        CHECK(greyColour.r == Approx(0.4f).margin(1e-3));
+        CHECK(greyColour.g == Approx(0.4f).margin(1e-3));
+        CHECK(greyColour.b == Approx(0.4f).margin(1e-3));
+        CHECK(shown(greyFile, "alpha:resultRGB").r == Approx(1.0f).margin(1e-3));
+        CHECK(shown(file, "alpha:resultRGB").r == Approx(1.0f).margin(1e-3));
+        CHECK(shown(rgbaFile, "alpha:resultRGB").r == Approx(0.25f).margin(1e-3));
+        CHECK(shown(rgbaFile, "t:resultRGB").g == Approx(0.6f).margin(1e-3));
+        // A decal laid over a base colour by its alpha, as exporters write it.
+        auto decal = test::renderRib(kHead + "Pattern \"PxrTexture\" \"t\" \"string filename\" [\"" + rgbaFile + "\"]\n"
+                                             "Pattern \"PxrBlend\" \"b\" \"reference color topRGB\" [\"t:resultRGB\"] "
+                                             "\"reference float topA\" [\"t:resultA\"] \"color bottomRGB\" [0.1 0.1 0.1]\n"
+                                             "Bxdf \"PxrConstant\" \"c\" \"reference color emitColor\" [\"b:resultRGB\"]\n" +
+                                         kSquare,
+                                     fewSamples());
+        CHECK(decal.channel(8, 8, 0) == Approx(0.75f * 0.1f + 0.25f * 0.9f).margin(1e-3));
+    }
     SECTION("a file that does not exist") {
         auto r = test::renderRib(kHead + "Pattern \"PxrTexture\" \"t\" \"string filename\" [\"no/such/maple.tx\"] "
                                          "\"color missingColor\" [1 0 1]\n"

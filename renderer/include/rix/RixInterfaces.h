@@ -53,12 +53,15 @@ public:
         RtColorRGB missingColor{1.0f, 0.0f, 1.0f};  ///< returned where the file cannot be read
         bool periodic = true;           ///< repeat outside [0,1] (false: clamp to the edge)
     };
-    /// Reads `numChannels` (1 to 3) channels of `filename` at `numPts` texture
+    /// Reads `numChannels` (1 to 4) channels of `filename` at `numPts` texture
     /// coordinates `st` (s across the image from its left edge, t down from its
     /// top row), filtered over a square of side `width[i]` in texture units
     /// (0: the finest level, bilinear). `result` receives numPts * numChannels
-    /// floats, point by point. Returns 0, or 1 when the file cannot be read
-    /// (then every point gets the missing colour and the renderer warns once).
+    /// floats, point by point. A one-channel (grey) image reads the same in its
+    /// first three channels, and a channel past the image's last reads 1 (an RGB
+    /// image's alpha is opaque). Returns 0, or 1 when the file cannot be read
+    /// (then every point gets the missing colour, a fourth channel 1, and the
+    /// renderer warns once).
     virtual int Texture(RtUString filename, TxParams const& params, int numPts, RtFloat2 const* st,
                         RtFloat const* width, int numChannels, RtFloat* result) = 0;
 };

@@ -24,17 +24,20 @@ public:
         m_system->attribute("max_memory_MB", 256.0f);
         m_system->attribute("autotile", 64);
         m_system->attribute("automip", 1);
+        // A grey image is grey in a colour lookup, as in RenderMan (not red with black green and blue).
+        m_system->attribute("gray_to_rgb", 1);
     }
 
     void setLocator(TextureLocator locator) override { m_locator = std::move(locator); }
 
     int Texture(RtUString filename, TxParams const& params, int numPts, RtFloat2 const* st, RtFloat const* width,
                 int numChannels, RtFloat* result) override {
-        numChannels = std::clamp(numChannels, 1, 3);
+        numChannels = std::clamp(numChannels, 1, 4);
         OIIO::TextureSystem::TextureHandle* handle = open(filename.CStr());
         auto fillMissing = [&](int from) {
             for (int i = from; i < numPts; ++i)
-                for (int c = 0; c < numChannels; ++c) result[i * numChannels + c] = params.missingColor[c];
+                for (int c = 0; c < numChannels; ++c)
+                    result[i * numChannels + c] = c < 3 ? params.missingColor[c] : 1.0f;
         };
         if (!handle) {
             fillMissing(0);
@@ -42,6 +45,7 @@ public:
         }
         OIIO::TextureOpt options;
         options.firstchannel = params.firstChannel;
+        options.fill = 1.0f;  // channels the image does not have: an RGB image's alpha is opaque
         options.swrap = options.twrap = params.periodic ? OIIO::TextureOpt::WrapPeriodic : OIIO::TextureOpt::WrapClamp;
         OIIO::TextureSystem::Perthread* thread = m_system->get_perthread_info();
         for (int i = 0; i < numPts; ++i) {

@@ -47,6 +47,36 @@ T* addVaryingOutput(RixShadingContext const* sCtx, RixPattern::OutputSpecificati
     return values;
 }
 
+/// The four rows of a colour result, in this order: resultRGB and its channels resultR, resultG and
+/// resultB as floats (for a presence or a mix amount). Write them where the enum has four ids in a row.
+#define STOCK_PATTERN_COLOR_OUTPUTS                                          \
+    RixSCParamInfo(RtUString("resultRGB"), k_RixSCColor, k_RixSCOutput),     \
+        RixSCParamInfo(RtUString("resultR"), k_RixSCFloat, k_RixSCOutput),   \
+        RixSCParamInfo(RtUString("resultG"), k_RixSCFloat, k_RixSCOutput),   \
+        RixSCParamInfo(RtUString("resultB"), k_RixSCFloat, k_RixSCOutput)
+
+/// Those four outputs, added to `out` (which has room), filled point by point with set().
+class ColorOutputs {
+public:
+    ColorOutputs(RixShadingContext const* sCtx, RixPattern::OutputSpecification* out, int& count, int resultRGBRow)
+        : m_rgb(addVaryingOutput<RtColorRGB>(sCtx, out, count, resultRGBRow)),
+          m_r(addVaryingOutput<RtFloat>(sCtx, out, count, resultRGBRow + 1)),
+          m_g(addVaryingOutput<RtFloat>(sCtx, out, count, resultRGBRow + 2)),
+          m_b(addVaryingOutput<RtFloat>(sCtx, out, count, resultRGBRow + 3)) {}
+
+    void set(int i, RtColorRGB const& c) {
+        m_rgb[i] = c;
+        m_r[i] = c.r;
+        m_g[i] = c.g;
+        m_b[i] = c.b;
+    }
+    RtColorRGB* rgb() const { return m_rgb; }
+
+private:
+    RtColorRGB* m_rgb;
+    RtFloat *m_r, *m_g, *m_b;
+};
+
 /// The texture coordinates of every point as a manifold: (s, t, footprint),
 /// the footprint being the width of the ray's footprint in st units (taken
 /// from du and dv, which assumes st runs like uv, as it does by default).
@@ -60,6 +90,13 @@ inline RtPoint3* stManifold(RixShadingContext const* sCtx) {
     RtPoint3* q = pool.AllocFor<RtPoint3>(sCtx->numPts);
     for (int i = 0; i < sCtx->numPts; ++i) q[i] = RtPoint3(s[i], t[i], std::max(du[i], dv[i]));
     return q;
+}
+
+/// Whether a connection reads output `paramId` (so that a costly output can be skipped).
+inline bool isOutputRead(RixShadingContext const* sCtx, int paramId) {
+    RixSCConnectionInfo how = k_RixSCDefaultValue;
+    sCtx->GetParamInfo(paramId, nullptr, &how);
+    return how == k_RixSCNetworkValue;
 }
 
 /// Each point's position in object space (its shape's own coordinates, before any transformation),
@@ -84,10 +121,12 @@ inline RtPoint3 const* manifoldOf(RixShadingContext const* sCtx, int manifoldId)
 
 /// Reads 3 channels of `filename` into `rgb` at `n` manifold points (s, t,
 /// footprint), footprints widened by `blur`; with invertT, t runs up the image
-/// (t = 0 is its bottom row). False when the file cannot be read: then every
-/// point has lookup.missingColor.
+/// (t = 0 is its bottom row). With `alpha`, the fourth channel too (1 where the
+/// file has no fourth). False when the file cannot be read: then every point has
+/// lookup.missingColor (and `alpha` is left alone).
 inline bool readTexture(RixShadingContext const* sCtx, RtUString filename, RixTexture::TxParams const& lookup,
-                        RtPoint3 const* manifold, int n, bool invertT, float blur, RtColorRGB* rgb) {
+                        RtPoint3 const* manifold, int n, bool invertT, float blur, RtColorRGB* rgb,
+                        RtFloat* alpha = nullptr) {
     RixShadingContext::Allocator pool(sCtx);
     RtFloat2* st = pool.AllocFor<RtFloat2>(n);
     RtFloat* width = pool.AllocFor<RtFloat>(n);
@@ -96,9 +135,18 @@ inline bool readTexture(RixShadingContext const* sCtx, RtUString filename, RixTe
         width[i] = manifold[i].z + blur;
     }
     auto* textures = static_cast<RixTexture*>(sCtx->GetRixInterface(k_RixTexture));
-    if (textures) return textures->Texture(filename, lookup, n, st, width, 3, &rgb[0].r) == 0;
-    for (int i = 0; i < n; ++i) rgb[i] = lookup.missingColor;  // a program without textures (a probe)
-    return false;
+    if (!textures) {
+        for (int i = 0; i < n; ++i) rgb[i] = lookup.missingColor;  // a program without textures (a probe)
+        return false;
+    }
+    if (!alpha) return textures->Texture(filename, lookup, n, st, width, 3, &rgb[0].r) == 0;
+    RtFloat* rgba = pool.AllocFor<RtFloat>(4 * static_cast<size_t>(n));
+    bool const found = textures->Texture(filename, lookup, n, st, width, 4, rgba) == 0;
+    for (int i = 0; i < n; ++i) {
+        rgb[i] = RtColorRGB(rgba[4 * i], rgba[4 * i + 1], rgba[4 * i + 2]);
+        if (found) alpha[i] = rgba[4 * i + 3];
+    }
+    return found;
 }
 
 }  // namespace stockpatterns

@@ -44,10 +44,7 @@ public:
                                          RixSCParamInfo(RtUString("bottomRGB"), k_RixSCColor),
                                          RixSCParamInfo(RtUString("bottomA"), k_RixSCFloat),
                                          RixSCParamInfo(RtUString("clampOutput"), k_RixSCInteger),
-                                         RixSCParamInfo(RtUString("resultRGB"), k_RixSCColor, k_RixSCOutput),
-                                         RixSCParamInfo(RtUString("resultR"), k_RixSCFloat, k_RixSCOutput),
-                                         RixSCParamInfo(RtUString("resultG"), k_RixSCFloat, k_RixSCOutput),
-                                         RixSCParamInfo(RtUString("resultB"), k_RixSCFloat, k_RixSCOutput),
+                                         STOCK_PATTERN_COLOR_OUTPUTS,
                                          RixSCParamInfo(RtUString("resultA"), k_RixSCFloat, k_RixSCOutput),
                                          RixSCParamInfo()};
         return table;
@@ -80,10 +77,7 @@ public:
         RixShadingContext::Allocator pool(sCtx);
         OutputSpecification* out = pool.AllocForPattern<OutputSpecification>(5);
         int count = 0;
-        RtColorRGB* result = stockpatterns::addVaryingOutput<RtColorRGB>(sCtx, out, count, k_resultRGB);
-        RtFloat* red = stockpatterns::addVaryingOutput<RtFloat>(sCtx, out, count, k_resultR);
-        RtFloat* green = stockpatterns::addVaryingOutput<RtFloat>(sCtx, out, count, k_resultG);
-        RtFloat* blue = stockpatterns::addVaryingOutput<RtFloat>(sCtx, out, count, k_resultB);
+        stockpatterns::ColorOutputs result(sCtx, out, count, k_resultRGB);
         RtFloat* alpha = stockpatterns::addVaryingOutput<RtFloat>(sCtx, out, count, k_resultA);
         for (int i = 0; i < sCtx->numPts; ++i) {
             RtColorRGB const base = bottom[i] * bottomA[i];
@@ -97,10 +91,7 @@ public:
                 c = RtColorRGB(std::clamp(c.r, 0.0f, 1.0f), std::clamp(c.g, 0.0f, 1.0f), std::clamp(c.b, 0.0f, 1.0f));
                 a = std::clamp(a, 0.0f, 1.0f);
             }
-            result[i] = c;
-            red[i] = c.r;
-            green[i] = c.g;
-            blue[i] = c.b;
+            result.set(i, c);
             alpha[i] = a;
         }
         *numOutputs = count;

@@ -24,10 +24,7 @@ public:
                                          RixSCParamInfo(RtUString("colorB"), k_RixSCColor),
                                          RixSCParamInfo(RtUString("dimensions"), k_RixSCInteger),  // 2 or 3
                                          RixSCParamInfo(RtUString("manifold"), k_RixSCPoint),
-                                         RixSCParamInfo(RtUString("resultRGB"), k_RixSCColor, k_RixSCOutput),
-                                         RixSCParamInfo(RtUString("resultR"), k_RixSCFloat, k_RixSCOutput),
-                                         RixSCParamInfo(RtUString("resultG"), k_RixSCFloat, k_RixSCOutput),
-                                         RixSCParamInfo(RtUString("resultB"), k_RixSCFloat, k_RixSCOutput),
+                                         STOCK_PATTERN_COLOR_OUTPUTS,
                                          RixSCParamInfo()};
         return table;
     }
@@ -48,19 +45,13 @@ public:
         RixShadingContext::Allocator pool(sCtx);
         OutputSpecification* out = pool.AllocForPattern<OutputSpecification>(4);
         int count = 0;
-        RtColorRGB* result = stockpatterns::addVaryingOutput<RtColorRGB>(sCtx, out, count, k_resultRGB);
-        RtFloat* red = stockpatterns::addVaryingOutput<RtFloat>(sCtx, out, count, k_resultR);
-        RtFloat* green = stockpatterns::addVaryingOutput<RtFloat>(sCtx, out, count, k_resultG);
-        RtFloat* blue = stockpatterns::addVaryingOutput<RtFloat>(sCtx, out, count, k_resultB);
+        stockpatterns::ColorOutputs result(sCtx, out, count, k_resultRGB);
         for (int i = 0; i < sCtx->numPts; ++i) {
             // Which half-unit cell the point is in, along each axis; the parity of their sum picks the colour.
             long long cells = static_cast<long long>(std::floor(2.0f * where[i].x)) +
                               static_cast<long long>(std::floor(2.0f * where[i].y));
             if (solid) cells += static_cast<long long>(std::floor(2.0f * where[i].z));
-            result[i] = (cells & 1) == 0 ? colorA[i] : colorB[i];
-            red[i] = result[i].r;
-            green[i] = result[i].g;
-            blue[i] = result[i].b;
+            result.set(i, (cells & 1) == 0 ? colorA[i] : colorB[i]);
         }
         *numOutputs = count;
         *outputs = out;

@@ -13,10 +13,7 @@ public:
     RixSCParamInfo const* GetParamTable() override {
         static RixSCParamInfo table[] = {RixSCParamInfo(RtUString("inputRGB"), k_RixSCColor),
                                          RixSCParamInfo(RtUString("stops"), k_RixSCFloat),
-                                         RixSCParamInfo(RtUString("resultRGB"), k_RixSCColor, k_RixSCOutput),
-                                         RixSCParamInfo(RtUString("resultR"), k_RixSCFloat, k_RixSCOutput),
-                                         RixSCParamInfo(RtUString("resultG"), k_RixSCFloat, k_RixSCOutput),
-                                         RixSCParamInfo(RtUString("resultB"), k_RixSCFloat, k_RixSCOutput),
+                                         STOCK_PATTERN_COLOR_OUTPUTS,
                                          RixSCParamInfo()};
         return table;
     }
@@ -33,15 +30,9 @@ public:
         RixShadingContext::Allocator pool(sCtx);
         OutputSpecification* out = pool.AllocForPattern<OutputSpecification>(4);
         int count = 0;
-        RtColorRGB* result = stockpatterns::addVaryingOutput<RtColorRGB>(sCtx, out, count, k_resultRGB);
-        RtFloat* red = stockpatterns::addVaryingOutput<RtFloat>(sCtx, out, count, k_resultR);
-        RtFloat* green = stockpatterns::addVaryingOutput<RtFloat>(sCtx, out, count, k_resultG);
-        RtFloat* blue = stockpatterns::addVaryingOutput<RtFloat>(sCtx, out, count, k_resultB);
+        stockpatterns::ColorOutputs result(sCtx, out, count, k_resultRGB);
         for (int i = 0; i < sCtx->numPts; ++i) {
-            result[i] = input[i] * std::exp2(stops[i]);
-            red[i] = result[i].r;
-            green[i] = result[i].g;
-            blue[i] = result[i].b;
+            result.set(i, input[i] * std::exp2(stops[i]));
         }
         *numOutputs = count;
         *outputs = out;

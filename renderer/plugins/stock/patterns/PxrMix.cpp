@@ -20,10 +20,7 @@ public:
                                          RixSCParamInfo(RtUString("color2"), k_RixSCColor),
                                          RixSCParamInfo(RtUString("mix"), k_RixSCFloat),
                                          RixSCParamInfo(RtUString("clampMix"), k_RixSCInteger),
-                                         RixSCParamInfo(RtUString("resultRGB"), k_RixSCColor, k_RixSCOutput),
-                                         RixSCParamInfo(RtUString("resultR"), k_RixSCFloat, k_RixSCOutput),
-                                         RixSCParamInfo(RtUString("resultG"), k_RixSCFloat, k_RixSCOutput),
-                                         RixSCParamInfo(RtUString("resultB"), k_RixSCFloat, k_RixSCOutput),
+                                         STOCK_PATTERN_COLOR_OUTPUTS,
                                          RixSCParamInfo()};
         return table;
     }
@@ -45,16 +42,10 @@ public:
         RixShadingContext::Allocator pool(sCtx);
         OutputSpecification* out = pool.AllocForPattern<OutputSpecification>(4);
         int count = 0;
-        RtColorRGB* result = stockpatterns::addVaryingOutput<RtColorRGB>(sCtx, out, count, k_resultRGB);
-        RtFloat* red = stockpatterns::addVaryingOutput<RtFloat>(sCtx, out, count, k_resultR);
-        RtFloat* green = stockpatterns::addVaryingOutput<RtFloat>(sCtx, out, count, k_resultG);
-        RtFloat* blue = stockpatterns::addVaryingOutput<RtFloat>(sCtx, out, count, k_resultB);
+        stockpatterns::ColorOutputs result(sCtx, out, count, k_resultRGB);
         for (int i = 0; i < sCtx->numPts; ++i) {
             float m = *clampMix ? std::clamp(mix[i], 0.0f, 1.0f) : mix[i];
-            result[i] = color1[i] * (1.0f - m) + color2[i] * m;
-            red[i] = result[i].r;
-            green[i] = result[i].g;
-            blue[i] = result[i].b;
+            result.set(i, color1[i] * (1.0f - m) + color2[i] * m);
         }
         *numOutputs = count;
         *outputs = out;

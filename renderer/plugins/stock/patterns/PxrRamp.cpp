@@ -101,10 +101,7 @@ public:
             RixSCParamInfo(RtUString("positions"), k_RixSCFloat, k_RixSCInput, 0),
             RixSCParamInfo(RtUString("colors"), k_RixSCColor, k_RixSCInput, 0),
             RixSCParamInfo(RtUString("basis"), k_RixSCInteger),
-            RixSCParamInfo(RtUString("resultRGB"), k_RixSCColor, k_RixSCOutput),
-            RixSCParamInfo(RtUString("resultR"), k_RixSCFloat, k_RixSCOutput),
-            RixSCParamInfo(RtUString("resultG"), k_RixSCFloat, k_RixSCOutput),
-            RixSCParamInfo(RtUString("resultB"), k_RixSCFloat, k_RixSCOutput),
+            STOCK_PATTERN_COLOR_OUTPUTS,
             RixSCParamInfo()};
         return table;
     }
@@ -127,18 +124,12 @@ public:
         RixShadingContext::Allocator pool(sCtx);
         OutputSpecification* out = pool.AllocForPattern<OutputSpecification>(4);
         int count = 0;
-        RtColorRGB* result = stockpatterns::addVaryingOutput<RtColorRGB>(sCtx, out, count, k_resultRGB);
-        RtFloat* red = stockpatterns::addVaryingOutput<RtFloat>(sCtx, out, count, k_resultR);
-        RtFloat* green = stockpatterns::addVaryingOutput<RtFloat>(sCtx, out, count, k_resultG);
-        RtFloat* blue = stockpatterns::addVaryingOutput<RtFloat>(sCtx, out, count, k_resultB);
+        stockpatterns::ColorOutputs result(sCtx, out, count, k_resultRGB);
         for (int i = 0; i < sCtx->numPts; ++i) {
             float x = mapped ? splineMap[i] : position(*rampType, manifold[i].x, manifold[i].y);
             x = *tile ? x - std::floor(x) : std::clamp(x, 0.0f, 1.0f);
             if (*reverse) x = 1.0f - x;
-            result[i] = ramp.at(x);
-            red[i] = result[i].r;
-            green[i] = result[i].g;
-            blue[i] = result[i].b;
+            result.set(i, ramp.at(x));
         }
         *numOutputs = count;
         *outputs = out;

@@ -38,10 +38,7 @@ public:
                                          RixSCParamInfo(RtUString("outputMin"), k_RixSCFloat),
                                          RixSCParamInfo(RtUString("outputMax"), k_RixSCFloat),
                                          RixSCParamInfo(RtUString("clampOutput"), k_RixSCInteger),
-                                         RixSCParamInfo(RtUString("resultRGB"), k_RixSCColor, k_RixSCOutput),
-                                         RixSCParamInfo(RtUString("resultR"), k_RixSCFloat, k_RixSCOutput),
-                                         RixSCParamInfo(RtUString("resultG"), k_RixSCFloat, k_RixSCOutput),
-                                         RixSCParamInfo(RtUString("resultB"), k_RixSCFloat, k_RixSCOutput),
+                                         STOCK_PATTERN_COLOR_OUTPUTS,
                                          RixSCParamInfo(RtUString("resultA"), k_RixSCFloat, k_RixSCOutput),
                                          RixSCParamInfo()};
         return table;
@@ -68,10 +65,7 @@ public:
         RixShadingContext::Allocator pool(sCtx);
         OutputSpecification* out = pool.AllocForPattern<OutputSpecification>(5);
         int count = 0;
-        RtColorRGB* result = stockpatterns::addVaryingOutput<RtColorRGB>(sCtx, out, count, k_resultRGB);
-        RtFloat* red = stockpatterns::addVaryingOutput<RtFloat>(sCtx, out, count, k_resultR);
-        RtFloat* green = stockpatterns::addVaryingOutput<RtFloat>(sCtx, out, count, k_resultG);
-        RtFloat* blue = stockpatterns::addVaryingOutput<RtFloat>(sCtx, out, count, k_resultB);
+        stockpatterns::ColorOutputs result(sCtx, out, count, k_resultRGB);
         RtFloat* alpha = stockpatterns::addVaryingOutput<RtFloat>(sCtx, out, count, k_resultA);
         for (int i = 0; i < sCtx->numPts; ++i) {
             float const span = inMax[i] - inMin[i];
@@ -82,12 +76,10 @@ public:
                 float y = outMin[i] + x * (outMax[i] - outMin[i]);
                 return *clampOutput ? std::clamp(y, 0.0f, 1.0f) : y;
             };
-            result[i] = RtColorRGB(remap(input[i].r, bias[i].r, gain[i].r), remap(input[i].g, bias[i].g, gain[i].g),
-                                   remap(input[i].b, bias[i].b, gain[i].b));
-            red[i] = result[i].r;
-            green[i] = result[i].g;
-            blue[i] = result[i].b;
-            alpha[i] = result[i].Luminance();
+            RtColorRGB const c(remap(input[i].r, bias[i].r, gain[i].r), remap(input[i].g, bias[i].g, gain[i].g),
+                               remap(input[i].b, bias[i].b, gain[i].b));
+            result.set(i, c);
+            alpha[i] = c.Luminance();
         }
         *numOutputs = count;
         *outputs = out;

@@ -34,10 +34,7 @@ public:
             RixSCParamInfo(RtUString("missingColor"), k_RixSCColor),
             RixSCParamInfo(RtUString("missingAlpha"), k_RixSCFloat),
             RixSCParamInfo(RtUString("manifold"), k_RixSCPoint),  // (s, t, filter width): see PxrManifold2D
-            RixSCParamInfo(RtUString("resultRGB"), k_RixSCColor, k_RixSCOutput),
-            RixSCParamInfo(RtUString("resultR"), k_RixSCFloat, k_RixSCOutput),
-            RixSCParamInfo(RtUString("resultG"), k_RixSCFloat, k_RixSCOutput),
-            RixSCParamInfo(RtUString("resultB"), k_RixSCFloat, k_RixSCOutput),
+            STOCK_PATTERN_COLOR_OUTPUTS,
             RixSCParamInfo(RtUString("resultA"), k_RixSCFloat, k_RixSCOutput),
             RixSCParamInfo()};
         return table;
@@ -65,23 +62,24 @@ public:
         RixShadingContext::Allocator pool(sCtx);
         OutputSpecification* out = pool.AllocForPattern<OutputSpecification>(5);
         int count = 0;
-        RtColorRGB* rgb = stockpatterns::addVaryingOutput<RtColorRGB>(sCtx, out, count, k_resultRGB);
-        RtFloat* r = stockpatterns::addVaryingOutput<RtFloat>(sCtx, out, count, k_resultR);
-        RtFloat* g = stockpatterns::addVaryingOutput<RtFloat>(sCtx, out, count, k_resultG);
-        RtFloat* b = stockpatterns::addVaryingOutput<RtFloat>(sCtx, out, count, k_resultB);
+        stockpatterns::ColorOutputs result(sCtx, out, count, k_resultRGB);
+        RtColorRGB* rgb = result.rgb();
         RtFloat* a = stockpatterns::addVaryingOutput<RtFloat>(sCtx, out, count, k_resultA);
 
         reading.lookup.missingColor = *missingColor;
+        // The image's alpha (its fourth channel; 1 where it has none), read only when asked for.
+        bool const alphaRead = stockpatterns::isOutputRead(sCtx, k_resultA);
         bool const found = stockpatterns::readTexture(sCtx, *filename, reading.lookup,
                                                       stockpatterns::manifoldOf(sCtx, k_manifold), n,
-                                                      reading.invertT, reading.blur, rgb);
+                                                      reading.invertT, reading.blur, rgb, alphaRead ? a : nullptr);
         for (int i = 0; i < n; ++i) {
             if (found && *linearize)
                 rgb[i] = RtColorRGB(srgbToLinear(rgb[i].r), srgbToLinear(rgb[i].g), srgbToLinear(rgb[i].b));
-            r[i] = rgb[i].r;
-            g[i] = rgb[i].g;
-            b[i] = rgb[i].b;
-            a[i] = found ? 1.0f : *missingAlpha;
+            result.set(i, rgb[i]);
+            if (!found)
+                a[i] = *missingAlpha;
+            else if (!alphaRead)
+                a[i] = 1.0f;
         }
         *numOutputs = count;
         *outputs = out;
