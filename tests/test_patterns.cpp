@@ -34,6 +34,21 @@ RenderSettings fewSamples() {
     return settings;
 }
 
+/// The colour a network's `output` ("handle:resultRGB") gives the middle of the square, emitted as is:
+/// for patterns that write one colour over the whole square.
+RtColorRGB colour(std::string const& patterns, std::string const& output) {
+    auto r = test::renderRib(kHead + patterns + "Bxdf \"PxrConstant\" \"c\" \"reference color emitColor\" [\"" +
+                                 output + "\"]\n" + kSquare,
+                             fewSamples());
+    return RtColorRGB(r.channel(8, 8, 0), r.channel(8, 8, 1), r.channel(8, 8, 2));
+}
+
+void near(RtColorRGB const& c, float r, float g, float b) {
+    CHECK(c.r == Approx(r).margin(1e-4));
+    CHECK(c.g == Approx(g).margin(1e-4));
+    CHECK(c.b == Approx(b).margin(1e-4));
+}
+
 }  // namespace
 
 TEST_CASE("a connected parameter takes the pattern's value at every point", "[patterns]") {
@@ -241,18 +256,6 @@ TEST_CASE("PxrRamp interpolates its knots along the ramp shape and PxrChecker al
 
 TEST_CASE("PxrBlend and PxrRemap and PxrExposure and PxrToFloat3 combine and adjust colours as documented",
           "[patterns]") {
-    // Each writes one colour over the whole square; (s, t) from PxrVariable where a point-by-point value is wanted.
-    auto colour = [](std::string const& patterns, std::string const& output) {
-        auto r = test::renderRib(kHead + patterns + "Bxdf \"PxrConstant\" \"c\" \"reference color emitColor\" [\"" +
-                                     output + "\"]\n" + kSquare,
-                                 fewSamples());
-        return RtColorRGB(r.channel(8, 8, 0), r.channel(8, 8, 1), r.channel(8, 8, 2));
-    };
-    auto near = [](RtColorRGB const& c, float r, float g, float b) {
-        CHECK(c.r == Approx(r).margin(1e-4));
-        CHECK(c.g == Approx(g).margin(1e-4));
-        CHECK(c.b == Approx(b).margin(1e-4));
-    };
     std::string const layers = "\"color topRGB\" [0.2 0.6 1] \"color bottomRGB\" [0.5 0.5 0.25] ";
     SECTION("PxrBlend: Normal (19, the default) shows the top by its alpha; the modes blend channel by channel") {
         near(colour("Pattern \"PxrBlend\" \"b\" " + layers + "\"float topA\" [0.25]\n", "b:resultRGB"),
@@ -312,6 +315,100 @@ TEST_CASE("PxrBlend and PxrRemap and PxrExposure and PxrToFloat3 combine and adj
                     "\"float inputB\" [0.9]\n",
                     "f:resultRGB"),
              0.0f, 0.5f, 0.9f);
+    }
+}
+
+TEST_CASE("PxrColorCorrect, PxrGamma, PxrHSL, PxrInvert, PxrClamp and PxrToFloat adjust colours as documented",
+          "[patterns]") {
+    auto warns = [](std::string const& pattern, std::string const& message) {
+        auto r = test::renderRib(kHead + pattern + "Bxdf \"PxrConstant\" \"c\" \"reference color emitColor\" [\"x:resultRGB\"]\n" +
+                                     kSquare,
+                                 fewSamples());
+        CHECK(r.anyMessageContains(message));
+    };
+    SECTION("PxrColorCorrect: each correction in the order of its parameters; the defaults change nothing") {
+        std::string const cc = "Pattern \"PxrColorCorrect\" \"x\" \"color inputRGB\" ";
+        near(colour(cc + "[0.2 0.5 0.9]\n", "x:resultRGB"), 0.2f, 0.5f, 0.9f);
+        near(colour(cc + "[0.4 0.4 0.4] \"color rgbGain\" [1.25 0.85 0.55]\n", "x:resultRGB"), 0.5f, 0.34f, 0.22f);
+        near(colour(cc + "[0.5 0.25 1] \"vector gamma\" [2 2 2]\n", "x:resultRGB"), 0.25f, 0.0625f, 1.0f);
+        near(colour(cc + "[0.25 0.5 0.75] \"vector contrast\" [0.5 0.5 0.5]\n", "x:resultRGB"), 0.0f, 0.5f, 1.0f);
+        near(colour(cc + "[0.25 0.5 0.75] \"vector contrast\" [-1 -1 -1]\n", "x:resultRGB"), 0.5f, 0.5f, 0.5f);
+        near(colour(cc + "[0.4 0.2 0.6] \"vector inputMin\" [0.2 0.2 0.2] \"vector inputMax\" [0.6 0.6 0.6] "
+                         "\"vector outputMin\" [0.2 0.2 0.2] \"vector outputMax\" [0.6 0.6 0.6]\n",
+                    "x:resultRGB"),
+             0.4f, 0.2f, 0.6f);  // levels in then the same levels out: back where it was
+        near(colour(cc + "[0.4 0.2 0.6] \"vector inputMin\" [0.2 0.2 0.2] \"vector inputMax\" [0.6 0.6 0.6]\n",
+                    "x:resultRGB"),
+             0.5f, 0.0f, 1.0f);
+        near(colour(cc + "[1 0 0] \"vector hsv\" [0.5 1 1]\n", "x:resultRGB"), 0.0f, 1.0f, 1.0f);  // red's complement
+        near(colour(cc + "[1 0.5 0] \"vector hsv\" [0 0 1]\n", "x:resultRGB"), 1.0f, 1.0f, 1.0f);  // no saturation
+        near(colour(cc + "[0.1 0.2 0.4] \"float exposure\" [1]\n", "x:resultRGB"), 0.2f, 0.4f, 0.8f);
+        near(colour(cc + "[2 -1 0.5]\n", "x:resultRGB"), 2.0f, -1.0f, 0.5f);
+        near(colour(cc + "[2 -1 0.5] \"int clampOutput\" [1]\n", "x:resultRGB"), 1.0f, 0.0f, 0.5f);
+        // The mask mixes the corrected colour (here twice the input) into the input.
+        std::string const doubled = cc + "[0.2 0.4 0.6] \"color rgbGain\" [2 2 2] ";
+        near(colour(doubled + "\"float inputMask\" [0.25]\n", "x:resultRGB"), 0.25f, 0.5f, 0.75f);
+        near(colour(doubled + "\"float inputMask\" [0.25] \"int invertMask\" [1]\n", "x:resultRGB"), 0.35f, 0.7f,
+             1.05f);
+        near(colour(doubled + "\"float mixMask\" [0.5]\n", "x:resultRGB"), 0.3f, 0.6f, 0.9f);
+        // A connected input, as exporters write it: a texture (here a mix) tinted.
+        near(colour("Pattern \"PxrMix\" \"grey\" \"float mix\" [0.5]\n"
+                    "Pattern \"PxrColorCorrect\" \"x\" \"reference color inputRGB\" [\"grey:resultRGB\"] "
+                    "\"color rgbGain\" [1 0.5 0.25]\n",
+                    "x:resultRGB"),
+             0.5f, 0.25f, 0.125f);
+    }
+    SECTION("PxrGamma raises each channel to the gamma") {
+        near(colour("Pattern \"PxrGamma\" \"x\" \"color inputRGB\" [0.25 0.5 1] \"float gamma\" [0.5]\n", "x:resultRGB"),
+             0.5f, std::sqrt(0.5f), 1.0f);
+        near(colour("Pattern \"PxrGamma\" \"x\" \"color inputRGB\" [0.25 0.5 1] \"float gamma\" [2.2]\n", "x:resultRGB"),
+             std::pow(0.25f, 2.2f), std::pow(0.5f, 2.2f), 1.0f);
+    }
+    SECTION("PxrHSL turns the hue and scales saturation and lightness") {
+        std::string const hsl = "Pattern \"PxrHSL\" \"x\" \"color inputRGB\" ";
+        near(colour(hsl + "[0.2 0.5 0.7]\n", "x:resultRGB"), 0.2f, 0.5f, 0.7f);  // to HSL and back
+        near(colour(hsl + "[1 0 0] \"float hue\" [0.333333333]\n", "x:resultRGB"), 0.0f, 1.0f, 0.0f);
+        near(colour(hsl + "[1 0 0] \"float hue\" [-0.333333333]\n", "x:resultRGB"), 0.0f, 0.0f, 1.0f);
+        near(colour(hsl + "[1 0 0] \"float saturation\" [0]\n", "x:resultRGB"), 0.5f, 0.5f, 0.5f);
+        near(colour(hsl + "[1 0 0] \"float luminance\" [0.5]\n", "x:resultRGB"), 0.5f, 0.0f, 0.0f);
+    }
+    SECTION("PxrInvert inverts the chosen channels of RGB, HSL or HSV") {
+        std::string const inv = "Pattern \"PxrInvert\" \"x\" \"color inputRGB\" [0.2 0.4 0.9] ";
+        near(colour(inv + "\n", "x:resultRGB"), 0.8f, 0.6f, 0.1f);
+        near(colour(inv + "\"int invertChannel1\" [0]\n", "x:resultRGB"), 0.8f, 0.4f, 0.1f);
+        // HSL, lightness only: 0.55 becomes 0.45, hue and saturation stay.
+        near(colour(inv + "\"int colorModel\" [1] \"int invertChannel0\" [0] \"int invertChannel1\" [0]\n",
+                    "x:resultRGB"),
+             0.1f, 0.3f, 0.8f);
+        near(colour("Pattern \"PxrInvert\" \"x\" \"color inputRGB\" [1 0 0] \"int colorModel\" [2] "
+                    "\"int invertChannel1\" [0] \"int invertChannel2\" [0]\n",
+                    "x:resultRGB"),
+             0.0f, 1.0f, 1.0f);  // the hue turns to the complement
+        near(colour("Pattern \"PxrInvert\" \"x\" \"color inputRGB\" [1.5 -0.5 0.5]\n", "x:resultRGB"), 0.0f, 1.0f,
+             0.5f);  // kept within black and white
+        warns("Pattern \"PxrInvert\" \"x\" \"int colorModel\" [5]\n",
+              "PxrInvert: colorModel 5 is not one of 0 (RGB), 1 (HSL), 2 (HSV); RGB is used");
+    }
+    SECTION("PxrClamp keeps channels in range, or wraps them with modulus") {
+        near(colour("Pattern \"PxrClamp\" \"x\" \"color inputRGB\" [-0.5 0.5 1.5]\n", "x:resultRGB"), 0.0f, 0.5f, 1.0f);
+        near(colour("Pattern \"PxrClamp\" \"x\" \"color inputRGB\" [-0.5 0.5 1.5] \"color min\" [0.2 0.6 0] "
+                    "\"color max\" [1 1 1.2]\n",
+                    "x:resultRGB"),
+             0.2f, 0.6f, 1.2f);
+        near(colour("Pattern \"PxrClamp\" \"x\" \"color inputRGB\" [1.25 -0.25 0.5] \"int modulus\" [1]\n",
+                    "x:resultRGB"),
+             0.25f, 0.75f, 0.5f);
+    }
+    SECTION("PxrToFloat hands on one channel") {
+        std::string const toColour = "Pattern \"PxrToFloat3\" \"grey\" \"reference float input\" [\"f:resultF\"]\n";
+        near(colour("Pattern \"PxrToFloat\" \"f\" \"color input\" [0.2 0.5 0.9]\n" + toColour, "grey:resultRGB"), 0.2f,
+             0.2f, 0.2f);
+        near(colour("Pattern \"PxrToFloat\" \"f\" \"color input\" [0.2 0.5 0.9] \"int mode\" [2]\n" + toColour,
+                    "grey:resultRGB"),
+             0.9f, 0.9f, 0.9f);
+        warns("Pattern \"PxrToFloat\" \"f\" \"int mode\" [7]\n"
+              "Pattern \"PxrToFloat3\" \"x\" \"reference float input\" [\"f:resultF\"]\n",
+              "PxrToFloat: mode 7 is not one of 0 (red), 1 (green), 2 (blue); red is used");
     }
 }
 
