@@ -484,6 +484,37 @@ TEST_CASE("a shader of the scene's own is rendered with the defaults its source 
     CHECK(test::warningsContaining(without, "declares") == 0);
 }
 
+TEST_CASE("a shader whose source never reads Cs is coloured by a colour parameter of its own", "[rib]") {
+    std::string const brick = "surface brick(float Ka = 1, Kd = 1; color specularcolor = 1;\n"
+                              "  output color Cout = 0; color brickcolor = color (.5, .15, .14), mortarcolor = .5)\n"
+                              "{ Ci = brickcolor * Kd * diffuse(N); /* Cs is not read */ }\n";
+    CHECK(ownSurfaceColour(brick, "brick") == "brickcolor");  // not the specular colour, nor an output
+    CHECK(ownSurfaceColour(brick + "surface other(color Cbase = 1) { Ci = Cs; }", "brick").empty());  // reads Cs
+    CHECK(ownSurfaceColour("surface s(color specularcolor = 1; color envColor = 1) { Ci = 1; }", "s").empty());
+    CHECK(ownSurfaceColour("surface s(color CsTint = 1) { Ci = CsTint; }", "s") == "CsTint");  // Cs as part of a word
+
+    std::string const folder = test::outputDir() + "/own-colour";
+    std::filesystem::create_directories(folder);
+    std::ofstream(folder + "/brick.sl") << brick;
+    std::ofstream(folder + "/tinted.sl") << "surface tinted(float Kd = 1; color tint = (0, 1, 0)) { Ci = Cs * tint; }\n";
+    std::string const head = "Option \"searchpath\" \"string shader\" [\"" + folder + "\"]\nWorldBegin\nColor [0 0 1]\n";
+    Diagnostics diagnostics(false);
+    Scene scene = test::parseRib(head + "Surface \"brick\"\nSphere 1 -1 1 360\n"
+                                        "Surface \"brick\" \"color brickcolor\" [0.2 0.3 0.4]\nSphere 1 -1 1 360\n"
+                                        "Surface \"tinted\"\nSphere 1 -1 1 360\n",
+                                 diagnostics);
+    REQUIRE(scene.shapes.size() == 3u);
+    auto colourOf = [&](size_t shape) {
+        return scene.materials[static_cast<size_t>(scene.shapes[shape]->material)].params.getColor("surfaceColor",
+                                                                                                   Vec3(-1.0f));
+    };
+    CHECK(colourOf(0) == Vec3(0.5f, 0.15f, 0.14f));  // its default, not the blue Color
+    CHECK(colourOf(1) == Vec3(0.2f, 0.3f, 0.4f));    // the RIB's value
+    CHECK(colourOf(2) == Vec3(0.0f, 0.0f, 1.0f));    // a shader that reads Cs keeps Color
+    CHECK(test::warningsContaining(diagnostics, "coloured by its brickcolor (its default), since its source never "
+                                                "reads Cs") == 1);
+}
+
 TEST_CASE("texturename raytrace is RenderMan's traced lookup and never a missing texture", "[rib]") {
     // Classic scenes hand "raytrace" to environment() and shadow() to trace rays instead of reading a map.
     Diagnostics diagnostics(false);

@@ -99,6 +99,8 @@ private:
         std::map<std::string, std::string> user;   ///< Attribute "user" values, which conditions read
         /// A classic Surface shader in effect (when no Bxdf is): its name and parameters.
         std::shared_ptr<MaterialDesc> surface;
+        /// The colour that surface takes in place of Color, when its source never reads Cs.
+        std::optional<Vec3> surfaceOwnColour;
         /// An AreaLightSource (or PxrMeshLight) in effect: the shapes that follow emit its light.
         std::shared_ptr<AreaLightDesc> areaLight;
     };

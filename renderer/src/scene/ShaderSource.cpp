@@ -127,13 +127,19 @@ std::string parameterList(std::string const& text, std::string const& shader) {
     return {};
 }
 
-}  // namespace
+/// One declared parameter: its type, name, default as written, and whether it is an output.
+struct Declared {
+    std::string type, name, value;
+    bool output;
+};
 
-ShaderDefaults surfaceShaderDefaults(std::string const& text, std::string const& shader) {
-    ShaderDefaults defaults;
-    static std::regex const typed(R"(^(?:output\s+)?(?:(?:uniform|varying)\s+)?(\w+)\s+(\w+)$)");
+/// The parameters of `shader` in `text`, in the order they are declared.
+std::vector<Declared> declaredParameters(std::string const& text, std::string const& shader) {
+    std::vector<Declared> declared;
+    static std::regex const typed(R"(^(output\s+)?(?:(?:uniform|varying)\s+)?(\w+)\s+(\w+)$)");
     for (std::string const& declaration : splitOutsideParentheses(parameterList(withoutComments(text), shader), ';')) {
         std::string type;
+        bool output = false;
         for (std::string const& piece : splitOutsideParentheses(declaration, ',')) {
             size_t const equals = piece.find('=');
             if (equals == std::string::npos) continue;
@@ -141,18 +147,49 @@ ShaderDefaults surfaceShaderDefaults(std::string const& text, std::string const&
             if (name.size() > kLongestDefault) continue;
             std::smatch words;
             if (std::regex_match(name, words, typed)) {
-                type = words[1].str();
-                name = words[2].str();
+                output = words[1].matched;
+                type = words[2].str();
+                name = words[3].str();
             }
-            std::string const value = piece.substr(equals + 1);
-            std::vector<float> parsed(1);
-            if (type == "float" && plainNumber(value, parsed[0]))
-                defaults[name] = parsed;
-            else if (type == "color" && plainColour(value, parsed))
-                defaults[name] = parsed;
+            declared.push_back({type, name, piece.substr(equals + 1), output});
         }
     }
+    return declared;
+}
+
+/// Whether `text` (without comments) has `word` as a whole word anywhere.
+bool hasWord(std::string const& text, std::string const& word) {
+    for (size_t at = text.find(word); at != std::string::npos; at = text.find(word, at + 1))
+        if (afterWord(text, at, word) != std::string::npos) return true;
+    return false;
+}
+
+}  // namespace
+
+ShaderDefaults surfaceShaderDefaults(std::string const& text, std::string const& shader) {
+    ShaderDefaults defaults;
+    for (Declared const& p : declaredParameters(text, shader)) {
+        std::vector<float> parsed(1);
+        if (p.type == "float" && plainNumber(p.value, parsed[0]))
+            defaults[p.name] = parsed;
+        else if (p.type == "color" && plainColour(p.value, parsed))
+            defaults[p.name] = parsed;
+    }
     return defaults;
+}
+
+std::string ownSurfaceColour(std::string const& text, std::string const& shader) {
+    if (hasWord(withoutComments(text), "Cs")) return {};
+    static char const* const notTheSurface[] = {"spec", "highlight", "refl", "env", "shadow", "opac"};
+    for (Declared const& p : declaredParameters(text, shader)) {
+        if (p.type != "color" || p.output) continue;
+        std::string lower = p.name;
+        std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return std::tolower(c); });
+        if (std::none_of(std::begin(notTheSurface), std::end(notTheSurface),
+                         [&](char const* word) { return lower.find(word) != std::string::npos; }))
+            return p.name;
+    }
+    return {};
 }
 
 }  // namespace bxdflab

@@ -17,6 +17,9 @@ using ShaderDefaults = std::map<std::string, std::vector<float>>;
 struct DeclaredDefaults {
     std::string file;  ///< the source file read, empty when none was found
     ShaderDefaults values;
+    /// The colour parameter a shader that never reads Cs colours its surface with (brick.sl's
+    /// brickcolor, LGbrushedmetal.sl's basecolor); empty when it reads Cs or has no such parameter.
+    std::string ownColour;
 };
 
 /// The defaults of the surface shader `shader` declared in RenderMan Shading
@@ -26,5 +29,10 @@ struct DeclaredDefaults {
 /// Defaults written as expressions or of other types are left out; a source
 /// without that shader gives none.
 ShaderDefaults surfaceShaderDefaults(std::string const& text, std::string const& shader);
+
+/// For a surface shader `shader` in `text` whose code never reads the surface colour Cs: its first
+/// input colour parameter that is not a specular, highlight, reflection, environment, shadow or
+/// opacity colour, which is then what colours it. Empty when the shader reads Cs or has none.
+std::string ownSurfaceColour(std::string const& text, std::string const& shader);
 
 }  // namespace bxdflab

@@ -122,6 +122,7 @@ DeclaredDefaults const& SceneBuilder::declaredDefaults(std::string const& name) 
     in.read(text.data(), static_cast<std::streamsize>(text.size()));
     text.resize(static_cast<size_t>(in.gcount()));
     entry->second.values = surfaceShaderDefaults(text, shader);
+    entry->second.ownColour = ownSurfaceColour(text, shader);
     return entry->second;
 }
 
@@ -188,9 +189,26 @@ void SceneBuilder::surface(RequestReader& in) {
     // A shader of the scene's own is rendered as the standard one it most likely resembles, with the
     // standard parameters it shares (most were written from the standard shaders).
     bool lookalike = false;
+    std::optional<Vec3> ownColour;
     if (!known) {
         auto const [like, why] = lookalikeSurface(base, params, declared.count("Ks") > 0);
         std::string const sourceDefaults = useDeclared(like);
+        // A shader that never reads Cs has a colour of its own: the RIB's value of it, else its source's default.
+        std::string colouring;
+        if (!source.ownColour.empty()) {
+            auto const declaredValue = declared.find(source.ownColour);
+            Param const* written = params.find(source.ownColour);
+            bool const inRib = written && written->decl.type == ParamType::Color && written->floats.size() == 3u;
+            std::vector<float> const* rgb = inRib ? &written->floats
+                                            : declaredValue != declared.end() && declaredValue->second.size() == 3u
+                                                ? &declaredValue->second
+                                                : nullptr;
+            if (rgb) {
+                ownColour = Vec3((*rgb)[0], (*rgb)[1], (*rgb)[2]);
+                colouring = "; coloured by its " + source.ownColour + " (" + (inRib ? "as given" : "its default") +
+                            "), since its source never reads Cs";
+            }
+        }
         bool const mapped =
             like != "metal" && params.has("texturename") && params.getString("texturename", "") != kRayTraced;
         // RenderMan's own materials (PxrDisney, PxrSurface, ...) are Bxdfs, which Surface does not give.
@@ -206,6 +224,7 @@ void SceneBuilder::surface(RequestReader& in) {
                      (refracts ? "; the light it refracts is not rendered, so it is opaque (Opacity still shows "
                                  "what lies behind it)"
                                : "") +
+                     colouring +
                      (renderMansBxdf ? "; \"" + base + "\" is a Bxdf, given with Bxdf \"" + base + "\" \"handle\""
                                      : ""));
         name = like;
@@ -254,6 +273,7 @@ void SceneBuilder::surface(RequestReader& in) {
         }
     }
     state().surface = shader;
+    state().surfaceOwnColour = ownColour;
 }
 
 void SceneBuilder::classicTexture(std::string const& file, SourceLocation const& where, MaterialDesc& shader,
@@ -339,7 +359,7 @@ void SceneBuilder::madeTexture(RequestReader& in, bool wrapModes) {
 int SceneBuilder::classicMaterial() {
     // One material per shader, colour and opacity: the classic shaders read Cs and Os.
     MaterialDesc material = *state().surface;
-    Vec3 const c = state().color, o = state().opacity;
+    Vec3 const c = state().surfaceOwnColour.value_or(state().color), o = state().opacity;
     material.params.add(colorParam("surfaceColor", c));
     material.params.add(colorParam("surfaceOpacity", o));
     material.params.add(colorParam("ambient", m_ambient));
@@ -363,9 +383,12 @@ int SceneBuilder::primvarColorMaterial() {
     matte->plugin = "ClassicSurface";
     matte->handle = "default material (the shape's Cs)";
     matte->params.add(stringParam("shader", "matte"));
+    std::optional<Vec3> const savedColour = state().surfaceOwnColour;
     state().surface = matte;
+    state().surfaceOwnColour.reset();
     int index = classicMaterial();
     state().surface = saved;
+    state().surfaceOwnColour = savedColour;
     if (m_unshaded.empty() || m_unshaded.back().material != index)
         m_unshaded.push_back({index, state().color, state().opacity});
     return index;
