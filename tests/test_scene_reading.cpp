@@ -488,22 +488,30 @@ TEST_CASE("a shader whose source never reads Cs is coloured by a colour paramete
     std::string const brick = "surface brick(float Ka = 1, Kd = 1; color specularcolor = 1;\n"
                               "  output color Cout = 0; color brickcolor = color (.5, .15, .14), mortarcolor = .5)\n"
                               "{ Ci = brickcolor * Kd * diffuse(N); /* Cs is not read */ }\n";
-    CHECK(ownSurfaceColour(brick, "brick") == "brickcolor");  // not the specular colour, nor an output
-    CHECK(ownSurfaceColour(brick + "surface other(color Cbase = 1) { Ci = Cs; }", "brick").empty());  // reads Cs
-    CHECK(ownSurfaceColour("surface s(color specularcolor = 1; color envColor = 1) { Ci = 1; }", "s").empty());
-    CHECK(ownSurfaceColour("surface s(color CsTint = 1) { Ci = CsTint; }", "s") == "CsTint");  // Cs as part of a word
+    using Names = std::vector<std::string>;
+    CHECK(ownSurfaceColours(brick, "brick") == Names{"brickcolor"});  // not the specular colour, nor an output
+    CHECK(ownSurfaceColours(brick + "surface other(color Cbase = 1) { Ci = Cs; }", "brick").empty());  // reads Cs
+    CHECK(ownSurfaceColours("surface s(color specularcolor = 1; color envColor = 1) { Ci = 1; }", "s").empty());
+    CHECK(ownSurfaceColours("surface s(color CsTint = 1) { Ci = CsTint; }", "s") == Names{"CsTint"});  // a longer word
+    // A set: the checker's two colours, or lettered ones, but not a colour of another name between them.
+    CHECK(ownSurfaceColours("surface c(color color1 = 0, mortar = 1, color2 = 1) { Ci = 1; }", "c") ==
+          Names{"color1", "color2"});
+    CHECK(ownSurfaceColours("surface c(color colorA = 0; color colorB = 1) { Ci = 1; }", "c") ==
+          Names{"colorA", "colorB"});
 
     std::string const folder = test::outputDir() + "/own-colour";
     std::filesystem::create_directories(folder);
     std::ofstream(folder + "/brick.sl") << brick;
     std::ofstream(folder + "/tinted.sl") << "surface tinted(float Kd = 1; color tint = (0, 1, 0)) { Ci = Cs * tint; }\n";
+    std::ofstream(folder + "/checks.sl") << "surface checks(color color1 = 0, color2 = 1) { Ci = diffuse(N); }\n";
     std::string const head = "Option \"searchpath\" \"string shader\" [\"" + folder + "\"]\nWorldBegin\nColor [0 0 1]\n";
     Diagnostics diagnostics(false);
     Scene scene = test::parseRib(head + "Surface \"brick\"\nSphere 1 -1 1 360\n"
                                         "Surface \"brick\" \"color brickcolor\" [0.2 0.3 0.4]\nSphere 1 -1 1 360\n"
-                                        "Surface \"tinted\"\nSphere 1 -1 1 360\n",
+                                        "Surface \"tinted\"\nSphere 1 -1 1 360\n"
+                                        "Surface \"checks\" \"color color2\" [0 1 0]\nSphere 1 -1 1 360\n",
                                  diagnostics);
-    REQUIRE(scene.shapes.size() == 3u);
+    REQUIRE(scene.shapes.size() == 4u);
     auto colourOf = [&](size_t shape) {
         return scene.materials[static_cast<size_t>(scene.shapes[shape]->material)].params.getColor("surfaceColor",
                                                                                                    Vec3(-1.0f));
@@ -511,8 +519,36 @@ TEST_CASE("a shader whose source never reads Cs is coloured by a colour paramete
     CHECK(colourOf(0) == Vec3(0.5f, 0.15f, 0.14f));  // its default, not the blue Color
     CHECK(colourOf(1) == Vec3(0.2f, 0.3f, 0.4f));    // the RIB's value
     CHECK(colourOf(2) == Vec3(0.0f, 0.0f, 1.0f));    // a shader that reads Cs keeps Color
+    CHECK(colourOf(3) == Vec3(0.0f, 0.5f, 0.0f));    // the average of black and the green given
+    CHECK(test::warningsContaining(diagnostics, "coloured by the average of its color1 (its default) and color2 "
+                                                "(as given)") == 1);
     CHECK(test::warningsContaining(diagnostics, "coloured by its brickcolor (its default), since its source never "
                                                 "reads Cs") == 1);
+}
+
+TEST_CASE("a shader whose source reads no light is rendered as constant", "[rib]") {
+    CHECK(readsNoLight("surface glow(float attenuation = 2) { Ci = Cs * pow(abs(N.I), attenuation); }"));
+    CHECK(readsNoLight("surface sky(color skycolor = 1) { /* Ci = diffuse(N); */ Ci = skycolor; }"));  // a comment
+    CHECK_FALSE(readsNoLight("surface nothing(float Kd = 1) { }"));  // sets no colour: nothing to go by
+    CHECK_FALSE(readsNoLight("surface m() { Ci = Cs * diffuse(normalize(N)); }"));
+    CHECK_FALSE(readsNoLight("surface m() { illuminance(P, N, PI/2) { Ci += Cl; } }"));
+    CHECK_FALSE(readsNoLight("#include \"material.h\"\nsurface m() { Ci = MaterialPlastic(N); }"));  // unknown
+
+    std::string const folder = test::outputDir() + "/unlit";
+    std::filesystem::create_directories(folder);
+    std::ofstream(folder + "/KMPuffyclouds.sl") << "surface KMPuffyclouds(float Ka = 0, Kd = 0; color skycolor = "
+                                                   "color(.15, .15, .6); color cloudcolor = 1)\n"
+                                                   "{ Ci = mix(skycolor, cloudcolor, noise(P)); }\n";
+    Diagnostics diagnostics(false);
+    Scene scene = test::parseRib("Option \"searchpath\" \"string shader\" [\"" + folder +
+                                     "\"]\nWorldBegin\nSurface \"KMPuffyclouds\"\nSphere 1 -1 1 360\n",
+                                 diagnostics);
+    REQUIRE(scene.shapes.size() == 1u);
+    MaterialDesc const& sky = scene.materials[static_cast<size_t>(scene.shapes[0]->material)];
+    CHECK(sky.params.getString("shader", "") == "constant");
+    CHECK(sky.params.getColor("surfaceColor", Vec3(-1.0f)) == Vec3(0.15f, 0.15f, 0.6f));
+    CHECK(test::warningsContaining(diagnostics, "rendered as \"constant\", as its source KMPuffyclouds.sl reads no "
+                                                "light") == 1);
 }
 
 TEST_CASE("texturename raytrace is RenderMan's traced lookup and never a missing texture", "[rib]") {

@@ -178,18 +178,44 @@ ShaderDefaults surfaceShaderDefaults(std::string const& text, std::string const&
     return defaults;
 }
 
-std::string ownSurfaceColour(std::string const& text, std::string const& shader) {
+bool readsNoLight(std::string const& text) {
+    std::string const code = withoutComments(text);
+    if (code.find("#include") != std::string::npos) return false;
+    static char const* const gatherLight[] = {"diffuse",  "specular",     "specularbrdf", "phong",
+                                              "ambient",  "illuminance",  "Cl",           "trace",
+                                              "occlusion", "indirectdiffuse", "gather",   "caustic",
+                                              "photonmap", "subsurface"};
+    return hasWord(code, "Ci") && std::none_of(std::begin(gatherLight), std::end(gatherLight),
+                                               [&](char const* word) { return hasWord(code, word); });
+}
+
+std::vector<std::string> ownSurfaceColours(std::string const& text, std::string const& shader) {
     if (hasWord(withoutComments(text), "Cs")) return {};
     static char const* const notTheSurface[] = {"spec", "highlight", "refl", "env", "shadow", "opac"};
+    std::vector<std::string> candidates;
     for (Declared const& p : declaredParameters(text, shader)) {
         if (p.type != "color" || p.output) continue;
         std::string lower = p.name;
         std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return std::tolower(c); });
         if (std::none_of(std::begin(notTheSurface), std::end(notTheSurface),
                          [&](char const* word) { return lower.find(word) != std::string::npos; }))
-            return p.name;
+            candidates.push_back(p.name);
     }
-    return {};
+    if (candidates.empty()) return {};
+    // A set's members share the first one's stem and differ in a number or a capital letter at the end.
+    auto stemOf = [](std::string const& name) {
+        size_t end = name.find_last_not_of("0123456789");
+        if (end + 1 < name.size()) return name.substr(0, end + 1);
+        bool const lettered = name.size() >= 2 && std::isupper(static_cast<unsigned char>(name.back())) &&
+                              std::islower(static_cast<unsigned char>(name[name.size() - 2]));
+        return lettered ? name.substr(0, name.size() - 1) : std::string();
+    };
+    std::string const stem = stemOf(candidates.front());
+    if (stem.empty()) return {candidates.front()};
+    std::vector<std::string> set;
+    for (std::string const& name : candidates)
+        if (stemOf(name) == stem) set.push_back(name);
+    return set;
 }
 
 }  // namespace bxdflab

@@ -17,9 +17,12 @@ using ShaderDefaults = std::map<std::string, std::vector<float>>;
 struct DeclaredDefaults {
     std::string file;  ///< the source file read, empty when none was found
     ShaderDefaults values;
-    /// The colour parameter a shader that never reads Cs colours its surface with (brick.sl's
-    /// brickcolor, LGbrushedmetal.sl's basecolor); empty when it reads Cs or has no such parameter.
-    std::string ownColour;
+    /// The colour parameters a shader that never reads Cs colours its surface with, to be averaged
+    /// (brick.sl's brickcolor; a checker's color1 and color2); none when it reads Cs or has no such one.
+    std::vector<std::string> ownColours;
+    /// Whether the source is known to read no light (no diffuse(), illuminance, Cl, ... and no #include
+    /// that could hide one): its surface shows its colour whatever lights it, as constant's does.
+    bool unlit = false;
 };
 
 /// The defaults of the surface shader `shader` declared in RenderMan Shading
@@ -32,7 +35,14 @@ ShaderDefaults surfaceShaderDefaults(std::string const& text, std::string const&
 
 /// For a surface shader `shader` in `text` whose code never reads the surface colour Cs: its first
 /// input colour parameter that is not a specular, highlight, reflection, environment, shadow or
-/// opacity colour, which is then what colours it. Empty when the shader reads Cs or has none.
-std::string ownSurfaceColour(std::string const& text, std::string const& shader);
+/// opacity colour, which is then what colours it; when that one is one of a numbered or lettered
+/// set (color1, color2; colorA, colorB), the whole set, whose average colours it. Empty when the
+/// shader reads Cs or has none.
+std::vector<std::string> ownSurfaceColours(std::string const& text, std::string const& shader);
+
+/// Whether shading language source `text` reads no light: it calls none of the functions that gather
+/// light (diffuse, specular, phong, ambient, illuminance, trace, ...) nor reads the light colour Cl, and
+/// includes no other file, and it sets a colour Ci. False when it might read light or sets none.
+bool readsNoLight(std::string const& text);
 
 }  // namespace bxdflab

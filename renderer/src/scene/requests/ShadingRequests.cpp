@@ -122,7 +122,8 @@ DeclaredDefaults const& SceneBuilder::declaredDefaults(std::string const& name) 
     in.read(text.data(), static_cast<std::streamsize>(text.size()));
     text.resize(static_cast<size_t>(in.gcount()));
     entry->second.values = surfaceShaderDefaults(text, shader);
-    entry->second.ownColour = ownSurfaceColour(text, shader);
+    entry->second.ownColours = ownSurfaceColours(text, shader);
+    entry->second.unlit = readsNoLight(text);
     return entry->second;
 }
 
@@ -191,23 +192,34 @@ void SceneBuilder::surface(RequestReader& in) {
     bool lookalike = false;
     std::optional<Vec3> ownColour;
     if (!known) {
-        auto const [like, why] = lookalikeSurface(base, params, declared.count("Ks") > 0);
+        auto [like, why] = lookalikeSurface(base, params, declared.count("Ks") > 0);
+        if (source.unlit) {  // a glow, a sky, a star field: what it shows does not depend on the lights
+            like = "constant";
+            why = "as its source " + fs::path(source.file).filename().string() + " reads no light";
+        }
         std::string const sourceDefaults = useDeclared(like);
-        // A shader that never reads Cs has a colour of its own: the RIB's value of it, else its source's default.
+        // A shader that never reads Cs has a colour of its own: the RIB's value of it, else its source's default
+        // (the average of a set: a checker's two colours).
         std::string colouring;
-        if (!source.ownColour.empty()) {
-            auto const declaredValue = declared.find(source.ownColour);
-            Param const* written = params.find(source.ownColour);
+        Vec3 sum(0.0f);
+        int found = 0;
+        for (std::string const& colourName : source.ownColours) {
+            auto const declaredValue = declared.find(colourName);
+            Param const* written = params.find(colourName);
             bool const inRib = written && written->decl.type == ParamType::Color && written->floats.size() == 3u;
             std::vector<float> const* rgb = inRib ? &written->floats
                                             : declaredValue != declared.end() && declaredValue->second.size() == 3u
                                                 ? &declaredValue->second
                                                 : nullptr;
-            if (rgb) {
-                ownColour = Vec3((*rgb)[0], (*rgb)[1], (*rgb)[2]);
-                colouring = "; coloured by its " + source.ownColour + " (" + (inRib ? "as given" : "its default") +
-                            "), since its source never reads Cs";
-            }
+            if (!rgb) continue;  // a default written as an expression: the others stand for it
+            sum = sum + Vec3((*rgb)[0], (*rgb)[1], (*rgb)[2]);
+            colouring +=
+                std::string(found++ ? " and " : "") + colourName + (inRib ? " (as given)" : " (its default)");
+        }
+        if (found) {
+            ownColour = sum / static_cast<float>(found);
+            colouring = "; coloured by " + std::string(found > 1 ? "the average of " : "") + "its " + colouring +
+                        ", since its source never reads Cs";
         }
         bool const mapped =
             like != "metal" && params.has("texturename") && params.getString("texturename", "") != kRayTraced;
