@@ -412,6 +412,89 @@ TEST_CASE("PxrColorCorrect, PxrGamma, PxrHSL, PxrInvert, PxrClamp and PxrToFloat
     }
 }
 
+TEST_CASE("PxrWorley and PxrVoronoise lay cells on the surface as documented", "[patterns]") {
+    // Both feed a PxrToFloat3 of resultF, emitted: each pixel shows the pattern's value there.
+    auto cells = [](std::string const& pattern, int spp = 4) {
+        RenderSettings settings;
+        settings.spp = spp;
+        return test::renderRib(kHead + pattern +
+                                   "\nPattern \"PxrToFloat3\" \"grey\" \"reference float input\" [\"w:resultF\"]\n"
+                                   "Bxdf \"PxrConstant\" \"c\" \"reference color emitColor\" [\"grey:resultRGB\"]\n" +
+                                   kSquare,
+                               settings);
+    };
+    auto spreadOf = [](test::RenderOutcome const& r) {
+        double sum = 0, squares = 0;
+        int const n = r.width * r.height;
+        for (int y = 0; y < r.height; ++y)
+            for (int x = 0; x < r.width; ++x) {
+                sum += r.channel(x, y, 0);
+                squares += r.channel(x, y, 0) * r.channel(x, y, 0);
+            }
+        return std::sqrt(std::max(0.0, squares / n - (sum / n) * (sum / n)));
+    };
+    SECTION("PxrWorley without jitter: F1 is the distance to the middle of the pixel's square of (s, t)") {
+        // frequency 2: squares of half a unit, middles at 0.25 and 0.75 (in units of the squares: at k + 0.5).
+        std::string const grid = "Pattern \"PxrWorley\" \"w\" \"float frequency\" [2] \"float jitter\" [0] ";
+        auto euclidean = cells(grid + "\"float c1\" [1] \"float c2\" [0]", 64);
+        auto chebyshev = cells(grid + "\"float c1\" [1] \"float c2\" [0] \"int distancemetric\" [2]", 64);
+        auto manhattan = cells(grid + "\"float c1\" [1] \"float c2\" [0] \"int distancemetric\" [1]", 64);
+        for (int x : {1, 3, 9, 12})
+            for (int y : {2, 5, 13}) {
+                float const dx = std::fabs(2.0f * pixelU(x) - std::floor(2.0f * pixelU(x)) - 0.5f);
+                float const dy = std::fabs(2.0f * pixelV(y) - std::floor(2.0f * pixelV(y)) - 0.5f);
+                CHECK(euclidean.channel(x, y, 0) == Approx(std::sqrt(dx * dx + dy * dy)).margin(0.03));
+                CHECK(chebyshev.channel(x, y, 0) == Approx(std::max(dx, dy)).margin(0.03));
+                CHECK(manhattan.channel(x, y, 0) == Approx(dx + dy).margin(0.03));
+            }
+        // F2 at a square's middle is the next middle's distance, one square away; c1 F1 + c2 F2 is clamped.
+        auto second = cells(grid + "\"float c1\" [0] \"float c2\" [0.5]", 64);
+        // (u, v) = (0.28, 0.72) is (0.56, 1.44) in squares: 1/16 from the middle (0.5, 1.5), 0.94 from the next two.
+        CHECK(second.channel(4, 4, 0) == Approx(0.5f * std::hypot(0.9375f, 0.0625f)).margin(0.03));
+        auto defaults = cells(grid);  // 0.8 F1 - 0.2 F2 < 0 near a middle: clamped to 0
+        CHECK(defaults.channel(4, 4, 0) == 0.0f);
+        auto inverted = cells(grid + "\"int invert\" [1]");
+        for (int x = 0; x < 16; ++x) CHECK(inverted.channel(x, 7, 0) == Approx(1.0f - defaults.channel(x, 7, 0)));
+    }
+    SECTION("PxrWorley with jitter: irregular cells in 0 to 1; what is not modelled is said") {
+        auto r = cells("Pattern \"PxrWorley\" \"w\" \"int shape\" [2] \"int distancemetric\" [7] \"float randomScale\" [1]");
+        for (int y = 0; y < 16; ++y)
+            for (int x = 0; x < 16; ++x) {
+                CHECK(r.channel(x, y, 0) >= 0.0f);
+                CHECK(r.channel(x, y, 0) <= 1.0f);
+            }
+        CHECK(spreadOf(r) > 0.05);
+        CHECK(r.anyMessageContains("PxrWorley: shape 2 is not modelled"));
+        CHECK(r.anyMessageContains("PxrWorley: distancemetric 7 is not one of 0 (Euclidean), 1 (Manhattan), "
+                                   "2 (Chebyshev), 3 (Minkowski); Euclidean is used"));
+        CHECK(r.anyMessageContains("PxrWorley: randomScale is not modelled"));
+    }
+    SECTION("PxrVoronoise: flat cells without smoothness, a smooth noise with it, in 0 to 1") {
+        std::string const one = "Pattern \"PxrVoronoise\" \"w\" \"float frequency\" [2] \"int octaves\" [1] ";
+        auto flat = cells(one + "\"float jitter\" [1] \"float smoothness\" [0]");
+        auto smooth = cells(one + "\"float jitter\" [1] \"float smoothness\" [1]");
+        for (auto const* r : {&flat, &smooth})
+            for (int y = 0; y < 16; ++y)
+                for (int x = 0; x < 16; ++x) {
+                    CHECK(r->channel(x, y, 0) >= 0.0f);
+                    CHECK(r->channel(x, y, 0) <= 1.0f);
+                }
+        // Averaging its neighbours' values narrows the spread of the smooth one; the flat one takes
+        // each cell's own value, so neighbouring pixels (most of them in one cell) mostly agree.
+        CHECK(spreadOf(smooth) < 0.7 * spreadOf(flat));
+        auto agreeing = [](test::RenderOutcome const& r) {
+            int same = 0;
+            for (int y = 0; y < 16; ++y)
+                for (int x = 0; x + 1 < 16; ++x) same += std::fabs(r.channel(x, y, 0) - r.channel(x + 1, y, 0)) < 0.01f;
+            return same;
+        };
+        CHECK(agreeing(flat) > 16 * 15 / 2);
+        CHECK(agreeing(flat) > agreeing(smooth));
+        auto turbulent = cells(one + "\"float jitter\" [1] \"float smoothness\" [1] \"int turbulent\" [1]");
+        CHECK_FALSE(turbulent.rgba == smooth.rgba);
+    }
+}
+
 TEST_CASE("PxrFractal is a noise in 0 to 1 that varies across the surface and with its variation",
           "[patterns]") {
     auto noise = [](std::string const& parameters) {

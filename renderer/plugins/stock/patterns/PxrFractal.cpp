@@ -15,19 +15,9 @@
 #include <cmath>
 #include <cstdint>
 
-#include "PatternHelpers.h"
+#include "NoiseLattice.h"
 
 namespace {
-
-uint32_t hash3(int x, int y, int z) {
-    uint32_t h = static_cast<uint32_t>(x) * 0x8da6b343u ^ static_cast<uint32_t>(y) * 0xd8163841u ^
-                 static_cast<uint32_t>(z) * 0xcb1ab31fu;
-    h ^= h >> 16;
-    h *= 0x7feb352du;
-    h ^= h >> 15;
-    h *= 0x846ca68bu;
-    return h ^ (h >> 16);
-}
 
 /// The dot product of the lattice point's pseudo-random gradient (one of the 12 edge directions of a cube)
 /// with the offset from it.
@@ -59,7 +49,7 @@ float gradientNoise(float x, float y, float z) {
     float corner[8];
     for (int c = 0; c < 8; ++c) {
         int const ox = c & 1, oy = (c >> 1) & 1, oz = (c >> 2) & 1;
-        corner[c] = gradientDot(hash3(ix + ox, iy + oy, iz + oz), dx - static_cast<float>(ox),
+        corner[c] = gradientDot(stockpatterns::latticeHash(ix + ox, iy + oy, iz + oz), dx - static_cast<float>(ox),
                                 dy - static_cast<float>(oy), dz - static_cast<float>(oz));
     }
     float const u = fade(dx), v = fade(dy), w = fade(dz);
@@ -129,7 +119,7 @@ public:
             if (auto* messages = static_cast<RixMessages*>(sCtx->GetRixInterface(k_RixMessages)))
                 messages->Warning("PxrFractal: erosion is not modelled; the noise is as with erosion 0");
         int const octaves = *layers < 0 ? 0 : *layers > 16 ? 16 : *layers;  // finer than 2^16 is below any pixel
-        RtPoint3 const* where = *surfacePosition == 1 ? stockpatterns::objectPositions(sCtx) : flatManifold(sCtx);
+        RtPoint3 const* where = stockpatterns::noisePositions(sCtx, *surfacePosition, k_manifold);
 
         RixShadingContext::Allocator pool(sCtx);
         OutputSpecification* out = pool.AllocForPattern<OutputSpecification>(2);
@@ -148,16 +138,6 @@ public:
         *numOutputs = count;
         *outputs = out;
         return 0;
-    }
-
-private:
-    /// (s, t, 0) of the manifold (its third coordinate is a filter width, not a place).
-    RtPoint3 const* flatManifold(RixShadingContext const* sCtx) const {
-        RtPoint3 const* manifold = stockpatterns::manifoldOf(sCtx, k_manifold);
-        RixShadingContext::Allocator pool(sCtx);
-        RtPoint3* flat = pool.AllocFor<RtPoint3>(sCtx->numPts);
-        for (int i = 0; i < sCtx->numPts; ++i) flat[i] = RtPoint3(manifold[i].x, manifold[i].y, 0.0f);
-        return flat;
     }
 };
 
