@@ -149,10 +149,6 @@ inline bool readTexture(RixShadingContext const* sCtx, RtUString filename, RixTe
     return found;
 }
 
-}  // namespace stockpatterns
-
-namespace stockpatterns {
-
 /// Outputs the same values (1 or 3 floats per point) as a float (the first),
 /// a colour and a point, at the table rows given: what PxrPrimvar and
 /// PxrVariable hand on, whatever type the value had.

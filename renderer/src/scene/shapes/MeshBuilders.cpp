@@ -103,10 +103,6 @@ void tessellate(MeshData& mesh, int nu, int nv, SurfaceFunction const& surface, 
     placeGrid(mesh, sampleSurface(nu, nv, surface), toWorld, flip);
 }
 
-}  // namespace
-
-namespace {
-
 /// A polygon's (u, v) where its RIB gives no texture coordinates: as in RenderMan, each face
 /// has its own. A quad's run from 0 to 1 across it, corner by corner in the order written
 /// ((0, 0), (1, 0), (1, 1), (0, 1)), so that a ramp or checker through (s, t) lies straight
