@@ -420,6 +420,36 @@ TEST_CASE("PxrVCM furnace: a point light inside a diffuse sphere gives 1 + a + a
     CHECK(vcm.stats.invalidPdfSamples == 0u);
 }
 
+TEST_CASE("PxrVCM reads an exporter's full parameter list, warning only where it does otherwise",
+          "[integrators][vcm]") {
+    // What exporters write for PxrVCM, at RenderMan's defaults (merging off, so mergeRadius and the like
+    // do nothing; roulette changes noise, not the mean): the same image as without them, and no warning.
+    std::string const defaults = "\"int connectPaths\" [1] \"int mergePaths\" [0] \"int numLightSamples\" [1] "
+                                 "\"int numBxdfSamples\" [1] \"float specularCurvatureFilter\" [1] "
+                                 "\"int rouletteDepth\" [4] \"float rouletteThreshold\" [0.2] \"int clampDepth\" [2] "
+                                 "\"float mergeRadius\" [5] \"float timeRadius\" [1] \"float photonGuiding\" [0] "
+                                 "\"point photonGuidingBBoxMin\" [1e30 1e30 1e30] "
+                                 "\"point photonGuidingBBoxMax\" [-1e30 -1e30 -1e30] ";
+    std::string const plainRib = pointLitSphere("PxrVCM", "probe");
+    auto withParameters = [&](std::string const& parameters) {
+        std::string rib = plainRib;
+        std::string const handle = "\"PxrVCM\" \"i\" ";
+        rib.insert(rib.find(handle) + handle.size(), parameters);
+        return rib;
+    };
+    std::string const written = withParameters(defaults);
+    auto plain = test::renderRib(plainRib, test::withSpp(4));
+    auto exported = test::renderRib(written, test::withSpp(4));
+    CHECK(exported.messages.empty());
+    CHECK(exported.rgba == plain.rgba);
+    // Clamping and other sample counts are not done here: said once each.
+    auto warned = test::renderRib(withParameters("\"float clampLuminance\" [10] \"int numLightSamples\" [4] "),
+                                  test::withSpp(4));
+    CHECK(warned.anyMessageContains("clampLuminance is not applied"));
+    CHECK(warned.anyMessageContains("numLightSamples 4: each camera vertex takes one light sample"));
+    CHECK(warned.rgba == plain.rgba);
+}
+
 TEST_CASE("PxrPathTracer keeps RenderMan's per-object trace depths", "[integrators][pathtracer]") {
     // The point-lit sphere: a path of k surfaces adds 0.5^(k-1), every path alike, so each
     // value below is exact. maxPathLength 3 allows two bounces; the walls may allow fewer.

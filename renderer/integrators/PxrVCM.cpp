@@ -37,6 +37,13 @@
 //                            the paths: the objects' trace depths (Attribute "trace") are not read
 //   int connectPaths   [1]   RenderMan's; connection is always on here
 //   int mergePaths     [0]   RenderMan's vertex merging: not implemented (a warning if 1)
+// RenderMan's others, which exporters write in full, are read so that they pass without a warning
+// where they change nothing this integrator does: mergeRadius, timeRadius and photonGuiding* belong to
+// merging; rouletteDepth and rouletteThreshold to Russian roulette, which changes a render's noise, not
+// its mean (these paths end at maxPathLength only); specularCurvatureFilter to RenderMan's own noise
+// filtering. A numLightSamples or numBxdfSamples other than 1, and a clampLuminance above 0 (clamping
+// would darken bright paths; it is not done here), are warned about.
+#include <climits>
 #include <cmath>
 #include <memory>
 #include <string>
@@ -643,6 +650,23 @@ private:
     int m_maxPathLength;
 };
 
+/// Reads RenderMan's PxrVCM parameters that change nothing here, and warns about those that would.
+void readRenderManParameters(RixParameterList const* params, RixMessages* messages) {
+    for (char const* unneeded : {"mergeRadius", "timeRadius", "photonGuiding", "photonGuidingBBoxMin",
+                                 "photonGuidingBBoxMax", "rouletteDepth", "rouletteThreshold", "clampDepth",
+                                 "specularCurvatureFilter"})
+        HasParam(params, unneeded);
+    for (char const* count : {"numLightSamples", "numBxdfSamples"}) {
+        int samples = 1;
+        if (HasParam(params, count) && ReadInt(params, messages, count, 1, 0, INT_MAX, samples) && samples != 1)
+            messages->Warning("%s %d: each camera vertex takes one light sample and one Bxdf sample here", count,
+                              samples);
+    }
+    if (HasParam(params, "clampLuminance") && ReadFloat(params, "clampLuminance", 10.0f) > 0.0f)
+        messages->Warning("clampLuminance is not applied: bright paths are not clamped, so what a clamped render "
+                          "would darken stays bright");
+}
+
 }  // namespace
 
 RIX_INTEGRATORCREATE {
@@ -657,6 +681,7 @@ RIX_INTEGRATORCREATE {
         messages->Warning("mergePaths 1: vertex merging is not implemented here; paths are joined by connection only");
     if (connectPaths == 0)
         messages->Warning("connectPaths 0: paths are joined by connection all the same (the only way implemented here)");
+    readRenderManParameters(params, messages);
     return new BidirectionalPathTracer(maxPathLength);
 }
 
