@@ -495,6 +495,48 @@ TEST_CASE("PxrWorley and PxrVoronoise lay cells on the surface as documented", "
     }
 }
 
+TEST_CASE("PxrFlakes tilts the normal inside its flakes and marks them in resultA", "[patterns]") {
+    // One flake per unit cell of a connected manifold's (s, t); without jitter it is centred, and of size 1 it
+    // fills the circle inscribed in the cell: here the whole square is one cell.
+    auto shown = [](std::string const& parameters, std::string const& output) {
+        return test::renderRib(kHead + "Pattern \"PxrManifold2D\" \"m\"\n"
+                                       "Pattern \"PxrFlakes\" \"f\" \"float flakeFreq\" [1] \"float jitter\" [0] "
+                                       "\"reference struct manifold\" [\"m:result\"] " +
+                                   parameters + "\n" + output + kSquare,
+                               fewSamples());
+    };
+    std::string const mask = "Pattern \"PxrToFloat3\" \"a\" \"reference float input\" [\"f:resultA\"]\n"
+                             "Bxdf \"PxrConstant\" \"c\" \"reference color emitColor\" [\"a:resultRGB\"]\n";
+    std::string const normal = "Bxdf \"PxrConstant\" \"c\" \"reference color emitColor\" [\"f:resultN\"]\n";
+    std::string const surface = "Pattern \"PxrVariable\" \"n\" \"string variable\" [\"Nn\"]\n"
+                                "Bxdf \"PxrConstant\" \"c\" \"reference color emitColor\" [\"n:resultRGB\"]\n";
+    auto flaked = shown("", mask);
+    CHECK(flaked.channel(7, 8, 0) == 1.0f);
+    CHECK(flaked.channel(8, 7, 0) == 1.0f);
+    for (int corner : {0, 15}) {
+        CHECK(flaked.channel(corner, 0, 0) == 0.0f);
+        CHECK(flaked.channel(corner, 15, 0) == 0.0f);
+    }
+    CHECK(shown("\"float density\" [0]", mask).channel(8, 8, 0) == 0.0f);  // no cell has a flake
+    auto tilted = shown("", normal);
+    auto plain = shown("", surface);
+    auto at = [](test::RenderOutcome const& r, int x, int y) {
+        return RtVector3(r.channel(x, y, 0), r.channel(x, y, 1), r.channel(x, y, 2));
+    };
+    RtVector3 const inside = at(tilted, 8, 8), outside = at(tilted, 0, 0), own = at(plain, 8, 8);
+    CHECK(inside.Length() == Approx(1.0f).margin(1e-3));
+    CHECK((inside - own).Length() > 0.05f);  // tilted in the flake
+    CHECK((outside - at(plain, 0, 0)).Length() < 1e-5f);  // the surface's own normal elsewhere
+    CHECK((at(shown("\"float flakeAmount\" [0]", normal), 8, 8) - own).Length() < 1e-5f);  // no tilt asked for
+    // In object space (no manifold), at a fine frequency: some points in flakes, some not.
+    auto fine = test::renderRib(kHead + "Pattern \"PxrFlakes\" \"f\" \"float flakeFreq\" [8] \"float size\" [1.5]\n" +
+                                    mask + kSquare,
+                                fewSamples());
+    double const covered = test::meanChannel(fine, 0, [](int, int) { return true; });
+    CHECK(covered > 0.05);
+    CHECK(covered < 0.95);
+}
+
 TEST_CASE("PxrFractal is a noise in 0 to 1 that varies across the surface and with its variation",
           "[patterns]") {
     auto noise = [](std::string const& parameters) {

@@ -92,12 +92,14 @@ inline RtPoint3* stManifold(RixShadingContext const* sCtx) {
     return q;
 }
 
-/// Whether a connection reads output `paramId` (so that a costly output can be skipped).
-inline bool isOutputRead(RixShadingContext const* sCtx, int paramId) {
+/// Whether parameter `paramId` is connected: an input fed by a pattern, or an output a connection reads
+/// (so that a costly output can be skipped).
+inline bool isConnected(RixShadingContext const* sCtx, int paramId) {
     RixSCConnectionInfo how = k_RixSCDefaultValue;
     sCtx->GetParamInfo(paramId, nullptr, &how);
     return how == k_RixSCNetworkValue;
 }
+inline bool isOutputRead(RixShadingContext const* sCtx, int paramId) { return isConnected(sCtx, paramId); }
 
 /// Each point's position in object space (its shape's own coordinates, before any transformation),
 /// where solid patterns are laid so that they stay on the object as it moves.
