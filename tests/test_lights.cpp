@@ -810,7 +810,9 @@ TEST_CASE("RIS lights' shadow controls: enableShadows 0 lights what lies behind 
                                  "\"float shadowFalloffGamma\" [1] \"string shadowSubset\" [\"\"] \"string shadowExcludeSubset\" "
                                  "[\"\"] \"int thinShadow\" [1] \"int traceLightPaths\" [0] \"int fixedSampleCount\" [0] "
                                  "\"float diffuse\" [1] \"float specular\" [1] \"float importanceMultiplier\" [1] "
-                                 "\"string lightGroup\" [\"keys\"]";
+                                 "\"string lightGroup\" [\"keys\"] \"int enableTemperature\" [0] "
+                                 "\"float temperature\" [3000] \"float intensityNearDist\" [0] \"string iesProfile\" [\"\"] "
+                                 "\"float iesProfileScale\" [0] \"string lightColorMap\" [\"\"]";
     Diagnostics quiet(false);
     behindBlocker(defaults, &quiet);
     CHECK(test::warningTexts(quiet).empty());

@@ -837,6 +837,7 @@ TEST_CASE("Camera saves the camera under a name, and a Display's camera picks th
                                  "Camera \"exported\" \"float shutterOpenTime\" [0] \"float shutterCloseTime\" [1] "
                                  "\"int apertureNSides\" [0] \"float apertureAngle\" [0] \"float apertureRoundness\" [0] "
                                  "\"float apertureDensity\" [0] \"float dofaspect\" [1]\n"
+                                 "Camera \"maya\" \"float[2] shutteropening\" [0 1]\n"  // RenderMan 21's
                                  "Translate 0 0 5\nWorldBegin\nWorldEnd\n",
                                  diagnostics);
     // A camera no Camera request named: the one at WorldBegin, with a warning.
@@ -1064,6 +1065,19 @@ TEST_CASE("a stand-in reads the material's parameters also when they are written
     CHECK(untyped.rgba == typed.rgba);
     auto all = [](int, int) { return true; };
     CHECK(test::meanChannel(untyped, 0, all) > 1.05 * test::meanChannel(untyped, 2, all));  // orange, not grey
+}
+
+TEST_CASE("RenderMan for Maya's primtype record on a shape passes silently; another string is warned about",
+          "[rib][geometry]") {
+    Diagnostics diagnostics(false);
+    Scene scene = test::parseRib("WorldBegin\nPointsGeneralPolygons [1] [3] [0 1 2] \"P\" [0 0 0 1 0 0 0 1 0] "
+                                 "\"constant string primtype\" [\"mesh\"]\n"
+                                 "Sphere 1 -1 1 360 \"constant string label\" [\"ball\"]\n",
+                                 diagnostics);
+    CHECK(scene.shapes.size() == 2u);
+    std::vector<std::string> const warnings = test::warningTexts(diagnostics);
+    REQUIRE(warnings.size() == 1u);
+    CHECK_THAT(warnings[0], Catch::Matchers::Contains("Sphere: parameter \"label\" is not used"));
 }
 
 TEST_CASE("GeneralPolygon and PointsGeneralPolygons: holes are holes", "[rib][geometry]") {

@@ -113,7 +113,10 @@ void readCommonLightControls(ParamList const& params, Light& light, SourceLocati
     atDefault("importanceMultiplier", {1.0f});
     atDefault("colorMapGamma", {1.0f, 1.0f, 1.0f});
     atDefault("colorMapSaturation", {1.0f});
-    for (char const* subset : {"shadowSubset", "shadowExcludeSubset"})
+    atDefault("intensityNearDist", {0.0f});  // RenderMan's default: no change to the falloff near the light
+    atDefault("iesProfileScale", {0.0f});
+    // Exporters write every light's full list: an empty file name asks for nothing.
+    for (char const* subset : {"shadowSubset", "shadowExcludeSubset", "iesProfile", "lightColorMap"})
         if (Param const* p = params.find(subset); p && (p->strings.empty() || p->strings[0].empty())) params.ignore(subset);
 }
 
@@ -210,7 +213,10 @@ Vec3 risLightRadiance(std::string const& type, ParamList const& params, SourceLo
     if (color.x < 0.0f || color.y < 0.0f || color.z < 0.0f)
         throw RibError(where, type + ": lightColor must not be negative");
     // RenderMan's plausible colour temperature tints the light (at the same luminance).
-    if (params.getFloat("enableTemperature", 0.0f) != 0.0f) color *= blackbodyColor(params.getFloat("temperature", 6500.0f));
+    if (params.getFloat("enableTemperature", 0.0f) != 0.0f)
+        color *= blackbodyColor(params.getFloat("temperature", 6500.0f));
+    else
+        params.ignore("temperature");  // written with the switch off: it changes nothing
     return intensity * std::exp2(exposure) * color;
 }
 

@@ -178,6 +178,10 @@ void SceneBuilder::camera(RequestReader& in) {
             one && (written->floats.empty() ? static_cast<float>(written->ints[0]) : written->floats[0]) == plain;
         if (isPlain) params.take(parameter);
     }
+    // RenderMan 21's shutter opening, [0 1]: open at once at the start and shut at once at the end.
+    if (Param const* opening = params.find("shutteropening");
+        opening && !opening->decl.reference && opening->floats == std::vector<float>{0.0f, 1.0f})
+        params.take("shutteropening");
     Param const* nearClip = params.take("nearClip");
     Param const* farClip = params.take("farClip");
     if (nearClip || farClip)

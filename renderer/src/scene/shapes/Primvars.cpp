@@ -59,6 +59,8 @@ int primvarComponents(Param const& param) {
 }
 
 PrimvarSet shapePrimvars(ParamList const& params, size_t corners, size_t elements) {
+    // RenderMan for Maya records each shape's kind ("mesh", "subdiv") in a string it calls primtype: nothing reads it.
+    if (Param const* kind = params.find("primtype"); kind && kind->decl.type == ParamType::String) params.ignore("primtype");
     PrimvarSet set;
     for (Param const& p : params.all()) {
         if (isGeometryParameter(p.name())) continue;
