@@ -24,6 +24,21 @@ inline uint32_t latticeHash(int x, int y, int z) {
 inline uint32_t nextHash(uint32_t h) { return latticeHash(static_cast<int>(h), 0x2545f491, 0x9e3779b9); }
 inline float unitOf(uint32_t h) { return static_cast<float>(h >> 8) * (1.0f / 16777216.0f); }
 
+/// The weighted average over `octaves` of noise(p f), f starting at `frequency` and growing `lacunarity`
+/// times per octave, each octave weighing `gain` times the one before (a fractal sum); `whenNone` for no octave.
+template <typename Noise>
+float octaveAverage(RtPoint3 const& p, int octaves, float frequency, float lacunarity, float gain, float whenNone,
+                    Noise const& noise) {
+    float sum = 0.0f, norm = 0.0f, amplitude = 1.0f, f = frequency;
+    for (int k = 0; k < octaves; ++k) {
+        sum += amplitude * noise(RtPoint3(p.x * f, p.y * f, p.z * f));
+        norm += amplitude;
+        amplitude *= gain;
+        f *= lacunarity;
+    }
+    return norm > 0.0f ? sum / norm : whenNone;
+}
+
 /// Where a noise pattern is evaluated: (s, t, 0) of its manifold (texture coordinates unless one is connected
 /// at `manifoldId`; the manifold's third coordinate is a filter width, not a place), or with surfacePosition 1
 /// the point's position in object space, so that the noise stays on the object as it moves.

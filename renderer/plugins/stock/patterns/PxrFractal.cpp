@@ -65,17 +65,11 @@ struct Octaves {
 
     /// The fractal at p, in [0, 1].
     float at(RtPoint3 const& p) const {
-        float sum = 0.0f, norm = 0.0f, amplitude = 1.0f, f = frequency;
-        float const falloff = std::pow(lacunarity, -dimension);
-        for (int k = 0; k < layers; ++k) {
-            float const n = gradientNoise(p.x * f, p.y * f, p.z * f);
-            sum += amplitude * (turbulent ? std::fabs(n) : n);
-            norm += amplitude;
-            amplitude *= falloff;
-            f *= lacunarity;
-        }
-        if (norm <= 0.0f) return turbulent ? 0.0f : 0.5f;
-        float const value = sum / norm;
+        float const value = stockpatterns::octaveAverage(
+            p, layers, frequency, lacunarity, std::pow(lacunarity, -dimension), 0.0f, [this](RtPoint3 const& q) {
+                float const n = gradientNoise(q.x, q.y, q.z);
+                return turbulent ? std::fabs(n) : n;
+            });
         return std::fmin(1.0f, std::fmax(0.0f, turbulent ? value : 0.5f + 0.5f * value));
     }
 };

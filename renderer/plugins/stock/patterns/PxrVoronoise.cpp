@@ -56,15 +56,12 @@ struct Octaves {
     bool turbulent, flat;
 
     float at(RtPoint3 const& p) const {
-        float sum = 0.0f, norm = 0.0f, amplitude = 1.0f, f = frequency;
-        for (int k = 0; k < count; ++k) {
-            float const v = voronoise(p * f, flat, jitter, sharpness);
-            sum += amplitude * (turbulent ? std::fabs(2.0f * v - 1.0f) : v);
-            norm += amplitude;
-            amplitude *= gain;
-            f *= lacunarity;
-        }
-        return norm > 0.0f ? std::clamp(sum / norm, 0.0f, 1.0f) : 0.5f;
+        return std::clamp(stockpatterns::octaveAverage(p, count, frequency, lacunarity, gain, 0.5f,
+                                                       [this](RtPoint3 const& q) {
+                                                           float const v = voronoise(q, flat, jitter, sharpness);
+                                                           return turbulent ? std::fabs(2.0f * v - 1.0f) : v;
+                                                       }),
+                          0.0f, 1.0f);
     }
 };
 
