@@ -1,7 +1,8 @@
-// Reads no more of the Shading Language than a shader's parameter list: the
+// Reads no more of the Shading Language than a shader's parameter list (the
 // declarations between "surface name (" and its closing parenthesis, each
-// "[output] [uniform|varying] type name = default" and separated by ';' (names
-// of one type may share a declaration, separated by ',').
+// "[output] [uniform|varying] type name = default" and separated by ';'; names
+// of one type may share a declaration, separated by ',') and, in its code, which
+// words occur (Cs, diffuse, illuminance, ...), comments left out.
 #include "scene/ShaderSource.h"
 
 #include <algorithm>

@@ -1,7 +1,9 @@
-// The parameter defaults a classic shader's source declares. A scene's own
-// surface shader (wood.sl beside the RIB) is rendered as the standard shader it
-// most resembles; the defaults it declares for the standard parameters (its Kd
-// of 0.04, say) are what the scene was lit for, where the RIB does not give them.
+// What a classic shader's source tells about it. A scene's own surface shader
+// (wood.sl beside the RIB) is rendered as the standard shader it most resembles;
+// the defaults it declares for the standard parameters (its Kd of 0.04, say) are
+// what the scene was lit for, where the RIB does not give them; a source that never
+// reads Cs names the colour it shows instead, and one that reads no light shows its
+// colour unlit.
 #pragma once
 
 #include <map>
