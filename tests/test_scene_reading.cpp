@@ -526,7 +526,7 @@ TEST_CASE("a shader whose source never reads Cs is coloured by a colour paramete
                                                 "reads Cs") == 1);
 }
 
-TEST_CASE("a shader whose source reads no light is rendered as constant", "[rib]") {
+TEST_CASE("a shader of its own colour whose source reads no light is rendered as constant", "[rib]") {
     CHECK(readsNoLight("surface glow(float attenuation = 2) { Ci = Cs * pow(abs(N.I), attenuation); }"));
     CHECK(readsNoLight("surface sky(color skycolor = 1) { /* Ci = diffuse(N); */ Ci = skycolor; }"));  // a comment
     CHECK_FALSE(readsNoLight("surface nothing(float Kd = 1) { }"));  // sets no colour: nothing to go by
@@ -539,11 +539,16 @@ TEST_CASE("a shader whose source reads no light is rendered as constant", "[rib]
     std::ofstream(folder + "/KMPuffyclouds.sl") << "surface KMPuffyclouds(float Ka = 0, Kd = 0; color skycolor = "
                                                    "color(.15, .15, .6); color cloudcolor = 1)\n"
                                                    "{ Ci = mix(skycolor, cloudcolor, noise(P)); }\n";
+    // A glow of Cs reads no light either, but shows mostly darker than Cs: it keeps its look-alike.
+    std::ofstream(folder + "/RCGlow.sl") << "surface RCGlow(float attenuation = 2)\n"
+                                            "{ Ci = Cs * pow(abs(normalize(N).normalize(I)), attenuation); }\n";
     Diagnostics diagnostics(false);
     Scene scene = test::parseRib("Option \"searchpath\" \"string shader\" [\"" + folder +
-                                     "\"]\nWorldBegin\nSurface \"KMPuffyclouds\"\nSphere 1 -1 1 360\n",
+                                     "\"]\nWorldBegin\nSurface \"KMPuffyclouds\"\nSphere 1 -1 1 360\n"
+                                     "Surface \"RCGlow\"\nSphere 1 -1 1 360\n",
                                  diagnostics);
-    REQUIRE(scene.shapes.size() == 1u);
+    REQUIRE(scene.shapes.size() == 2u);
+    CHECK(scene.materials[static_cast<size_t>(scene.shapes[1]->material)].params.getString("shader", "") == "matte");
     MaterialDesc const& sky = scene.materials[static_cast<size_t>(scene.shapes[0]->material)];
     CHECK(sky.params.getString("shader", "") == "constant");
     CHECK(sky.params.getColor("surfaceColor", Vec3(-1.0f)) == Vec3(0.15f, 0.15f, 0.6f));

@@ -23,7 +23,7 @@ struct DeclaredDefaults {
     /// (brick.sl's brickcolor; a checker's color1 and color2); none when it reads Cs or has no such one.
     std::vector<std::string> ownColours;
     /// Whether the source is known to read no light (no diffuse(), illuminance, Cl, ... and no #include
-    /// that could hide one): its surface shows its colour whatever lights it, as constant's does.
+    /// that could hide one): with a colour of its own, its surface shows it whatever lights it.
     bool unlit = false;
 };
 

@@ -193,7 +193,9 @@ void SceneBuilder::surface(RequestReader& in) {
     std::optional<Vec3> ownColour;
     if (!known) {
         auto [like, why] = lookalikeSurface(base, params, declared.count("Ks") > 0);
-        if (source.unlit) {  // a glow, a sky, a star field: what it shows does not depend on the lights
+        // A sky or a backdrop of its own colour: what it shows does not depend on the lights. (A glow or a
+        // flame of Cs shows mostly darker than its Cs: it keeps its look-alike, which is closer on average.)
+        if (source.unlit && !source.ownColours.empty()) {
             like = "constant";
             why = "as its source " + fs::path(source.file).filename().string() + " reads no light";
         }
