@@ -1072,7 +1072,7 @@ TEST_CASE("a stand-in reads the material's parameters also when they are written
     CHECK(test::meanChannel(untyped, 0, all) > 1.05 * test::meanChannel(untyped, 2, all));  // orange, not grey
 }
 
-TEST_CASE("RenderMan for Maya's primtype record on a shape passes silently; another string is warned about",
+TEST_CASE("RenderMan for Maya's primtype record on a shape passes silently, another string is warned about",
           "[rib][geometry]") {
     Diagnostics diagnostics(false);
     Scene scene = test::parseRib("WorldBegin\nPointsGeneralPolygons [1] [3] [0 1 2] \"P\" [0 0 0 1 0 0 0 1 0] "
